@@ -1,0 +1,54 @@
+# softgl — build, test, demo. See README.md.
+#
+#   make         build the library and lay out build/lib
+#   make test    all tests (Rust unit tests, header/export checks, C tests)
+#   make demo    render the demo scenes into out/
+#   make coverage  regenerate the README's coverage table
+
+CARGO ?= cargo
+CC ?= cc
+LIB := build/lib
+SO := target/release/libsoftgl.so
+
+.PHONY: all lib test rust-test c-test exports-test demo coverage deps clean
+
+all: lib
+
+# One object under every name programs look for (README: "One library,
+# several names"): the SONAME is libGL.so.1; the others are symlinks so a
+# process that loads two of the names still holds a single softgl.
+lib:
+	$(CARGO) build --release --workspace
+	mkdir -p $(LIB)
+	cp -f $(SO) $(LIB)/libGL.so.1.tmp && mv -f $(LIB)/libGL.so.1.tmp $(LIB)/libGL.so.1
+	ln -sf libGL.so.1 $(LIB)/libGL.so
+	ln -sf libGL.so.1 $(LIB)/libGLU.so.1
+	ln -sf libGLU.so.1 $(LIB)/libGLU.so
+	ln -sf libGL.so.1 $(LIB)/libOSMesa.so.8
+	ln -sf libOSMesa.so.8 $(LIB)/libOSMesa.so
+	ln -sf libGL.so.1 $(LIB)/libsoftgl.so
+
+# Debian packages the tests use (only when root and missing).
+deps:
+	@sh tools/install_deps.sh
+
+test: deps lib rust-test exports-test c-test
+
+rust-test:
+	$(CARGO) test --release --workspace
+
+exports-test: lib
+	sh tools/check_exports.sh
+
+c-test: lib
+	sh c_tests/run.sh
+
+demo: lib
+	sh demo/run.sh
+
+coverage:
+	$(CARGO) run --release --quiet --bin coverage -- README.md
+
+clean:
+	rm -rf build out
+	$(CARGO) clean

@@ -1,0 +1,52 @@
+//! How an entry point reaches the GL state machine: find the current
+//! context, never let a panic cross the C ABI, and apply the Begin/End rule
+//! for commands that are not allowed between glBegin and glEnd.
+
+use super::ret::Zero;
+use crate::gl::{enums::GL_INVALID_OPERATION, Context};
+use crate::winsys::current::current;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+/// Runs `f` on the current context. No current context: does nothing and
+/// returns zero. A panic is caught, reported as GL_OUT_OF_MEMORY (the only
+/// failure the spec lets an implementation report for itself) and the
+/// command returns zero.
+#[inline]
+pub fn with_current<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
+    let p = current();
+    if p.is_null() {
+        return R::zero();
+    }
+    // SAFETY: the pointer was made current by MakeCurrent and stays valid
+    // until it is released; GL contexts are used by one thread at a time.
+    let ctx = unsafe { &mut *p };
+    match catch_unwind(AssertUnwindSafe(|| f(ctx))) {
+        Ok(r) => r,
+        Err(_) => {
+            let ctx = unsafe { &mut *p };
+            ctx.set_error(crate::gl::enums::GL_OUT_OF_MEMORY);
+            R::zero()
+        }
+    }
+}
+
+/// For commands that execute immediately and are illegal between Begin and
+/// End (GL 1.5 section 2.6.3): INVALID_OPERATION there, and nothing happens.
+#[inline]
+pub fn outside_begin_end<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
+    with_current(|ctx| {
+        if ctx.in_begin_end() {
+            ctx.set_error(GL_INVALID_OPERATION);
+            R::zero()
+        } else {
+            f(ctx)
+        }
+    })
+}
+
+/// For entry points that need no context (GLU, window-system calls): only
+/// the panic guard.
+#[inline]
+pub fn guarded<R: Zero>(f: impl FnOnce() -> R) -> R {
+    catch_unwind(AssertUnwindSafe(f)).unwrap_or_else(|_| R::zero())
+}

@@ -1,0 +1,147 @@
+//! The C ABI (DESIGN.md, "api/"). Every entry point of the library is one
+//! line of the table in [`table`]; the `entry_points!` macro turns each line
+//! into an exported `extern "system"` function, its display-list behaviour
+//! and its slot in [`ENTRY_POINTS`], which GetProcAddress, the README's
+//! coverage table and the header test all read. No GL logic lives here:
+//! an entry point converts its C arguments and forwards.
+
+pub mod args;
+pub mod dispatch;
+pub mod ret;
+pub mod table;
+pub mod types;
+
+pub use table::ENTRY_POINTS;
+
+/// How an entry point behaves, as declared in the table.
+#[allow(non_camel_case_types)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A GL command that display lists record (GL 1.5 section 5.4); it builds
+    /// a [`crate::gl::Command`], and whether it may appear between Begin and
+    /// End is the command's own rule.
+    list,
+    /// Executes immediately, never compiled into a list; INVALID_OPERATION
+    /// between Begin and End.
+    exec,
+    /// Client state (pixel store, arrays): immediate, never compiled, and
+    /// not checked against Begin/End.
+    client,
+    /// Needs no context: GLU and the window-system calls.
+    free,
+    /// Exported so programs link and load, but not implemented yet: does
+    /// nothing and returns zero. Listed as such in the README.
+    todo,
+}
+
+/// One row of the entry-point table.
+pub struct EntryPoint {
+    /// NUL-terminated name.
+    pub name: &'static str,
+    pub addr: *const (),
+    pub kind: Kind,
+}
+
+// SAFETY: the table is immutable and holds function addresses only.
+unsafe impl Sync for EntryPoint {}
+
+impl EntryPoint {
+    pub fn name(&self) -> &'static str {
+        &self.name[..self.name.len() - 1]
+    }
+}
+
+/// Looks a name up in the table (GetProcAddress). Returns the address of
+/// the exported function, for implemented and unimplemented entries alike.
+pub fn proc_address(name: &[u8]) -> *const () {
+    use std::collections::HashMap;
+    use std::sync::OnceLock;
+    // Addresses are kept as integers so the map is Sync.
+    static INDEX: OnceLock<HashMap<&'static [u8], usize>> = OnceLock::new();
+    let index = INDEX.get_or_init(|| {
+        ENTRY_POINTS.iter().map(|e| (e.name().as_bytes(), e.addr as usize)).collect()
+    });
+    index.get(name).map_or(std::ptr::null(), |&a| a as *const ())
+}
+
+/// Reports an unimplemented entry point once per name when SOFTGL_DEBUG is set.
+pub fn unimplemented(name: &'static str) {
+    use std::sync::Mutex;
+    static SEEN: Mutex<Vec<&'static str>> = Mutex::new(Vec::new());
+    if std::env::var_os("SOFTGL_DEBUG").is_none() {
+        return;
+    }
+    if let Ok(mut seen) = SEEN.lock() {
+        if !seen.contains(&name) {
+            seen.push(name);
+            eprintln!("softgl: {name} is not implemented yet");
+        }
+    }
+}
+
+/// Expands the table. See [`table`] for the syntax.
+macro_rules! entry_points {
+    ($( $kind:ident $name:ident ( $($arg:ident : $ty:ty),* $(,)? ) $(-> $ret:ty)? $({ $($body:tt)* })? $(;)? )*) => {
+        $( $crate::api::entry_point!($kind $name ( $($arg : $ty),* ) -> ($($ret)?) { $($($body)*)? }); )*
+
+        /// Every entry point, in table order.
+        pub static ENTRY_POINTS: &[$crate::api::EntryPoint] = &[$(
+            $crate::api::EntryPoint {
+                name: concat!(stringify!($name), "\0"),
+                addr: $name as *const (),
+                kind: $crate::api::Kind::$kind,
+            }
+        ),*];
+    };
+}
+
+macro_rules! entry_point {
+    (list $name:ident ( $($arg:ident : $ty:ty),* ) -> $ret:ty { |$c:ident| $body:expr }) => {
+        #[no_mangle]
+        #[allow(unused_parens)]
+        pub unsafe extern "system" fn $name($($arg: $ty),*) -> $ret {
+            $crate::api::dispatch::with_current(|ctx: &mut $crate::gl::Context| {
+                // The body may bail out with `?` (a NULL array) or `return None`
+                // (an error it has set): then nothing is recorded or run.
+                #[allow(unused_variables)]
+                let build = |$c: &mut $crate::gl::Context| -> Option<$crate::gl::Command> { Some($body) };
+                if let Some(cmd) = build(ctx) {
+                    ctx.submit(cmd);
+                }
+            })
+        }
+    };
+    (exec $name:ident ( $($arg:ident : $ty:ty),* ) -> $ret:ty { |$c:ident| $body:expr }) => {
+        #[no_mangle]
+        #[allow(unused_parens)]
+        pub unsafe extern "system" fn $name($($arg: $ty),*) -> $ret {
+            $crate::api::dispatch::outside_begin_end(|$c: &mut $crate::gl::Context| $body)
+        }
+    };
+    (client $name:ident ( $($arg:ident : $ty:ty),* ) -> $ret:ty { |$c:ident| $body:expr }) => {
+        #[no_mangle]
+        #[allow(unused_parens)]
+        pub unsafe extern "system" fn $name($($arg: $ty),*) -> $ret {
+            $crate::api::dispatch::with_current(|$c: &mut $crate::gl::Context| $body)
+        }
+    };
+    (free $name:ident ( $($arg:ident : $ty:ty),* ) -> $ret:ty { $body:expr }) => {
+        #[no_mangle]
+        #[allow(unused_parens)]
+        pub unsafe extern "system" fn $name($($arg: $ty),*) -> $ret {
+            $crate::api::dispatch::guarded(|| $body)
+        }
+    };
+    (todo $name:ident ( $($arg:ident : $ty:ty),* ) -> $ret:ty { }) => {
+        #[no_mangle]
+        #[allow(unused_parens)]
+        pub unsafe extern "system" fn $name($($arg: $ty),*) -> $ret {
+            let _ = ($($arg,)*);
+            $crate::api::unimplemented(stringify!($name));
+            <$ret as $crate::api::ret::Zero>::zero()
+        }
+    };
+}
+
+pub(crate) use entry_point;
+pub(crate) use entry_points;

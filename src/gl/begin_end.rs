@@ -1,0 +1,135 @@
+//! glBegin/glEnd and primitive assembly (GL 1.5 sections 2.6 and 2.6.1):
+//! vertices are transformed as they arrive and grouped into triangles by
+//! the primitive mode, each with its provoking vertex for flat shading
+//! (section 2.14.7, table 2.12: the last vertex of a triangle, strip or fan
+//! triangle and of a quad; the first of a polygon).
+//!
+//! Points and lines are accepted (the modes are valid) but not drawn yet:
+//! that is issue 3's work.
+
+use super::context::Context;
+use super::enums::*;
+use crate::render::{self, ClipVertex};
+use glam::Vec4;
+
+/// Assembly state between glBegin and glEnd.
+pub struct Assembly {
+    pub mode: u32,
+    /// Vertices kept for the primitive being built (strips and fans keep
+    /// two; polygons keep all).
+    verts: Vec<ClipVertex>,
+    /// Vertices seen since glBegin.
+    count: usize,
+}
+
+impl Context {
+    pub fn begin(&mut self, mode: u32) {
+        if mode > GL_POLYGON {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        // Begin inside Begin is caught by the Begin/End rule (execute).
+        self.validate();
+        self.prim = Some(Assembly { mode, verts: Vec::with_capacity(4), count: 0 });
+    }
+
+    pub fn end(&mut self) {
+        let Some(asm) = self.prim.take() else {
+            return self.set_error(GL_INVALID_OPERATION);
+        };
+        if asm.mode == GL_POLYGON && asm.verts.len() >= 3 {
+            // A convex polygon as a fan; flat shading takes the first vertex.
+            let v = &asm.verts;
+            for i in 1..v.len() - 1 {
+                self.triangle([&v[0], &v[i], &v[i + 1]], 0);
+            }
+        }
+    }
+
+    /// glVertex: the vertex takes the current colour (section 2.7).
+    /// Outside Begin/End a vertex has no effect.
+    pub fn vertex(&mut self, p: [f32; 4]) {
+        let Some(mut asm) = self.prim.take() else { return };
+        let v = ClipVertex { pos: self.derived.mvp * Vec4::from_array(p), color: Vec4::from_array(self.current.color) };
+        self.assemble(&mut asm, v);
+        self.prim = Some(asm);
+    }
+
+    fn assemble(&mut self, asm: &mut Assembly, v: ClipVertex) {
+        let n = asm.count;
+        asm.count += 1;
+        match asm.mode {
+            GL_TRIANGLES => {
+                asm.verts.push(v);
+                if asm.verts.len() == 3 {
+                    let t = std::mem::take(&mut asm.verts);
+                    self.triangle([&t[0], &t[1], &t[2]], 2);
+                    asm.verts = t;
+                    asm.verts.clear();
+                }
+            }
+            GL_TRIANGLE_STRIP => {
+                if n >= 2 {
+                    let (a, b) = (asm.verts[0], asm.verts[1]);
+                    // Odd triangles swap their first two vertices to keep
+                    // the strip's orientation; the provoking vertex is the
+                    // newest either way.
+                    if n % 2 == 0 {
+                        self.triangle([&a, &b, &v], 2);
+                    } else {
+                        self.triangle([&b, &a, &v], 2);
+                    }
+                    asm.verts[0] = b;
+                    asm.verts[1] = v;
+                } else {
+                    asm.verts.push(v);
+                }
+            }
+            GL_TRIANGLE_FAN => {
+                if n >= 2 {
+                    let (a, b) = (asm.verts[0], asm.verts[1]);
+                    self.triangle([&a, &b, &v], 2);
+                    asm.verts[1] = v;
+                } else {
+                    asm.verts.push(v);
+                }
+            }
+            GL_QUADS => {
+                asm.verts.push(v);
+                if asm.verts.len() == 4 {
+                    let q = std::mem::take(&mut asm.verts);
+                    self.quad(&q[0], &q[1], &q[2], &q[3], &q[3]);
+                    asm.verts = q;
+                    asm.verts.clear();
+                }
+            }
+            GL_QUAD_STRIP => {
+                if n >= 3 && n % 2 == 1 {
+                    // Quad (v0, v1, v3, v2) in boundary order; v3, the
+                    // last sent, provokes.
+                    let (a, b, c) = (asm.verts[0], asm.verts[1], asm.verts[2]);
+                    self.quad(&a, &b, &v, &c, &v);
+                    asm.verts.clear();
+                    asm.verts.push(c);
+                    asm.verts.push(v);
+                } else {
+                    asm.verts.push(v);
+                }
+            }
+            GL_POLYGON => asm.verts.push(v),
+            // Points and lines: not rasterized yet (issue 3).
+            _ => {}
+        }
+    }
+
+    /// A quad in boundary order (a, b, c, d), split into (a, b, d) and
+    /// (b, c, d); flat shading takes `provoking`'s colour for both.
+    fn quad(&mut self, a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, d: &ClipVertex, provoking: &ClipVertex) {
+        let flat = provoking.color;
+        render::draw_triangle(&self.derived.render, &mut self.fb, [a, b, d], flat);
+        render::draw_triangle(&self.derived.render, &mut self.fb, [b, c, d], flat);
+    }
+
+    fn triangle(&mut self, v: [&ClipVertex; 3], provoking: usize) {
+        render::draw_triangle(&self.derived.render, &mut self.fb, v, v[provoking].color);
+    }
+}

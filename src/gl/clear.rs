@@ -1,0 +1,71 @@
+//! glClear (GL 1.5 section 4.2.3): fills the selected buffers with their
+//! clear values inside the scissor box (the viewport does not apply),
+//! through the colour, depth and stencil write masks. Dithering does not
+//! change the 8-bit result.
+
+use super::context::Context;
+use super::enums::*;
+use crate::framebuffer::Framebuffer;
+use crate::render::fragment::{color_to_u8, depth_to_fixed};
+use glam::Vec4;
+
+const CLEAR_BITS: u32 = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+
+/// Applies `f` to each row slice [x0, x1) of the rectangle in a buffer.
+fn rows<T>(buf: &mut [T], width: usize, r: crate::framebuffer::Rect, mut f: impl FnMut(&mut [T])) {
+    for y in r.y0 as usize..r.y1 as usize {
+        let start = y * width;
+        f(&mut buf[start + r.x0 as usize..start + r.x1 as usize]);
+    }
+}
+
+impl Context {
+    pub fn clear(&mut self, mask: u32) {
+        if mask & !CLEAR_BITS != 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let r = self.scissored_surface();
+        if r.is_empty() {
+            return;
+        }
+        let fb: &mut Framebuffer = &mut self.fb;
+        let w = fb.width;
+        if mask & GL_COLOR_BUFFER_BIT != 0 {
+            let value = color_to_u8(Vec4::from_array(self.color_buffer.clear));
+            let m = self.color_buffer.write_mask;
+            if m == [true; 4] {
+                rows(&mut fb.color, w, r, |row| row.fill(value));
+            } else if m != [false; 4] {
+                rows(&mut fb.color, w, r, |row| {
+                    for px in row {
+                        for ch in 0..4 {
+                            if m[ch] {
+                                px[ch] = value[ch];
+                            }
+                        }
+                    }
+                });
+            }
+        }
+        if mask & GL_DEPTH_BUFFER_BIT != 0 && fb.has_depth() && self.depth.write_mask {
+            let value = depth_to_fixed(self.depth.clear);
+            rows(&mut fb.depth, w, r, |row| row.fill(value));
+        }
+        if mask & GL_STENCIL_BUFFER_BIT != 0 && fb.has_stencil() {
+            let bits = fb.config.stencil_bits as u32;
+            let full = (1u32 << bits) - 1;
+            let value = (self.stencil.clear as u32 & full) as u8;
+            let m = (self.stencil.write_mask & full) as u8;
+            if m == full as u8 {
+                rows(&mut fb.stencil, w, r, |row| row.fill(value));
+            } else if m != 0 {
+                rows(&mut fb.stencil, w, r, |row| {
+                    for s in row {
+                        *s = (*s & !m) | (value & m);
+                    }
+                });
+            }
+        }
+        // GL_ACCUM_BUFFER_BIT: the accumulation buffer arrives with issue 3.
+    }
+}

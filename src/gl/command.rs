@@ -1,0 +1,124 @@
+//! The display-listable commands, as values. An entry point converts its C
+//! arguments into one of these (so glColor3ub and glColor4fv both become
+//! `Color`), then [`Context::submit`] records it in a display list,
+//! executes it, or both. Display lists are vectors of these.
+
+use super::context::Context;
+use super::enums::*;
+use glam::DMat4;
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Command {
+    // Section 2.6: Begin/End and vertex attributes.
+    Begin(u32),
+    End,
+    Vertex([f32; 4]),
+    Color([f32; 4]),
+    /// glRect: x1, y1, x2, y2 (section 2.10).
+    Rect([f32; 4]),
+    // Section 2.11: coordinate transformations.
+    MatrixMode(u32),
+    LoadIdentity,
+    LoadMatrix(DMat4),
+    MultMatrix(DMat4),
+    Ortho([f64; 6]),
+    Frustum([f64; 6]),
+    Translate([f64; 3]),
+    Rotate(f64, [f64; 3]),
+    Scale([f64; 3]),
+    PushMatrix,
+    PopMatrix,
+    Viewport(i32, i32, i32, i32),
+    DepthRange(f64, f64),
+    // Section 2.14.7, 3.5: shading and polygons.
+    ShadeModel(u32),
+    CullFace(u32),
+    FrontFace(u32),
+    // Section 4.1: fragment operations.
+    Scissor(i32, i32, i32, i32),
+    DepthFunc(u32),
+    // Section 4.2: whole-framebuffer operations.
+    ColorMask([bool; 4]),
+    DepthMask(bool),
+    StencilMask(u32),
+    ClearColor([f32; 4]),
+    ClearDepth(f64),
+    ClearStencil(i32),
+    Clear(u32),
+    // Section 5: enables, hints, display lists.
+    Enable(u32),
+    Disable(u32),
+    Hint(u32, u32),
+    CallList(u32),
+    /// glCallLists: names before the list base is added (added when run).
+    CallLists(Vec<u32>),
+    ListBase(u32),
+}
+
+impl Command {
+    /// May this command appear between Begin and End (GL 1.5 section 2.6.3)?
+    pub fn allowed_in_begin_end(&self) -> bool {
+        matches!(self, Command::Vertex(_) | Command::Color(_) | Command::End | Command::CallList(_) | Command::CallLists(_))
+    }
+}
+
+impl Context {
+    /// Executes one command against the context.
+    pub fn execute(&mut self, cmd: &Command) {
+        if self.in_begin_end() && !cmd.allowed_in_begin_end() {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        use Command::*;
+        match cmd {
+            Begin(mode) => self.begin(*mode),
+            End => self.end(),
+            Vertex(v) => self.vertex(*v),
+            Color(c) => self.current.color = *c,
+            Rect([x1, y1, x2, y2]) => {
+                self.begin(GL_POLYGON);
+                for v in [[*x1, *y1], [*x2, *y1], [*x2, *y2], [*x1, *y2]] {
+                    self.vertex([v[0], v[1], 0.0, 1.0]);
+                }
+                self.end();
+            }
+            MatrixMode(m) => self.matrix_mode(*m),
+            LoadIdentity => self.load_matrix(DMat4::IDENTITY),
+            LoadMatrix(m) => self.load_matrix(*m),
+            MultMatrix(m) => self.mult_matrix(*m),
+            Ortho(p) => self.ortho(*p),
+            Frustum(p) => self.frustum(*p),
+            Translate(t) => self.mult_matrix(DMat4::from_translation((*t).into())),
+            Rotate(angle, axis) => self.rotate(*angle, *axis),
+            Scale(s) => self.mult_matrix(DMat4::from_scale((*s).into())),
+            PushMatrix => self.push_matrix(),
+            PopMatrix => self.pop_matrix(),
+            Viewport(x, y, w, h) => self.set_viewport(*x, *y, *w, *h),
+            DepthRange(n, f) => self.depth_range(*n, *f),
+            ShadeModel(m) => self.set_shade_model(*m),
+            CullFace(m) => self.cull_face(*m),
+            FrontFace(m) => self.front_face(*m),
+            Scissor(x, y, w, h) => self.set_scissor(*x, *y, *w, *h),
+            DepthFunc(f) => self.depth_func(*f),
+            ColorMask(m) => {
+                self.color_buffer.write_mask = *m;
+                self.dirty |= super::validate::DIRTY_FRAGMENT;
+            }
+            DepthMask(m) => {
+                self.depth.write_mask = *m;
+                self.dirty |= super::validate::DIRTY_FRAGMENT;
+            }
+            StencilMask(m) => self.stencil.write_mask = *m,
+            ClearColor(c) => self.color_buffer.clear = c.map(|v| v.clamp(0.0, 1.0)),
+            ClearDepth(d) => self.depth.clear = d.clamp(0.0, 1.0),
+            ClearStencil(s) => self.stencil.clear = *s,
+            Clear(mask) => self.clear(*mask),
+            Enable(cap) => self.set_enabled(*cap, true),
+            Disable(cap) => self.set_enabled(*cap, false),
+            Hint(target, mode) => self.hint(*target, *mode),
+            CallList(n) => self.call_list(*n),
+            CallLists(names) => self.call_lists(names),
+            ListBase(b) => self.lists.base = *b,
+        }
+    }
+}

@@ -1,0 +1,116 @@
+//! A GL context: all of its state, the error flag (GL 1.5 section 2.5), and
+//! the path every display-listable command takes (`submit`).
+
+use super::command::Command;
+use super::enums::*;
+use super::state::*;
+use super::{begin_end, enable, lists, matrix, pixels, validate};
+use crate::framebuffer::{Config, Framebuffer, Present};
+
+pub struct Context {
+    /// The error flag: the first error since the last glGetError.
+    error: u32,
+    pub color_buffer: ColorBufferState,
+    pub depth: DepthState,
+    pub stencil: StencilState,
+    pub viewport: ViewportState,
+    pub scissor: ScissorState,
+    pub polygon: PolygonState,
+    pub shade_model: u32,
+    pub hints: HintState,
+    pub current: CurrentState,
+    /// Capabilities glEnable stores whose rendering is not implemented yet.
+    pub other_caps: enable::OtherCaps,
+    pub transform: matrix::Transform,
+    /// Primitive assembly while between glBegin and glEnd.
+    pub prim: Option<begin_end::Assembly>,
+    pub lists: lists::Lists,
+    pub pixel_store: pixels::PixelStore,
+    /// The framebuffer this context draws into and reads from.
+    pub fb: Framebuffer,
+    /// Where glFlush/glFinish deliver the image (set by the window system).
+    pub surface: Option<Box<dyn Present>>,
+    /// Dirty bits (validate::DIRTY_*): derived state to recompute.
+    pub dirty: u32,
+    pub derived: validate::Derived,
+    /// The viewport and scissor are set to the surface size at the first
+    /// MakeCurrent only (GL 1.5 section 2.11.1; GLX/WGL say the same).
+    pub sized_once: bool,
+}
+
+impl Context {
+    pub fn new(config: Config) -> Context {
+        Context {
+            error: GL_NO_ERROR,
+            color_buffer: Default::default(),
+            depth: Default::default(),
+            stencil: Default::default(),
+            viewport: Default::default(),
+            scissor: Default::default(),
+            polygon: Default::default(),
+            shade_model: GL_SMOOTH,
+            hints: Default::default(),
+            current: Default::default(),
+            other_caps: Default::default(),
+            transform: matrix::Transform::new(),
+            prim: None,
+            lists: Default::default(),
+            pixel_store: Default::default(),
+            fb: Framebuffer::new(config),
+            surface: None,
+            dirty: validate::DIRTY_ALL,
+            derived: validate::Derived::default(),
+            sized_once: false,
+        }
+    }
+
+    /// Records an error unless one is already pending (section 2.5: the
+    /// flag keeps the first error until it is read).
+    pub fn set_error(&mut self, e: u32) {
+        if self.error == GL_NO_ERROR {
+            self.error = e;
+        }
+    }
+
+    /// glGetError.
+    pub fn take_error(&mut self) -> u32 {
+        std::mem::replace(&mut self.error, GL_NO_ERROR)
+    }
+
+    pub fn in_begin_end(&self) -> bool {
+        self.prim.is_some()
+    }
+
+    /// A display-listable command: compiled into the open list, executed,
+    /// or both (GL 1.5 section 5.4).
+    pub fn submit(&mut self, cmd: Command) {
+        match self.lists.compile_mode() {
+            None => self.execute(&cmd),
+            Some(GL_COMPILE) => self.lists.record(cmd),
+            Some(_) => {
+                self.lists.record(cmd.clone());
+                self.execute(&cmd);
+            }
+        }
+    }
+
+    /// glFlush / glFinish: rendering is synchronous, so both just deliver
+    /// the framebuffer to the surface.
+    pub fn flush(&mut self) {
+        if let Some(s) = self.surface.as_mut() {
+            s.present(&self.fb);
+        }
+    }
+
+    /// Called by the window system when the surface is (re)bound with a size.
+    pub fn surface_resized(&mut self, width: i32, height: i32) {
+        if !self.sized_once {
+            self.sized_once = true;
+            self.viewport.width = width;
+            self.viewport.height = height;
+            self.scissor.width = width;
+            self.scissor.height = height;
+        }
+        self.dirty |= validate::DIRTY_ALL;
+    }
+}

@@ -1,0 +1,175 @@
+//! glEnable/glDisable/glIsEnabled (GL 1.5 section 2.10 and table 6.x of
+//! enables), and the small state setters of sections 3.5, 4.1 and 5.6
+//! (cull face, front face, shade model, depth function, scissor, hints).
+
+use super::context::Context;
+use super::enums::*;
+use super::validate::{DIRTY_FRAGMENT, DIRTY_RASTER};
+use crate::render::fragment::CompareFunc;
+use std::collections::BTreeSet;
+
+/// Capabilities that glEnable accepts and remembers, but whose rendering is
+/// not implemented yet (lighting, fog, textures, blending, ...). glIsEnabled
+/// reports them faithfully.
+#[derive(Clone, Debug, Default)]
+pub struct OtherCaps(pub BTreeSet<u32>);
+
+/// Every capability of GL 1.5 that softgl accepts but does not act on yet.
+fn is_stored_cap(cap: u32) -> bool {
+    matches!(
+        cap,
+        GL_POINT_SMOOTH
+            | GL_LINE_SMOOTH
+            | GL_LINE_STIPPLE
+            | GL_POLYGON_SMOOTH
+            | GL_POLYGON_STIPPLE
+            | GL_LIGHTING
+            | GL_COLOR_MATERIAL
+            | GL_FOG
+            | GL_STENCIL_TEST
+            | GL_NORMALIZE
+            | GL_ALPHA_TEST
+            | GL_BLEND
+            | GL_INDEX_LOGIC_OP
+            | GL_COLOR_LOGIC_OP
+            | GL_TEXTURE_GEN_S
+            | GL_TEXTURE_GEN_T
+            | GL_TEXTURE_GEN_R
+            | GL_TEXTURE_GEN_Q
+            | GL_AUTO_NORMAL
+            | GL_TEXTURE_1D
+            | GL_TEXTURE_2D
+            | GL_TEXTURE_3D
+            | GL_TEXTURE_CUBE_MAP
+            | GL_POLYGON_OFFSET_POINT
+            | GL_POLYGON_OFFSET_LINE
+            | GL_POLYGON_OFFSET_FILL
+            | GL_RESCALE_NORMAL
+            | GL_COLOR_SUM
+            | GL_MULTISAMPLE
+            | GL_SAMPLE_ALPHA_TO_COVERAGE
+            | GL_SAMPLE_ALPHA_TO_ONE
+            | GL_SAMPLE_COVERAGE
+            | GL_COLOR_TABLE
+            | GL_POST_CONVOLUTION_COLOR_TABLE
+            | GL_POST_COLOR_MATRIX_COLOR_TABLE
+            | GL_CONVOLUTION_1D
+            | GL_CONVOLUTION_2D
+            | GL_SEPARABLE_2D
+            | GL_HISTOGRAM
+            | GL_MINMAX
+    ) || (GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4).contains(&cap)
+        || (GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4).contains(&cap)
+        || (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&cap)
+        || (GL_LIGHT0..GL_LIGHT0 + 8).contains(&cap)
+}
+
+impl Context {
+    pub fn set_enabled(&mut self, cap: u32, on: bool) {
+        match cap {
+            GL_DEPTH_TEST => {
+                self.depth.test = on;
+                self.dirty |= DIRTY_FRAGMENT;
+            }
+            GL_SCISSOR_TEST => {
+                self.scissor.test = on;
+                self.dirty |= DIRTY_RASTER;
+            }
+            GL_CULL_FACE => {
+                self.polygon.cull = on;
+                self.dirty |= DIRTY_RASTER;
+            }
+            GL_DITHER => self.color_buffer.dither = on,
+            _ if is_stored_cap(cap) => {
+                if on {
+                    self.other_caps.0.insert(cap);
+                } else {
+                    self.other_caps.0.remove(&cap);
+                }
+            }
+            _ => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    /// glIsEnabled; None for an invalid capability.
+    pub fn is_enabled(&self, cap: u32) -> Option<bool> {
+        Some(match cap {
+            GL_DEPTH_TEST => self.depth.test,
+            GL_SCISSOR_TEST => self.scissor.test,
+            GL_CULL_FACE => self.polygon.cull,
+            GL_DITHER => self.color_buffer.dither,
+            _ if is_stored_cap(cap) => self.other_caps.0.contains(&cap),
+            _ => return None,
+        })
+    }
+
+    pub fn cull_face(&mut self, mode: u32) {
+        match mode {
+            GL_FRONT | GL_BACK | GL_FRONT_AND_BACK => {
+                self.polygon.cull_mode = mode;
+                self.dirty |= DIRTY_RASTER;
+            }
+            _ => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    pub fn front_face(&mut self, mode: u32) {
+        match mode {
+            GL_CW | GL_CCW => {
+                self.polygon.front_face = mode;
+                self.dirty |= DIRTY_RASTER;
+            }
+            _ => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    pub fn set_shade_model(&mut self, mode: u32) {
+        match mode {
+            GL_FLAT | GL_SMOOTH => {
+                self.shade_model = mode;
+                self.dirty |= DIRTY_RASTER;
+            }
+            _ => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    pub fn depth_func(&mut self, func: u32) {
+        match CompareFunc::from_gl(func) {
+            Some(f) => {
+                self.depth.func = f;
+                self.dirty |= DIRTY_FRAGMENT;
+            }
+            None => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    pub fn set_scissor(&mut self, x: i32, y: i32, w: i32, h: i32) {
+        if w < 0 || h < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        self.scissor.x = x;
+        self.scissor.y = y;
+        self.scissor.width = w;
+        self.scissor.height = h;
+        self.dirty |= DIRTY_RASTER;
+    }
+
+    /// glHint (section 5.6).
+    pub fn hint(&mut self, target: u32, mode: u32) {
+        if !matches!(mode, GL_FASTEST | GL_NICEST | GL_DONT_CARE) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let h = &mut self.hints;
+        let slot = match target {
+            GL_PERSPECTIVE_CORRECTION_HINT => &mut h.perspective_correction,
+            GL_POINT_SMOOTH_HINT => &mut h.point_smooth,
+            GL_LINE_SMOOTH_HINT => &mut h.line_smooth,
+            GL_POLYGON_SMOOTH_HINT => &mut h.polygon_smooth,
+            GL_FOG_HINT => &mut h.fog,
+            GL_GENERATE_MIPMAP_HINT => &mut h.generate_mipmap,
+            GL_TEXTURE_COMPRESSION_HINT => &mut h.texture_compression,
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+        *slot = mode;
+    }
+}

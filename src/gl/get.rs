@@ -1,0 +1,167 @@
+//! State queries (GL 1.5 section 6.1): glGet* with the spec's type
+//! conversions (6.1.2), glGetString and glGetError.
+
+use super::context::Context;
+use super::enums::*;
+use super::lists::MAX_LIST_NESTING;
+use super::matrix::{MAX_MODELVIEW_DEPTH, MAX_PROJECTION_DEPTH, MAX_TEXTURE_DEPTH};
+use crate::framebuffer::MAX_SIZE;
+use crate::render::setup::SUBPIXEL_BITS;
+
+/// A queried value before conversion to the caller's type.
+pub enum Value {
+    Bools(Vec<bool>),
+    Ints(Vec<i64>),
+    Floats(Vec<f64>),
+    /// Colours, depth range, depth clear value, normals: integers map
+    /// [-1, 1] linearly onto the integer range (section 6.1.2).
+    Normalized(Vec<f64>),
+}
+
+impl Value {
+    pub fn as_f64(&self) -> Vec<f64> {
+        match self {
+            Value::Bools(v) => v.iter().map(|&b| b as i32 as f64).collect(),
+            Value::Ints(v) => v.iter().map(|&i| i as f64).collect(),
+            Value::Floats(v) | Value::Normalized(v) => v.clone(),
+        }
+    }
+
+    pub fn as_i32(&self) -> Vec<i32> {
+        match self {
+            Value::Bools(v) => v.iter().map(|&b| b as i32).collect(),
+            Value::Ints(v) => v.iter().map(|&i| i.clamp(i32::MIN as i64, i32::MAX as i64) as i32).collect(),
+            Value::Floats(v) => v.iter().map(|&f| f.round().clamp(i32::MIN as f64, i32::MAX as f64) as i32).collect(),
+            Value::Normalized(v) => v
+                .iter()
+                .map(|&f| {
+                    let f = f.clamp(-1.0, 1.0);
+                    // Map -1 -> MIN, 1 -> MAX: ((2^32 - 1) f - 1) / 2.
+                    ((4294967295.0 * f - 1.0) / 2.0).round().clamp(i32::MIN as f64, i32::MAX as f64) as i32
+                })
+                .collect(),
+        }
+    }
+
+    pub fn as_bool(&self) -> Vec<bool> {
+        match self {
+            Value::Bools(v) => v.clone(),
+            _ => self.as_f64().iter().map(|&f| f != 0.0).collect(),
+        }
+    }
+}
+
+fn ints<const N: usize>(v: [i64; N]) -> Option<Value> {
+    Some(Value::Ints(v.to_vec()))
+}
+
+impl Context {
+    /// The value of `pname`, or None when it is not a valid query.
+    pub fn get(&mut self, pname: u32) -> Option<Value> {
+        if let Some(on) = self.is_enabled(pname) {
+            return Some(Value::Bools(vec![on]));
+        }
+        let fb = &self.fb.config;
+        let has = |bits: u8| bits as i64;
+        match pname {
+            GL_CURRENT_COLOR => Some(Value::Normalized(self.current.color.iter().map(|&c| c as f64).collect())),
+            GL_COLOR_CLEAR_VALUE => Some(Value::Normalized(self.color_buffer.clear.iter().map(|&c| c as f64).collect())),
+            GL_COLOR_WRITEMASK => Some(Value::Bools(self.color_buffer.write_mask.to_vec())),
+            GL_DEPTH_CLEAR_VALUE => Some(Value::Normalized(vec![self.depth.clear])),
+            GL_DEPTH_FUNC => ints([self.depth.func.to_gl() as i64]),
+            GL_DEPTH_WRITEMASK => Some(Value::Bools(vec![self.depth.write_mask])),
+            GL_DEPTH_RANGE => Some(Value::Normalized(vec![self.viewport.near, self.viewport.far])),
+            GL_STENCIL_CLEAR_VALUE => ints([self.stencil.clear as i64]),
+            GL_STENCIL_WRITEMASK => ints([self.stencil.write_mask as i64]),
+            GL_VIEWPORT => {
+                let v = &self.viewport;
+                ints([v.x as i64, v.y as i64, v.width as i64, v.height as i64])
+            }
+            GL_SCISSOR_BOX => {
+                let s = &self.scissor;
+                ints([s.x as i64, s.y as i64, s.width as i64, s.height as i64])
+            }
+            GL_MATRIX_MODE => ints([self.transform.mode as i64]),
+            GL_MODELVIEW_MATRIX => Some(Value::Floats(self.transform.modelview.top().to_cols_array().to_vec())),
+            GL_PROJECTION_MATRIX => Some(Value::Floats(self.transform.projection.top().to_cols_array().to_vec())),
+            GL_TEXTURE_MATRIX => Some(Value::Floats(self.transform.texture.top().to_cols_array().to_vec())),
+            GL_TRANSPOSE_MODELVIEW_MATRIX => Some(Value::Floats(self.transform.modelview.top().transpose().to_cols_array().to_vec())),
+            GL_TRANSPOSE_PROJECTION_MATRIX => Some(Value::Floats(self.transform.projection.top().transpose().to_cols_array().to_vec())),
+            GL_TRANSPOSE_TEXTURE_MATRIX => Some(Value::Floats(self.transform.texture.top().transpose().to_cols_array().to_vec())),
+            GL_MODELVIEW_STACK_DEPTH => ints([self.transform.modelview.depth() as i64]),
+            GL_PROJECTION_STACK_DEPTH => ints([self.transform.projection.depth() as i64]),
+            GL_TEXTURE_STACK_DEPTH => ints([self.transform.texture.depth() as i64]),
+            GL_MAX_MODELVIEW_STACK_DEPTH => ints([MAX_MODELVIEW_DEPTH as i64]),
+            GL_MAX_PROJECTION_STACK_DEPTH => ints([MAX_PROJECTION_DEPTH as i64]),
+            GL_MAX_TEXTURE_STACK_DEPTH => ints([MAX_TEXTURE_DEPTH as i64]),
+            GL_MAX_VIEWPORT_DIMS => ints([MAX_SIZE as i64, MAX_SIZE as i64]),
+            GL_SUBPIXEL_BITS => ints([SUBPIXEL_BITS as i64]),
+            GL_SHADE_MODEL => ints([self.shade_model as i64]),
+            GL_CULL_FACE_MODE => ints([self.polygon.cull_mode as i64]),
+            GL_FRONT_FACE => ints([self.polygon.front_face as i64]),
+            GL_RED_BITS | GL_GREEN_BITS | GL_BLUE_BITS | GL_ALPHA_BITS => ints([8]),
+            GL_DEPTH_BITS => ints([has(fb.depth_bits)]),
+            GL_STENCIL_BITS => ints([has(fb.stencil_bits)]),
+            GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS | GL_ACCUM_ALPHA_BITS => ints([has(fb.accum_bits)]),
+            GL_RGBA_MODE => Some(Value::Bools(vec![true])),
+            GL_INDEX_MODE | GL_STEREO | GL_DOUBLEBUFFER => Some(Value::Bools(vec![false])),
+            GL_LIST_BASE => ints([self.lists.base as i64]),
+            GL_LIST_INDEX => ints([self.lists.index() as i64]),
+            GL_LIST_MODE => ints([self.lists.compile_mode().unwrap_or(0) as i64]),
+            GL_MAX_LIST_NESTING => ints([MAX_LIST_NESTING as i64]),
+            GL_PERSPECTIVE_CORRECTION_HINT => ints([self.hints.perspective_correction as i64]),
+            GL_POINT_SMOOTH_HINT => ints([self.hints.point_smooth as i64]),
+            GL_LINE_SMOOTH_HINT => ints([self.hints.line_smooth as i64]),
+            GL_POLYGON_SMOOTH_HINT => ints([self.hints.polygon_smooth as i64]),
+            GL_FOG_HINT => ints([self.hints.fog as i64]),
+            GL_GENERATE_MIPMAP_HINT => ints([self.hints.generate_mipmap as i64]),
+            GL_TEXTURE_COMPRESSION_HINT => ints([self.hints.texture_compression as i64]),
+            GL_PACK_SWAP_BYTES => Some(Value::Bools(vec![self.pixel_store.pack.swap_bytes])),
+            GL_PACK_LSB_FIRST => Some(Value::Bools(vec![self.pixel_store.pack.lsb_first])),
+            GL_PACK_ROW_LENGTH => ints([self.pixel_store.pack.row_length as i64]),
+            GL_PACK_SKIP_ROWS => ints([self.pixel_store.pack.skip_rows as i64]),
+            GL_PACK_SKIP_PIXELS => ints([self.pixel_store.pack.skip_pixels as i64]),
+            GL_PACK_ALIGNMENT => ints([self.pixel_store.pack.alignment as i64]),
+            GL_PACK_SKIP_IMAGES => ints([self.pixel_store.pack.skip_images as i64]),
+            GL_PACK_IMAGE_HEIGHT => ints([self.pixel_store.pack.image_height as i64]),
+            GL_UNPACK_SWAP_BYTES => Some(Value::Bools(vec![self.pixel_store.unpack.swap_bytes])),
+            GL_UNPACK_LSB_FIRST => Some(Value::Bools(vec![self.pixel_store.unpack.lsb_first])),
+            GL_UNPACK_ROW_LENGTH => ints([self.pixel_store.unpack.row_length as i64]),
+            GL_UNPACK_SKIP_ROWS => ints([self.pixel_store.unpack.skip_rows as i64]),
+            GL_UNPACK_SKIP_PIXELS => ints([self.pixel_store.unpack.skip_pixels as i64]),
+            GL_UNPACK_ALIGNMENT => ints([self.pixel_store.unpack.alignment as i64]),
+            GL_UNPACK_SKIP_IMAGES => ints([self.pixel_store.unpack.skip_images as i64]),
+            GL_UNPACK_IMAGE_HEIGHT => ints([self.pixel_store.unpack.image_height as i64]),
+            _ => None,
+        }
+    }
+
+    /// glGet*v: converts and stores, or INVALID_ENUM.
+    ///
+    /// # Safety
+    /// `out` must be NULL or have room for the query's values.
+    pub unsafe fn get_into<T>(&mut self, pname: u32, out: *mut T, conv: impl Fn(&Value) -> Vec<T>) {
+        match self.get(pname) {
+            Some(v) => {
+                if out.is_null() {
+                    return;
+                }
+                for (i, x) in conv(&v).into_iter().enumerate() {
+                    out.add(i).write_unaligned(x);
+                }
+            }
+            None => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+}
+
+/// glGetString's strings (NUL-terminated, static: the pointers stay valid).
+pub fn string(name: u32) -> Option<&'static [u8]> {
+    Some(match name {
+        GL_VENDOR => b"softgl\0",
+        GL_RENDERER => b"softgl (Rust software rasterizer)\0",
+        GL_VERSION => concat!("1.1 softgl ", env!("CARGO_PKG_VERSION"), "\0").as_bytes(),
+        GL_EXTENSIONS => b"\0",
+        _ => return None,
+    })
+}

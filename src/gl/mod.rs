@@ -1,0 +1,20 @@
+//! The GL state machine (DESIGN.md, "gl/"): state grouped as the spec's
+//! attribute groups, the error rules, display lists and queries. Setters
+//! only store state and mark dirty bits; [`validate`] derives what the
+//! renderer needs at the next draw.
+
+pub mod begin_end;
+pub mod clear;
+pub mod command;
+pub mod context;
+pub mod enable;
+pub mod enums;
+pub mod get;
+pub mod lists;
+pub mod matrix;
+pub mod pixels;
+pub mod state;
+pub mod validate;
+
+pub use command::Command;
+pub use context::Context;

@@ -1,0 +1,127 @@
+//! GL state, grouped by the spec's attribute groups (GL 1.5 section 6.2,
+//! tables 6.5 onwards), with the initial values the spec gives.
+
+use crate::render::fragment::CompareFunc;
+
+/// GL_COLOR_BUFFER_BIT state (the parts implemented so far).
+#[derive(Clone, Debug)]
+pub struct ColorBufferState {
+    pub clear: [f32; 4],
+    pub write_mask: [bool; 4],
+    pub dither: bool,
+}
+
+impl Default for ColorBufferState {
+    fn default() -> Self {
+        ColorBufferState { clear: [0.0; 4], write_mask: [true; 4], dither: true }
+    }
+}
+
+/// GL_DEPTH_BUFFER_BIT state.
+#[derive(Clone, Debug)]
+pub struct DepthState {
+    pub test: bool,
+    pub func: CompareFunc,
+    pub write_mask: bool,
+    pub clear: f64,
+}
+
+impl Default for DepthState {
+    fn default() -> Self {
+        DepthState { test: false, func: CompareFunc::Less, write_mask: true, clear: 1.0 }
+    }
+}
+
+/// GL_STENCIL_BUFFER_BIT state (the parts implemented so far).
+#[derive(Clone, Debug)]
+pub struct StencilState {
+    pub test: bool,
+    pub clear: i32,
+    pub write_mask: u32,
+}
+
+impl Default for StencilState {
+    fn default() -> Self {
+        StencilState { test: false, clear: 0, write_mask: !0 }
+    }
+}
+
+/// GL_VIEWPORT_BIT state.
+#[derive(Clone, Debug)]
+pub struct ViewportState {
+    pub x: i32,
+    pub y: i32,
+    pub width: i32,
+    pub height: i32,
+    pub near: f64,
+    pub far: f64,
+}
+
+impl Default for ViewportState {
+    fn default() -> Self {
+        ViewportState { x: 0, y: 0, width: 0, height: 0, near: 0.0, far: 1.0 }
+    }
+}
+
+/// GL_SCISSOR_BIT state.
+#[derive(Clone, Debug, Default)]
+pub struct ScissorState {
+    pub test: bool,
+    pub x: i32,
+    pub y: i32,
+    pub width: i32,
+    pub height: i32,
+}
+
+/// GL_POLYGON_BIT state (the parts implemented so far).
+#[derive(Clone, Debug)]
+pub struct PolygonState {
+    pub cull: bool,
+    pub cull_mode: u32,
+    pub front_face: u32,
+}
+
+impl Default for PolygonState {
+    fn default() -> Self {
+        PolygonState { cull: false, cull_mode: super::enums::GL_BACK, front_face: super::enums::GL_CCW }
+    }
+}
+
+/// GL_HINT_BIT state: target -> mode.
+#[derive(Clone, Debug)]
+pub struct HintState {
+    pub perspective_correction: u32,
+    pub point_smooth: u32,
+    pub line_smooth: u32,
+    pub polygon_smooth: u32,
+    pub fog: u32,
+    pub generate_mipmap: u32,
+    pub texture_compression: u32,
+}
+
+impl Default for HintState {
+    fn default() -> Self {
+        let d = super::enums::GL_DONT_CARE;
+        HintState {
+            perspective_correction: d,
+            point_smooth: d,
+            line_smooth: d,
+            polygon_smooth: d,
+            fog: d,
+            generate_mipmap: d,
+            texture_compression: d,
+        }
+    }
+}
+
+/// Current values (GL_CURRENT_BIT): what the next vertex takes.
+#[derive(Clone, Debug)]
+pub struct CurrentState {
+    pub color: [f32; 4],
+}
+
+impl Default for CurrentState {
+    fn default() -> Self {
+        CurrentState { color: [1.0; 4] }
+    }
+}

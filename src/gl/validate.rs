@@ -1,0 +1,104 @@
+//! Validation (DESIGN.md, "State, validation, specialization"): setters mark
+//! dirty bits; the first draw after a change recomputes the derived state
+//! the renderer reads, once.
+
+use super::context::Context;
+use super::enums::*;
+use crate::framebuffer::Rect;
+use crate::render::{fragment::FragmentState, Cull, RenderState};
+use glam::Mat4;
+
+pub const DIRTY_TRANSFORM: u32 = 1 << 0;
+pub const DIRTY_VIEWPORT: u32 = 1 << 1;
+pub const DIRTY_FRAGMENT: u32 = 1 << 2;
+pub const DIRTY_RASTER: u32 = 1 << 3;
+pub const DIRTY_ALL: u32 = !0;
+
+/// State derived from GL state for the renderer.
+#[derive(Clone, Debug)]
+pub struct Derived {
+    /// Projection * modelview, in f32 for the vertex stage.
+    pub mvp: Mat4,
+    pub render: RenderState,
+}
+
+impl Default for Derived {
+    fn default() -> Self {
+        Derived {
+            mvp: Mat4::IDENTITY,
+            render: RenderState {
+                viewport_scale: [0.0; 3],
+                viewport_offset: [0.0; 3],
+                draw_rect: Rect::default(),
+                cull: Cull::None,
+                front_ccw: true,
+                flat: false,
+                fragment: FragmentState {
+                    depth_test: false,
+                    depth_func: crate::render::fragment::CompareFunc::Less,
+                    depth_write: true,
+                    color_mask: [true; 4],
+                },
+            },
+        }
+    }
+}
+
+impl Context {
+    /// The rectangle glClear and drawing may touch: the surface, cut by the
+    /// scissor box when the scissor test is on.
+    pub fn scissored_surface(&self) -> Rect {
+        let surface = Rect::new(0, 0, self.fb.width as i32, self.fb.height as i32);
+        if self.scissor.test {
+            let s = &self.scissor;
+            surface.intersect(Rect::new(s.x, s.y, s.width, s.height))
+        } else {
+            surface
+        }
+    }
+
+    /// Recomputes whatever is dirty.
+    pub fn validate(&mut self) {
+        if self.dirty == 0 {
+            return;
+        }
+        let d = self.dirty;
+        self.dirty = 0;
+        let surface = self.scissored_surface();
+        if d & DIRTY_TRANSFORM != 0 {
+            let m = *self.transform.projection.top() * *self.transform.modelview.top();
+            self.derived.mvp = m.as_mat4();
+        }
+        let rs = &mut self.derived.render;
+        if d & DIRTY_VIEWPORT != 0 {
+            let v = &self.viewport;
+            let (w, h) = (v.width as f64, v.height as f64);
+            rs.viewport_scale = [w / 2.0, h / 2.0, (v.far - v.near) / 2.0];
+            rs.viewport_offset = [v.x as f64 + w / 2.0, v.y as f64 + h / 2.0, (v.far + v.near) / 2.0];
+        }
+        if d & (DIRTY_VIEWPORT | DIRTY_RASTER) != 0 {
+            let v = &self.viewport;
+            rs.draw_rect = Rect::new(v.x, v.y, v.width, v.height).intersect(surface);
+            rs.cull = if !self.polygon.cull {
+                Cull::None
+            } else {
+                match self.polygon.cull_mode {
+                    GL_FRONT => Cull::Front,
+                    GL_BACK => Cull::Back,
+                    _ => Cull::All,
+                }
+            };
+            rs.front_ccw = self.polygon.front_face == GL_CCW;
+            rs.flat = self.shade_model == GL_FLAT;
+        }
+        if d & DIRTY_FRAGMENT != 0 {
+            let has_depth = self.fb.has_depth();
+            rs.fragment = FragmentState {
+                depth_test: self.depth.test && has_depth,
+                depth_func: self.depth.func,
+                depth_write: self.depth.write_mask,
+                color_mask: self.color_buffer.write_mask,
+            };
+        }
+    }
+}

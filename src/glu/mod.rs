@@ -1,0 +1,8 @@
+//! GLU 1.3 (DESIGN.md, "glu/"), written as a client of GL: it calls the
+//! public GL entry points as any program would, never context internals.
+//!
+//! Implemented so far: the matrix utilities ([`matrix`]) and the strings
+//! ([`strings`]). Tessellator, quadrics, mipmaps and NURBS are issue 6.
+
+pub mod matrix;
+pub mod strings;

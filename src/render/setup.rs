@@ -1,0 +1,128 @@
+//! Triangle setup: window coordinates, snapping to fixed point, facing and
+//! culling (GL 1.5 section 3.5.1), and the plane equations from which every
+//! fragment's depth and colour are interpolated (section 3.5.1, equation 3.9:
+//! perspective-correct through 1/w).
+//!
+//! Precision: vertices snap to 1/256 pixel (SUBPIXEL_BITS = 8). After
+//! clipping (`clip`), window coordinates lie within (GUARD + 2) * MAX_SIZE
+//! < 2^19 pixels of the origin, so snapped coordinates fit in 27 bits and
+//! edge-function products in 55 bits: i64 arithmetic is exact, and the
+//! coverage decision is exact for every pixel. Attribute planes are f64.
+
+use super::raster;
+use super::vertex::ClipVertex;
+use super::{Cull, RenderState};
+use glam::Vec4;
+
+pub const SUBPIXEL_BITS: u32 = 8;
+pub const ONE: i64 = 1 << SUBPIXEL_BITS;
+
+/// A vertex after perspective division and the viewport transform.
+#[derive(Clone, Copy, Debug)]
+pub struct WindowVertex {
+    pub x: f64,
+    pub y: f64,
+    /// Window depth in [0, 1] (before conversion to the depth buffer's bits).
+    pub z: f64,
+    /// 1 / w_clip.
+    pub q: f64,
+    pub color: Vec4,
+}
+
+#[inline]
+pub fn to_window(rs: &RenderState, v: &ClipVertex) -> WindowVertex {
+    let q = 1.0 / v.pos.w as f64;
+    let [sx, sy, sz] = rs.viewport_scale;
+    let [ox, oy, oz] = rs.viewport_offset;
+    WindowVertex {
+        x: ox + sx * (v.pos.x as f64 * q),
+        y: oy + sy * (v.pos.y as f64 * q),
+        z: oz + sz * (v.pos.z as f64 * q),
+        q,
+        color: v.color,
+    }
+}
+
+/// a(x, y) = a0 + dx (x - x0) + dy (y - y0), around the setup's origin.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Plane {
+    pub a0: f64,
+    pub dx: f64,
+    pub dy: f64,
+}
+
+/// What the fragment stage needs to shade a triangle's spans.
+#[derive(Clone, Debug)]
+pub struct TriangleSetup {
+    /// Origin of the planes (vertex 0, snapped).
+    pub x0: f64,
+    pub y0: f64,
+    pub z: Plane,
+    /// 1/w plane; unused when `perspective` is false.
+    pub q: Plane,
+    /// Colour planes: of c/w when perspective, else of c.
+    pub color: [Plane; 4],
+    pub perspective: bool,
+    /// Flat shading: the provoking vertex's colour, already converted.
+    pub flat: Option<[u8; 4]>,
+    pub front_facing: bool,
+}
+
+/// Sets up and rasterizes one triangle in window coordinates.
+pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &[WindowVertex; 3], flat_color: Vec4) {
+    let snap = |c: f64| (c * ONE as f64).round() as i64;
+    let fx = [snap(w[0].x), snap(w[1].x), snap(w[2].x)];
+    let fy = [snap(w[0].y), snap(w[1].y), snap(w[2].y)];
+    let area = (fx[1] - fx[0]) * (fy[2] - fy[0]) - (fx[2] - fx[0]) * (fy[1] - fy[0]);
+    if area == 0 {
+        return;
+    }
+    // Window y points up, so counter-clockwise is positive area.
+    let ccw = area > 0;
+    let front_facing = ccw == rs.front_ccw;
+    match rs.cull {
+        Cull::Front if front_facing => return,
+        Cull::Back if !front_facing => return,
+        Cull::All => return,
+        _ => {}
+    }
+    // Rasterize with positive orientation.
+    let order = if ccw { [0, 1, 2] } else { [0, 2, 1] };
+    let ex = order.map(|i| fx[i]);
+    let ey = order.map(|i| fy[i]);
+    let v = order.map(|i| &w[i]);
+
+    let setup = planes(rs, v, ex, ey, flat_color, front_facing);
+    raster::triangle(rs, fb, ex, ey, &setup);
+}
+
+fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, front_facing: bool) -> TriangleSetup {
+    let inv = 1.0 / ONE as f64;
+    let x = ex.map(|c| c as f64 * inv);
+    let y = ey.map(|c| c as f64 * inv);
+    let (dx1, dy1, dx2, dy2) = (x[1] - x[0], y[1] - y[0], x[2] - x[0], y[2] - y[0]);
+    let det = dx1 * dy2 - dx2 * dy1;
+    let plane = |a: [f64; 3]| {
+        let (da1, da2) = (a[1] - a[0], a[2] - a[0]);
+        Plane { a0: a[0], dx: (da1 * dy2 - da2 * dy1) / det, dy: (da2 * dx1 - da1 * dx2) / det }
+    };
+    let perspective = !(v[0].q == v[1].q && v[1].q == v[2].q);
+    let q = [v[0].q, v[1].q, v[2].q];
+    let (flat, color) = if rs.flat {
+        (Some(super::fragment::color_to_u8(flat_color)), [Plane::default(); 4])
+    } else {
+        let scale = |i: usize| if perspective { q[i] } else { 1.0 };
+        let c = |ch: usize| plane([0, 1, 2].map(|i| v[i].color[ch] as f64 * scale(i)));
+        (None, [c(0), c(1), c(2), c(3)])
+    };
+    TriangleSetup {
+        x0: x[0],
+        y0: y[0],
+        z: plane([v[0].z, v[1].z, v[2].z]),
+        q: plane(q),
+        color,
+        perspective,
+        flat,
+        front_facing,
+    }
+}

@@ -1,0 +1,21 @@
+//! Vertices after the vertex stage: clip coordinates and the attributes
+//! rasterization interpolates.
+
+use glam::Vec4;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ClipVertex {
+    /// Clip coordinates (x, y, z, w).
+    pub pos: Vec4,
+    /// Primary colour, RGBA in [0, 1] (clamped at interpolation).
+    pub color: Vec4,
+}
+
+impl ClipVertex {
+    /// The vertex a fraction `t` of the way from `a` to `b` (clip-space
+    /// linear interpolation, GL 1.5 section 2.12 equation 2.6).
+    #[inline]
+    pub fn lerp(a: &ClipVertex, b: &ClipVertex, t: f32) -> ClipVertex {
+        ClipVertex { pos: a.pos + (b.pos - a.pos) * t, color: a.color + (b.color - a.color) * t }
+    }
+}
