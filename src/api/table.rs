@@ -47,7 +47,7 @@ super::entry_points! {
 
     // ---- gl.h ----
     exec glGetError() -> GLenum { |c| c.take_error() }
-    list glBegin(mode: GLenum) { |_c| Command::Begin(mode) }
+    list["GL_POINTS, GL_LINES, GL_LINE_STRIP and GL_LINE_LOOP are accepted but not rasterized yet (issue 3)"] glBegin(mode: GLenum) { |_c| Command::Begin(mode) }
     list glEnd() { |_c| Command::End }
     todo glEdgeFlag(flag: GLboolean);
     todo glEdgeFlagv(flag: *const GLboolean);
@@ -250,8 +250,8 @@ super::entry_points! {
     todo glPolygonStipple(mask: *const GLubyte);
     todo glPolygonMode(face: GLenum, mode: GLenum);
     todo glPolygonOffset(factor: GLfloat, units: GLfloat);
-    client glPixelStoref(pname: GLenum, param: GLfloat) { |c| c.pixel_store(pname, param as f64) }
-    client glPixelStorei(pname: GLenum, param: GLint) { |c| c.pixel_store(pname, param as f64) }
+    client["as glPixelStorei"] glPixelStoref(pname: GLenum, param: GLfloat) { |c| c.pixel_store(pname, param as f64) }
+    client["pack modes apply to glReadPixels; unpack modes are stored for issue 5"] glPixelStorei(pname: GLenum, param: GLint) { |c| c.pixel_store(pname, param as f64) }
     todo glPixelTransferf(pname: GLenum, param: GLfloat);
     todo glPixelTransferi(pname: GLenum, param: GLint);
     todo glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat);
@@ -297,8 +297,8 @@ super::entry_points! {
     todo glIndexMask(mask: GLuint);
     list glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) { |_c| Command::ColorMask([truth(red), truth(green), truth(blue), truth(alpha)]) }
     list glDepthMask(flag: GLboolean) { |_c| Command::DepthMask(truth(flag)) }
-    list glStencilMask(mask: GLuint) { |_c| Command::StencilMask(mask) }
-    list glClear(mask: GLbitfield) { |_c| Command::Clear(mask) }
+    list["applies to glClear; the stencil test arrives with issue 3"] glStencilMask(mask: GLuint) { |_c| Command::StencilMask(mask) }
+    list["GL_ACCUM_BUFFER_BIT is accepted but the accumulation buffer is not cleared yet (issue 3)"] glClear(mask: GLbitfield) { |_c| Command::Clear(mask) }
     list glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) { |_c| Command::ClearColor([red, green, blue, alpha]) }
     todo glClearIndex(c: GLfloat);
     list glClearDepth(depth: GLclampd) { |_c| Command::ClearDepth(depth) }
@@ -306,7 +306,7 @@ super::entry_points! {
     todo glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
     todo glAccum(op: GLenum, value: GLfloat);
     todo glReadBuffer(mode: GLenum);
-    exec glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
+    exec["packed pixel types (3_3_2 .. 2_10_10_10_REV) and GL_BITMAP are not packed yet; pixel transfer is not applied (issue 5)"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
     todo glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum);
     todo glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble);
     todo glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat);
@@ -346,14 +346,14 @@ super::entry_points! {
     exec glDeleteLists(list: GLuint, range: GLsizei) { |c| c.delete_lists(list, range) }
     exec glFlush() { |c| c.flush() }
     exec glFinish() { |c| c.flush() }
-    list glHint(target: GLenum, mode: GLenum) { |_c| Command::Hint(target, mode) }
-    list glEnable(cap: GLenum) { |_c| Command::Enable(cap) }
-    list glDisable(cap: GLenum) { |_c| Command::Disable(cap) }
-    exec glIsEnabled(cap: GLenum) -> GLboolean { |c| match c.is_enabled(cap) { Some(b) => gl_bool(b), None => { c.set_error(GL_INVALID_ENUM); 0 } } }
-    exec glGetBooleanv(pname: GLenum, params: *mut GLboolean) { |c| c.get_into(pname, params, |v| v.as_bool().into_iter().map(gl_bool).collect()) }
-    exec glGetIntegerv(pname: GLenum, params: *mut GLint) { |c| c.get_into(pname, params, get::Value::as_i32) }
-    exec glGetFloatv(pname: GLenum, params: *mut GLfloat) { |c| c.get_into(pname, params, |v| v.as_f64().into_iter().map(|x| x as f32).collect()) }
-    exec glGetDoublev(pname: GLenum, params: *mut GLdouble) { |c| c.get_into(pname, params, get::Value::as_f64) }
+    list["stored; no hint changes rendering yet"] glHint(target: GLenum, mode: GLenum) { |_c| Command::Hint(target, mode) }
+    list["capabilities other than DEPTH_TEST, SCISSOR_TEST, CULL_FACE and DITHER are stored and queryable but do not affect rendering yet"] glEnable(cap: GLenum) { |_c| Command::Enable(cap) }
+    list["see glEnable"] glDisable(cap: GLenum) { |_c| Command::Disable(cap) }
+    exec["as glEnable"] glIsEnabled(cap: GLenum) -> GLboolean { |c| match c.is_enabled(cap) { Some(b) => gl_bool(b), None => { c.set_error(GL_INVALID_ENUM); 0 } } }
+    exec["as glGetIntegerv"] glGetBooleanv(pname: GLenum, params: *mut GLboolean) { |c| c.get_into(pname, params, |v| v.as_bool().into_iter().map(gl_bool).collect()) }
+    exec["answers the state implemented so far; other names give GL_INVALID_ENUM"] glGetIntegerv(pname: GLenum, params: *mut GLint) { |c| c.get_into(pname, params, get::Value::as_i32) }
+    exec["as glGetIntegerv"] glGetFloatv(pname: GLenum, params: *mut GLfloat) { |c| c.get_into(pname, params, |v| v.as_f64().into_iter().map(|x| x as f32).collect()) }
+    exec["as glGetIntegerv"] glGetDoublev(pname: GLenum, params: *mut GLdouble) { |c| c.get_into(pname, params, get::Value::as_f64) }
     todo glGetPointerv(pname: GLenum, params: *mut *mut c_void);
     todo glGetClipPlane(plane: GLenum, equation: *mut GLdouble);
     todo glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat);
@@ -593,9 +593,9 @@ super::entry_points! {
     todo gluEndTrim(nurb: *mut GLUnurbs);
 
     // ---- osmesa.h ----
-    free OSMesaCreateContext(format: GLenum, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_ext(format, 24, 8, 0, sharelist) }
-    free OSMesaCreateContextExt(format: GLenum, depthBits: GLint, stencilBits: GLint, accumBits: GLint, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_ext(format, depthBits, stencilBits, accumBits, sharelist) }
-    free OSMesaCreateContextAttribs(attribList: *const i32, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_attribs(attribList, sharelist) }
+    free["the share-list argument is accepted but lists are not shared yet"] OSMesaCreateContext(format: GLenum, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_ext(format, 24, 8, 0, sharelist) }
+    free["as OSMesaCreateContext"] OSMesaCreateContextExt(format: GLenum, depthBits: GLint, stencilBits: GLint, accumBits: GLint, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_ext(format, depthBits, stencilBits, accumBits, sharelist) }
+    free["as OSMesaCreateContext"] OSMesaCreateContextAttribs(attribList: *const i32, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_attribs(attribList, sharelist) }
     free OSMesaDestroyContext(ctx: *mut OsContext) { osmesa::destroy_context(ctx) }
     free OSMesaMakeCurrent(ctx: *mut OsContext, buffer: *mut c_void, type_: GLenum, width: GLsizei, height: GLsizei) -> GLboolean { gl_bool(osmesa::make_current(ctx, buffer, type_, width, height)) }
     free OSMesaGetCurrentContext() -> *mut OsContext { osmesa::current_context() }

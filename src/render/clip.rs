@@ -122,3 +122,60 @@ fn clip_polygon_to_plane(poly: &mut Polygon, plane: &fn(&glam::Vec4) -> f32) {
     }
     std::mem::swap(verts, scratch);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec4;
+
+    fn v(p: [f32; 4]) -> ClipVertex {
+        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE }
+    }
+
+    /// Two triangles sharing the edge (a, b), traversed in opposite
+    /// directions, get bit-identical new vertices where clipping cuts it.
+    #[test]
+    fn shared_edges_get_identical_clip_vertices() {
+        let mut seed = 1u64;
+        let mut r = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 40) as f32 / (1u64 << 24) as f32 - 0.5) * 60.0
+        };
+        let mut checked = 0;
+        for _ in 0..2000 {
+            let a = v([r(), r(), r(), r()]);
+            let b = v([r(), r(), r(), r()]);
+            let c = v([r(), r(), r(), r()]);
+            let d = v([r(), r(), r(), r()]);
+            let (mut p1, mut p2) = (Polygon::new(), Polygon::new());
+            let o1 = clip_triangle([&a, &b, &c], &mut p1);
+            let o2 = clip_triangle([&b, &a, &d], &mut p2);
+            if !matches!(o1, Outcome::Clipped) || !matches!(o2, Outcome::Clipped) {
+                continue;
+            }
+            // Points of each result that lie on segment ab (not endpoints).
+            let on_ab = |p: &Polygon| -> Vec<[u32; 4]> {
+                p.verts
+                    .iter()
+                    .filter(|x| x.pos != a.pos && x.pos != b.pos)
+                    .filter(|x| {
+                        let (ab, ax) = (b.pos - a.pos, x.pos - a.pos);
+                        let t = ax.dot(ab) / ab.dot(ab);
+                        (a.pos + ab * t - x.pos).length() < 1e-3 * ab.length()
+                    })
+                    .map(|x| x.pos.to_array().map(f32::to_bits))
+                    .collect()
+            };
+            let (s1, s2) = (on_ab(&p1), on_ab(&p2));
+            for x in &s1 {
+                let near_miss = s2.iter().any(|y| {
+                    let (fx, fy) = (x.map(f32::from_bits), y.map(f32::from_bits));
+                    y != x && (0..4).all(|i| (fx[i] - fy[i]).abs() < 1e-3)
+                });
+                assert!(!near_miss, "near-identical but different clip vertices {x:?} on a shared edge");
+                checked += 1;
+            }
+        }
+        assert!(checked > 50, "too few shared-edge clips exercised: {checked}");
+    }
+}
