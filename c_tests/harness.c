@@ -241,6 +241,15 @@ void h_check_golden(const char *name, int tol, int max_bad)
             printf("  blessed %s (look at it before committing)\n", golden);
         return;
     }
+    {
+        FILE *g = fopen(golden, "rb");
+        if (!g) {
+            fail("golden %s does not exist: create it with SOFTGL_BLESS=1 c_tests/run.sh %s, "
+                 "look at it, and commit it", golden, test_name());
+            return;
+        }
+        fclose(g);
+    }
     snprintf(cmd, sizeof cmd, "'%s' '%s' '%s' --tol %d --max-bad %d", imgcmp,
              pam, golden, tol, max_bad);
     fflush(stdout);

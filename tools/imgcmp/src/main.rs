@@ -15,10 +15,18 @@ use image::RgbaImage;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: imgcmp ACTUAL GOLDEN [--tol N] [--max-bad K]\n       imgcmp --to-png IN OUT.png";
+const USAGE: &str =
+    "usage: imgcmp ACTUAL GOLDEN [--tol N] [--max-bad K]\n       imgcmp --to-png IN OUT.png";
 
 fn load(path: &Path) -> Result<RgbaImage, String> {
-    let img = image::open(path).map_err(|e| format!("{}: {}", path.display(), e))?;
+    let err = |e: &dyn std::fmt::Display| format!("{}: {}", path.display(), e);
+    // Guess the format from the contents, so the file name does not matter.
+    let img = image::ImageReader::open(path)
+        .map_err(|e| err(&e))?
+        .with_guessed_format()
+        .map_err(|e| err(&e))?
+        .decode()
+        .map_err(|e| err(&e))?;
     Ok(img.to_rgba8())
 }
 
@@ -62,7 +70,12 @@ fn compare(a: &RgbaImage, g: &RgbaImage, tol: u8) -> Diff {
     }
     let n = f64::from(a.width()) * f64::from(a.height()) * 4.0;
     let rmse = if n > 0.0 { (sum_sq / n).sqrt() } else { 0.0 };
-    Diff { bad, max_diff, rmse, first_bad }
+    Diff {
+        bad,
+        max_diff,
+        rmse,
+        first_bad,
+    }
 }
 
 fn parse_num(args: &[String], i: usize, flag: &str) -> Result<u64, String> {
