@@ -105,8 +105,11 @@ int h_height(void)
 
 void h_read(unsigned char *rgba)
 {
+    GLint align = 4;
+    glGetIntegerv(GL_PACK_ALIGNMENT, &align); /* leave the test's state alone */
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, h_width(), h_height(), GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glPixelStorei(GL_PACK_ALIGNMENT, align);
 }
 
 void h_expect_pixel(int x, int y, int r, int g, int b, int a, int tol,
