@@ -41,7 +41,7 @@ exports-test: lib
 	sh tools/check_exports.sh
 
 c-test: lib
-	sh c_tests/run.sh
+	bash c_tests/run.sh
 
 demo: lib
 	sh demo/run.sh

@@ -264,7 +264,8 @@ pub unsafe fn make_current(ctx: *mut OsContext, buffer: *mut c_void, ty: u32, wi
         return false;
     }
     let type_ok = match os.format {
-        OSMESA_RGB_565 => matches!(ty, GL_UNSIGNED_SHORT_5_6_5 | GL_UNSIGNED_BYTE),
+        // As in Mesa: 5-6-5 pixels come only as GL_UNSIGNED_SHORT_5_6_5.
+        OSMESA_RGB_565 => ty == GL_UNSIGNED_SHORT_5_6_5,
         _ => matches!(ty, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_FLOAT),
     };
     if !type_ok {
