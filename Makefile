@@ -10,7 +10,7 @@ CC ?= cc
 LIB := build/lib
 SO := target/release/libsoftgl.so
 
-.PHONY: all lib test rust-test c-test exports-test demo coverage deps clean
+.PHONY: all lib test rust-test c-test exports-test demo coverage coverage-check deps clean
 
 all: lib
 
@@ -32,7 +32,7 @@ lib:
 deps:
 	@sh tools/install_deps.sh
 
-test: deps lib rust-test exports-test c-test
+test: deps lib rust-test exports-test coverage-check c-test
 
 rust-test:
 	$(CARGO) test --release --workspace
@@ -48,6 +48,9 @@ demo: lib
 
 coverage:
 	$(CARGO) run --release --quiet --bin coverage -- README.md
+
+coverage-check:
+	$(CARGO) run --release --quiet --bin coverage -- --check README.md
 
 clean:
 	rm -rf build out
