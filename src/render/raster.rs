@@ -47,6 +47,24 @@ fn floor_div(n: i64, d: i64) -> i64 {
     n.div_euclid(d)
 }
 
+/// The pixels [lo, hi) of row `py` inside all three edges, within [x0, x1).
+#[inline]
+fn span(edges: &[Edge; 3], py: i64, x0: i64, x1: i64) -> (i64, i64) {
+    let (mut lo, mut hi) = (x0, x1);
+    for e in edges {
+        // a * px + t >= 0
+        let t = e.b * py + e.c;
+        if e.a > 0 {
+            lo = lo.max(-floor_div(t, e.a));
+        } else if e.a < 0 {
+            hi = hi.min(floor_div(t, -e.a) + 1);
+        } else if t < 0 {
+            hi = lo;
+        }
+    }
+    (lo, hi)
+}
+
 pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup) {
     let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
     let r = rs.draw_rect;
@@ -58,19 +76,7 @@ pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3]
     let row0 = floor_div(ymin - half, ONE).max(r.y0 as i64);
     let row1 = (floor_div(ymax - half, ONE) + 1).min(r.y1 as i64);
     for py in row0..row1 {
-        let mut lo = r.x0 as i64;
-        let mut hi = r.x1 as i64; // exclusive
-        for e in &edges {
-            // a * px + t >= 0
-            let t = e.b * py + e.c;
-            if e.a > 0 {
-                lo = lo.max(-floor_div(t, e.a));
-            } else if e.a < 0 {
-                hi = hi.min(floor_div(t, -e.a) + 1);
-            } else if t < 0 {
-                hi = lo;
-            }
-        }
+        let (lo, hi) = span(&edges, py, r.x0 as i64, r.x1 as i64);
         if lo < hi {
             fragment::shade_span(&rs.fragment, setup, fb, py as usize, lo as usize, hi as usize);
         }
@@ -104,18 +110,7 @@ mod tests {
             for py in 0..32i64 {
                 for px in 0..32i64 {
                     let inside = edges.iter().all(|e| e.a * px + e.b * py + e.c >= 0);
-                    let mut lo = 0i64;
-                    let mut hi = 32i64;
-                    for e in &edges {
-                        let t = e.b * py + e.c;
-                        if e.a > 0 {
-                            lo = lo.max(-floor_div(t, e.a));
-                        } else if e.a < 0 {
-                            hi = hi.min(floor_div(t, -e.a) + 1);
-                        } else if t < 0 {
-                            hi = lo;
-                        }
-                    }
+                    let (lo, hi) = span(&edges, py, 0, 32);
                     assert_eq!(inside, px >= lo && px < hi, "pixel {px},{py} of {x:?} {y:?}");
                 }
             }
