@@ -47,7 +47,7 @@ super::entry_points! {
 
     // ---- gl.h ----
     exec glGetError() -> GLenum { |c| c.take_error() }
-    list["GL_POINTS, GL_LINES, GL_LINE_STRIP and GL_LINE_LOOP are accepted but not rasterized yet (issue 3)"] glBegin(mode: GLenum) { |_c| Command::Begin(mode) }
+    list["GL_LINE_SMOOTH and GL_POINT_SMOOTH are not antialiased yet (issue 3)"] glBegin(mode: GLenum) { |_c| Command::Begin(mode) }
     list glEnd() { |_c| Command::End }
     todo glEdgeFlag(flag: GLboolean);
     todo glEdgeFlagv(flag: *const GLboolean);
@@ -242,9 +242,9 @@ super::entry_points! {
     todo glLightModeliv(pname: GLenum, params: *const GLint);
     todo glColorMaterial(face: GLenum, mode: GLenum);
     list glShadeModel(mode: GLenum) { |_c| Command::ShadeModel(mode) }
-    todo glPointSize(size: GLfloat);
-    todo glLineWidth(width: GLfloat);
-    todo glLineStipple(factor: GLint, pattern: GLushort);
+    list["GL_POINT_SMOOTH draws square points; no point parameters"] glPointSize(size: GLfloat) { |_c| Command::PointSize(size) }
+    list["GL_LINE_SMOOTH draws aliased lines"] glLineWidth(width: GLfloat) { |_c| Command::LineWidth(width) }
+    list glLineStipple(factor: GLint, pattern: GLushort) { |_c| Command::LineStipple(factor, pattern) }
     list glCullFace(mode: GLenum) { |_c| Command::CullFace(mode) }
     list glFrontFace(mode: GLenum) { |_c| Command::FrontFace(mode) }
     todo glPolygonStipple(mask: *const GLubyte);

@@ -20,7 +20,6 @@ fn is_stored_cap(cap: u32) -> bool {
         cap,
         GL_POINT_SMOOTH
             | GL_LINE_SMOOTH
-            | GL_LINE_STIPPLE
             | GL_POLYGON_SMOOTH
             | GL_POLYGON_STIPPLE
             | GL_LIGHTING
@@ -80,6 +79,7 @@ impl Context {
                 self.dirty |= DIRTY_RASTER;
             }
             GL_DITHER => self.color_buffer.dither = on,
+            GL_LINE_STIPPLE => self.line.stipple = on,
             _ if is_stored_cap(cap) => {
                 if on {
                     self.other_caps.0.insert(cap);
@@ -98,6 +98,7 @@ impl Context {
             GL_SCISSOR_TEST => self.scissor.test,
             GL_CULL_FACE => self.polygon.cull,
             GL_DITHER => self.color_buffer.dither,
+            GL_LINE_STIPPLE => self.line.stipple,
             _ if is_stored_cap(cap) => self.other_caps.0.contains(&cap),
             _ => return None,
         })

@@ -135,3 +135,25 @@ pub fn shade_span(fs: &FragmentState, t: &TriangleSetup, fb: &mut Framebuffer, y
         }
     }
 }
+
+/// Shades one fragment of a point or line at pixel (x, y), already inside
+/// the draw rectangle, with its window depth `z` (in [0, 1]) and colour,
+/// through the same per-fragment operations as `shade_span`.
+pub fn shade_fragment(fs: &FragmentState, fb: &mut Framebuffer, x: usize, y: usize, z: f64, color: [u8; 4]) {
+    let i = fb.index(x, y);
+    if fs.depth_test {
+        let z = depth_to_fixed(z);
+        if !fs.depth_func.test(z, fb.depth[i]) {
+            return;
+        }
+        if fs.depth_write {
+            fb.depth[i] = z;
+        }
+    }
+    let dst = &mut fb.color[i];
+    for ch in 0..4 {
+        if fs.color_mask[ch] {
+            dst[ch] = color[ch];
+        }
+    }
+}
