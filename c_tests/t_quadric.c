@@ -203,6 +203,22 @@ int main(void)
     gluQuadricOrientation(q, GLU_OUTSIDE);
     glDisable(GL_CULL_FACE);
 
+    /* The line and point styles go through GL without errors (GL does not
+     * rasterize lines and points yet, so their pixels are not checked). */
+    {
+        static const GLenum styles[] = {GLU_LINE, GLU_SILHOUETTE, GLU_POINT};
+        unsigned k;
+        for (k = 0; k < 3; k++) {
+            gluQuadricDrawStyle(q, styles[k]);
+            gluSphere(q, 20, 12, 6);
+            gluCylinder(q, 20, 5, 30, 12, 3);
+            gluDisk(q, 5, 20, 12, 2);
+            gluPartialDisk(q, 0, 20, 12, 2, 45, 200);
+            h_expect_no_error("line and point styles");
+        }
+        gluQuadricDrawStyle(q, GLU_FILL);
+    }
+
     /* Errors reach the callback and draw nothing. */
     start();
     nerrors = 0;

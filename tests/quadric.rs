@@ -108,7 +108,7 @@ fn turns(p: [f64; 3]) -> f64 {
 /// s agrees with the angle (mod 1: the seam may carry s = 1).
 fn check_s(s: f64, p: [f64; 3]) {
     let d = (s - turns(p)).rem_euclid(1.0);
-    assert!(d < 1e-9 || d > 1.0 - 1e-9, "s {s} at {p:?} (angle {} turns)", turns(p));
+    assert!(!(1e-9..=1.0 - 1e-9).contains(&d), "s {s} at {p:?} (angle {} turns)", turns(p));
     assert!((-1e-12..=1.0 + 1e-12).contains(&s));
 }
 
@@ -292,7 +292,8 @@ fn signed_area_z(rec: &Rec) -> f64 {
 #[test]
 fn disks() {
     // (inner, outer, slices, loops, start, sweep); sweep None = gluDisk
-    let cases: &[(f64, f64, i32, i32, f64, Option<f64>)] = &[
+    type Case = (f64, f64, i32, i32, f64, Option<f64>);
+    let cases: &[Case] = &[
         (0.0, 2.0, 16, 3, 0.0, None),
         (0.5, 1.5, 7, 2, 0.0, None),
         (1.0, 1.0, 4, 1, 0.0, None),
@@ -383,7 +384,7 @@ fn no_normals_no_texcoords_unless_asked() {
     q.cylinder(&mut rec, 1.0, 0.5, 1.0, 8, 4);
     q.disk(&mut rec, 0.0, 1.0, 8, 2);
     q.partial_disk(&mut rec, 0.0, 1.0, 8, 2, 0.0, 90.0);
-    assert!(rec.prims.len() > 0);
+    assert!(!rec.prims.is_empty());
     assert_eq!((rec.normals, rec.texcoords), (0, 0));
 }
 

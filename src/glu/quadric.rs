@@ -130,7 +130,7 @@ fn neg(a: [f64; 3]) -> [f64; 3] {
 /// exact at the quarter turns and at the seam (column n = column 0).
 fn around(i: usize, n: usize) -> (f64, f64) {
     let i = i % n;
-    if 4 * i % n == 0 {
+    if (4 * i).is_multiple_of(n) {
         return [(0.0, 1.0), (1.0, 0.0), (0.0, -1.0), (-1.0, 0.0)][4 * i / n];
     }
     (std::f64::consts::TAU * i as f64 / n as f64).sin_cos()
@@ -352,7 +352,7 @@ impl Quadric {
                 // GLU_SILHOUETTE: the faces of one slice are coplanar, so only
                 // the end circles separate non-coplanar faces.
                 for j in 0..=rows {
-                    let r = (at)(0, j).p[1];
+                    let r = if j == rows { top } else { base + (top - base) * j as f64 / rows as f64 };
                     if r != 0.0 && (style == GLU_LINE || j == 0 || j == rows) {
                         e.row_line(&g, j);
                     }
@@ -368,6 +368,7 @@ impl Quadric {
         self.disk_part(sink, inner, outer, slices, loops, 0.0, 360.0, true)
     }
 
+    #[allow(clippy::too_many_arguments)]
     pub fn partial_disk(&self, sink: &mut dyn Sink, inner: f64, outer: f64, slices: i32, loops: i32, start: f64, sweep: f64) {
         self.disk_part(sink, inner, outer, slices, loops, start, sweep, false)
     }
