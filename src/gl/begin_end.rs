@@ -58,7 +58,23 @@ impl Context {
     /// Outside Begin/End a vertex has no effect.
     pub fn vertex(&mut self, p: [f32; 4]) {
         let Some(mut asm) = self.prim.take() else { return };
-        let v = ClipVertex { pos: self.derived.mvp * Vec4::from_array(p), color: Vec4::from_array(self.current.color) };
+        let obj = Vec4::from_array(p);
+        let (color, back_color) = match &self.derived.lighting {
+            None => {
+                let c = Vec4::from_array(self.current.color);
+                (c, c)
+            }
+            Some(ls) => {
+                // Lighting (2.14.1) in eye coordinates.
+                let eye = ls.modelview * obj;
+                let n = ls.eye_normal(glam::Vec3::from_array(self.current.normal));
+                let m = &self.lighting.materials;
+                let front = ls.shade(&m[0], eye, n);
+                let back = if ls.two_side { ls.shade(&m[1], eye, -n) } else { front };
+                (front, back)
+            }
+        };
+        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color };
         self.assemble(&mut asm, v);
         self.prim = Some(asm);
     }
@@ -175,12 +191,12 @@ impl Context {
     /// A quad in boundary order (a, b, c, d), split into (a, b, d) and
     /// (b, c, d); flat shading takes `provoking`'s colour for both.
     fn quad(&mut self, a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, d: &ClipVertex, provoking: &ClipVertex) {
-        let flat = provoking.color;
+        let flat = [provoking.color, provoking.back_color];
         render::draw_triangle(&self.derived.render, &mut self.fb, [a, b, d], flat);
         render::draw_triangle(&self.derived.render, &mut self.fb, [b, c, d], flat);
     }
 
     fn triangle(&mut self, v: [&ClipVertex; 3], provoking: usize) {
-        render::draw_triangle(&self.derived.render, &mut self.fb, v, v[provoking].color);
+        render::draw_triangle(&self.derived.render, &mut self.fb, v, [v[provoking].color, v[provoking].back_color]);
     }
 }

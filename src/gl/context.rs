@@ -4,7 +4,7 @@
 use super::command::Command;
 use super::enums::*;
 use super::state::*;
-use super::{begin_end, enable, lists, matrix, pixels, validate};
+use super::{begin_end, enable, lighting, lists, matrix, pixels, validate};
 use crate::framebuffer::{Config, Framebuffer, Present};
 
 pub struct Context {
@@ -19,6 +19,7 @@ pub struct Context {
     pub shade_model: u32,
     pub hints: HintState,
     pub current: CurrentState,
+    pub lighting: lighting::LightingState,
     pub line: LineState,
     pub point: PointState,
     /// Capabilities glEnable stores whose rendering is not implemented yet.
@@ -53,6 +54,7 @@ impl Context {
             shade_model: GL_SMOOTH,
             hints: Default::default(),
             current: Default::default(),
+            lighting: Default::default(),
             line: Default::default(),
             point: Default::default(),
             other_caps: Default::default(),

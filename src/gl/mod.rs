@@ -10,6 +10,7 @@ pub mod context;
 pub mod enable;
 pub mod enums;
 pub mod get;
+pub mod lighting;
 pub mod lists;
 pub mod matrix;
 pub mod pixels;

@@ -118,11 +118,12 @@ impl Default for HintState {
 #[derive(Clone, Debug)]
 pub struct CurrentState {
     pub color: [f32; 4],
+    pub normal: [f32; 3],
 }
 
 impl Default for CurrentState {
     fn default() -> Self {
-        CurrentState { color: [1.0; 4] }
+        CurrentState { color: [1.0; 4], normal: [0.0, 0.0, 1.0] }
     }
 }
 

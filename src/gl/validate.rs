@@ -6,12 +6,14 @@ use super::context::Context;
 use super::enums::*;
 use crate::framebuffer::Rect;
 use crate::render::{fragment::FragmentState, Cull, RenderState};
+use crate::render::light::LightingSetup;
 use glam::Mat4;
 
 pub const DIRTY_TRANSFORM: u32 = 1 << 0;
 pub const DIRTY_VIEWPORT: u32 = 1 << 1;
 pub const DIRTY_FRAGMENT: u32 = 1 << 2;
 pub const DIRTY_RASTER: u32 = 1 << 3;
+pub const DIRTY_LIGHTING: u32 = 1 << 4;
 pub const DIRTY_ALL: u32 = !0;
 
 /// State derived from GL state for the renderer.
@@ -19,6 +21,8 @@ pub const DIRTY_ALL: u32 = !0;
 pub struct Derived {
     /// Projection * modelview, in f32 for the vertex stage.
     pub mvp: Mat4,
+    /// Lighting prepared for the vertex stage; None when lighting is off.
+    pub lighting: Option<LightingSetup>,
     pub render: RenderState,
 }
 
@@ -26,6 +30,7 @@ impl Default for Derived {
     fn default() -> Self {
         Derived {
             mvp: Mat4::IDENTITY,
+            lighting: None,
             render: RenderState {
                 viewport_scale: [0.0; 3],
                 viewport_offset: [0.0; 3],
@@ -33,6 +38,7 @@ impl Default for Derived {
                 cull: Cull::None,
                 front_ccw: true,
                 flat: false,
+                two_side: false,
                 fragment: FragmentState {
                     depth_test: false,
                     depth_func: crate::render::fragment::CompareFunc::Less,
@@ -68,6 +74,18 @@ impl Context {
         if d & DIRTY_TRANSFORM != 0 {
             let m = *self.transform.projection.top() * *self.transform.modelview.top();
             self.derived.mvp = m.as_mat4();
+        }
+        if d & (DIRTY_LIGHTING | DIRTY_TRANSFORM) != 0 {
+            let l = &self.lighting;
+            self.derived.lighting = l.enabled.then(|| {
+                LightingSetup::new(
+                    &l.lights,
+                    l.model_ambient,
+                    [l.local_viewer, l.two_side, l.separate_specular, l.normalize, l.rescale_normal],
+                    self.transform.modelview.top().as_mat4(),
+                )
+            });
+            self.derived.render.two_side = l.enabled && l.two_side;
         }
         let rs = &mut self.derived.render;
         if d & DIRTY_VIEWPORT != 0 {

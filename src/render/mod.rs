@@ -9,6 +9,7 @@
 
 pub mod clip;
 pub mod fragment;
+pub mod light;
 pub mod line;
 pub mod point;
 pub mod raster;
@@ -33,6 +34,8 @@ pub struct RenderState {
     /// glFrontFace(GL_CCW)?
     pub front_ccw: bool,
     pub flat: bool,
+    /// Two-sided lighting: back-facing polygons take their back colour.
+    pub two_side: bool,
     pub fragment: FragmentState,
 }
 
@@ -45,8 +48,8 @@ pub enum Cull {
 }
 
 /// Draws one triangle given in clip coordinates. `flat_color` is the
-/// provoking vertex's colour, which a flat-shaded triangle takes.
-pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3], flat_color: glam::Vec4) {
+/// provoking vertex's [front, back] colour, which a flat-shaded triangle takes.
+pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3], flat_color: [glam::Vec4; 2]) {
     if rs.draw_rect.is_empty() || rs.cull == Cull::All {
         return;
     }

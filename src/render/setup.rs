@@ -27,6 +27,7 @@ pub struct WindowVertex {
     /// 1 / w_clip.
     pub q: f64,
     pub color: Vec4,
+    pub back_color: Vec4,
 }
 
 #[inline]
@@ -40,6 +41,7 @@ pub fn to_window(rs: &RenderState, v: &ClipVertex) -> WindowVertex {
         z: oz + sz * (v.pos.z as f64 * q),
         q,
         color: v.color,
+        back_color: v.back_color,
     }
 }
 
@@ -69,7 +71,8 @@ pub struct TriangleSetup {
 }
 
 /// Sets up and rasterizes one triangle in window coordinates.
-pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &[WindowVertex; 3], flat_color: Vec4) {
+/// `flat_color` is the provoking vertex's [front, back] colour.
+pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &[WindowVertex; 3], flat_color: [Vec4; 2]) {
     let snap = |c: f64| (c * ONE as f64).round() as i64;
     let fx = [snap(w[0].x), snap(w[1].x), snap(w[2].x)];
     let fy = [snap(w[0].y), snap(w[1].y), snap(w[2].y)];
@@ -92,11 +95,14 @@ pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &
     let ey = order.map(|i| fy[i]);
     let v = order.map(|i| &w[i]);
 
-    let setup = planes(rs, v, ex, ey, flat_color, front_facing);
+    // Two-sided lighting: a back-facing polygon shows its back colours.
+    let back = rs.two_side && !front_facing;
+    let setup = planes(rs, v, ex, ey, flat_color[back as usize], back, front_facing);
     raster::triangle(rs, fb, ex, ey, &setup);
 }
 
-fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, front_facing: bool) -> TriangleSetup {
+#[allow(clippy::too_many_arguments)]
+fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
     let inv = 1.0 / ONE as f64;
     let x = ex.map(|c| c as f64 * inv);
     let y = ey.map(|c| c as f64 * inv);
@@ -112,7 +118,8 @@ fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], f
         (Some(super::fragment::color_to_u8(flat_color)), [Plane::default(); 4])
     } else {
         let scale = |i: usize| if perspective { q[i] } else { 1.0 };
-        let c = |ch: usize| plane([0, 1, 2].map(|i| v[i].color[ch] as f64 * scale(i)));
+        let col = |i: usize| if back { v[i].back_color } else { v[i].color };
+        let c = |ch: usize| plane([0, 1, 2].map(|i| col(i)[ch] as f64 * scale(i)));
         (None, [c(0), c(1), c(2), c(3)])
     };
     TriangleSetup {

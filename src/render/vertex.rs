@@ -9,6 +9,9 @@ pub struct ClipVertex {
     pub pos: Vec4,
     /// Primary colour, RGBA in [0, 1] (clamped at interpolation).
     pub color: Vec4,
+    /// The colour back-facing polygons take: the back face's lit colour
+    /// under two-sided lighting, else the same as `color`.
+    pub back_color: Vec4,
 }
 
 impl ClipVertex {
@@ -16,6 +19,10 @@ impl ClipVertex {
     /// linear interpolation, GL 1.5 section 2.12 equation 2.6).
     #[inline]
     pub fn lerp(a: &ClipVertex, b: &ClipVertex, t: f32) -> ClipVertex {
-        ClipVertex { pos: a.pos + (b.pos - a.pos) * t, color: a.color + (b.color - a.color) * t }
+        ClipVertex {
+            pos: a.pos + (b.pos - a.pos) * t,
+            color: a.color + (b.color - a.color) * t,
+            back_color: a.back_color + (b.back_color - a.back_color) * t,
+        }
     }
 }
