@@ -3,6 +3,7 @@
 #   make         build the library and lay out build/lib
 #   make test    all tests (Rust unit tests, header/export checks, C tests)
 #   make demo    render the demo scenes into out/
+#   make bench   benchmark against Mesa into out/bench/ (BENCH_ARGS=--quick for a short run)
 #   make coverage  regenerate the README's coverage table
 
 CARGO ?= cargo
@@ -10,7 +11,7 @@ CC ?= cc
 LIB := build/lib
 SO := target/release/libsoftgl.so
 
-.PHONY: all lib test rust-test c-test exports-test demo coverage coverage-check deps clean
+.PHONY: bench all lib test rust-test c-test exports-test demo coverage coverage-check deps clean
 
 all: lib
 
@@ -45,6 +46,12 @@ c-test: lib
 
 demo: lib
 	sh demo/run.sh
+
+# Side by side against Mesa (llvmpipe 1 thread / all cores, softpipe): out/bench/.
+bench: deps lib
+	sh bench/build.sh
+	python3 -c 'import matplotlib' 2>/dev/null || pip install -q matplotlib || echo "no matplotlib: no plots"
+	python3 bench/run.py $(BENCH_ARGS)
 
 coverage:
 	$(CARGO) run --release --quiet --bin coverage -- README.md

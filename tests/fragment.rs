@@ -576,3 +576,37 @@ fn fragment_state_in_display_lists() {
     draw(&mut c, [30, 60, 0, 40]);
     assert_eq!(pixel(&c), [70, 0, 0, 160]);
 }
+
+/// Points and lines take the same per-fragment operations.
+#[test]
+fn points_and_lines_are_blended_and_stencilled() {
+    let mut c = context();
+    clear(&mut c, [100, 100, 100, 100], 0, 1.0);
+    run(
+        &mut c,
+        &[
+            Command::Enable(GL_BLEND),
+            Command::BlendFunc([GL_ONE, GL_ONE, GL_ONE, GL_ONE]),
+            Command::Enable(GL_STENCIL_TEST),
+            Command::StencilOp(GL_KEEP, GL_KEEP, GL_INCR),
+            Command::Color(rgba([10, 20, 30, 40])),
+            // Window (1.5, 1.5): pixel (1, 1).
+            Command::Begin(GL_POINTS),
+            Command::Vertex([0.5, 0.5, 0.0, 1.0]),
+            Command::End,
+        ],
+    );
+    let i = c.fb.index(1, 1);
+    assert_eq!(c.fb.color[i], [110, 120, 130, 140]);
+    assert_eq!(c.fb.stencil[i], 1);
+    assert_eq!(c.fb.color[c.fb.index(0, 0)], [100; 4]);
+    assert_eq!(c.fb.stencil[c.fb.index(0, 0)], 0);
+    // A horizontal line along row 0 (pixel 0 by the diamond-exit rule).
+    run(
+        &mut c,
+        &[Command::Begin(GL_LINES), Command::Vertex([-1.0, -0.5, 0.0, 1.0]), Command::Vertex([1.0, -0.5, 0.0, 1.0]), Command::End],
+    );
+    let i = c.fb.index(0, 0);
+    assert_eq!(c.fb.color[i], [110, 120, 130, 140], "line pixel");
+    assert_eq!(c.fb.stencil[i], 1);
+}

@@ -47,7 +47,7 @@ super::entry_points! {
 
     // ---- gl.h ----
     exec glGetError() -> GLenum { |c| c.take_error() }
-    list["GL_POINTS, GL_LINES, GL_LINE_STRIP and GL_LINE_LOOP are accepted but not rasterized yet (issue 3)"] glBegin(mode: GLenum) { |_c| Command::Begin(mode) }
+    list["GL_LINE_SMOOTH and GL_POINT_SMOOTH are not antialiased yet (issue 3)"] glBegin(mode: GLenum) { |_c| Command::Begin(mode) }
     list glEnd() { |_c| Command::End }
     todo glEdgeFlag(flag: GLboolean);
     todo glEdgeFlagv(flag: *const GLboolean);
@@ -242,9 +242,9 @@ super::entry_points! {
     todo glLightModeliv(pname: GLenum, params: *const GLint);
     todo glColorMaterial(face: GLenum, mode: GLenum);
     list glShadeModel(mode: GLenum) { |_c| Command::ShadeModel(mode) }
-    todo glPointSize(size: GLfloat);
-    todo glLineWidth(width: GLfloat);
-    todo glLineStipple(factor: GLint, pattern: GLushort);
+    list["GL_POINT_SMOOTH draws square points; no point parameters"] glPointSize(size: GLfloat) { |_c| Command::PointSize(size) }
+    list["GL_LINE_SMOOTH draws aliased lines"] glLineWidth(width: GLfloat) { |_c| Command::LineWidth(width) }
+    list glLineStipple(factor: GLint, pattern: GLushort) { |_c| Command::LineStipple(factor, pattern) }
     list glCullFace(mode: GLenum) { |_c| Command::CullFace(mode) }
     list glFrontFace(mode: GLenum) { |_c| Command::FrontFace(mode) }
     todo glPolygonStipple(mask: *const GLubyte);
@@ -549,17 +549,17 @@ super::entry_points! {
     todo gluBuild1DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint;
     todo gluBuild2DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint;
     todo gluBuild3DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint;
-    todo gluNewQuadric() -> *mut GLUquadric;
-    todo gluDeleteQuadric(quad: *mut GLUquadric);
-    todo gluQuadricCallback(quad: *mut GLUquadric, which: GLenum, CallBackFunc: GLproc);
-    todo gluQuadricDrawStyle(quad: *mut GLUquadric, draw: GLenum);
-    todo gluQuadricNormals(quad: *mut GLUquadric, normal: GLenum);
-    todo gluQuadricOrientation(quad: *mut GLUquadric, orientation: GLenum);
-    todo gluQuadricTexture(quad: *mut GLUquadric, texture: GLboolean);
-    todo gluSphere(quad: *mut GLUquadric, radius: GLdouble, slices: GLint, stacks: GLint);
-    todo gluCylinder(quad: *mut GLUquadric, base: GLdouble, top: GLdouble, height: GLdouble, slices: GLint, stacks: GLint);
-    todo gluDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint);
-    todo gluPartialDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint, start: GLdouble, sweep: GLdouble);
+    free gluNewQuadric() -> *mut GLUquadric { glu::quadric::new_quadric() }
+    free gluDeleteQuadric(quad: *mut GLUquadric) { glu::quadric::delete_quadric(quad) }
+    free gluQuadricCallback(quad: *mut GLUquadric, which: GLenum, CallBackFunc: GLproc) { glu::quadric::with(quad, |q| q.set_callback(which, CallBackFunc)) }
+    free gluQuadricDrawStyle(quad: *mut GLUquadric, draw: GLenum) { glu::quadric::with(quad, |q| q.set_draw_style(draw)) }
+    free gluQuadricNormals(quad: *mut GLUquadric, normal: GLenum) { glu::quadric::with(quad, |q| q.set_normals(normal)) }
+    free gluQuadricOrientation(quad: *mut GLUquadric, orientation: GLenum) { glu::quadric::with(quad, |q| q.set_orientation(orientation)) }
+    free gluQuadricTexture(quad: *mut GLUquadric, texture: GLboolean) { glu::quadric::with(quad, |q| q.set_texture(truth(texture))) }
+    free gluSphere(quad: *mut GLUquadric, radius: GLdouble, slices: GLint, stacks: GLint) { glu::quadric::with(quad, |q| q.sphere(&mut glu::quadric::GlSink, radius, slices, stacks)) }
+    free gluCylinder(quad: *mut GLUquadric, base: GLdouble, top: GLdouble, height: GLdouble, slices: GLint, stacks: GLint) { glu::quadric::with(quad, |q| q.cylinder(&mut glu::quadric::GlSink, base, top, height, slices, stacks)) }
+    free gluDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint) { glu::quadric::with(quad, |q| q.disk(&mut glu::quadric::GlSink, inner, outer, slices, loops)) }
+    free gluPartialDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint, start: GLdouble, sweep: GLdouble) { glu::quadric::with(quad, |q| q.partial_disk(&mut glu::quadric::GlSink, inner, outer, slices, loops, start, sweep)) }
     todo gluNewTess() -> *mut GLUtesselator;
     todo gluDeleteTess(tess: *mut GLUtesselator);
     todo gluTessBeginPolygon(tess: *mut GLUtesselator, data: *mut c_void);

@@ -4,8 +4,11 @@
 //! (section 2.14.7, table 2.12: the last vertex of a triangle, strip or fan
 //! triangle and of a quad; the first of a polygon).
 //!
-//! Points and lines are accepted (the modes are valid) but not drawn yet:
-//! that is issue 3's work.
+//! Points are drawn one by one; lines in pairs (GL_LINES), from each
+//! vertex to the next (GL_LINE_STRIP) and back to the first at glEnd
+//! (GL_LINE_LOOP). A segment's provoking vertex is its second (table
+//! 2.12). The stipple counter is reset at glBegin and before each
+//! GL_LINES segment, and runs on across a strip or loop (section 3.4.3).
 
 use super::context::Context;
 use super::enums::*;
@@ -20,6 +23,8 @@ pub struct Assembly {
     verts: Vec<ClipVertex>,
     /// Vertices seen since glBegin.
     count: usize,
+    /// The line stipple counter s (section 3.4.3).
+    stipple: u32,
 }
 
 impl Context {
@@ -29,13 +34,17 @@ impl Context {
         }
         // Begin inside Begin is caught by the Begin/End rule (execute).
         self.validate();
-        self.prim = Some(Assembly { mode, verts: Vec::with_capacity(4), count: 0 });
+        self.prim = Some(Assembly { mode, verts: Vec::with_capacity(4), count: 0, stipple: 0 });
     }
 
     pub fn end(&mut self) {
-        let Some(asm) = self.prim.take() else {
+        let Some(mut asm) = self.prim.take() else {
             return self.set_error(GL_INVALID_OPERATION);
         };
+        if asm.mode == GL_LINE_LOOP && asm.count >= 2 {
+            let (last, first) = (asm.verts[1], asm.verts[0]);
+            self.line(&last, &first, &mut asm.stipple);
+        }
         if asm.mode == GL_POLYGON && asm.verts.len() >= 3 {
             // A convex polygon as a fan; flat shading takes the first vertex.
             let v = &asm.verts;
@@ -116,9 +125,51 @@ impl Context {
                 }
             }
             GL_POLYGON => asm.verts.push(v),
-            // Points and lines: not rasterized yet (issue 3).
+            GL_POINTS => {
+                render::point::draw_point(&self.derived.render, &mut self.fb, self.point.size, &v);
+            }
+            GL_LINES => {
+                if n % 2 == 1 {
+                    let a = asm.verts[0];
+                    asm.stipple = 0;
+                    self.line(&a, &v, &mut asm.stipple);
+                    asm.verts.clear();
+                } else {
+                    asm.verts.push(v);
+                }
+            }
+            GL_LINE_STRIP => {
+                if n >= 1 {
+                    let a = asm.verts[0];
+                    self.line(&a, &v, &mut asm.stipple);
+                    asm.verts[0] = v;
+                } else {
+                    asm.verts.push(v);
+                }
+            }
+            GL_LINE_LOOP => {
+                // verts[0]: the first vertex; verts[1]: the latest.
+                if n >= 1 {
+                    let a = asm.verts[1];
+                    self.line(&a, &v, &mut asm.stipple);
+                    asm.verts[1] = v;
+                } else {
+                    asm.verts.push(v);
+                    asm.verts.push(v);
+                }
+            }
             _ => {}
         }
+    }
+
+    /// One line segment; flat shading takes `b`'s colour.
+    fn line(&mut self, a: &ClipVertex, b: &ClipVertex, stipple: &mut u32) {
+        let l = &self.line;
+        let lp = render::line::LineParams {
+            width: l.width,
+            stipple: if l.stipple { Some((l.stipple_repeat as u32, l.stipple_pattern)) } else { None },
+        };
+        render::line::draw_line(&self.derived.render, &mut self.fb, &lp, a, b, b.color, stipple);
     }
 
     /// A quad in boundary order (a, b, c, d), split into (a, b, d) and

@@ -34,6 +34,11 @@ pub enum Command {
     ShadeModel(u32),
     CullFace(u32),
     FrontFace(u32),
+    // Sections 3.3, 3.4: points and lines.
+    PointSize(f32),
+    LineWidth(f32),
+    /// glLineStipple(factor, pattern).
+    LineStipple(i32, u16),
     // Section 4.1: fragment operations.
     Scissor(i32, i32, i32, i32),
     AlphaFunc(u32, f32),
@@ -106,6 +111,22 @@ impl Context {
             ShadeModel(m) => self.set_shade_model(*m),
             CullFace(m) => self.cull_face(*m),
             FrontFace(m) => self.front_face(*m),
+            PointSize(s) => {
+                if !(*s > 0.0) {
+                    return self.set_error(GL_INVALID_VALUE);
+                }
+                self.point.size = *s;
+            }
+            LineWidth(w) => {
+                if !(*w > 0.0) {
+                    return self.set_error(GL_INVALID_VALUE);
+                }
+                self.line.width = *w;
+            }
+            LineStipple(factor, pattern) => {
+                self.line.stipple_repeat = (*factor).clamp(1, 256);
+                self.line.stipple_pattern = *pattern;
+            }
             Scissor(x, y, w, h) => self.set_scissor(*x, *y, *w, *h),
             AlphaFunc(f, r) => self.alpha_func(*f, *r),
             StencilFunc(f, r, m) => self.stencil_func(*f, *r, *m),

@@ -19,6 +19,8 @@ pub struct Context {
     pub shade_model: u32,
     pub hints: HintState,
     pub current: CurrentState,
+    pub line: LineState,
+    pub point: PointState,
     /// Capabilities glEnable stores whose rendering is not implemented yet.
     pub other_caps: enable::OtherCaps,
     pub transform: matrix::Transform,
@@ -51,6 +53,8 @@ impl Context {
             shade_model: GL_SMOOTH,
             hints: Default::default(),
             current: Default::default(),
+            line: Default::default(),
+            point: Default::default(),
             other_caps: Default::default(),
             transform: matrix::Transform::new(),
             prim: None,

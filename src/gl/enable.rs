@@ -20,7 +20,6 @@ fn is_stored_cap(cap: u32) -> bool {
         cap,
         GL_POINT_SMOOTH
             | GL_LINE_SMOOTH
-            | GL_LINE_STIPPLE
             | GL_POLYGON_SMOOTH
             | GL_POLYGON_STIPPLE
             | GL_LIGHTING
@@ -86,6 +85,7 @@ impl Context {
                 } = on;
                 self.dirty |= DIRTY_FRAGMENT;
             }
+            GL_LINE_STIPPLE => self.line.stipple = on,
             _ if is_stored_cap(cap) => {
                 if on {
                     self.other_caps.0.insert(cap);
@@ -109,6 +109,7 @@ impl Context {
             GL_BLEND => self.color_buffer.blend,
             GL_COLOR_LOGIC_OP => self.color_buffer.color_logic_op,
             GL_INDEX_LOGIC_OP => self.color_buffer.index_logic_op,
+            GL_LINE_STIPPLE => self.line.stipple,
             _ if is_stored_cap(cap) => self.other_caps.0.contains(&cap),
             _ => return None,
         })

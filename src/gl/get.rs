@@ -51,6 +51,16 @@ impl Value {
     }
 }
 
+// Point and line queries (table 6.11, 6.12, 6.32).
+const GL_POINT_SIZE: u32 = 0x0B11;
+const GL_POINT_SIZE_RANGE: u32 = 0x0B12;
+const GL_POINT_SIZE_GRANULARITY: u32 = 0x0B13;
+const GL_LINE_WIDTH: u32 = 0x0B21;
+const GL_LINE_WIDTH_RANGE: u32 = 0x0B22;
+const GL_LINE_WIDTH_GRANULARITY: u32 = 0x0B23;
+const GL_LINE_STIPPLE_PATTERN: u32 = 0x0B25;
+const GL_LINE_STIPPLE_REPEAT: u32 = 0x0B26;
+
 fn ints<const N: usize>(v: [i64; N]) -> Option<Value> {
     Some(Value::Ints(v.to_vec()))
 }
@@ -111,6 +121,16 @@ impl Context {
             GL_MAX_TEXTURE_STACK_DEPTH => ints([MAX_TEXTURE_DEPTH as i64]),
             GL_MAX_VIEWPORT_DIMS => ints([MAX_SIZE as i64, MAX_SIZE as i64]),
             GL_SUBPIXEL_BITS => ints([SUBPIXEL_BITS as i64]),
+            GL_POINT_SIZE => Some(Value::Floats(vec![self.point.size as f64])),
+            // Smooth points are drawn like aliased ones for now: the same
+            // integer sizes.
+            GL_POINT_SIZE_RANGE | GL_ALIASED_POINT_SIZE_RANGE => Some(Value::Floats(vec![1.0, crate::render::point::MAX_SIZE as f64])),
+            GL_POINT_SIZE_GRANULARITY => Some(Value::Floats(vec![1.0])),
+            GL_LINE_WIDTH => Some(Value::Floats(vec![self.line.width as f64])),
+            GL_LINE_WIDTH_RANGE | GL_ALIASED_LINE_WIDTH_RANGE => Some(Value::Floats(vec![1.0, crate::render::line::MAX_WIDTH as f64])),
+            GL_LINE_WIDTH_GRANULARITY => Some(Value::Floats(vec![1.0])),
+            GL_LINE_STIPPLE_PATTERN => ints([self.line.stipple_pattern as i64]),
+            GL_LINE_STIPPLE_REPEAT => ints([self.line.stipple_repeat as i64]),
             GL_SHADE_MODEL => ints([self.shade_model as i64]),
             GL_CULL_FACE_MODE => ints([self.polygon.cull_mode as i64]),
             GL_FRONT_FACE => ints([self.polygon.front_face as i64]),

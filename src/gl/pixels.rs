@@ -199,6 +199,17 @@ impl Context {
         let modes = self.pixel_store.pack;
         let layout = modes.layout(w as usize, comps.len(), esize);
         let fb = &self.fb;
+        // Fast path: RGBA bytes inside the window are the stored bytes, a
+        // row at a time.
+        let inside = x >= 0 && y >= 0 && (x as i64 + w as i64) <= fb.width as i64 && (y as i64 + h as i64) <= fb.height as i64;
+        if format == GL_RGBA && ty == GL_UNSIGNED_BYTE && inside {
+            for j in 0..h as usize {
+                let src = &fb.color[fb.index(x as usize, y as usize + j)..][..w as usize];
+                let dst = out.add(layout.start + j * layout.row_stride);
+                std::ptr::copy_nonoverlapping(src.as_ptr() as *const u8, dst, w as usize * 4);
+            }
+            return;
+        }
         for j in 0..h {
             let fy = y as i64 + j as i64;
             if fy < 0 || fy >= fb.height as i64 {

@@ -176,3 +176,34 @@ impl Default for CurrentState {
         CurrentState { color: [1.0; 4] }
     }
 }
+
+/// GL_LINE_BIT state (section 3.4): width, stipple. GL_LINE_SMOOTH is still
+/// only stored (enable.rs, OtherCaps): smooth lines draw aliased for now.
+#[derive(Clone, Debug)]
+pub struct LineState {
+    /// As specified (glGet returns it); rasterization rounds and clamps it.
+    pub width: f32,
+    pub stipple: bool,
+    /// glLineStipple's factor, clamped to [1, 256].
+    pub stipple_repeat: i32,
+    pub stipple_pattern: u16,
+}
+
+impl Default for LineState {
+    fn default() -> Self {
+        LineState { width: 1.0, stipple: false, stipple_repeat: 1, stipple_pattern: 0xFFFF }
+    }
+}
+
+/// GL_POINT_BIT state (section 3.3): the size. GL_POINT_SMOOTH is still
+/// only stored: smooth points draw as squares for now.
+#[derive(Clone, Debug)]
+pub struct PointState {
+    pub size: f32,
+}
+
+impl Default for PointState {
+    fn default() -> Self {
+        PointState { size: 1.0 }
+    }
+}

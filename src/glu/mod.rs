@@ -5,4 +5,5 @@
 //! ([`strings`]). Tessellator, quadrics, mipmaps and NURBS are issue 6.
 
 pub mod matrix;
+pub mod quadric;
 pub mod strings;

@@ -9,6 +9,8 @@
 
 pub mod clip;
 pub mod fragment;
+pub mod line;
+pub mod point;
 pub mod raster;
 pub mod setup;
 pub mod vertex;

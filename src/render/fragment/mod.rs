@@ -232,6 +232,14 @@ pub fn process_fragment(fs: &FragmentState, fb: &mut Framebuffer, i: usize, z: u
     dispatch!(key(fs), fragment(fs, fb, i, || z, || color))
 }
 
+/// Shades one fragment of a point or line at pixel (x, y), already inside
+/// the draw rectangle, with its window depth `z` (in [0, 1]) and colour,
+/// through the same per-fragment operations as `shade_span`.
+pub fn shade_fragment(fs: &FragmentState, fb: &mut Framebuffer, x: usize, y: usize, z: f64, color: [u8; 4]) {
+    let i = fb.index(x, y);
+    dispatch!(key(fs), fragment(fs, fb, i, || depth_to_fixed(z), || color))
+}
+
 /// The per-fragment operations for one fragment, with the stage groups
 /// fixed at compile time: A alpha test, S stencil test, D depth test, C
 /// colour write. Depth and colour are computed only when a stage needs them.

@@ -1,0 +1,234 @@
+#!/usr/bin/env python3
+"""softgl benchmark runner (issue 9): runs every scene against softgl and
+Mesa (llvmpipe with 1 rasterizer thread, llvmpipe with all cores, softpipe)
+in one run, alternating implementations within each repetition, and writes
+out/bench/results.{json,md} and plots.
+
+    bench/run.py [--reps N] [--sizes 300x300,1024x768,1920x1080] [--scenes a,b] [--quick]
+
+The scene program (bench/scenes.c) is linked against Mesa's libOSMesa.so.8;
+LD_LIBRARY_PATH=build/lib swaps in softgl's libOSMesa.so.8.
+"""
+import argparse, json, os, statistics, subprocess, sys, time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+OUT = os.path.join(ROOT, "out", "bench")
+BIN = os.path.join(ROOT, "build", "bench", "bench_scene")
+
+IMPLS = {
+    "softgl": {"LD_LIBRARY_PATH": os.path.join(ROOT, "build", "lib")},
+    "llvmpipe-1t": {"GALLIUM_DRIVER": "llvmpipe", "LP_NUM_THREADS": "1"},
+    "llvmpipe": {"GALLIUM_DRIVER": "llvmpipe"},
+    "softpipe": {"GALLIUM_DRIVER": "softpipe"},
+}
+# name: (description, triangles per frame or None)
+SCENES = {
+    "spheres_s": ("25 smooth spheres, 6.4k triangles, depth test", 6400),
+    "spheres_m": ("25 smooth spheres, 57.6k triangles, depth test", 57600),
+    "spheres_l": ("25 smooth spheres, 410k triangles, depth test", 409600),
+    "overdraw": ("16 window-sized smooth quads, depth test (opaque overdraw 16)", 32),
+    "immediate_1m": ("1,000,002 glVertex calls: 333k tiny triangles", 333334),
+    "display_list_1m": ("the same through one display list", 333334),
+    "readpixels": ("clear + triangle + full-frame glReadPixels RGBA", 1),
+    "clear": ("colour + depth + stencil clear", 0),
+}
+# Scenes of issue 9 that need features softgl does not have yet.
+NOT_YET = {
+    "book: reflected dinosaur": "stencil, lighting, blending",
+    "book: decal airplane and shadow": "stencil, lighting",
+    "book: winding-rule panels": "GLU tessellator",
+    "lit and fogged spheres": "lighting, fog",
+    "trilinear-textured scene": "texturing",
+    "blended particles": "blending",
+    "wide and stippled lines, points": "lines and points",
+    "glDrawPixels / glCopyPixels": "pixel drawing",
+    "vertex arrays": "vertex arrays",
+    "accumulation blur": "accumulation buffer",
+    "stencil shadow volumes": "stencil",
+}
+
+
+def frames_for(impl, w, h, scene):
+    px = w * h
+    base = 30 if px <= 300 * 300 else 12 if px <= 1024 * 768 else 8
+    if scene in ("immediate_1m", "display_list_1m", "spheres_l"):
+        base = max(3, base // 3)
+    if impl == "softpipe":
+        base = max(2, base // 4)
+    return base
+
+
+def run_one(impl, scene, w, h, frames, pam):
+    env = dict(os.environ)
+    for k in ("LD_LIBRARY_PATH", "GALLIUM_DRIVER", "LP_NUM_THREADS"):
+        env.pop(k, None)
+    env.update(IMPLS[impl])
+    start = time.time()
+    p = subprocess.run([BIN, scene, str(w), str(h), str(frames), pam], env=env,
+                       capture_output=True, text=True, timeout=600)
+    if p.returncode != 0:
+        return {"error": (p.stderr or p.stdout).strip()[-300:]}
+    r = json.loads(p.stdout.strip().splitlines()[-1])
+    r["first_frame_s"] = r["first_frame_wall"] - start
+    return r
+
+
+def read_pam(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    head, _, body = data.partition(b"ENDHDR\n")
+    fields = dict(l.split(b" ", 1) for l in head.splitlines()[1:] if b" " in l)
+    return int(fields[b"WIDTH"]), int(fields[b"HEIGHT"]), body
+
+
+def image_error(a, b):
+    """RMSE (0..255), max channel difference, share of pixels off by > 2/255 (RGB)."""
+    wa, ha, da = read_pam(a)
+    wb, hb, db = read_pam(b)
+    if (wa, ha) != (wb, hb):
+        return None
+    n = wa * ha
+    sq = 0
+    mx = 0
+    off = 0
+    for i in range(0, n * 4, 4):
+        d0 = abs(da[i] - db[i]); d1 = abs(da[i + 1] - db[i + 1]); d2 = abs(da[i + 2] - db[i + 2])
+        m = max(d0, d1, d2)
+        if m > mx:
+            mx = m
+        if m > 2:
+            off += 1
+        sq += d0 * d0 + d1 * d1 + d2 * d2
+    return {"rmse": (sq / (3 * n)) ** 0.5, "max": mx, "off_share": off / n}
+
+
+def pct(xs, q):
+    xs = sorted(xs)
+    k = (len(xs) - 1) * q
+    lo, hi = int(k), min(int(k) + 1, len(xs) - 1)
+    return xs[lo] + (xs[hi] - xs[lo]) * (k - lo)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--sizes", default="300x300,1024x768,1920x1080")
+    ap.add_argument("--scenes", default=",".join(SCENES))
+    ap.add_argument("--impls", default=",".join(IMPLS))
+    ap.add_argument("--quick", action="store_true", help="one rep, 300x300 only")
+    a = ap.parse_args()
+    if a.quick:
+        a.reps, a.sizes = 1, "300x300"
+    sizes = [tuple(map(int, s.split("x"))) for s in a.sizes.split(",")]
+    scenes = a.scenes.split(",")
+    impls = a.impls.split(",")
+    os.makedirs(os.path.join(OUT, "img"), exist_ok=True)
+    raw = {}
+    for rep in range(a.reps):
+        for (w, h) in sizes:
+            for scene in scenes:
+                for impl in (impls if rep % 2 == 0 else impls[::-1]):  # alternate order
+                    pam = os.path.join(OUT, "img", f"{scene}_{w}x{h}_{impl}.pam")
+                    r = run_one(impl, scene, w, h, frames_for(impl, w, h, scene), pam)
+                    key = f"{scene}|{w}x{h}|{impl}"
+                    raw.setdefault(key, []).append(r)
+                    status = r.get("error") or f"{statistics.median(r['ms']):.2f} ms"
+                    print(f"rep {rep + 1} {w}x{h} {scene:16} {impl:12} {status}", flush=True)
+    results = []
+    for key, runs in raw.items():
+        scene, size, impl = key.split("|")
+        ok = [r for r in runs if "error" not in r]
+        row = {"scene": scene, "size": size, "impl": impl}
+        if not ok:
+            row["error"] = runs[0]["error"]
+        else:
+            ms = [m for r in ok for m in r["ms"]]
+            row.update(median_ms=statistics.median(ms), p90_ms=pct(ms, 0.9),
+                       first_frame_ms=1000 * statistics.median(r["first_frame_s"] for r in ok),
+                       peak_mb=max(r["maxrss_kb"] for r in ok) / 1024, gl_error=ok[-1]["gl_error"],
+                       renderer=ok[-1]["renderer"])
+            ref = os.path.join(OUT, "img", f"{scene}_{size}_softpipe.pam")
+            mine = os.path.join(OUT, "img", f"{scene}_{size}_{impl}.pam")
+            if impl != "softpipe" and os.path.exists(ref):
+                row["vs_softpipe"] = image_error(mine, ref)
+        results.append(row)
+    with open(os.path.join(OUT, "results.json"), "w") as f:
+        json.dump(results, f, indent=1)
+    write_markdown(results, sizes, scenes, impls)
+    plot(results, sizes, scenes, impls)
+
+
+def write_markdown(results, sizes, scenes, impls):
+    by = {(r["scene"], r["size"], r["impl"]): r for r in results}
+    lines = ["| scene | size | " + " | ".join(f"{i} median / p90 ms" for i in impls) +
+             " | softgl / llvmpipe-1t | softgl / softpipe | first frame ms (softgl / llvmpipe) | peak MB (softgl / llvmpipe) | softgl vs softpipe: RMSE, max, >2/255 | llvmpipe vs softpipe: RMSE, max, >2/255 |",
+             "|" + " --- |" * (2 + len(impls) + 6)]
+    for scene in scenes:
+        for (w, h) in sizes:
+            size = f"{w}x{h}"
+            cells = []
+            for i in impls:
+                r = by.get((scene, size, i), {})
+                cells.append(f"{r['median_ms']:.2f} / {r['p90_ms']:.2f}" if "median_ms" in r else r.get("error", "-")[:40])
+            s, l1, sp, l = (by.get((scene, size, k), {}) for k in ("softgl", "llvmpipe-1t", "softpipe", "llvmpipe"))
+            ratio = lambda x, y: f"{x['median_ms'] / y['median_ms']:.2f}x" if "median_ms" in x and "median_ms" in y and y["median_ms"] > 0 else "-"
+            err = lambda r: "{rmse:.2f}, {max}, {off_share:.1%}".format(**r["vs_softpipe"]) if r.get("vs_softpipe") else "-"
+            ff = f"{s.get('first_frame_ms', 0):.0f} / {l.get('first_frame_ms', 0):.0f}"
+            mem = f"{s.get('peak_mb', 0):.0f} / {l.get('peak_mb', 0):.0f}"
+            lines.append(f"| {scene} | {size} | " + " | ".join(cells) +
+                         f" | {ratio(s, l1)} | {ratio(s, sp)} | {ff} | {mem} | {err(s)} | {err(l)} |")
+    text = ["# softgl benchmark", "",
+            "Frame times after one warm-up frame; ratios are softgl's median time over the other's (below 1 = softgl faster).",
+            "Image error is against softpipe's image of the same frame (softgl's reference path does not exist yet).", "",
+            "Scenes:", ""] + [f"- `{k}`: {v[0]}" for k, v in SCENES.items() if k in scenes] + \
+           ["", "Not runnable yet (softgl lacks the features): " + "; ".join(f"{k} ({v})" for k, v in NOT_YET.items()), "", *lines, ""]
+    with open(os.path.join(OUT, "results.md"), "w") as f:
+        f.write("\n".join(text))
+    print("\n".join(lines))
+
+
+def plot(results, sizes, scenes, impls):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib not available: no plots")
+        return
+    by = {(r["scene"], r["size"], r["impl"]): r for r in results}
+    colors = {"softgl": "tab:red", "llvmpipe-1t": "tab:blue", "llvmpipe": "tab:cyan", "softpipe": "tab:gray"}
+    # Time against error, per scene, at the largest size.
+    size = f"{sizes[-1][0]}x{sizes[-1][1]}"
+    n = len(scenes)
+    fig, axes = plt.subplots(1, n, figsize=(3.2 * n, 3), squeeze=False)
+    for ax, scene in zip(axes[0], scenes):
+        for i in impls:
+            r = by.get((scene, size, i), {})
+            if "median_ms" in r and (r.get("vs_softpipe") or i == "softpipe"):
+                e = r["vs_softpipe"]["rmse"] if r.get("vs_softpipe") else 0.0
+                ax.scatter([r["median_ms"]], [e], color=colors[i], label=i)
+        ax.set_title(scene, fontsize=8); ax.set_xlabel("median ms"); ax.set_ylabel("RMSE vs softpipe")
+    axes[0][0].legend(fontsize=6)
+    fig.tight_layout(); fig.savefig(os.path.join(OUT, "time_vs_error.png"), dpi=80); plt.close(fig)
+    # Time against resolution.
+    fig, axes = plt.subplots(1, n, figsize=(3.2 * n, 3), squeeze=False)
+    for ax, scene in zip(axes[0], scenes):
+        for i in impls:
+            pts = [(w * h / 1e6, by[(scene, f"{w}x{h}", i)]["median_ms"]) for (w, h) in sizes if "median_ms" in by.get((scene, f"{w}x{h}", i), {})]
+            if pts:
+                ax.plot(*zip(*pts), marker="o", color=colors[i], label=i)
+        ax.set_title(scene, fontsize=8); ax.set_xlabel("megapixels"); ax.set_ylabel("median ms")
+    axes[0][0].legend(fontsize=6)
+    fig.tight_layout(); fig.savefig(os.path.join(OUT, "time_vs_resolution.png"), dpi=80); plt.close(fig)
+    # Time against triangle count (the sphere scenes).
+    fig, ax = plt.subplots(figsize=(4, 3))
+    for i in impls:
+        pts = [(SCENES[s][1], by[(s, size, i)]["median_ms"]) for s in ("spheres_s", "spheres_m", "spheres_l") if "median_ms" in by.get((s, size, i), {})]
+        if pts:
+            ax.plot(*zip(*pts), marker="o", color=colors[i], label=i)
+    ax.set_xscale("log"); ax.set_xlabel(f"triangles per frame ({size})"); ax.set_ylabel("median ms"); ax.legend(fontsize=6)
+    fig.tight_layout(); fig.savefig(os.path.join(OUT, "time_vs_triangles.png"), dpi=80); plt.close(fig)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,255 @@
+/* softgl benchmark scenes, written against the OSMesa API.
+ *
+ *   bench_scene SCENE WIDTH HEIGHT FRAMES OUT.pam
+ *
+ * Renders FRAMES timed frames after one untimed warm-up frame, then renders
+ * frame IMAGE_FRAME again (the same picture whatever FRAMES is) and writes it
+ * as a PAM and prints one JSON line: the renderer, each
+ * frame's time in ms, the wall-clock time when the first frame finished
+ * (so the runner can compute time to first frame from process start), and
+ * peak memory. It is linked against Mesa's libOSMesa.so.8; the runner
+ * switches implementations with LD_LIBRARY_PATH (softgl's build/lib holds
+ * a libOSMesa.so.8) and GALLIUM_DRIVER / LP_NUM_THREADS for Mesa.
+ */
+#include <GL/gl.h>
+#include <GL/osmesa.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+
+static double mono(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + t.tv_nsec * 1e-9;
+}
+
+static double wall(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_REALTIME, &t);
+    return t.tv_sec + t.tv_nsec * 1e-9;
+}
+
+#define IMAGE_FRAME 7
+
+static int W, H;
+static GLuint list_id;
+
+static void perspective(void)
+{
+    double a = (double)W / H;
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-0.5 * a, 0.5 * a, -0.5, 0.5, 1, 40);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+}
+
+/* A sphere of smooth-coloured triangle strips. */
+static void sphere(int stacks, int slices)
+{
+    int i, j;
+    for (i = 0; i < stacks; i++) {
+        double t0 = M_PI * i / stacks, t1 = M_PI * (i + 1) / stacks;
+        glBegin(GL_TRIANGLE_STRIP);
+        for (j = 0; j <= slices; j++) {
+            double p = 2 * M_PI * j / slices;
+            double x0 = sin(t0) * cos(p), y0 = cos(t0), z0 = sin(t0) * sin(p);
+            double x1 = sin(t1) * cos(p), y1 = cos(t1), z1 = sin(t1) * sin(p);
+            glColor3d(0.5 + 0.5 * x0, 0.5 + 0.5 * y0, 0.5 + 0.5 * z0);
+            glVertex3d(x0, y0, z0);
+            glColor3d(0.5 + 0.5 * x1, 0.5 + 0.5 * y1, 0.5 + 0.5 * z1);
+            glVertex3d(x1, y1, z1);
+        }
+        glEnd();
+    }
+}
+
+/* 5x5 spheres; `detail` sets stacks (slices = 2 stacks): 25 * 4 * detail^2 triangles. */
+static void spheres(int frame, int detail)
+{
+    int i, j;
+    glClearColor(0.05f, 0.05f, 0.1f, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    perspective();
+    glTranslatef(0, 0, -9);
+    glRotatef(frame * 3.0f, 0, 1, 0);
+    for (i = 0; i < 5; i++)
+        for (j = 0; j < 5; j++) {
+            glPushMatrix();
+            glTranslatef((i - 2) * 1.6f, (j - 2) * 1.2f, (float)((i + j) % 3) - 1);
+            glScalef(0.6f, 0.6f, 0.6f);
+            sphere(detail, 2 * detail);
+            glPopMatrix();
+        }
+}
+
+/* Fill rate: 16 window-sized flat quads at decreasing depth (opaque overdraw 16). */
+static void overdraw(int frame)
+{
+    int k;
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(-1, 1, -1, 1, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glShadeModel(GL_SMOOTH);
+    for (k = 0; k < 16; k++) {
+        float z = 0.9f - k * 0.1f, s = 0.02f * ((k + frame) % 5);
+        glBegin(GL_QUADS);
+        glColor3f(k / 16.0f, 0.5f, 1 - k / 16.0f); glVertex3f(-1 + s, -1, -z);
+        glColor3f(1, k / 16.0f, 0.2f); glVertex3f(1, -1 + s, -z);
+        glColor3f(0.2f, 1, k / 16.0f); glVertex3f(1 - s, 1, -z);
+        glColor3f(k / 16.0f, k / 16.0f, k / 16.0f); glVertex3f(-1, 1 - s, -z);
+        glEnd();
+    }
+    glDepthFunc(GL_LESS);
+}
+
+/* Immediate-mode call throughput: 1,000,002 glVertex calls per frame, as
+ * 333,334 small triangles on a 2-pixel grid (each ~1 pixel in area). */
+static void tiny_triangles(void)
+{
+    int n = 333334, i, cols = W / 2;
+    float sx = 2.0f / W, sy = 2.0f / H;
+    glBegin(GL_TRIANGLES);
+    for (i = 0; i < n; i++) {
+        int c = i % cols, r = (i / cols) % (H / 2);
+        float x = -1 + (2 * c + 0.25f) * sx, y = -1 + (2 * r + 0.25f) * sy;
+        glColor3f((i & 255) / 255.0f, ((i >> 8) & 255) / 255.0f, 0.5f);
+        glVertex2f(x, y);
+        glVertex2f(x + 1.5f * sx, y);
+        glVertex2f(x, y + 1.5f * sy);
+    }
+    glEnd();
+}
+
+static void calls(int use_list)
+{
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    if (use_list) {
+        if (!list_id) {
+            list_id = glGenLists(1);
+            glNewList(list_id, GL_COMPILE);
+            tiny_triangles();
+            glEndList();
+        }
+        glCallList(list_id);
+    } else {
+        tiny_triangles();
+    }
+}
+
+/* glReadPixels throughput: a clear and a triangle, then a full-frame read. */
+static unsigned char *readback;
+static void read_pixels(int frame)
+{
+    glClearColor(0.2f, 0.3f, 0.4f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0.5f, 0); glVertex2f(-0.9f, -0.9f);
+    glColor3f(0, 1, 0.5f); glVertex2f(0.9f, -0.8f + 0.01f * (frame % 10));
+    glColor3f(0.5f, 0, 1); glVertex2f(0, 0.9f);
+    glEnd();
+    glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, readback);
+}
+
+/* Clears of colour, depth and stencil. */
+static void clears(int frame)
+{
+    glClearColor((frame % 7) / 7.0f, 0.5f, 0.25f, 1);
+    glClearDepth(1.0);
+    glClearStencil(frame & 255);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
+
+static int render(const char *scene, int frame)
+{
+    if (!strcmp(scene, "spheres_s")) spheres(frame, 8);
+    else if (!strcmp(scene, "spheres_m")) spheres(frame, 24);
+    else if (!strcmp(scene, "spheres_l")) spheres(frame, 64);
+    else if (!strcmp(scene, "overdraw")) overdraw(frame);
+    else if (!strcmp(scene, "immediate_1m")) calls(0);
+    else if (!strcmp(scene, "display_list_1m")) calls(1);
+    else if (!strcmp(scene, "readpixels")) read_pixels(frame);
+    else if (!strcmp(scene, "clear")) clears(frame);
+    else return 0;
+    glFinish();
+    return 1;
+}
+
+int main(int argc, char **argv)
+{
+    const char *scene, *out;
+    int frames, f, y;
+    unsigned char *buf;
+    double *ms, t, first_wall = 0;
+    OSMesaContext ctx;
+    struct rusage ru;
+    FILE *fp;
+
+    if (argc != 6) {
+        fprintf(stderr, "usage: %s SCENE WIDTH HEIGHT FRAMES OUT.pam\n", argv[0]);
+        return 2;
+    }
+    scene = argv[1];
+    W = atoi(argv[2]);
+    H = atoi(argv[3]);
+    frames = atoi(argv[4]);
+    out = argv[5];
+    buf = calloc((size_t)W * H, 4);
+    readback = calloc((size_t)W * H, 4);
+    ms = calloc(frames + 1, sizeof *ms);
+    ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+    if (!ctx || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) {
+        fprintf(stderr, "no OSMesa context\n");
+        return 1;
+    }
+    glViewport(0, 0, W, H);
+    for (f = 0; f <= frames; f++) {
+        t = mono();
+        if (!render(scene, f)) {
+            fprintf(stderr, "unknown scene %s\n", scene);
+            return 2;
+        }
+        if (f == 0)
+            first_wall = wall();
+        else
+            ms[f - 1] = (mono() - t) * 1000;
+    }
+    render(scene, IMAGE_FRAME);
+    fp = fopen(out, "wb");
+    if (fp) {
+        fprintf(fp, "P7\nWIDTH %d\nHEIGHT %d\nDEPTH 4\nMAXVAL 255\nTUPLTYPE RGB_ALPHA\nENDHDR\n", W, H);
+        for (y = H - 1; y >= 0; y--)
+            fwrite(buf + (size_t)y * W * 4, 1, (size_t)W * 4, fp);
+        fclose(fp);
+    }
+    getrusage(RUSAGE_SELF, &ru);
+    printf("{\"renderer\": \"%s\", \"first_frame_wall\": %.6f, \"maxrss_kb\": %ld, \"gl_error\": %u, \"ms\": [",
+           (const char *)glGetString(GL_RENDERER), first_wall, ru.ru_maxrss, glGetError());
+    for (f = 0; f < frames; f++)
+        printf("%s%.4f", f ? ", " : "", ms[f]);
+    printf("]}\n");
+    OSMesaDestroyContext(ctx);
+    return 0;
+}

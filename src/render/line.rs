@@ -1,0 +1,271 @@
+//! Line segments (GL 1.5 section 3.4): clipping (section 2.12), the
+//! diamond-exit rule for width 1, wide lines, line stipple, and the
+//! interpolation of depth and colour along the segment (equations 3.6-3.8).
+//!
+//! The diamond-exit rule (3.4.1) is decided exactly. Endpoints snap to
+//! 1/256 pixel (`setup::ONE`) like triangle vertices. A fragment at pixel
+//! (px, py) is produced when the segment from pa' to pb' meets the open
+//! diamond |x - cx| + |y - cy| < 1/2 around the pixel centre, unless pb'
+//! lies inside it; pa' and pb' are the endpoints moved by (-ε, -ε²). The
+//! perturbation is carried symbolically: every quantity that depends on it
+//! is a polynomial a + bε + cε² with integer coefficients, compared
+//! lexicographically, so endpoints on diamond corners or edges and lines
+//! through corners get exactly the spec's answer, never a rounding's.
+//! The segment meets the diamond iff some t in [0, 1] satisfies the four
+//! half-plane inequalities, a one-dimensional feasibility problem whose
+//! bounds are compared by cross-multiplication (i128, exact: snapped
+//! coordinates are bounded by the clip guard band, see `setup`).
+//!
+//! Candidate pixels: for an x-major segment (|Δx| >= |Δy|) the line meets
+//! at most one diamond per pixel column, within one pixel of its height at
+//! the column centre, so three rows per column are tested; columns are
+//! visited from pa towards pb, which is the order the stipple counter
+//! needs. y-major segments swap the roles of x and y.
+//!
+//! Wide lines (3.4.2, non-antialiased): the width rounds to an integer w
+//! (at least 1, at most MAX_WIDTH); the segment moved by -(w-1)/2 along
+//! its minor axis is rasterized with width 1, and each fragment becomes a
+//! column (x-major) or row (y-major) of w fragments starting there.
+//!
+//! Stipple (3.4.3): the counter s counts width-1 fragments; a fragment is
+//! drawn iff bit (s / repeat) mod 16 of the pattern is set. The caller owns
+//! s (reset at glBegin and per GL_LINES segment; kept across a strip).
+
+use super::clip::GUARD;
+use super::fragment;
+use super::setup::{to_window, ONE};
+use super::vertex::ClipVertex;
+use super::RenderState;
+use crate::framebuffer::Framebuffer;
+use glam::Vec4;
+
+/// Largest aliased line width (GL_ALIASED_LINE_WIDTH_RANGE's maximum).
+pub const MAX_WIDTH: f32 = 64.0;
+/// Smallest w kept after clipping (as `clip`).
+const W_MIN: f32 = 1e-20;
+
+/// Line state the rasterizer needs.
+#[derive(Clone, Copy, Debug)]
+pub struct LineParams {
+    pub width: f32,
+    /// (repeat factor, pattern) when GL_LINE_STIPPLE is enabled.
+    pub stipple: Option<(u32, u16)>,
+}
+
+/// The rasterization width of a requested width: rounded, in [1, MAX_WIDTH].
+pub fn raster_width(width: f32) -> i64 {
+    let w = (width.clamp(1.0, MAX_WIDTH) + 0.5).floor() as i64;
+    w.clamp(1, MAX_WIDTH as i64)
+}
+
+/// Clips a segment in clip coordinates: exactly at near and far, at the
+/// guard band in x and y. None when nothing is left.
+pub fn clip_segment(a: &ClipVertex, b: &ClipVertex) -> Option<(ClipVertex, ClipVertex)> {
+    if !a.pos.is_finite() || !b.pos.is_finite() {
+        return None;
+    }
+    const PLANES: [fn(&Vec4) -> f32; 7] = [
+        |p| p.w + p.z,
+        |p| p.w - p.z,
+        |p| p.w - W_MIN,
+        |p| GUARD * p.w + p.x,
+        |p| GUARD * p.w - p.x,
+        |p| GUARD * p.w + p.y,
+        |p| GUARD * p.w - p.y,
+    ];
+    let (mut t0, mut t1) = (0.0f32, 1.0f32);
+    for plane in PLANES {
+        let (da, db) = (plane(&a.pos), plane(&b.pos));
+        let (a_in, b_in) = (da >= 0.0, db >= 0.0);
+        match (a_in, b_in) {
+            (true, true) => {}
+            (false, false) => return None,
+            (false, true) => t0 = t0.max(da / (da - db)),
+            (true, false) => t1 = t1.min(da / (da - db)),
+        }
+    }
+    if !(t0 <= t1) {
+        return None;
+    }
+    let na = if t0 > 0.0 { ClipVertex::lerp(a, b, t0) } else { *a };
+    let nb = if t1 < 1.0 { ClipVertex::lerp(a, b, t1) } else { *b };
+    Some((na, nb))
+}
+
+/// a + bε + cε².
+type Eps = [i128; 3];
+
+#[inline]
+fn eps_lt(a: Eps, b: Eps) -> bool {
+    a < b // lexicographic on arrays
+}
+
+#[inline]
+fn eps_scale(a: Eps, k: i128) -> Eps {
+    [a[0] * k, a[1] * k, a[2] * k]
+}
+
+const HALF: i128 = (ONE / 2) as i128;
+const SIGNS: [(i128, i128); 4] = [(1, 1), (1, -1), (-1, 1), (-1, -1)];
+
+/// The diamond-exit rule for the pixel whose centre is (cx, cy), for the
+/// segment (xa, ya) -> (xb, yb); all in 1/ONE pixel units.
+pub fn diamond_exit(xa: i64, ya: i64, xb: i64, yb: i64, cx: i64, cy: i64) -> bool {
+    let (xa, ya, xb, yb, cx, cy) = (xa as i128, ya as i128, xb as i128, yb as i128, cx as i128, cy as i128);
+    // pb' inside the open diamond: excluded.
+    let b_inside = SIGNS.iter().all(|&(sx, sy)| eps_lt([sx * (xb - cx) + sy * (yb - cy), -sx, -sy], [HALF, 0, 0]));
+    if b_inside {
+        return false;
+    }
+    let (dx, dy) = (xb - xa, yb - ya);
+    // Bounds on t: value num/den with den > 0.
+    let mut lower: [(Eps, i128); 4] = [([0; 3], 1); 4];
+    let mut upper: [(Eps, i128); 4] = [([0; 3], 1); 4];
+    let (mut nl, mut nu) = (0, 0);
+    for &(sx, sy) in &SIGNS {
+        let alpha: Eps = [sx * (xa - cx) + sy * (ya - cy), -sx, -sy];
+        let beta = sx * dx + sy * dy;
+        // alpha + beta t < HALF
+        if beta > 0 {
+            upper[nu] = ([HALF - alpha[0], -alpha[1], -alpha[2]], beta);
+            nu += 1;
+        } else if beta < 0 {
+            lower[nl] = ([alpha[0] - HALF, alpha[1], alpha[2]], -beta);
+            nl += 1;
+        } else if !eps_lt(alpha, [HALF, 0, 0]) {
+            return false;
+        }
+    }
+    // t in [0, 1] with t > every lower bound and t < every upper bound.
+    for &(n, d) in &lower[..nl] {
+        if !eps_lt(n, [d, 0, 0]) {
+            return false;
+        }
+    }
+    for &(n, _) in &upper[..nu] {
+        if !eps_lt([0; 3], n) {
+            return false;
+        }
+    }
+    for &(ln, ld) in &lower[..nl] {
+        for &(un, ud) in &upper[..nu] {
+            if !eps_lt(eps_scale(ln, ud), eps_scale(un, ld)) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+#[inline]
+fn floor_div(n: i64, d: i64) -> i64 {
+    n.div_euclid(d)
+}
+
+/// The width-1 fragments of the segment (xa, ya) -> (xb, yb) (1/ONE pixel
+/// units), in order from a to b, limited to major-axis pixels in
+/// [lo, hi). `emit(px, py)` receives each.
+pub fn fragments(xa: i64, ya: i64, xb: i64, yb: i64, lo: i64, hi: i64, mut emit: impl FnMut(i64, i64)) {
+    let (dx, dy) = (xb - xa, yb - ya);
+    if dx == 0 && dy == 0 {
+        return;
+    }
+    let x_major = dx.abs() >= dy.abs();
+    // Work in (major, minor) coordinates.
+    let (ma, na, mb, nb) = if x_major { (xa, ya, xb, yb) } else { (ya, xa, yb, xb) };
+    let (dm, dn) = (mb - ma, nb - na);
+    let first = (floor_div(ma.min(mb), ONE) - 1).max(lo);
+    let last = (floor_div(ma.max(mb), ONE) + 1).min(hi - 1);
+    if first > last {
+        return;
+    }
+    let step = if dm > 0 { 1 } else { -1 };
+    let (mut p, end) = if dm > 0 { (first, last) } else { (last, first) };
+    loop {
+        let cm = p * ONE + ONE / 2;
+        // Minor coordinate of the line at the column centre (floored).
+        let n_at = na as i128 + (dn as i128 * (cm - ma) as i128).div_euclid(dm as i128);
+        let r0 = (n_at as i64).div_euclid(ONE);
+        for q in r0 - 1..=r0 + 1 {
+            let cn = q * ONE + ONE / 2;
+            let hit = if x_major { diamond_exit(xa, ya, xb, yb, cm, cn) } else { diamond_exit(xa, ya, xb, yb, cn, cm) };
+            if hit {
+                if x_major {
+                    emit(p, q)
+                } else {
+                    emit(q, p)
+                }
+            }
+        }
+        if p == end {
+            break;
+        }
+        p += step;
+    }
+}
+
+/// Draws one segment given in clip coordinates. `flat_color` is the
+/// provoking vertex's colour; `s` is the stipple counter.
+pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &ClipVertex, b: &ClipVertex, flat_color: Vec4, s: &mut u32) {
+    let r = rs.draw_rect;
+    if r.is_empty() {
+        return;
+    }
+    let Some((a, b)) = clip_segment(a, b) else { return };
+    let (wa, wb) = (to_window(rs, &a), to_window(rs, &b));
+    let snap = |c: f64| (c * ONE as f64).round() as i64;
+    let (xa, ya, xb, yb) = (snap(wa.x), snap(wa.y), snap(wb.x), snap(wb.y));
+    let (dx, dy) = (xb - xa, yb - ya);
+    if dx == 0 && dy == 0 {
+        return;
+    }
+    let x_major = dx.abs() >= dy.abs();
+    let w = raster_width(lp.width);
+    let shift = (w - 1) * ONE / 2;
+    let (sxa, sya, sxb, syb) = if x_major { (xa, ya - shift, xb, yb - shift) } else { (xa - shift, ya, xb - shift, yb) };
+    let (lo, hi) = if x_major { (r.x0 as i64, r.x1 as i64) } else { (r.y0 as i64, r.y1 as i64) };
+
+    // Attribute interpolation (3.6-3.8) from the snapped endpoints.
+    let inv = 1.0 / ONE as f64;
+    let (fxa, fya) = (xa as f64 * inv, ya as f64 * inv);
+    let (fdx, fdy) = (dx as f64 * inv, dy as f64 * inv);
+    let len2 = fdx * fdx + fdy * fdy;
+    let flat = if rs.flat { Some(fragment::color_to_u8(flat_color)) } else { None };
+    let fs = &rs.fragment;
+    let shade = |fb: &mut Framebuffer, px: i64, py: i64| {
+        if px < r.x0 as i64 || px >= r.x1 as i64 || py < r.y0 as i64 || py >= r.y1 as i64 {
+            return;
+        }
+        let t = (((px as f64 + 0.5 - fxa) * fdx + (py as f64 + 0.5 - fya) * fdy) / len2).clamp(0.0, 1.0);
+        let z = wa.z + t * (wb.z - wa.z);
+        let color = match flat {
+            Some(c) => c,
+            None => {
+                let (ka, kb) = ((1.0 - t) * wa.q, t * wb.q);
+                let den = ka + kb;
+                let c = (wa.color.as_dvec4() * ka + wb.color.as_dvec4() * kb) / den;
+                fragment::color_to_u8(c.as_vec4())
+            }
+        };
+        fragment::shade_fragment(fs, fb, px as usize, py as usize, z, color);
+    };
+    // With stipple, fragments outside the draw rectangle still advance the
+    // counter, so the whole (guard-band-clipped) segment is walked.
+    let (lo, hi) = if lp.stipple.is_some() { (i64::MIN / 4, i64::MAX / 4) } else { (lo, hi) };
+    fragments(sxa, sya, sxb, syb, lo, hi, |px, py| {
+        if let Some((repeat, pattern)) = lp.stipple {
+            let bit = (*s / repeat) % 16;
+            *s = s.wrapping_add(1);
+            if pattern & (1 << bit) == 0 {
+                return;
+            }
+        }
+        for k in 0..w {
+            if x_major {
+                shade(fb, px, py + k)
+            } else {
+                shade(fb, px + k, py)
+            }
+        }
+    });
+}

@@ -1,0 +1,51 @@
+//! Points (GL 1.5 section 3.3), non-antialiased: a point is clipped by its
+//! centre (section 2.12: kept iff inside the view volume), its size rounds
+//! to an integer w (at least 1, at most MAX_SIZE), and it covers the w x w
+//! pixels whose centres lie within w/2 of its centre, where the centre is
+//! (floor(x) + 1/2, floor(y) + 1/2) for odd w and (floor(x + 1/2),
+//! floor(y + 1/2)) for even w. With x snapped to 1/ONE pixel both rules
+//! are one formula: the first column is floor(x + 1/2 - w/2). Every
+//! fragment takes the vertex's depth and colour.
+
+use super::fragment;
+use super::setup::{to_window, ONE};
+use super::vertex::ClipVertex;
+use super::RenderState;
+use crate::framebuffer::Framebuffer;
+
+/// Largest aliased point size (GL_ALIASED_POINT_SIZE_RANGE's maximum).
+pub const MAX_SIZE: f32 = 64.0;
+
+/// The rasterization size of a requested size: rounded, in [1, MAX_SIZE].
+pub fn raster_size(size: f32) -> i64 {
+    ((size.clamp(1.0, MAX_SIZE) + 0.5).floor() as i64).clamp(1, MAX_SIZE as i64)
+}
+
+/// The first pixel (column or row) of a point of rasterization size `w`
+/// at window coordinate `c`.
+pub fn first_pixel(c: f64, w: i64) -> i64 {
+    let fc = (c * ONE as f64).round() as i64;
+    (fc + ONE / 2 - w * ONE / 2).div_euclid(ONE)
+}
+
+/// Draws one point given in clip coordinates.
+pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVertex) {
+    let r = rs.draw_rect;
+    let p = v.pos;
+    if r.is_empty() || !p.is_finite() || !(p.w > 0.0) {
+        return;
+    }
+    if p.x < -p.w || p.x > p.w || p.y < -p.w || p.y > p.w || p.z < -p.w || p.z > p.w {
+        return;
+    }
+    let wv = to_window(rs, v);
+    let w = raster_size(size);
+    let (x0, y0) = (first_pixel(wv.x, w), first_pixel(wv.y, w));
+    let color = fragment::color_to_u8(v.color);
+    let xs = x0.max(r.x0 as i64)..(x0 + w).min(r.x1 as i64);
+    for y in y0.max(r.y0 as i64)..(y0 + w).min(r.y1 as i64) {
+        for x in xs.clone() {
+            fragment::shade_fragment(&rs.fragment, fb, x as usize, y as usize, wv.z, color);
+        }
+    }
+}
