@@ -287,17 +287,17 @@ super::entry_points! {
     todo glFogi(pname: GLenum, param: GLint);
     todo glFogiv(pname: GLenum, params: *const GLint);
     list glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::Scissor(x, y, width, height) }
-    todo glAlphaFunc(func: GLenum, ref_: GLclampf);
-    todo glStencilFunc(func: GLenum, ref_: GLint, mask: GLuint);
-    todo glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum);
+    list glAlphaFunc(func: GLenum, ref_: GLclampf) { |_c| Command::AlphaFunc(func, ref_) }
+    list glStencilFunc(func: GLenum, ref_: GLint, mask: GLuint) { |_c| Command::StencilFunc(func, ref_, mask) }
+    list glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum) { |_c| Command::StencilOp(fail, zfail, zpass) }
     list glDepthFunc(func: GLenum) { |_c| Command::DepthFunc(func) }
-    todo glBlendFunc(sfactor: GLenum, dfactor: GLenum);
-    todo glLogicOp(opcode: GLenum);
+    list glBlendFunc(sfactor: GLenum, dfactor: GLenum) { |_c| Command::BlendFunc([sfactor, dfactor, sfactor, dfactor]) }
+    list glLogicOp(opcode: GLenum) { |_c| Command::LogicOp(opcode) }
     todo glDrawBuffer(mode: GLenum);
     todo glIndexMask(mask: GLuint);
     list glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) { |_c| Command::ColorMask([truth(red), truth(green), truth(blue), truth(alpha)]) }
     list glDepthMask(flag: GLboolean) { |_c| Command::DepthMask(truth(flag)) }
-    list["applies to glClear; the stencil test arrives with issue 3"] glStencilMask(mask: GLuint) { |_c| Command::StencilMask(mask) }
+    list glStencilMask(mask: GLuint) { |_c| Command::StencilMask(mask) }
     list["GL_ACCUM_BUFFER_BIT is accepted but the accumulation buffer is not cleared yet (issue 3)"] glClear(mask: GLbitfield) { |_c| Command::Clear(mask) }
     list glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) { |_c| Command::ClearColor([red, green, blue, alpha]) }
     todo glClearIndex(c: GLfloat);
@@ -347,7 +347,7 @@ super::entry_points! {
     exec glFlush() { |c| c.flush() }
     exec glFinish() { |c| c.flush() }
     list["stored; no hint changes rendering yet"] glHint(target: GLenum, mode: GLenum) { |_c| Command::Hint(target, mode) }
-    list["capabilities other than DEPTH_TEST, SCISSOR_TEST, CULL_FACE and DITHER are stored and queryable but do not affect rendering yet"] glEnable(cap: GLenum) { |_c| Command::Enable(cap) }
+    list["capabilities other than DEPTH_TEST, SCISSOR_TEST, CULL_FACE, DITHER, ALPHA_TEST, STENCIL_TEST, BLEND, COLOR_LOGIC_OP and INDEX_LOGIC_OP are stored and queryable but do not affect rendering yet"] glEnable(cap: GLenum) { |_c| Command::Enable(cap) }
     list["see glEnable"] glDisable(cap: GLenum) { |_c| Command::Disable(cap) }
     exec["as glEnable"] glIsEnabled(cap: GLenum) -> GLboolean { |c| match c.is_enabled(cap) { Some(b) => gl_bool(b), None => { c.set_error(GL_INVALID_ENUM); 0 } } }
     exec["as glGetIntegerv"] glGetBooleanv(pname: GLenum, params: *mut GLboolean) { |c| c.get_into(pname, params, |v| v.as_bool().into_iter().map(gl_bool).collect()) }
@@ -386,8 +386,8 @@ super::entry_points! {
     todo glTexImage3D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void);
     todo glTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void);
     todo glCopyTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
-    todo glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf);
-    todo glBlendEquation(mode: GLenum);
+    list glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) { |_c| Command::BlendColor([red, green, blue, alpha]) }
+    list glBlendEquation(mode: GLenum) { |_c| Command::BlendEquation(mode) }
     todo glColorTable(target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, type_: GLenum, table: *const c_void);
     todo glColorTableParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat);
     todo glColorTableParameteriv(target: GLenum, pname: GLenum, params: *const GLint);
@@ -466,7 +466,7 @@ super::entry_points! {
     todo glCompressedTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void);
     todo glCompressedTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void);
     todo glGetCompressedTexImage(target: GLenum, level: GLint, img: *mut c_void);
-    todo glBlendFuncSeparate(sfactorRGB: GLenum, dfactorRGB: GLenum, sfactorAlpha: GLenum, dfactorAlpha: GLenum);
+    list glBlendFuncSeparate(sfactorRGB: GLenum, dfactorRGB: GLenum, sfactorAlpha: GLenum, dfactorAlpha: GLenum) { |_c| Command::BlendFunc([sfactorRGB, dfactorRGB, sfactorAlpha, dfactorAlpha]) }
     todo glFogCoordf(coord: GLfloat);
     todo glFogCoordfv(coord: *const GLfloat);
     todo glFogCoordd(coord: GLdouble);

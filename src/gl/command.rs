@@ -41,7 +41,15 @@ pub enum Command {
     LineStipple(i32, u16),
     // Section 4.1: fragment operations.
     Scissor(i32, i32, i32, i32),
+    AlphaFunc(u32, f32),
+    StencilFunc(u32, i32, u32),
+    StencilOp(u32, u32, u32),
     DepthFunc(u32),
+    /// glBlendFunc and glBlendFuncSeparate: src RGB, dst RGB, src alpha, dst alpha.
+    BlendFunc([u32; 4]),
+    BlendColor([f32; 4]),
+    BlendEquation(u32),
+    LogicOp(u32),
     // Section 4.2: whole-framebuffer operations.
     ColorMask([bool; 4]),
     DepthMask(bool),
@@ -120,7 +128,17 @@ impl Context {
                 self.line.stipple_pattern = *pattern;
             }
             Scissor(x, y, w, h) => self.set_scissor(*x, *y, *w, *h),
+            AlphaFunc(f, r) => self.alpha_func(*f, *r),
+            StencilFunc(f, r, m) => self.stencil_func(*f, *r, *m),
+            StencilOp(a, b, c) => self.stencil_op(*a, *b, *c),
             DepthFunc(f) => self.depth_func(*f),
+            BlendFunc(f) => self.blend_func(*f),
+            BlendColor(c) => {
+                self.color_buffer.blend_color = c.map(|v| v.clamp(0.0, 1.0));
+                self.dirty |= super::validate::DIRTY_FRAGMENT;
+            }
+            BlendEquation(m) => self.blend_equation(*m),
+            LogicOp(op) => self.logic_op(*op),
             ColorMask(m) => {
                 self.color_buffer.write_mask = *m;
                 self.dirty |= super::validate::DIRTY_FRAGMENT;
@@ -129,7 +147,10 @@ impl Context {
                 self.depth.write_mask = *m;
                 self.dirty |= super::validate::DIRTY_FRAGMENT;
             }
-            StencilMask(m) => self.stencil.write_mask = *m,
+            StencilMask(m) => {
+                self.stencil.write_mask = *m;
+                self.dirty |= super::validate::DIRTY_FRAGMENT;
+            }
             ClearColor(c) => self.color_buffer.clear = c.map(|v| v.clamp(0.0, 1.0)),
             ClearDepth(d) => self.depth.clear = d.clamp(0.0, 1.0),
             ClearStencil(s) => self.stencil.clear = *s,

@@ -9,7 +9,7 @@ use crate::render::fragment::CompareFunc;
 use std::collections::BTreeSet;
 
 /// Capabilities that glEnable accepts and remembers, but whose rendering is
-/// not implemented yet (lighting, fog, textures, blending, ...). glIsEnabled
+/// not implemented yet (lighting, fog, textures, ...). glIsEnabled
 /// reports them faithfully.
 #[derive(Clone, Debug, Default)]
 pub struct OtherCaps(pub BTreeSet<u32>);
@@ -25,12 +25,7 @@ fn is_stored_cap(cap: u32) -> bool {
             | GL_LIGHTING
             | GL_COLOR_MATERIAL
             | GL_FOG
-            | GL_STENCIL_TEST
             | GL_NORMALIZE
-            | GL_ALPHA_TEST
-            | GL_BLEND
-            | GL_INDEX_LOGIC_OP
-            | GL_COLOR_LOGIC_OP
             | GL_TEXTURE_GEN_S
             | GL_TEXTURE_GEN_T
             | GL_TEXTURE_GEN_R
@@ -79,6 +74,17 @@ impl Context {
                 self.dirty |= DIRTY_RASTER;
             }
             GL_DITHER => self.color_buffer.dither = on,
+            GL_ALPHA_TEST | GL_STENCIL_TEST | GL_BLEND | GL_COLOR_LOGIC_OP | GL_INDEX_LOGIC_OP => {
+                let cb = &mut self.color_buffer;
+                *match cap {
+                    GL_ALPHA_TEST => &mut cb.alpha_test,
+                    GL_STENCIL_TEST => &mut self.stencil.test,
+                    GL_BLEND => &mut cb.blend,
+                    GL_COLOR_LOGIC_OP => &mut cb.color_logic_op,
+                    _ => &mut cb.index_logic_op,
+                } = on;
+                self.dirty |= DIRTY_FRAGMENT;
+            }
             GL_LINE_STIPPLE => self.line.stipple = on,
             _ if is_stored_cap(cap) => {
                 if on {
@@ -98,6 +104,11 @@ impl Context {
             GL_SCISSOR_TEST => self.scissor.test,
             GL_CULL_FACE => self.polygon.cull,
             GL_DITHER => self.color_buffer.dither,
+            GL_ALPHA_TEST => self.color_buffer.alpha_test,
+            GL_STENCIL_TEST => self.stencil.test,
+            GL_BLEND => self.color_buffer.blend,
+            GL_COLOR_LOGIC_OP => self.color_buffer.color_logic_op,
+            GL_INDEX_LOGIC_OP => self.color_buffer.index_logic_op,
             GL_LINE_STIPPLE => self.line.stipple,
             _ if is_stored_cap(cap) => self.other_caps.0.contains(&cap),
             _ => return None,

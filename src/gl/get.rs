@@ -83,6 +83,21 @@ impl Context {
             GL_DEPTH_RANGE => Some(Value::Normalized(vec![self.viewport.near, self.viewport.far])),
             GL_STENCIL_CLEAR_VALUE => ints([self.stencil.clear as i64]),
             GL_STENCIL_WRITEMASK => ints([self.stencil.write_mask as i64]),
+            GL_STENCIL_FUNC => ints([self.stencil.func.to_gl() as i64]),
+            GL_STENCIL_VALUE_MASK => ints([self.stencil.value_mask as i64]),
+            GL_STENCIL_REF => ints([self.stencil_reference() as i64]),
+            GL_STENCIL_FAIL => ints([self.stencil.fail.to_gl() as i64]),
+            GL_STENCIL_PASS_DEPTH_FAIL => ints([self.stencil.zfail.to_gl() as i64]),
+            GL_STENCIL_PASS_DEPTH_PASS => ints([self.stencil.zpass.to_gl() as i64]),
+            GL_ALPHA_TEST_FUNC => ints([self.color_buffer.alpha_func.to_gl() as i64]),
+            GL_ALPHA_TEST_REF => Some(Value::Normalized(vec![self.color_buffer.alpha_ref as f64])),
+            GL_BLEND_SRC | GL_BLEND_SRC_RGB => ints([self.color_buffer.blend_src_rgb.to_gl() as i64]),
+            GL_BLEND_DST | GL_BLEND_DST_RGB => ints([self.color_buffer.blend_dst_rgb.to_gl() as i64]),
+            GL_BLEND_SRC_ALPHA => ints([self.color_buffer.blend_src_alpha.to_gl() as i64]),
+            GL_BLEND_DST_ALPHA => ints([self.color_buffer.blend_dst_alpha.to_gl() as i64]),
+            GL_BLEND_COLOR => Some(Value::Normalized(self.color_buffer.blend_color.iter().map(|&c| c as f64).collect())),
+            GL_BLEND_EQUATION => ints([self.color_buffer.blend_equation.to_gl() as i64]),
+            GL_LOGIC_OP_MODE => ints([self.color_buffer.logic_op.to_gl() as i64]),
             GL_VIEWPORT => {
                 let v = &self.viewport;
                 ints([v.x as i64, v.y as i64, v.width as i64, v.height as i64])

@@ -9,6 +9,7 @@ pub mod command;
 pub mod context;
 pub mod enable;
 pub mod enums;
+pub mod fragment;
 pub mod get;
 pub mod lighting;
 pub mod lists;

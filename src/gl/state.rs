@@ -1,7 +1,7 @@
 //! GL state, grouped by the spec's attribute groups (GL 1.5 section 6.2,
 //! tables 6.5 onwards), with the initial values the spec gives.
 
-use crate::render::fragment::CompareFunc;
+use crate::render::fragment::{BlendEquation, BlendFactor, CompareFunc, LogicOp, StencilOp};
 
 /// GL_COLOR_BUFFER_BIT state (the parts implemented so far).
 #[derive(Clone, Debug)]
@@ -9,11 +9,44 @@ pub struct ColorBufferState {
     pub clear: [f32; 4],
     pub write_mask: [bool; 4],
     pub dither: bool,
+    pub alpha_test: bool,
+    pub alpha_func: CompareFunc,
+    /// glAlphaFunc's reference, clamped to [0, 1].
+    pub alpha_ref: f32,
+    pub blend: bool,
+    pub blend_src_rgb: BlendFactor,
+    pub blend_dst_rgb: BlendFactor,
+    pub blend_src_alpha: BlendFactor,
+    pub blend_dst_alpha: BlendFactor,
+    /// glBlendColor, clamped to [0, 1].
+    pub blend_color: [f32; 4],
+    pub blend_equation: BlendEquation,
+    pub color_logic_op: bool,
+    /// GL 1.0's GL_LOGIC_OP (colour-index mode only: no effect in RGBA).
+    pub index_logic_op: bool,
+    pub logic_op: LogicOp,
 }
 
 impl Default for ColorBufferState {
     fn default() -> Self {
-        ColorBufferState { clear: [0.0; 4], write_mask: [true; 4], dither: true }
+        ColorBufferState {
+            clear: [0.0; 4],
+            write_mask: [true; 4],
+            dither: true,
+            alpha_test: false,
+            alpha_func: CompareFunc::Always,
+            alpha_ref: 0.0,
+            blend: false,
+            blend_src_rgb: BlendFactor::One,
+            blend_dst_rgb: BlendFactor::Zero,
+            blend_src_alpha: BlendFactor::One,
+            blend_dst_alpha: BlendFactor::Zero,
+            blend_color: [0.0; 4],
+            blend_equation: BlendEquation::Add,
+            color_logic_op: false,
+            index_logic_op: false,
+            logic_op: LogicOp::Copy,
+        }
     }
 }
 
@@ -32,17 +65,35 @@ impl Default for DepthState {
     }
 }
 
-/// GL_STENCIL_BUFFER_BIT state (the parts implemented so far).
+/// GL_STENCIL_BUFFER_BIT state.
 #[derive(Clone, Debug)]
 pub struct StencilState {
     pub test: bool,
     pub clear: i32,
     pub write_mask: u32,
+    pub func: CompareFunc,
+    /// glStencilFunc's reference as given; clamped to [0, 2^bits - 1] when
+    /// used and when queried.
+    pub reference: i32,
+    pub value_mask: u32,
+    pub fail: StencilOp,
+    pub zfail: StencilOp,
+    pub zpass: StencilOp,
 }
 
 impl Default for StencilState {
     fn default() -> Self {
-        StencilState { test: false, clear: 0, write_mask: !0 }
+        StencilState {
+            test: false,
+            clear: 0,
+            write_mask: !0,
+            func: CompareFunc::Always,
+            reference: 0,
+            value_mask: !0,
+            fail: StencilOp::Keep,
+            zfail: StencilOp::Keep,
+            zpass: StencilOp::Keep,
+        }
     }
 }
 

@@ -5,8 +5,9 @@
 use super::context::Context;
 use super::enums::*;
 use crate::framebuffer::Rect;
-use crate::render::{fragment::FragmentState, Cull, RenderState};
+use crate::render::fragment::{color_to_u8, AlphaTest, Blend, ColorOp, CompareFunc, FragmentState, LogicOp, StencilTest};
 use crate::render::light::LightingSetup;
+use crate::render::{Cull, RenderState};
 use glam::Mat4;
 
 pub const DIRTY_TRANSFORM: u32 = 1 << 0;
@@ -39,12 +40,7 @@ impl Default for Derived {
                 front_ccw: true,
                 flat: false,
                 two_side: false,
-                fragment: FragmentState {
-                    depth_test: false,
-                    depth_func: crate::render::fragment::CompareFunc::Less,
-                    depth_write: true,
-                    color_mask: [true; 4],
-                },
+                fragment: FragmentState::default(),
             },
         }
     }
@@ -87,6 +83,7 @@ impl Context {
             });
             self.derived.render.two_side = l.enabled && l.two_side;
         }
+        let fragment = (d & DIRTY_FRAGMENT != 0).then(|| self.fragment_state());
         let rs = &mut self.derived.render;
         if d & DIRTY_VIEWPORT != 0 {
             let v = &self.viewport;
@@ -109,14 +106,70 @@ impl Context {
             rs.front_ccw = self.polygon.front_face == GL_CCW;
             rs.flat = self.shade_model == GL_FLAT;
         }
-        if d & DIRTY_FRAGMENT != 0 {
-            let has_depth = self.fb.has_depth();
-            rs.fragment = FragmentState {
-                depth_test: self.depth.test && has_depth,
-                depth_func: self.depth.func,
-                depth_write: self.depth.write_mask,
-                color_mask: self.color_buffer.write_mask,
+        if let Some(f) = fragment {
+            rs.fragment = f;
+        }
+    }
+
+    /// Derives the fragment pipeline's configuration (render::fragment):
+    /// which stages run, and their parameters in the framebuffer's terms.
+    fn fragment_state(&self) -> FragmentState {
+        let cb = &self.color_buffer;
+        let stencil_bits = self.fb.config.stencil_bits.min(8) as u32;
+        let max = ((1u32 << stencil_bits) - 1) as u8;
+        let st = &self.stencil;
+        let reference = self.stencil_reference() as u8;
+        let value_mask = st.value_mask as u8 & max;
+        let stencil = StencilTest {
+            func: st.func,
+            reference,
+            masked_ref: reference & value_mask,
+            value_mask,
+            write_mask: st.write_mask as u8 & max,
+            max,
+            fail: st.fail,
+            zfail: st.zfail,
+            zpass: st.zpass,
+        };
+        let color_mask = cb.write_mask;
+        let color = if color_mask == [false; 4] {
+            ColorOp::None
+        } else if cb.color_logic_op {
+            // Section 4.1.8: with the logic op enabled, blending is bypassed.
+            match cb.logic_op {
+                LogicOp::Copy => ColorOp::Replace,
+                LogicOp::Noop => ColorOp::None,
+                op => ColorOp::Logic(op),
+            }
+        } else if cb.blend {
+            let b = Blend {
+                equation: cb.blend_equation,
+                src_rgb: cb.blend_src_rgb,
+                dst_rgb: cb.blend_dst_rgb,
+                src_alpha: cb.blend_src_alpha,
+                dst_alpha: cb.blend_dst_alpha,
+                constant: cb.blend_color,
             };
+            if b.is_replace() {
+                ColorOp::Replace
+            } else {
+                ColorOp::Blend(b)
+            }
+        } else {
+            ColorOp::Replace
+        };
+        FragmentState {
+            alpha_test: cb.alpha_test && cb.alpha_func != CompareFunc::Always,
+            alpha: AlphaTest { func: cb.alpha_func, reference: color_to_u8(glam::Vec4::splat(cb.alpha_ref))[3] },
+            // Without a stencil buffer the test always passes (4.1.5); a
+            // test that always passes and never writes is skipped.
+            stencil_test: st.test && stencil_bits > 0 && (st.func != CompareFunc::Always || stencil.writes()),
+            stencil,
+            depth_test: self.depth.test && self.fb.config.depth_bits > 0,
+            depth_func: self.depth.func,
+            depth_write: self.depth.write_mask,
+            color,
+            color_mask,
         }
     }
 }

@@ -1,0 +1,316 @@
+//! Per-fragment operations (GL 1.5 section 4.1) for the spans the rasterizer
+//! produces, in the spec's order: pixel ownership and scissor (by the
+//! rasterizer's draw rectangle), alpha test, stencil test, depth test,
+//! blending, dithering (a no-op: fragment colours are already 8-bit, the
+//! framebuffer's depth), logical operation, and the colour, depth and
+//! stencil write masks.
+//!
+//! Specialization: validation derives a [`FragmentState`] saying which
+//! stages are active; [`shade_span`] picks, once per span, a kernel
+//! monomorphized over the four stage groups (alpha, stencil, depth, colour),
+//! so an inactive group is not in the loop at all. A colour-masked,
+//! depth-disabled stencil pass runs the stencil test and its operations
+//! only: no colour is interpolated. The colour stage is one of none /
+//! replace / blend / logic op ([`ColorOp`]), chosen at validation.
+//!
+//! Interplay (section 4.1.5): a fragment failing the stencil test takes the
+//! `fail` operation; passing it, `zfail` if the depth test fails and `zpass`
+//! if it passes or the depth test is disabled. Without a stencil buffer the
+//! stencil test always passes and nothing is written. With
+//! GL_COLOR_LOGIC_OP enabled, blending is bypassed (section 4.1.8).
+
+pub mod blend;
+pub mod logic;
+pub mod stencil;
+
+pub use blend::{Blend, BlendEquation, BlendFactor};
+pub use logic::LogicOp;
+pub use stencil::{StencilOp, StencilTest};
+
+use super::setup::{Plane, TriangleSetup};
+use crate::framebuffer::{Framebuffer, DEPTH_MAX};
+use glam::Vec4;
+
+/// The comparison of glDepthFunc / glAlphaFunc / glStencilFunc.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CompareFunc {
+    Never,
+    Less,
+    Equal,
+    Lequal,
+    Greater,
+    Notequal,
+    Gequal,
+    Always,
+}
+
+impl CompareFunc {
+    /// From the GL enum (GL_NEVER .. GL_ALWAYS = 0x200 .. 0x207).
+    pub fn from_gl(e: u32) -> Option<CompareFunc> {
+        use CompareFunc::*;
+        Some(match e {
+            0x200 => Never,
+            0x201 => Less,
+            0x202 => Equal,
+            0x203 => Lequal,
+            0x204 => Greater,
+            0x205 => Notequal,
+            0x206 => Gequal,
+            0x207 => Always,
+            _ => return None,
+        })
+    }
+
+    pub fn to_gl(self) -> u32 {
+        0x200 + self as u32
+    }
+
+    /// Does `incoming` pass against `stored`?
+    #[inline]
+    pub fn test<T: PartialOrd>(self, incoming: T, stored: T) -> bool {
+        use CompareFunc::*;
+        match self {
+            Never => false,
+            Less => incoming < stored,
+            Equal => incoming == stored,
+            Lequal => incoming <= stored,
+            Greater => incoming > stored,
+            Notequal => incoming != stored,
+            Gequal => incoming >= stored,
+            Always => true,
+        }
+    }
+}
+
+/// The alpha test (section 4.1.4): the fragment's 8-bit alpha against the
+/// reference converted to 8 bits as an alpha colour component.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AlphaTest {
+    pub func: CompareFunc,
+    pub reference: u8,
+}
+
+/// What happens to the colour of a fragment that passed every test.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ColorOp {
+    /// Nothing reaches the colour buffer (all channels masked, or GL_NOOP).
+    None,
+    /// The fragment's colour is stored (through the colour mask).
+    Replace,
+    Blend(Blend),
+    Logic(LogicOp),
+}
+
+/// The fragment pipeline's configuration, derived from GL state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FragmentState {
+    /// Alpha test enabled and not GL_ALWAYS.
+    pub alpha_test: bool,
+    pub alpha: AlphaTest,
+    /// Stencil test enabled and a stencil buffer present.
+    pub stencil_test: bool,
+    pub stencil: StencilTest,
+    /// Depth test enabled and a depth buffer present.
+    pub depth_test: bool,
+    pub depth_func: CompareFunc,
+    pub depth_write: bool,
+    pub color: ColorOp,
+    /// Bytes of the RGBA pixel that colour writes may change (glColorMask).
+    pub color_mask: [bool; 4],
+}
+
+impl Default for FragmentState {
+    fn default() -> Self {
+        FragmentState {
+            alpha_test: false,
+            alpha: AlphaTest { func: CompareFunc::Always, reference: 0 },
+            stencil_test: false,
+            stencil: StencilTest {
+                func: CompareFunc::Always,
+                reference: 0,
+                masked_ref: 0,
+                value_mask: 0xFF,
+                write_mask: 0xFF,
+                max: 0xFF,
+                fail: StencilOp::Keep,
+                zfail: StencilOp::Keep,
+                zpass: StencilOp::Keep,
+            },
+            depth_test: false,
+            depth_func: CompareFunc::Less,
+            depth_write: true,
+            color: ColorOp::Replace,
+            color_mask: [true; 4],
+        }
+    }
+}
+
+/// GL's conversion of a colour to the framebuffer's 8-bit fixed point:
+/// clamp to [0, 1], then round c * 255 to the nearest integer (2.14.9).
+#[inline]
+pub fn color_to_u8(c: Vec4) -> [u8; 4] {
+    let conv = |v: f32| (v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8;
+    [conv(c.x), conv(c.y), conv(c.z), conv(c.w)]
+}
+
+/// Window depth in [0, 1] to the depth buffer's 24-bit fixed point.
+#[inline]
+pub fn depth_to_fixed(z: f64) -> u32 {
+    (z.clamp(0.0, 1.0) * DEPTH_MAX as f64 + 0.5) as u32
+}
+
+#[inline]
+fn eval(p: &Plane, cx: f64, cy: f64) -> f64 {
+    p.a0 + p.dx * cx + p.dy * cy
+}
+
+/// The colour of a triangle's fragment at (cx, cy) relative to its origin.
+#[inline(always)]
+fn triangle_color(t: &TriangleSetup, cx: f64, cy: f64) -> [u8; 4] {
+    match t.flat {
+        Some(c) => c,
+        None => {
+            let mut c = [0.0f32; 4];
+            let w = if t.perspective { 1.0 / eval(&t.q, cx, cy) } else { 1.0 };
+            for (ch, p) in t.color.iter().enumerate() {
+                c[ch] = (eval(p, cx, cy) * w) as f32;
+            }
+            color_to_u8(Vec4::from_array(c))
+        }
+    }
+}
+
+/// The stage-group key of a state: which of [`fragment`]'s const
+/// parameters are on.
+#[inline]
+fn key(fs: &FragmentState) -> u8 {
+    (fs.alpha_test as u8) | (fs.stencil_test as u8) << 1 | (fs.depth_test as u8) << 2 | ((fs.color != ColorOp::None) as u8) << 3
+}
+
+/// Expands `$call::<A, S, D, C>(..)` for the 16 keys.
+macro_rules! dispatch {
+    ($k:expr, $f:ident ( $($arg:expr),* )) => {
+        match $k {
+            0 => {}
+            1 => $f::<true, false, false, false>($($arg),*),
+            2 => $f::<false, true, false, false>($($arg),*),
+            3 => $f::<true, true, false, false>($($arg),*),
+            4 => $f::<false, false, true, false>($($arg),*),
+            5 => $f::<true, false, true, false>($($arg),*),
+            6 => $f::<false, true, true, false>($($arg),*),
+            7 => $f::<true, true, true, false>($($arg),*),
+            8 => $f::<false, false, false, true>($($arg),*),
+            9 => $f::<true, false, false, true>($($arg),*),
+            10 => $f::<false, true, false, true>($($arg),*),
+            11 => $f::<true, true, false, true>($($arg),*),
+            12 => $f::<false, false, true, true>($($arg),*),
+            13 => $f::<true, false, true, true>($($arg),*),
+            14 => $f::<false, true, true, true>($($arg),*),
+            _ => $f::<true, true, true, true>($($arg),*),
+        }
+    };
+}
+
+/// Shades pixels [x0, x1) of row `y` of a triangle.
+pub fn shade_span(fs: &FragmentState, t: &TriangleSetup, fb: &mut Framebuffer, y: usize, x0: usize, x1: usize) {
+    dispatch!(key(fs), span(fs, t, fb, y, x0, x1))
+}
+
+fn span<const A: bool, const S: bool, const D: bool, const C: bool>(fs: &FragmentState, t: &TriangleSetup, fb: &mut Framebuffer, y: usize, x0: usize, x1: usize) {
+    let cy = y as f64 + 0.5 - t.y0;
+    let row = fb.index(0, y);
+    for x in x0..x1 {
+        let cx = x as f64 + 0.5 - t.x0;
+        fragment::<A, S, D, C>(fs, fb, row + x, || depth_to_fixed(eval(&t.z, cx, cy)), || triangle_color(t, cx, cy));
+    }
+}
+
+/// Runs one fragment whose depth (24-bit fixed point) and colour are known
+/// through the per-fragment operations, at framebuffer index `i` (for
+/// primitives other than triangles: points, lines, pixel rectangles).
+pub fn process_fragment(fs: &FragmentState, fb: &mut Framebuffer, i: usize, z: u32, color: [u8; 4]) {
+    dispatch!(key(fs), fragment(fs, fb, i, || z, || color))
+}
+
+/// Shades one fragment of a point or line at pixel (x, y), already inside
+/// the draw rectangle, with its window depth `z` (in [0, 1]) and colour,
+/// through the same per-fragment operations as `shade_span`.
+pub fn shade_fragment(fs: &FragmentState, fb: &mut Framebuffer, x: usize, y: usize, z: f64, color: [u8; 4]) {
+    let i = fb.index(x, y);
+    dispatch!(key(fs), fragment(fs, fb, i, || depth_to_fixed(z), || color))
+}
+
+/// The per-fragment operations for one fragment, with the stage groups
+/// fixed at compile time: A alpha test, S stencil test, D depth test, C
+/// colour write. Depth and colour are computed only when a stage needs them.
+#[inline(always)]
+fn fragment<const A: bool, const S: bool, const D: bool, const C: bool>(
+    fs: &FragmentState,
+    fb: &mut Framebuffer,
+    i: usize,
+    depth: impl Fn() -> u32,
+    color: impl Fn() -> [u8; 4],
+) {
+    let mut src = [0u8; 4];
+    // Section 4.1.4: alpha test.
+    if A {
+        src = color();
+        if !fs.alpha.func.test(src[3], fs.alpha.reference) {
+            return;
+        }
+    }
+    // Section 4.1.5: stencil test; the fail operation.
+    let st = &fs.stencil;
+    if S {
+        let s = fb.stencil[i];
+        if !st.test(s) {
+            fb.stencil[i] = st.apply(st.fail, s);
+            return;
+        }
+    }
+    // Section 4.1.6: depth test; the depth-fail operation.
+    if D {
+        let z = depth();
+        if !fs.depth_func.test(z, fb.depth[i]) {
+            if S {
+                fb.stencil[i] = st.apply(st.zfail, fb.stencil[i]);
+            }
+            return;
+        }
+        if fs.depth_write {
+            fb.depth[i] = z;
+        }
+    }
+    // Depth passed, or the depth test is off: the depth-pass operation.
+    if S {
+        fb.stencil[i] = st.apply(st.zpass, fb.stencil[i]);
+    }
+    if C {
+        if !A {
+            src = color();
+        }
+        write_color(fs, &mut fb.color[i], src);
+    }
+}
+
+/// Sections 4.1.8 to 4.1.10 and 4.2.2: blending or the logic op, then the
+/// colour write mask.
+#[inline(always)]
+fn write_color(fs: &FragmentState, dst: &mut [u8; 4], src: [u8; 4]) {
+    let new = match fs.color {
+        ColorOp::None => return,
+        ColorOp::Replace => src,
+        ColorOp::Blend(b) => b.apply(src, *dst),
+        ColorOp::Logic(op) => op.apply(u32::from_ne_bytes(src), u32::from_ne_bytes(*dst)).to_ne_bytes(),
+    };
+    let m = fs.color_mask;
+    if m == [true; 4] {
+        *dst = new;
+    } else {
+        for ch in 0..4 {
+            if m[ch] {
+                dst[ch] = new[ch];
+            }
+        }
+    }
+}
