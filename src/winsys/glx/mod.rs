@@ -26,6 +26,12 @@
 //!   records, per visual, whether the program asked for double buffering,
 //!   and glXGetConfig/glXCreateContext answer with that (double-buffered
 //!   for a visual never chosen).
+//!
+//! Safety: the `unsafe fn`s are the bodies of the glX* entry points and
+//! take the C caller's pointers as GLX 1.4 defines them (a live Display,
+//! NULL or valid XVisualInfo/GLXFBConfig/GLXContext handles, writable
+//! output pointers or NULL).
+#![allow(clippy::missing_safety_doc)]
 
 pub mod xlib;
 
@@ -213,7 +219,7 @@ unsafe fn config_of_visual(dpy: *mut Display, vis: *const XVisualInfo) -> Option
     }
     let v = &*vis;
     let list = configs(dpy, v.screen);
-    let double = lock().visual_double.iter().find(|(d, id, _)| *d == dpy as usize && *id == v.visualid).map_or(true, |e| e.2);
+    let double = lock().visual_double.iter().find(|(d, id, _)| *d == dpy as usize && *id == v.visualid).is_none_or(|e| e.2);
     list.into_iter().find(|c| c.visualid == v.visualid && c.double == double)
 }
 
@@ -237,7 +243,7 @@ pub unsafe fn query_extension(dpy: *mut Display, error_base: *mut c_int, event_b
     // The server's GLX bases if it has the extension (protocol errors and
     // events would come from there); softgl itself needs none.
     let (mut op, mut ev, mut er) = (0, 0, 0);
-    if (x.XQueryExtension)(dpy, b"GLX\0".as_ptr() as *const c_char, &mut op, &mut ev, &mut er) == 0 {
+    if (x.XQueryExtension)(dpy, c"GLX".as_ptr(), &mut op, &mut ev, &mut er) == 0 {
         ev = 0;
         er = 0;
     }

@@ -87,7 +87,7 @@ unsafe fn sym<T: Copy>(lib: *mut c_void, name: &[u8]) -> Option<T> {
 }
 
 unsafe fn load() -> Option<Xlib> {
-    let lib = libc::dlopen(b"libX11.so.6\0".as_ptr() as *const c_char, libc::RTLD_LAZY | libc::RTLD_LOCAL);
+    let lib = libc::dlopen(c"libX11.so.6".as_ptr(), libc::RTLD_LAZY | libc::RTLD_LOCAL);
     if lib.is_null() {
         return None;
     }
