@@ -224,6 +224,18 @@ static int run_fbconfig(Display *dpy)
         XFree(every);
     configs = glXChooseFBConfig(dpy, DefaultScreen(dpy), msaa, &n);
     CHECK(configs == NULL && n == 0, "multisample configs offered: %d", n);
+    {
+        /* An attribute softgl does not know (GLX_FRAMEBUFFER_SRGB_CAPABLE_ARB)
+         * is met when it asks for nothing, unmet when it asks for something. */
+        int srgb_off[] = {0x20B2, False, None}, srgb_on[] = {0x20B2, True, None};
+        int m = 0;
+        GLXFBConfig *c = glXChooseFBConfig(dpy, DefaultScreen(dpy), srgb_off, &m);
+        CHECK(c && m > 0, "unknown attribute = False: %d configs", m);
+        if (c)
+            XFree(c);
+        c = glXChooseFBConfig(dpy, DefaultScreen(dpy), srgb_on, &m);
+        CHECK(!c && m == 0, "unknown attribute = True: %d configs", m);
+    }
     configs = glXChooseFBConfig(dpy, DefaultScreen(dpy), attribs, &n);
     if (!configs || n < 1) {
         printf("FAIL glXChooseFBConfig found no config\n");

@@ -327,14 +327,17 @@ unsafe fn attribs(list: *const c_int, visual_style: bool) -> Option<Vec<(c_int, 
     }
 }
 
-/// Whether `c` satisfies one (attribute, value) request. None: unknown
-/// attribute.
-fn matches(c: &FbConfig, a: c_int, v: c_int) -> Option<bool> {
+/// Whether `c` satisfies one (attribute, value) request. An attribute
+/// softgl does not know (an extension's: sRGB, bind-to-texture, ...) is
+/// met when it asks for nothing (zero or GLX_DONT_CARE) and unmet
+/// otherwise, so programs that list such attributes as False still get a
+/// config.
+fn matches(c: &FbConfig, a: c_int, v: c_int) -> bool {
     if v == GLX_DONT_CARE && a != GLX_LEVEL {
-        return Some(true);
+        return true;
     }
-    let have = c.attrib(a)?;
-    Some(match a {
+    let Some(have) = c.attrib(a) else { return v == 0 };
+    match a {
         // Minimum criteria.
         GLX_BUFFER_SIZE | GLX_AUX_BUFFERS | GLX_RED_SIZE | GLX_GREEN_SIZE | GLX_BLUE_SIZE | GLX_ALPHA_SIZE | GLX_DEPTH_SIZE | GLX_STENCIL_SIZE
         | GLX_ACCUM_RED_SIZE | GLX_ACCUM_GREEN_SIZE | GLX_ACCUM_BLUE_SIZE | GLX_ACCUM_ALPHA_SIZE | GLX_SAMPLE_BUFFERS | GLX_SAMPLES => have >= v,
@@ -343,7 +346,7 @@ fn matches(c: &FbConfig, a: c_int, v: c_int) -> Option<bool> {
         GLX_DOUBLEBUFFER | GLX_STEREO | GLX_X_RENDERABLE | GLX_RGBA | GLX_USE_GL => (have != 0) == (v != 0),
         // Exact.
         _ => have == v,
-    })
+    }
 }
 
 pub unsafe fn choose_visual(dpy: *mut Display, screen: c_int, list: *mut c_int) -> *mut XVisualInfo {
@@ -357,15 +360,7 @@ pub unsafe fn choose_visual(dpy: *mut Display, screen: c_int, list: *mut c_int) 
     want.retain(|&(a, _)| a != GLX_DOUBLEBUFFER);
     want.push((GLX_DOUBLEBUFFER, double as c_int));
     for c in configs(dpy, screen) {
-        let mut ok = true;
-        for &(a, v) in &want {
-            match matches(c, a, v) {
-                Some(true) => {}
-                Some(false) => ok = false,
-                None => return null_mut(),
-            }
-        }
-        if ok {
+        if want.iter().all(|&(a, v)| matches(c, a, v)) {
             let mut s = lock();
             s.visual_double.retain(|(d, id, _)| !(*d == dpy as usize && *id == c.visualid));
             s.visual_double.push((dpy as usize, c.visualid, double));
@@ -441,15 +436,7 @@ pub unsafe fn choose_fb_config(dpy: *mut Display, screen: c_int, list: *const c_
     }
     let mut out = Vec::new();
     for c in configs(dpy, screen) {
-        let mut ok = true;
-        for &(a, v) in &want {
-            match matches(c, a, v) {
-                Some(true) => {}
-                Some(false) => ok = false,
-                None => return null_mut(),
-            }
-        }
-        if ok {
+        if want.iter().all(|&(a, v)| matches(c, a, v)) {
             out.push(c);
         }
     }
