@@ -6,7 +6,8 @@
  *                         is resized and the next frame must fill it
  *   glx_window fbconfig   glXChooseFBConfig + glXCreateNewContext +
  *                         glXCreateWindow + glXMakeContextCurrent, single-
- *                         buffered, shown by glFinish
+ *                         buffered, shown by glFinish; then the same
+ *                         context on a GLXPixmap (glXCreatePixmap)
  *   glx_window rootcount  prints the number of non-black pixels on the
  *                         root window (a cheap screenshot check for
  *                         glxgears; start Xvfb with -br)
@@ -286,6 +287,26 @@ static int run_fbconfig(Display *dpy)
     glFinish();
     XSync(dpy, False);
     check_scene(dpy, win, vi, w, h, "fbconfig, single-buffered, after glFinish");
+
+    /* The same context on a GLXPixmap (configs offer GLX_PIXMAP_BIT):
+     * single-buffered, shown at glFinish. */
+    {
+        int pw = 40, ph = 30;
+        Pixmap pm = XCreatePixmap(dpy, RootWindow(dpy, vi->screen), pw, ph, vi->depth);
+        GLXPixmap gpm;
+        glXGetFBConfigAttrib(dpy, configs[0], GLX_DRAWABLE_TYPE, &v);
+        CHECK(v & GLX_PIXMAP_BIT, "GLX_DRAWABLE_TYPE 0x%x lacks GLX_PIXMAP_BIT", v);
+        gpm = glXCreatePixmap(dpy, configs[0], pm, NULL);
+        CHECK(gpm != None, "glXCreatePixmap");
+        CHECK(glXMakeContextCurrent(dpy, gpm, gpm, ctx), "glXMakeContextCurrent(pixmap)");
+        draw_scene(pw, ph);
+        glFinish();
+        XSync(dpy, False);
+        check_scene(dpy, pm, vi, pw, ph, "fbconfig, GLXPixmap, after glFinish");
+        CHECK(glXMakeContextCurrent(dpy, None, None, NULL), "glXMakeContextCurrent(None) after the pixmap");
+        glXDestroyPixmap(dpy, gpm);
+        XFreePixmap(dpy, pm);
+    }
 
     CHECK(glXMakeContextCurrent(dpy, None, None, NULL), "glXMakeContextCurrent(None)");
     glXDestroyContext(dpy, ctx);

@@ -7,7 +7,7 @@
 #   1. "visual": glXChooseVisual + glXCreateContext, double-buffered window,
 #      clear + triangle, glXSwapBuffers, XGetImage checks; then a resize;
 #   2. "fbconfig": glXChooseFBConfig + glXCreateNewContext + glXCreateWindow,
-#      single-buffered, shown by glFinish, same checks;
+#      single-buffered, shown by glFinish, same checks; then a GLXPixmap;
 #   3. when glxgears is installed (mesa-utils), Debian's glxgears runs for
 #      2 seconds with LD_LIBRARY_PATH=build/lib: it must report softgl as
 #      GL_RENDERER, keep running, and leave non-black pixels on the screen;
