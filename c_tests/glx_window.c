@@ -194,9 +194,19 @@ static int run_visual(Display *dpy)
     XSync(dpy, False);
     check_scene(dpy, win, vi, w, h, "visual, after a resize");
 
+    /* Binding again what is already bound (freeglut does so before every
+     * callback) keeps the context working. */
+    CHECK(glXMakeCurrent(dpy, win, ctx), "glXMakeCurrent again");
+    draw_scene(w, h);
+    glXSwapBuffers(dpy, win);
+    XSync(dpy, False);
+    check_scene(dpy, win, vi, w, h, "visual, after binding again");
+
+    /* Destroying a current context defers until it is released. */
+    glXDestroyContext(dpy, ctx);
+    CHECK(glXGetCurrentContext() == ctx, "a destroyed current context stays current until released");
     CHECK(glXMakeCurrent(dpy, None, NULL), "glXMakeCurrent(None, NULL)");
     CHECK(glXGetCurrentContext() == NULL, "still current after release");
-    glXDestroyContext(dpy, ctx);
     XDestroyWindow(dpy, win);
     XFree(vi);
     return 0;
