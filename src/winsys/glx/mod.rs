@@ -302,8 +302,9 @@ pub fn get_client_string(_dpy: *mut Display, name: c_int) -> *const c_char {
 
 // ---- visuals and configs ----
 
-/// Reads an attribute list. `boolean` lists glXChooseVisual's attributes
-/// that take no value.
+/// Reads a None-terminated attribute list into (attribute, value) pairs.
+/// With `visual_style` (glXChooseVisual), GLX_USE_GL, GLX_RGBA,
+/// GLX_DOUBLEBUFFER and GLX_STEREO take no value and read as 1.
 unsafe fn attribs(list: *const c_int, visual_style: bool) -> Option<Vec<(c_int, c_int)>> {
     let mut out = Vec::new();
     if list.is_null() {
