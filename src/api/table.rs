@@ -17,13 +17,20 @@ use super::types::*;
 use crate::gl::enums::*;
 use crate::gl::{get, lists::decode_names, Command};
 use crate::glu;
+use crate::winsys::glx::{self, xlib::{Display, XVisualInfo}, Bool, FbConfig, GlxContext};
 use crate::winsys::osmesa::{self, OsContext};
-use std::ffi::{c_char, c_void};
+use std::ffi::{c_char, c_int, c_void};
 
 /// GLU's opaque object types, as C sees them.
 pub type GLUquadric = c_void;
 pub type GLUtesselator = c_void;
 pub type GLUnurbs = c_void;
+
+/// GLX's X types, as C sees them (an XID is an unsigned long).
+pub type XID = std::ffi::c_ulong;
+pub type GLXDrawable = XID;
+pub type GLXFBConfig = *const FbConfig;
+pub type GLXContext = *mut GlxContext;
 
 /// A column-major GL matrix.
 fn matrix(m: [f64; 16]) -> glam::DMat4 {
@@ -606,4 +613,46 @@ super::entry_points! {
     free OSMesaGetProcAddress(funcName: *const c_char) -> GLproc { proc_from_name(funcName) }
     todo OSMesaColorClamp(enable: GLboolean);
     todo OSMesaPostprocess(osmesa: *mut OsContext, filter: *const c_char, enable_value: u32);
+
+    // ---- glx.h ----
+    free glXQueryExtension(dpy: *mut Display, errorBase: *mut c_int, eventBase: *mut c_int) -> Bool { glx::query_extension(dpy, errorBase, eventBase) }
+    free glXQueryVersion(dpy: *mut Display, major: *mut c_int, minor: *mut c_int) -> Bool { glx::query_version(dpy, major, minor) }
+    free glXQueryExtensionsString(dpy: *mut Display, screen: c_int) -> *const c_char { glx::query_extensions_string(dpy, screen) }
+    free glXQueryServerString(dpy: *mut Display, screen: c_int, name: c_int) -> *const c_char { glx::query_server_string(dpy, screen, name) }
+    free glXGetClientString(dpy: *mut Display, name: c_int) -> *const c_char { glx::get_client_string(dpy, name) }
+    free["double buffering is per visual as glXChooseVisual was last asked; no colour-index, stereo or multisample visuals"] glXChooseVisual(dpy: *mut Display, screen: c_int, attribList: *mut c_int) -> *mut XVisualInfo { glx::choose_visual(dpy, screen, attribList) }
+    free glXGetConfig(dpy: *mut Display, vis: *mut XVisualInfo, attrib: c_int, value: *mut c_int) -> c_int { glx::get_config(dpy, vis, attrib, value) }
+    free["the share list is accepted but display lists are not shared yet"] glXCreateContext(dpy: *mut Display, vis: *mut XVisualInfo, shareList: GLXContext, direct: Bool) -> GLXContext { glx::create_context(dpy, vis, shareList, direct) }
+    free glXDestroyContext(dpy: *mut Display, ctx: GLXContext) { glx::destroy_context(dpy, ctx) }
+    free["GL_FRONT and GL_BACK are one colour buffer"] glXMakeCurrent(dpy: *mut Display, drawable: GLXDrawable, ctx: GLXContext) -> Bool { glx::make_current(dpy, drawable, ctx) }
+    todo glXCopyContext(dpy: *mut Display, src: GLXContext, dst: GLXContext, mask: std::ffi::c_ulong);
+    free["shows the one colour buffer (no separate front buffer yet); XPutImage, no MIT-SHM"] glXSwapBuffers(dpy: *mut Display, drawable: GLXDrawable) { glx::swap_buffers(dpy, drawable) }
+    free glXCreateGLXPixmap(dpy: *mut Display, visual: *mut XVisualInfo, pixmap: XID) -> GLXDrawable { glx::create_pixmap(dpy, if visual.is_null() { 0 } else { pixmap }) }
+    free glXDestroyGLXPixmap(dpy: *mut Display, pixmap: GLXDrawable) { glx::destroy_pixmap(dpy, pixmap) }
+    free glXIsDirect(dpy: *mut Display, ctx: GLXContext) -> Bool { glx::is_direct(dpy, ctx) }
+    free glXGetCurrentContext() -> GLXContext { glx::get_current_context() }
+    free glXGetCurrentDrawable() -> GLXDrawable { glx::get_current_drawable() }
+    free glXWaitGL() { glx::wait_gl() }
+    free glXWaitX() { glx::wait_x() }
+    todo glXUseXFont(font: XID, first: c_int, count: c_int, list: c_int);
+    free glXGetCurrentDisplay() -> *mut Display { glx::get_current_display() }
+    free["no pbuffer configs"] glXChooseFBConfig(dpy: *mut Display, screen: c_int, attribList: *const c_int, nitems: *mut c_int) -> *mut GLXFBConfig { glx::choose_fb_config(dpy, screen, attribList, nitems) }
+    free glXGetFBConfigAttrib(dpy: *mut Display, config: GLXFBConfig, attribute: c_int, value: *mut c_int) -> c_int { glx::get_fb_config_attrib(dpy, config, attribute, value) }
+    free glXGetFBConfigs(dpy: *mut Display, screen: c_int, nelements: *mut c_int) -> *mut GLXFBConfig { glx::get_fb_configs(dpy, screen, nelements) }
+    free glXGetVisualFromFBConfig(dpy: *mut Display, config: GLXFBConfig) -> *mut XVisualInfo { glx::get_visual_from_fb_config(dpy, config) }
+    free glXCreateWindow(dpy: *mut Display, config: GLXFBConfig, win: XID, attribList: *const c_int) -> GLXDrawable { glx::create_window(dpy, config, win, attribList) }
+    free glXDestroyWindow(dpy: *mut Display, win: GLXDrawable) { glx::destroy_window(dpy, win) }
+    free glXCreatePixmap(dpy: *mut Display, config: GLXFBConfig, pixmap: XID, attribList: *const c_int) -> GLXDrawable { glx::create_fb_pixmap(dpy, config, pixmap, attribList) }
+    free glXDestroyPixmap(dpy: *mut Display, pixmap: GLXDrawable) { glx::destroy_pixmap(dpy, pixmap) }
+    todo glXCreatePbuffer(dpy: *mut Display, config: GLXFBConfig, attribList: *const c_int) -> GLXDrawable;
+    todo glXDestroyPbuffer(dpy: *mut Display, pbuf: GLXDrawable);
+    free["GLX_WIDTH and GLX_HEIGHT only"] glXQueryDrawable(dpy: *mut Display, draw: GLXDrawable, attribute: c_int, value: *mut std::ffi::c_uint) { glx::query_drawable(dpy, draw, attribute, value) }
+    free["the share list is accepted but display lists are not shared yet"] glXCreateNewContext(dpy: *mut Display, config: GLXFBConfig, renderType: c_int, shareList: GLXContext, direct: Bool) -> GLXContext { glx::create_new_context(dpy, config, renderType, shareList, direct) }
+    free["the read drawable must be the draw drawable's framebuffer: reads come from the draw drawable"] glXMakeContextCurrent(dpy: *mut Display, draw: GLXDrawable, read: GLXDrawable, ctx: GLXContext) -> Bool { glx::make_context_current(dpy, draw, read, ctx) }
+    free glXGetCurrentReadDrawable() -> GLXDrawable { glx::get_current_read_drawable() }
+    free["GLX_FBCONFIG_ID, GLX_RENDER_TYPE and GLX_SCREEN"] glXQueryContext(dpy: *mut Display, ctx: GLXContext, attribute: c_int, value: *mut c_int) -> c_int { glx::query_context(dpy, ctx, attribute, value) }
+    todo glXSelectEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: std::ffi::c_ulong);
+    todo glXGetSelectedEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: *mut std::ffi::c_ulong);
+    free glXGetProcAddressARB(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
+    free glXGetProcAddress(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
 }

@@ -1,0 +1,114 @@
+//! The few Xlib functions GLX needs, found at run time with
+//! `dlopen("libX11.so.6")` so that softgl has no link-time X dependency
+//! (a program that never calls glX* never loads X). The C structures
+//! below are Xlib's public ABI (Xlib.h, Xutil.h) on LP64 and ILP32 alike:
+//! `long`/`unsigned long` are `c_long`/`c_ulong`.
+
+#![allow(non_snake_case, non_upper_case_globals)]
+
+use std::ffi::{c_char, c_int, c_long, c_uint, c_ulong, c_void};
+use std::sync::OnceLock;
+
+pub type Display = c_void;
+pub type Visual = c_void;
+pub type Xid = c_ulong;
+pub type Gc = *mut c_void;
+
+/// XVisualInfo (Xutil.h).
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub struct XVisualInfo {
+    pub visual: *mut Visual,
+    pub visualid: c_ulong,
+    pub screen: c_int,
+    pub depth: c_int,
+    pub class: c_int,
+    pub red_mask: c_ulong,
+    pub green_mask: c_ulong,
+    pub blue_mask: c_ulong,
+    pub colormap_size: c_int,
+    pub bits_per_rgb: c_int,
+}
+
+/// XImage (Xlib.h). softgl fills one itself and lets XInitImage supply the
+/// function table, so no Xlib allocation has to be freed.
+#[repr(C)]
+pub struct XImage {
+    pub width: c_int,
+    pub height: c_int,
+    pub xoffset: c_int,
+    pub format: c_int,
+    pub data: *mut c_char,
+    pub byte_order: c_int,
+    pub bitmap_unit: c_int,
+    pub bitmap_bit_order: c_int,
+    pub bitmap_pad: c_int,
+    pub depth: c_int,
+    pub bytes_per_line: c_int,
+    pub bits_per_pixel: c_int,
+    pub red_mask: c_ulong,
+    pub green_mask: c_ulong,
+    pub blue_mask: c_ulong,
+    pub obdata: *mut c_char,
+    pub funcs: [*mut c_void; 6],
+}
+
+pub const VisualIDMask: c_long = 0x1;
+pub const VisualScreenMask: c_long = 0x2;
+pub const VisualClassMask: c_long = 0x8;
+pub const TrueColor: c_int = 4;
+pub const ZPixmap: c_int = 2;
+pub const LSBFirst: c_int = 0;
+pub const MSBFirst: c_int = 1;
+
+/// The Xlib entry points softgl calls.
+pub struct Xlib {
+    pub XGetVisualInfo: unsafe extern "C" fn(*mut Display, c_long, *mut XVisualInfo, *mut c_int) -> *mut XVisualInfo,
+    pub XFree: unsafe extern "C" fn(*mut c_void) -> c_int,
+    pub XGetGeometry: unsafe extern "C" fn(*mut Display, Xid, *mut Xid, *mut c_int, *mut c_int, *mut c_uint, *mut c_uint, *mut c_uint, *mut c_uint) -> c_int,
+    pub XCreateGC: unsafe extern "C" fn(*mut Display, Xid, c_ulong, *mut c_void) -> Gc,
+    pub XFreeGC: unsafe extern "C" fn(*mut Display, Gc) -> c_int,
+    pub XInitImage: unsafe extern "C" fn(*mut XImage) -> c_int,
+    pub XPutImage: unsafe extern "C" fn(*mut Display, Xid, Gc, *mut XImage, c_int, c_int, c_int, c_int, c_uint, c_uint) -> c_int,
+    pub XFlush: unsafe extern "C" fn(*mut Display) -> c_int,
+    pub XSync: unsafe extern "C" fn(*mut Display, c_int) -> c_int,
+    pub XQueryExtension: unsafe extern "C" fn(*mut Display, *const c_char, *mut c_int, *mut c_int, *mut c_int) -> c_int,
+    pub XScreenCount: unsafe extern "C" fn(*mut Display) -> c_int,
+}
+
+unsafe fn sym<T: Copy>(lib: *mut c_void, name: &[u8]) -> Option<T> {
+    let p = libc::dlsym(lib, name.as_ptr() as *const c_char);
+    if p.is_null() {
+        None
+    } else {
+        // SAFETY: T is a function pointer type of the symbol's C signature.
+        Some(std::mem::transmute_copy::<*mut c_void, T>(&p))
+    }
+}
+
+unsafe fn load() -> Option<Xlib> {
+    let lib = libc::dlopen(c"libX11.so.6".as_ptr(), libc::RTLD_LAZY | libc::RTLD_LOCAL);
+    if lib.is_null() {
+        return None;
+    }
+    Some(Xlib {
+        XGetVisualInfo: sym(lib, b"XGetVisualInfo\0")?,
+        XFree: sym(lib, b"XFree\0")?,
+        XGetGeometry: sym(lib, b"XGetGeometry\0")?,
+        XCreateGC: sym(lib, b"XCreateGC\0")?,
+        XFreeGC: sym(lib, b"XFreeGC\0")?,
+        XInitImage: sym(lib, b"XInitImage\0")?,
+        XPutImage: sym(lib, b"XPutImage\0")?,
+        XFlush: sym(lib, b"XFlush\0")?,
+        XSync: sym(lib, b"XSync\0")?,
+        XQueryExtension: sym(lib, b"XQueryExtension\0")?,
+        XScreenCount: sym(lib, b"XScreenCount\0")?,
+    })
+}
+
+/// libX11, loaded on first use; None when it cannot be loaded (then every
+/// GLX call fails cleanly).
+pub fn xlib() -> Option<&'static Xlib> {
+    static X: OnceLock<Option<Xlib>> = OnceLock::new();
+    X.get_or_init(|| unsafe { load() }).as_ref()
+}
