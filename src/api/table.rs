@@ -15,7 +15,8 @@
 use super::args::*;
 use super::types::*;
 use crate::gl::enums::*;
-use crate::gl::{get, lists::decode_names, Command};
+use crate::gl::lighting::{is_color_param, light_model_param_count, light_param_count, material_param_count, read_params};
+use crate::gl::{get, lists::decode_names, Command, Context};
 use crate::glu;
 use crate::winsys::glx::{self, xlib::{Display, XVisualInfo}, Bool, FbConfig, GlxContext};
 use crate::winsys::osmesa::{self, OsContext};
@@ -35,6 +36,38 @@ pub type GLXContext = *mut GlxContext;
 /// A column-major GL matrix.
 fn matrix(m: [f64; 16]) -> glam::DMat4 {
     glam::DMat4::from_cols_array(&m)
+}
+
+/// A normal from integer or double components (table 2.9's signed mapping).
+fn normal<T: Component>(n: &[T; 3]) -> [f32; 3] {
+    n.map(|c| c.normalized())
+}
+
+/// The scalar forms (glLightf, glMaterialf, ...) take only one-value
+/// parameters: anything else is GL_INVALID_ENUM.
+fn scalar_param(c: &mut Context, count: usize, pname: GLenum) -> Option<GLenum> {
+    if count == 1 {
+        Some(pname)
+    } else {
+        c.set_error(GL_INVALID_ENUM);
+        None
+    }
+}
+
+/// Stores query results (NULL: nothing).
+unsafe fn write_out<T: Copy>(p: *mut T, v: &[T]) {
+    if !p.is_null() {
+        for (i, x) in v.iter().enumerate() {
+            p.add(i).write_unaligned(*x);
+        }
+    }
+}
+
+/// Integer query results: colours map [-1, 1] onto the integer range,
+/// other values round (6.1.2).
+fn ints_out(v: &[f32], color: bool) -> Vec<GLint> {
+    let values = v.iter().map(|&x| x as f64).collect();
+    if color { get::Value::Normalized(values).as_i32() } else { get::Value::Floats(values).as_i32() }
 }
 
 /// GetProcAddress by C string.
@@ -114,16 +147,16 @@ super::entry_points! {
     todo glTexCoord4iv(v: *const GLint);
     todo glTexCoord4s(s: GLshort, t: GLshort, r: GLshort, q: GLshort);
     todo glTexCoord4sv(v: *const GLshort);
-    todo glNormal3b(nx: GLbyte, ny: GLbyte, nz: GLbyte);
-    todo glNormal3bv(v: *const GLbyte);
-    todo glNormal3d(nx: GLdouble, ny: GLdouble, nz: GLdouble);
-    todo glNormal3dv(v: *const GLdouble);
-    todo glNormal3f(nx: GLfloat, ny: GLfloat, nz: GLfloat);
-    todo glNormal3fv(v: *const GLfloat);
-    todo glNormal3i(nx: GLint, ny: GLint, nz: GLint);
-    todo glNormal3iv(v: *const GLint);
-    todo glNormal3s(nx: GLshort, ny: GLshort, nz: GLshort);
-    todo glNormal3sv(v: *const GLshort);
+    list glNormal3b(nx: GLbyte, ny: GLbyte, nz: GLbyte) { |_c| Command::Normal(normal(&[nx, ny, nz])) }
+    list glNormal3bv(v: *const GLbyte) { |_c| Command::Normal(normal(&arr::<GLbyte, 3>(v)?)) }
+    list glNormal3d(nx: GLdouble, ny: GLdouble, nz: GLdouble) { |_c| Command::Normal(normal(&[nx, ny, nz])) }
+    list glNormal3dv(v: *const GLdouble) { |_c| Command::Normal(normal(&arr::<GLdouble, 3>(v)?)) }
+    list glNormal3f(nx: GLfloat, ny: GLfloat, nz: GLfloat) { |_c| Command::Normal([nx, ny, nz]) }
+    list glNormal3fv(v: *const GLfloat) { |_c| Command::Normal(arr::<GLfloat, 3>(v)?) }
+    list glNormal3i(nx: GLint, ny: GLint, nz: GLint) { |_c| Command::Normal(normal(&[nx, ny, nz])) }
+    list glNormal3iv(v: *const GLint) { |_c| Command::Normal(normal(&arr::<GLint, 3>(v)?)) }
+    list glNormal3s(nx: GLshort, ny: GLshort, nz: GLshort) { |_c| Command::Normal(normal(&[nx, ny, nz])) }
+    list glNormal3sv(v: *const GLshort) { |_c| Command::Normal(normal(&arr::<GLshort, 3>(v)?)) }
     list glColor3b(red: GLbyte, green: GLbyte, blue: GLbyte) { |_c| Command::Color(color(&[red, green, blue])) }
     list glColor3bv(v: *const GLbyte) { |_c| Command::Color(color(&arr::<GLbyte, 3>(v)?)) }
     list glColor3d(red: GLdouble, green: GLdouble, blue: GLdouble) { |_c| Command::Color(color(&[red, green, blue])) }
@@ -235,19 +268,19 @@ super::entry_points! {
     todo glRasterPos4iv(v: *const GLint);
     todo glRasterPos4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort);
     todo glRasterPos4sv(v: *const GLshort);
-    todo glMaterialf(face: GLenum, pname: GLenum, param: GLfloat);
-    todo glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat);
-    todo glMateriali(face: GLenum, pname: GLenum, param: GLint);
-    todo glMaterialiv(face: GLenum, pname: GLenum, params: *const GLint);
-    todo glLightf(light: GLenum, pname: GLenum, param: GLfloat);
-    todo glLightfv(light: GLenum, pname: GLenum, params: *const GLfloat);
-    todo glLighti(light: GLenum, pname: GLenum, param: GLint);
-    todo glLightiv(light: GLenum, pname: GLenum, params: *const GLint);
-    todo glLightModelf(pname: GLenum, param: GLfloat);
-    todo glLightModelfv(pname: GLenum, params: *const GLfloat);
-    todo glLightModeli(pname: GLenum, param: GLint);
-    todo glLightModeliv(pname: GLenum, params: *const GLint);
-    todo glColorMaterial(face: GLenum, mode: GLenum);
+    list glMaterialf(face: GLenum, pname: GLenum, param: GLfloat) { |c| Command::Material(face, scalar_param(c, material_param_count(pname), pname)?, [param, 0.0, 0.0, 0.0]) }
+    list glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat) { |_c| Command::Material(face, pname, read_params(params, material_param_count(pname), pname)?) }
+    list glMateriali(face: GLenum, pname: GLenum, param: GLint) { |c| Command::Material(face, scalar_param(c, material_param_count(pname), pname)?, [param as f32, 0.0, 0.0, 0.0]) }
+    list glMaterialiv(face: GLenum, pname: GLenum, params: *const GLint) { |_c| Command::Material(face, pname, read_params(params, material_param_count(pname), pname)?) }
+    list glLightf(light: GLenum, pname: GLenum, param: GLfloat) { |c| Command::Light(light, scalar_param(c, light_param_count(pname), pname)?, [param, 0.0, 0.0, 0.0]) }
+    list glLightfv(light: GLenum, pname: GLenum, params: *const GLfloat) { |_c| Command::Light(light, pname, read_params(params, light_param_count(pname), pname)?) }
+    list glLighti(light: GLenum, pname: GLenum, param: GLint) { |c| Command::Light(light, scalar_param(c, light_param_count(pname), pname)?, [param as f32, 0.0, 0.0, 0.0]) }
+    list glLightiv(light: GLenum, pname: GLenum, params: *const GLint) { |_c| Command::Light(light, pname, read_params(params, light_param_count(pname), pname)?) }
+    list glLightModelf(pname: GLenum, param: GLfloat) { |c| Command::LightModel(scalar_param(c, light_model_param_count(pname), pname)?, [param, 0.0, 0.0, 0.0]) }
+    list glLightModelfv(pname: GLenum, params: *const GLfloat) { |_c| Command::LightModel(pname, read_params(params, light_model_param_count(pname), pname)?) }
+    list glLightModeli(pname: GLenum, param: GLint) { |c| Command::LightModel(scalar_param(c, light_model_param_count(pname), pname)?, [param as f32, 0.0, 0.0, 0.0]) }
+    list glLightModeliv(pname: GLenum, params: *const GLint) { |_c| Command::LightModel(pname, read_params(params, light_model_param_count(pname), pname)?) }
+    list glColorMaterial(face: GLenum, mode: GLenum) { |_c| Command::ColorMaterial(face, mode) }
     list glShadeModel(mode: GLenum) { |_c| Command::ShadeModel(mode) }
     list["GL_POINT_SMOOTH draws square points; no point parameters"] glPointSize(size: GLfloat) { |_c| Command::PointSize(size) }
     list["GL_LINE_SMOOTH draws aliased lines"] glLineWidth(width: GLfloat) { |_c| Command::LineWidth(width) }
@@ -363,10 +396,10 @@ super::entry_points! {
     exec["as glGetIntegerv"] glGetDoublev(pname: GLenum, params: *mut GLdouble) { |c| c.get_into(pname, params, get::Value::as_f64) }
     todo glGetPointerv(pname: GLenum, params: *mut *mut c_void);
     todo glGetClipPlane(plane: GLenum, equation: *mut GLdouble);
-    todo glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetLightiv(light: GLenum, pname: GLenum, params: *mut GLint);
-    todo glGetMaterialfv(face: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetMaterialiv(face: GLenum, pname: GLenum, params: *mut GLint);
+    exec glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &v), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetLightiv(light: GLenum, pname: GLenum, params: *mut GLint) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &ints_out(&v, is_color_param(pname))), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetMaterialfv(face: GLenum, pname: GLenum, params: *mut GLfloat) { |c| match c.get_material(face, pname) { Some(v) => write_out(params, &v), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetMaterialiv(face: GLenum, pname: GLenum, params: *mut GLint) { |c| match c.get_material(face, pname) { Some(v) => write_out(params, &ints_out(&v, is_color_param(pname))), None => c.set_error(GL_INVALID_ENUM) } }
     todo glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat);
     todo glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint);
     todo glGetTexGendv(coord: GLenum, pname: GLenum, params: *mut GLdouble);

@@ -129,10 +129,11 @@ impl Context {
             }
             GL_QUAD_STRIP => {
                 if n >= 3 && n % 2 == 1 {
-                    // Quad (v0, v1, v3, v2) in boundary order; v3, the
-                    // last sent, provokes.
+                    // Quad (v0, v1, v3, v2) in boundary order, split along
+                    // v0-v3 as Mesa's softpipe does (the spec leaves the
+                    // split open); v3, the last sent, provokes.
                     let (a, b, c) = (asm.verts[0], asm.verts[1], asm.verts[2]);
-                    self.quad(&a, &b, &v, &c, &v);
+                    self.quad(&c, &a, &b, &v, &v);
                     asm.verts.clear();
                     asm.verts.push(c);
                     asm.verts.push(v);

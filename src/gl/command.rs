@@ -14,6 +14,12 @@ pub enum Command {
     End,
     Vertex([f32; 4]),
     Color([f32; 4]),
+    Normal([f32; 3]),
+    // Section 2.14: lighting. Parameters padded to 4 values.
+    Light(u32, u32, [f32; 4]),
+    LightModel(u32, [f32; 4]),
+    Material(u32, u32, [f32; 4]),
+    ColorMaterial(u32, u32),
     /// glRect: x1, y1, x2, y2 (section 2.10).
     Rect([f32; 4]),
     // Section 2.11: coordinate transformations.
@@ -71,7 +77,16 @@ pub enum Command {
 impl Command {
     /// May this command appear between Begin and End (GL 1.5 section 2.6.3)?
     pub fn allowed_in_begin_end(&self) -> bool {
-        matches!(self, Command::Vertex(_) | Command::Color(_) | Command::End | Command::CallList(_) | Command::CallLists(_))
+        matches!(
+            self,
+            Command::Vertex(_)
+                | Command::Color(_)
+                | Command::Normal(_)
+                | Command::Material(..)
+                | Command::End
+                | Command::CallList(_)
+                | Command::CallLists(_)
+        )
     }
 }
 
@@ -87,7 +102,15 @@ impl Context {
             Begin(mode) => self.begin(*mode),
             End => self.end(),
             Vertex(v) => self.vertex(*v),
-            Color(c) => self.current.color = *c,
+            Color(c) => {
+                self.current.color = *c;
+                self.apply_color_material();
+            }
+            Normal(n) => self.current.normal = *n,
+            Light(l, pname, v) => self.light(*l, *pname, *v),
+            LightModel(pname, v) => self.light_model(*pname, *v),
+            Material(face, pname, v) => self.material(*face, *pname, *v),
+            ColorMaterial(face, mode) => self.color_material(*face, *mode),
             Rect([x1, y1, x2, y2]) => {
                 self.begin(GL_POLYGON);
                 for v in [[*x1, *y1], [*x2, *y1], [*x2, *y2], [*x1, *y2]] {

@@ -4,7 +4,8 @@
 
 use super::context::Context;
 use super::enums::*;
-use super::validate::{DIRTY_FRAGMENT, DIRTY_RASTER};
+use super::lighting::MAX_LIGHTS;
+use super::validate::{DIRTY_FRAGMENT, DIRTY_LIGHTING, DIRTY_RASTER};
 use crate::render::fragment::CompareFunc;
 use std::collections::BTreeSet;
 
@@ -22,10 +23,7 @@ fn is_stored_cap(cap: u32) -> bool {
             | GL_LINE_SMOOTH
             | GL_POLYGON_SMOOTH
             | GL_POLYGON_STIPPLE
-            | GL_LIGHTING
-            | GL_COLOR_MATERIAL
             | GL_FOG
-            | GL_NORMALIZE
             | GL_TEXTURE_GEN_S
             | GL_TEXTURE_GEN_T
             | GL_TEXTURE_GEN_R
@@ -38,7 +36,6 @@ fn is_stored_cap(cap: u32) -> bool {
             | GL_POLYGON_OFFSET_POINT
             | GL_POLYGON_OFFSET_LINE
             | GL_POLYGON_OFFSET_FILL
-            | GL_RESCALE_NORMAL
             | GL_COLOR_SUM
             | GL_MULTISAMPLE
             | GL_SAMPLE_ALPHA_TO_COVERAGE
@@ -55,7 +52,6 @@ fn is_stored_cap(cap: u32) -> bool {
     ) || (GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4).contains(&cap)
         || (GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4).contains(&cap)
         || (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&cap)
-        || (GL_LIGHT0..GL_LIGHT0 + 8).contains(&cap)
 }
 
 impl Context {
@@ -74,6 +70,27 @@ impl Context {
                 self.dirty |= DIRTY_RASTER;
             }
             GL_DITHER => self.color_buffer.dither = on,
+            GL_LIGHTING => {
+                self.lighting.enabled = on;
+                self.dirty |= DIRTY_LIGHTING;
+            }
+            _ if (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as u32).contains(&cap) => {
+                self.lighting.lights[(cap - GL_LIGHT0) as usize].enabled = on;
+                self.dirty |= DIRTY_LIGHTING;
+            }
+            GL_COLOR_MATERIAL => {
+                self.lighting.color_material = on;
+                // Enabling it applies the current colour at once (2.14.3).
+                self.apply_color_material();
+            }
+            GL_NORMALIZE => {
+                self.lighting.normalize = on;
+                self.dirty |= DIRTY_LIGHTING;
+            }
+            GL_RESCALE_NORMAL => {
+                self.lighting.rescale_normal = on;
+                self.dirty |= DIRTY_LIGHTING;
+            }
             GL_ALPHA_TEST | GL_STENCIL_TEST | GL_BLEND | GL_COLOR_LOGIC_OP | GL_INDEX_LOGIC_OP => {
                 let cb = &mut self.color_buffer;
                 *match cap {
@@ -110,6 +127,11 @@ impl Context {
             GL_COLOR_LOGIC_OP => self.color_buffer.color_logic_op,
             GL_INDEX_LOGIC_OP => self.color_buffer.index_logic_op,
             GL_LINE_STIPPLE => self.line.stipple,
+            GL_LIGHTING => self.lighting.enabled,
+            _ if (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as u32).contains(&cap) => self.lighting.lights[(cap - GL_LIGHT0) as usize].enabled,
+            GL_COLOR_MATERIAL => self.lighting.color_material,
+            GL_NORMALIZE => self.lighting.normalize,
+            GL_RESCALE_NORMAL => self.lighting.rescale_normal,
             _ if is_stored_cap(cap) => self.other_caps.0.contains(&cap),
             _ => return None,
         })

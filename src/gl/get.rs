@@ -74,6 +74,16 @@ impl Context {
         let fb = &self.fb.config;
         let has = |bits: u8| bits as i64;
         match pname {
+            GL_CURRENT_NORMAL => Some(Value::Normalized(self.current.normal.iter().map(|&c| c as f64).collect())),
+            GL_LIGHT_MODEL_AMBIENT => Some(Value::Normalized(self.lighting.model_ambient.to_array().iter().map(|&c| c as f64).collect())),
+            GL_LIGHT_MODEL_LOCAL_VIEWER => Some(Value::Bools(vec![self.lighting.local_viewer])),
+            GL_LIGHT_MODEL_TWO_SIDE => Some(Value::Bools(vec![self.lighting.two_side])),
+            GL_LIGHT_MODEL_COLOR_CONTROL => {
+                ints([if self.lighting.separate_specular { GL_SEPARATE_SPECULAR_COLOR } else { GL_SINGLE_COLOR } as i64])
+            }
+            GL_COLOR_MATERIAL_FACE => ints([self.lighting.color_material_face as i64]),
+            GL_COLOR_MATERIAL_PARAMETER => ints([self.lighting.color_material_mode as i64]),
+            GL_MAX_LIGHTS => ints([super::lighting::MAX_LIGHTS as i64]),
             GL_CURRENT_COLOR => Some(Value::Normalized(self.current.color.iter().map(|&c| c as f64).collect())),
             GL_COLOR_CLEAR_VALUE => Some(Value::Normalized(self.color_buffer.clear.iter().map(|&c| c as f64).collect())),
             GL_COLOR_WRITEMASK => Some(Value::Bools(self.color_buffer.write_mask.to_vec())),

@@ -245,3 +245,55 @@ impl Context {
         })
     }
 }
+
+/// How many values glLight*v reads for `pname` (0: not a light parameter).
+pub fn light_param_count(pname: u32) -> usize {
+    match pname {
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => 4,
+        GL_SPOT_DIRECTION => 3,
+        GL_SPOT_EXPONENT | GL_SPOT_CUTOFF | GL_CONSTANT_ATTENUATION | GL_LINEAR_ATTENUATION | GL_QUADRATIC_ATTENUATION => 1,
+        _ => 0,
+    }
+}
+
+/// How many values glMaterial*v reads for `pname`.
+pub fn material_param_count(pname: u32) -> usize {
+    match pname {
+        GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => 4,
+        GL_COLOR_INDEXES => 3,
+        GL_SHININESS => 1,
+        _ => 0,
+    }
+}
+
+/// How many values glLightModel*v reads for `pname`.
+pub fn light_model_param_count(pname: u32) -> usize {
+    match pname {
+        GL_LIGHT_MODEL_AMBIENT => 4,
+        GL_LIGHT_MODEL_LOCAL_VIEWER | GL_LIGHT_MODEL_TWO_SIDE | GL_LIGHT_MODEL_COLOR_CONTROL => 1,
+        _ => 0,
+    }
+}
+
+/// Is `pname`'s value a colour (integer forms map it like glColor, 2.14.2)?
+pub fn is_color_param(pname: u32) -> bool {
+    matches!(pname, GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE | GL_LIGHT_MODEL_AMBIENT)
+}
+
+/// Reads a parameter array for the *v forms: `count` values from `p`,
+/// integers converted as colours or plainly, padded to 4. None for a NULL
+/// pointer.
+///
+/// # Safety
+/// `p` must be NULL or point to `count` values.
+pub unsafe fn read_params<T: crate::api::args::Component>(p: *const T, count: usize, pname: u32) -> Option<[f32; 4]> {
+    if p.is_null() {
+        return None;
+    }
+    let mut out = [0.0f32; 4];
+    for (i, o) in out.iter_mut().enumerate().take(count.min(4)) {
+        let v = std::ptr::read_unaligned(p.add(i));
+        *o = if is_color_param(pname) { v.normalized() } else { v.plain() };
+    }
+    Some(out)
+}
