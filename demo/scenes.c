@@ -172,6 +172,141 @@ static void depth_funcs(const char *dir)
     save(dir, "depth_funcs");
 }
 
+/* The Persian book's reflection, in miniature: the floor is written into
+ * the stencil buffer with colour writes off, the mirrored lit objects are
+ * drawn only where stencil == 1, the floor is blended over them, then the
+ * objects are drawn for real. Lighting, stencil, blending, GLU quadrics. */
+static void draw_objects(GLUquadric *q)
+{
+    static const GLfloat blue[4] = {0.2f, 0.4f, 0.9f, 1}, gold[4] = {0.9f, 0.7f, 0.2f, 1}, spec[4] = {1, 1, 1, 1};
+    glMaterialfv(GL_FRONT, GL_SPECULAR, spec);
+    glMaterialf(GL_FRONT, GL_SHININESS, 40);
+    glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, blue);
+    glPushMatrix();
+    glTranslatef(-0.7f, 0.6f, 0);
+    gluSphere(q, 0.5, 32, 24);
+    glPopMatrix();
+    glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, gold);
+    glPushMatrix();
+    glTranslatef(0.7f, 0.05f, 0);
+    glRotatef(-90, 1, 0, 0);
+    gluCylinder(q, 0.4, 0.1, 1.1, 32, 8);
+    glPopMatrix();
+}
+
+static void reflection(const char *dir)
+{
+    static const GLfloat light_pos[4] = {1.5f, 3, 2, 1};
+    GLUquadric *q = gluNewQuadric();
+    int i, j;
+    glClearColor(0.05f, 0.05f, 0.08f, 1);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glShadeModel(GL_SMOOTH);
+    perspective_view();
+    gluLookAt(0, 1.6, 4.2, 0, 0.3, 0, 0, 1, 0);
+    glEnable(GL_LIGHT0);
+
+    /* 1. The floor into the stencil buffer only. */
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glBegin(GL_QUADS);
+    glVertex3f(-2, 0, -2); glVertex3f(-2, 0, 2); glVertex3f(2, 0, 2); glVertex3f(2, 0, -2);
+    glEnd();
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+
+    /* 2. The mirrored objects where the floor is (front faces flip). */
+    glStencilFunc(GL_EQUAL, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glPushMatrix();
+    glScalef(1, -1, 1);
+    glLightfv(GL_LIGHT0, GL_POSITION, light_pos);
+    glFrontFace(GL_CW);
+    glEnable(GL_LIGHTING);
+    draw_objects(q);
+    glDisable(GL_LIGHTING);
+    glFrontFace(GL_CCW);
+    glPopMatrix();
+    glDisable(GL_STENCIL_TEST);
+
+    /* 3. The floor, a translucent checkerboard blended over the mirror image. */
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glBegin(GL_QUADS);
+    for (i = -4; i < 4; i++)
+        for (j = -4; j < 4; j++) {
+            float x = i * 0.5f, z = j * 0.5f;
+            if ((i + j) & 1) glColor4f(0.8f, 0.8f, 0.85f, 0.7f); else glColor4f(0.3f, 0.3f, 0.4f, 0.7f);
+            glVertex3f(x, 0, z); glVertex3f(x, 0, z + 0.5f); glVertex3f(x + 0.5f, 0, z + 0.5f); glVertex3f(x + 0.5f, 0, z);
+        }
+    glEnd();
+    glDisable(GL_BLEND);
+
+    /* 4. The objects themselves. */
+    glLightfv(GL_LIGHT0, GL_POSITION, light_pos);
+    glEnable(GL_LIGHTING);
+    draw_objects(q);
+    glDisable(GL_LIGHTING);
+    gluDeleteQuadric(q);
+    save(dir, "reflection");
+}
+
+/* Points, wide and stippled lines, line loops. */
+static void lines_points(const char *dir)
+{
+    int i;
+    glClearColor(1, 1, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_DEPTH_TEST);
+    glViewport(0, 0, W, H);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, W, 0, H, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glShadeModel(GL_SMOOTH);
+    for (i = 1; i <= 8; i++) {
+        glPointSize((float)i);
+        glBegin(GL_POINTS);
+        glColor3f(i / 8.0f, 0, 1 - i / 8.0f);
+        glVertex2f(20.0f + i * 30, 210);
+        glEnd();
+    }
+    glPointSize(1);
+    for (i = 1; i <= 6; i++) {
+        glLineWidth((float)i);
+        glBegin(GL_LINES);
+        glColor3f(1, 0, 0); glVertex2f(20, 180 - i * 14);
+        glColor3f(0, 0, 1); glVertex2f(150, 170 - i * 14);
+        glEnd();
+    }
+    glLineWidth(2);
+    glEnable(GL_LINE_STIPPLE);
+    for (i = 0; i < 4; i++) {
+        static const GLushort patterns[4] = {0x00FF, 0x0F0F, 0x5555, 0x1C47};
+        glLineStipple(i + 1, patterns[i]);
+        glBegin(GL_LINE_STRIP);
+        glColor3f(0, 0.5f, 0);
+        glVertex2f(180, 180 - i * 20.0f); glVertex2f(240, 190 - i * 20.0f); glVertex2f(300, 175 - i * 20.0f);
+        glEnd();
+    }
+    glDisable(GL_LINE_STIPPLE);
+    glLineWidth(1);
+    glBegin(GL_LINE_LOOP);
+    for (i = 0; i < 7; i++) {
+        double a = 2 * M_PI * i / 7;
+        glColor3f(0.5f + 0.5f * (float)cos(a), 0.5f, 0.5f + 0.5f * (float)sin(a));
+        glVertex2d(240 + 50 * cos(a), 50 + 40 * sin(a));
+    }
+    glEnd();
+    save(dir, "lines_points");
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : ".";
@@ -185,6 +320,8 @@ int main(int argc, char **argv)
     sphere(dir);
     floor_scene(dir);
     depth_funcs(dir);
+    reflection(dir);
+    lines_points(dir);
     OSMesaDestroyContext(ctx);
     return 0;
 }
