@@ -89,6 +89,91 @@ static void spheres(int frame, int detail)
         }
 }
 
+/* The sphere scene lit: a white directional light and a positional light
+ * with attenuation and specular, smooth shading. */
+static void lit_spheres(int frame)
+{
+    static const GLfloat pos1[4] = {2, 3, -4, 1}, col1[4] = {1, 0.6f, 0.3f, 1}, spec[4] = {1, 1, 1, 1};
+    static const GLfloat diffuse[4] = {0.3f, 0.6f, 0.9f, 1};
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_LIGHT1);
+    glLightfv(GL_LIGHT1, GL_POSITION, pos1);
+    glLightfv(GL_LIGHT1, GL_DIFFUSE, col1);
+    glLightfv(GL_LIGHT1, GL_SPECULAR, spec);
+    glLightf(GL_LIGHT1, GL_LINEAR_ATTENUATION, 0.1f);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
+    glMaterialfv(GL_FRONT, GL_SPECULAR, spec);
+    glMaterialf(GL_FRONT, GL_SHININESS, 20);
+    glDisable(GL_COLOR_MATERIAL);
+    spheres(frame, 24);
+    glDisable(GL_LIGHTING);
+}
+
+/* Blended overdraw: 2,000 translucent quads of 1/8 the window (particles). */
+static void particles(int frame)
+{
+    int i;
+    unsigned seed = 12345;
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glBegin(GL_QUADS);
+    for (i = 0; i < 2000; i++) {
+        float x, y, s = 0.12f;
+        seed = seed * 1103515245u + 12345u; x = (seed >> 8) / 16777216.0f * 2 - 1;
+        seed = seed * 1103515245u + 12345u; y = (seed >> 8) / 16777216.0f * 2 - 1;
+        x += 0.01f * (frame % 10);
+        glColor4f(0.9f, 0.5f + 0.4f * x, 0.2f, 0.08f);
+        glVertex2f(x - s, y - s); glVertex2f(x + s, y - s); glVertex2f(x + s, y + s); glVertex2f(x - s, y + s);
+    }
+    glEnd();
+    glDisable(GL_BLEND);
+}
+
+/* Wide, stippled and 1-pixel lines and points. */
+static void lines(int frame)
+{
+    int i;
+    glClearColor(1, 1, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glRotatef((float)frame, 0, 0, 1);
+    for (i = 0; i < 3; i++) {
+        int k;
+        glLineWidth(1.0f + 2 * i);
+        if (i == 2) { glEnable(GL_LINE_STIPPLE); glLineStipple(2, 0x0F0F); }
+        glBegin(GL_LINES);
+        for (k = 0; k < 300; k++) {
+            double a = 2 * M_PI * k / 300;
+            glColor3f((float)k / 300, 0.2f * i, 1 - (float)k / 300);
+            glVertex2d(0.1 * cos(a), 0.1 * sin(a));
+            glVertex2d((0.5 + 0.2 * i) * cos(a), (0.5 + 0.2 * i) * sin(a));
+        }
+        glEnd();
+        glDisable(GL_LINE_STIPPLE);
+    }
+    glLineWidth(1);
+    glPointSize(3);
+    glBegin(GL_POINTS);
+    for (i = 0; i < 5000; i++) {
+        glColor3f(0, 0.5f, 0);
+        glVertex2f((i % 100) / 50.0f - 1, (i / 100) / 25.0f - 1);
+    }
+    glEnd();
+    glPointSize(1);
+}
+
 /* Fill rate: 16 window-sized flat quads at decreasing depth (opaque overdraw 16). */
 static void overdraw(int frame)
 {
@@ -188,6 +273,9 @@ static int render(const char *scene, int frame)
     else if (!strcmp(scene, "spheres_m")) spheres(frame, 24);
     else if (!strcmp(scene, "spheres_l")) spheres(frame, 64);
     else if (!strcmp(scene, "overdraw")) overdraw(frame);
+    else if (!strcmp(scene, "lit_spheres")) lit_spheres(frame);
+    else if (!strcmp(scene, "particles")) particles(frame);
+    else if (!strcmp(scene, "lines")) lines(frame);
     else if (!strcmp(scene, "immediate_1m")) calls(0);
     else if (!strcmp(scene, "display_list_1m")) calls(1);
     else if (!strcmp(scene, "readpixels")) read_pixels(frame);
