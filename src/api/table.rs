@@ -338,13 +338,13 @@ super::entry_points! {
     list glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) { |_c| Command::ColorMask([truth(red), truth(green), truth(blue), truth(alpha)]) }
     list glDepthMask(flag: GLboolean) { |_c| Command::DepthMask(truth(flag)) }
     list glStencilMask(mask: GLuint) { |_c| Command::StencilMask(mask) }
-    list["GL_ACCUM_BUFFER_BIT is accepted but the accumulation buffer is not cleared yet (issue 3)"] glClear(mask: GLbitfield) { |_c| Command::Clear(mask) }
+    list glClear(mask: GLbitfield) { |_c| Command::Clear(mask) }
     list glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) { |_c| Command::ClearColor([red, green, blue, alpha]) }
     todo glClearIndex(c: GLfloat);
     list glClearDepth(depth: GLclampd) { |_c| Command::ClearDepth(depth) }
     list glClearStencil(s: GLint) { |_c| Command::ClearStencil(s) }
-    todo glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
-    todo glAccum(op: GLenum, value: GLfloat);
+    list glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) { |_c| Command::ClearAccum([red, green, blue, alpha]) }
+    list glAccum(op: GLenum, value: GLfloat) { |_c| Command::Accum(op, value) }
     todo glReadBuffer(mode: GLenum);
     exec["packed pixel types (3_3_2 .. 2_10_10_10_REV) and GL_BITMAP are not packed yet; pixel transfer is not applied (issue 5)"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
     todo glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum);

@@ -64,6 +64,8 @@ pub enum Command {
     ClearDepth(f64),
     ClearStencil(i32),
     Clear(u32),
+    ClearAccum([f32; 4]),
+    Accum(u32, f32),
     // Section 5: enables, hints, display lists.
     Enable(u32),
     Disable(u32),
@@ -178,6 +180,8 @@ impl Context {
             ClearDepth(d) => self.depth.clear = d.clamp(0.0, 1.0),
             ClearStencil(s) => self.stencil.clear = *s,
             Clear(mask) => self.clear(*mask),
+            ClearAccum(c) => self.accum_clear = c.map(|v| v.clamp(-1.0, 1.0)),
+            Accum(op, value) => self.accum(*op, *value),
             Enable(cap) => self.set_enabled(*cap, true),
             Disable(cap) => self.set_enabled(*cap, false),
             Hint(target, mode) => self.hint(*target, *mode),

@@ -20,6 +20,8 @@ pub struct Context {
     pub hints: HintState,
     pub current: CurrentState,
     pub lighting: lighting::LightingState,
+    /// glClearAccum's value, clamped to [-1, 1].
+    pub accum_clear: [f32; 4],
     pub line: LineState,
     pub point: PointState,
     /// Capabilities glEnable stores whose rendering is not implemented yet.
@@ -55,6 +57,7 @@ impl Context {
             hints: Default::default(),
             current: Default::default(),
             lighting: Default::default(),
+            accum_clear: [0.0; 4],
             line: Default::default(),
             point: Default::default(),
             other_caps: Default::default(),

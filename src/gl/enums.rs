@@ -337,3 +337,10 @@ pub const GL_SEPARATE_SPECULAR_COLOR: u32 = 0x81FA;
 pub const GL_COLOR_MATERIAL_FACE: u32 = 0x0B55;
 pub const GL_COLOR_MATERIAL_PARAMETER: u32 = 0x0B56;
 pub const GL_CURRENT_NORMAL: u32 = 0x0B02;
+
+// Accumulation buffer (section 4.2.4).
+pub const GL_ACCUM: u32 = 0x0100;
+pub const GL_LOAD: u32 = 0x0101;
+pub const GL_RETURN: u32 = 0x0102;
+pub const GL_MULT: u32 = 0x0103;
+pub const GL_ADD: u32 = 0x0104;

@@ -84,6 +84,7 @@ impl Context {
             GL_COLOR_MATERIAL_FACE => ints([self.lighting.color_material_face as i64]),
             GL_COLOR_MATERIAL_PARAMETER => ints([self.lighting.color_material_mode as i64]),
             GL_MAX_LIGHTS => ints([super::lighting::MAX_LIGHTS as i64]),
+            GL_ACCUM_CLEAR_VALUE => Some(Value::Normalized(self.accum_clear.iter().map(|&c| c as f64).collect())),
             GL_CURRENT_COLOR => Some(Value::Normalized(self.current.color.iter().map(|&c| c as f64).collect())),
             GL_COLOR_CLEAR_VALUE => Some(Value::Normalized(self.color_buffer.clear.iter().map(|&c| c as f64).collect())),
             GL_COLOR_WRITEMASK => Some(Value::Bools(self.color_buffer.write_mask.to_vec())),

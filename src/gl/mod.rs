@@ -3,6 +3,7 @@
 //! only store state and mark dirty bits; [`validate`] derives what the
 //! renderer needs at the next draw.
 
+pub mod accum;
 pub mod begin_end;
 pub mod clear;
 pub mod command;
