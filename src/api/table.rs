@@ -16,6 +16,7 @@ use super::args::*;
 use super::types::*;
 use crate::gl::enums::*;
 use crate::gl::lighting::{is_color_param, light_model_param_count, light_param_count, material_param_count, read_params};
+use crate::gl::select::NameOp;
 use crate::gl::{get, lists::decode_names, Command, Context};
 use crate::glu;
 use crate::winsys::glx::{self, xlib::{Display, XVisualInfo}, Bool, FbConfig, GlxContext};
@@ -368,14 +369,14 @@ super::entry_points! {
     todo glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint);
     todo glEvalPoint1(i: GLint);
     todo glEvalPoint2(i: GLint, j: GLint);
-    todo glRenderMode(mode: GLenum) -> GLint;
-    todo glSelectBuffer(size: GLsizei, buffer: *mut GLuint);
-    todo glInitNames();
-    todo glLoadName(name: GLuint);
-    todo glPushName(name: GLuint);
-    todo glPopName();
-    todo glFeedbackBuffer(size: GLsizei, type_: GLenum, buffer: *mut GLfloat);
-    todo glPassThrough(token: GLfloat);
+    exec glRenderMode(mode: GLenum) -> GLint { |c| c.render_mode(mode) }
+    exec glSelectBuffer(size: GLsizei, buffer: *mut GLuint) { |c| c.select_buffer(size, buffer) }
+    list glInitNames() { |_c| Command::NameStack(NameOp::Init) }
+    list glLoadName(name: GLuint) { |_c| Command::NameStack(NameOp::Load(name)) }
+    list glPushName(name: GLuint) { |_c| Command::NameStack(NameOp::Push(name)) }
+    list glPopName() { |_c| Command::NameStack(NameOp::Pop) }
+    exec["texture coordinates are reported as (0, 0, 0, 1) until texturing lands; glBitmap/glDrawPixels/glCopyPixels tokens not yet"] glFeedbackBuffer(size: GLsizei, type_: GLenum, buffer: *mut GLfloat) { |c| c.feedback_buffer(size, type_, buffer) }
+    list glPassThrough(token: GLfloat) { |_c| Command::PassThrough(token) }
     exec glNewList(list: GLuint, mode: GLenum) { |c| c.new_list(list, mode) }
     exec glEndList() { |c| c.end_list() }
     list glCallList(list: GLuint) { |_c| Command::CallList(list) }

@@ -12,6 +12,7 @@
 
 use super::context::Context;
 use super::enums::*;
+use super::select;
 use crate::render::{self, ClipVertex};
 use glam::Vec4;
 
@@ -142,6 +143,9 @@ impl Context {
                 }
             }
             GL_POLYGON => asm.verts.push(v),
+            GL_POINTS if self.select.mode != select::GL_RENDER => {
+                self.select_primitive(&[&v], select::GL_POINT_TOKEN, false);
+            }
             GL_POINTS => {
                 render::point::draw_point(&self.derived.render, &mut self.fb, self.point.size, &v);
             }
@@ -181,6 +185,13 @@ impl Context {
 
     /// One line segment; flat shading takes `b`'s colour.
     fn line(&mut self, a: &ClipVertex, b: &ClipVertex, stipple: &mut u32) {
+        if self.select.mode != select::GL_RENDER {
+            // The first segment of a strip or of each GL_LINES pair resets
+            // the stipple: feedback marks it with GL_LINE_RESET_TOKEN.
+            let reset = *stipple == 0;
+            *stipple += 1;
+            return self.select_primitive(&[a, b], select::GL_LINE_TOKEN, reset);
+        }
         let l = &self.line;
         let lp = render::line::LineParams {
             width: l.width,
@@ -192,12 +203,19 @@ impl Context {
     /// A quad in boundary order (a, b, c, d), split into (a, b, d) and
     /// (b, c, d); flat shading takes `provoking`'s colour for both.
     fn quad(&mut self, a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, d: &ClipVertex, provoking: &ClipVertex) {
+        if self.select.mode != select::GL_RENDER {
+            self.select_primitive(&[a, b, d], select::GL_POLYGON_TOKEN, false);
+            return self.select_primitive(&[b, c, d], select::GL_POLYGON_TOKEN, false);
+        }
         let flat = [provoking.color, provoking.back_color];
         render::draw_triangle(&self.derived.render, &mut self.fb, [a, b, d], flat);
         render::draw_triangle(&self.derived.render, &mut self.fb, [b, c, d], flat);
     }
 
     fn triangle(&mut self, v: [&ClipVertex; 3], provoking: usize) {
+        if self.select.mode != select::GL_RENDER {
+            return self.select_primitive(&v, select::GL_POLYGON_TOKEN, false);
+        }
         render::draw_triangle(&self.derived.render, &mut self.fb, v, [v[provoking].color, v[provoking].back_color]);
     }
 }

@@ -74,6 +74,9 @@ pub enum Command {
     /// glCallLists: names before the list base is added (added when run).
     CallLists(Vec<u32>),
     ListBase(u32),
+    // Section 5.2, 5.3: the name stack and feedback markers.
+    NameStack(super::select::NameOp),
+    PassThrough(f32),
 }
 
 impl Command {
@@ -188,6 +191,8 @@ impl Context {
             CallList(n) => self.call_list(*n),
             CallLists(names) => self.call_lists(names),
             ListBase(b) => self.lists.base = *b,
+            NameStack(op) => self.name_stack(*op),
+            PassThrough(t) => self.pass_through(*t),
         }
     }
 }

@@ -4,7 +4,7 @@
 use super::command::Command;
 use super::enums::*;
 use super::state::*;
-use super::{begin_end, enable, lighting, lists, matrix, pixels, validate};
+use super::{begin_end, enable, lighting, lists, matrix, pixels, select, validate};
 use crate::framebuffer::{Config, Framebuffer, Present};
 
 pub struct Context {
@@ -22,6 +22,8 @@ pub struct Context {
     pub lighting: lighting::LightingState,
     /// glClearAccum's value, clamped to [-1, 1].
     pub accum_clear: [f32; 4],
+    /// Render mode, selection and feedback (section 5.2, 5.3).
+    pub select: select::SelectState,
     pub line: LineState,
     pub point: PointState,
     /// Capabilities glEnable stores whose rendering is not implemented yet.
@@ -58,6 +60,7 @@ impl Context {
             current: Default::default(),
             lighting: Default::default(),
             accum_clear: [0.0; 4],
+            select: Default::default(),
             line: Default::default(),
             point: Default::default(),
             other_caps: Default::default(),

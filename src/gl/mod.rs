@@ -16,6 +16,7 @@ pub mod lighting;
 pub mod lists;
 pub mod matrix;
 pub mod pixels;
+pub mod select;
 pub mod state;
 pub mod validate;
 
