@@ -16,6 +16,7 @@ use super::args::*;
 use super::types::*;
 use crate::gl::enums::*;
 use crate::gl::lighting::{is_color_param, light_model_param_count, light_param_count, material_param_count, read_params};
+use crate::gl::eval::read_points;
 use crate::gl::select::NameOp;
 use crate::gl::{get, lists::decode_names, Command, Context};
 use crate::glu;
@@ -69,6 +70,11 @@ unsafe fn write_out<T: Copy>(p: *mut T, v: &[T]) {
 fn ints_out(v: &[f32], color: bool) -> Vec<GLint> {
     let values = v.iter().map(|&x| x as f64).collect();
     if color { get::Value::Normalized(values).as_i32() } else { get::Value::Floats(values).as_i32() }
+}
+
+/// glMap's points, or the error its arguments give.
+fn map_points(c: &mut Context, r: Result<Vec<f32>, GLenum>) -> Option<Vec<f32>> {
+    r.map_err(|e| c.set_error(e)).ok()
 }
 
 /// GetProcAddress by C string.
@@ -349,26 +355,26 @@ super::entry_points! {
     todo glReadBuffer(mode: GLenum);
     exec["packed pixel types (3_3_2 .. 2_10_10_10_REV) and GL_BITMAP are not packed yet; pixel transfer is not applied (issue 5)"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
     todo glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum);
-    todo glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble);
-    todo glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat);
-    todo glMap2d(target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint, v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: *const GLdouble);
-    todo glMap2f(target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint, v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: *const GLfloat);
-    todo glEvalCoord1d(u: GLdouble);
-    todo glEvalCoord1dv(u: *const GLdouble);
-    todo glEvalCoord1f(u: GLfloat);
-    todo glEvalCoord1fv(u: *const GLfloat);
-    todo glEvalCoord2d(u: GLdouble, v: GLdouble);
-    todo glEvalCoord2dv(u: *const GLdouble);
-    todo glEvalCoord2f(u: GLfloat, v: GLfloat);
-    todo glEvalCoord2fv(u: *const GLfloat);
-    todo glMapGrid1d(un: GLint, u1: GLdouble, u2: GLdouble);
-    todo glMapGrid1f(un: GLint, u1: GLfloat, u2: GLfloat);
-    todo glMapGrid2d(un: GLint, u1: GLdouble, u2: GLdouble, vn: GLint, v1: GLdouble, v2: GLdouble);
-    todo glMapGrid2f(un: GLint, u1: GLfloat, u2: GLfloat, vn: GLint, v1: GLfloat, v2: GLfloat);
-    todo glEvalMesh1(mode: GLenum, i1: GLint, i2: GLint);
-    todo glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint);
-    todo glEvalPoint1(i: GLint);
-    todo glEvalPoint2(i: GLint, j: GLint);
+    list glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) { |c| Command::Map { target, u: (u1 as f32, u2 as f32), uorder: order, v: None, points: map_points(c, read_points(target, points, stride, order, 0, 1))? } }
+    list glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat) { |c| Command::Map { target, u: (u1, u2), uorder: order, v: None, points: map_points(c, read_points(target, points, stride, order, 0, 1))? } }
+    list glMap2d(target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint, v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: *const GLdouble) { |c| Command::Map { target, u: (u1 as f32, u2 as f32), uorder, v: Some(((v1 as f32, v2 as f32), vorder)), points: map_points(c, read_points(target, points, ustride, uorder, vstride, vorder))? } }
+    list glMap2f(target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint, v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: *const GLfloat) { |c| Command::Map { target, u: (u1, u2), uorder, v: Some(((v1, v2), vorder)), points: map_points(c, read_points(target, points, ustride, uorder, vstride, vorder))? } }
+    list glEvalCoord1d(u: GLdouble) { |_c| Command::EvalCoord(u as f32, None) }
+    list glEvalCoord1dv(u: *const GLdouble) { |_c| Command::EvalCoord(arr::<GLdouble, 1>(u)?[0] as f32, None) }
+    list glEvalCoord1f(u: GLfloat) { |_c| Command::EvalCoord(u, None) }
+    list glEvalCoord1fv(u: *const GLfloat) { |_c| Command::EvalCoord(arr::<GLfloat, 1>(u)?[0], None) }
+    list glEvalCoord2d(u: GLdouble, v: GLdouble) { |_c| Command::EvalCoord(u as f32, Some(v as f32)) }
+    list glEvalCoord2dv(u: *const GLdouble) { |_c| { let p = arr::<GLdouble, 2>(u)?; Command::EvalCoord(p[0] as f32, Some(p[1] as f32)) } }
+    list glEvalCoord2f(u: GLfloat, v: GLfloat) { |_c| Command::EvalCoord(u, Some(v)) }
+    list glEvalCoord2fv(u: *const GLfloat) { |_c| { let p = arr::<GLfloat, 2>(u)?; Command::EvalCoord(p[0], Some(p[1])) } }
+    list glMapGrid1d(un: GLint, u1: GLdouble, u2: GLdouble) { |_c| Command::MapGrid(un, (u1 as f32, u2 as f32), None) }
+    list glMapGrid1f(un: GLint, u1: GLfloat, u2: GLfloat) { |_c| Command::MapGrid(un, (u1, u2), None) }
+    list glMapGrid2d(un: GLint, u1: GLdouble, u2: GLdouble, vn: GLint, v1: GLdouble, v2: GLdouble) { |_c| Command::MapGrid(un, (u1 as f32, u2 as f32), Some((vn, (v1 as f32, v2 as f32)))) }
+    list glMapGrid2f(un: GLint, u1: GLfloat, u2: GLfloat, vn: GLint, v1: GLfloat, v2: GLfloat) { |_c| Command::MapGrid(un, (u1, u2), Some((vn, (v1, v2)))) }
+    list glEvalMesh1(mode: GLenum, i1: GLint, i2: GLint) { |_c| Command::EvalMesh1(mode, i1, i2) }
+    list glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint) { |_c| Command::EvalMesh2(mode, i1, i2, j1, j2) }
+    list glEvalPoint1(i: GLint) { |_c| Command::EvalPoint(i, None) }
+    list glEvalPoint2(i: GLint, j: GLint) { |_c| Command::EvalPoint(i, Some(j)) }
     exec glRenderMode(mode: GLenum) -> GLint { |c| c.render_mode(mode) }
     exec glSelectBuffer(size: GLsizei, buffer: *mut GLuint) { |c| c.select_buffer(size, buffer) }
     list glInitNames() { |_c| Command::NameStack(NameOp::Init) }
@@ -414,9 +420,9 @@ super::entry_points! {
     todo glGetPixelMapfv(map: GLenum, values: *mut GLfloat);
     todo glGetPixelMapuiv(map: GLenum, values: *mut GLuint);
     todo glGetPixelMapusv(map: GLenum, values: *mut GLushort);
-    todo glGetMapdv(target: GLenum, query: GLenum, v: *mut GLdouble);
-    todo glGetMapfv(target: GLenum, query: GLenum, v: *mut GLfloat);
-    todo glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint);
+    exec glGetMapdv(target: GLenum, query: GLenum, v: *mut GLdouble) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &x), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetMapfv(target: GLenum, query: GLenum, v: *mut GLfloat) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &x.iter().map(|&f| f as f32).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &get::Value::Floats(x).as_i32()), None => c.set_error(GL_INVALID_ENUM) } }
     todo glGetPolygonStipple(mask: *mut GLubyte);
     exec glGetString(name: GLenum) -> *const GLubyte { |c| match get::string(name) { Some(s) => s.as_ptr(), None => { c.set_error(GL_INVALID_ENUM); std::ptr::null() } } }
     todo glPushAttrib(mask: GLbitfield);

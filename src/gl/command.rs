@@ -76,6 +76,13 @@ pub enum Command {
     ListBase(u32),
     // Section 5.2, 5.3: the name stack and feedback markers.
     NameStack(super::select::NameOp),
+    // Section 5.1: evaluators. Map points are copied at the call.
+    Map { target: u32, u: (f32, f32), uorder: i32, v: Option<((f32, f32), i32)>, points: Vec<f32> },
+    EvalCoord(f32, Option<f32>),
+    EvalPoint(i32, Option<i32>),
+    MapGrid(i32, (f32, f32), Option<(i32, (f32, f32))>),
+    EvalMesh1(u32, i32, i32),
+    EvalMesh2(u32, i32, i32, i32, i32),
     PassThrough(f32),
 }
 
@@ -88,6 +95,8 @@ impl Command {
                 | Command::Color(_)
                 | Command::Normal(_)
                 | Command::Material(..)
+                | Command::EvalCoord(..)
+                | Command::EvalPoint(..)
                 | Command::End
                 | Command::CallList(_)
                 | Command::CallLists(_)
@@ -192,6 +201,12 @@ impl Context {
             CallLists(names) => self.call_lists(names),
             ListBase(b) => self.lists.base = *b,
             NameStack(op) => self.name_stack(*op),
+            Map { target, u, uorder, v, points } => self.map(*target, *u, *uorder, *v, points.clone()),
+            EvalCoord(u, v) => self.eval_coord(*u, *v),
+            EvalPoint(i, j) => self.eval_point(*i, *j),
+            MapGrid(un, u, v) => self.map_grid(*un, *u, *v),
+            EvalMesh1(mode, i1, i2) => self.eval_mesh1(*mode, *i1, *i2),
+            EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(*mode, *i1, *i2, *j1, *j2),
             PassThrough(t) => self.pass_through(*t),
         }
     }

@@ -4,7 +4,7 @@
 use super::command::Command;
 use super::enums::*;
 use super::state::*;
-use super::{begin_end, enable, lighting, lists, matrix, pixels, select, validate};
+use super::{begin_end, enable, eval, lighting, lists, matrix, pixels, select, validate};
 use crate::framebuffer::{Config, Framebuffer, Present};
 
 pub struct Context {
@@ -24,6 +24,8 @@ pub struct Context {
     pub accum_clear: [f32; 4],
     /// Render mode, selection and feedback (section 5.2, 5.3).
     pub select: select::SelectState,
+    /// Evaluator maps and grids (section 5.1).
+    pub eval: eval::EvalState,
     pub line: LineState,
     pub point: PointState,
     /// Capabilities glEnable stores whose rendering is not implemented yet.
@@ -61,6 +63,7 @@ impl Context {
             lighting: Default::default(),
             accum_clear: [0.0; 4],
             select: Default::default(),
+            eval: Default::default(),
             line: Default::default(),
             point: Default::default(),
             other_caps: Default::default(),

@@ -28,7 +28,6 @@ fn is_stored_cap(cap: u32) -> bool {
             | GL_TEXTURE_GEN_T
             | GL_TEXTURE_GEN_R
             | GL_TEXTURE_GEN_Q
-            | GL_AUTO_NORMAL
             | GL_TEXTURE_1D
             | GL_TEXTURE_2D
             | GL_TEXTURE_3D
@@ -49,8 +48,7 @@ fn is_stored_cap(cap: u32) -> bool {
             | GL_SEPARABLE_2D
             | GL_HISTOGRAM
             | GL_MINMAX
-    ) || (GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4).contains(&cap)
-        || (GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4).contains(&cap)
+    )
         || (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&cap)
 }
 
@@ -70,6 +68,9 @@ impl Context {
                 self.dirty |= DIRTY_RASTER;
             }
             GL_DITHER => self.color_buffer.dither = on,
+            GL_AUTO_NORMAL => self.eval.auto_normal = on,
+            GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4 => self.eval.enabled1[(cap - GL_MAP1_COLOR_4) as usize] = on,
+            GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4 => self.eval.enabled2[(cap - GL_MAP2_COLOR_4) as usize] = on,
             GL_LIGHTING => {
                 self.lighting.enabled = on;
                 self.dirty |= DIRTY_LIGHTING;
@@ -128,6 +129,9 @@ impl Context {
             GL_INDEX_LOGIC_OP => self.color_buffer.index_logic_op,
             GL_LINE_STIPPLE => self.line.stipple,
             GL_LIGHTING => self.lighting.enabled,
+            GL_AUTO_NORMAL => self.eval.auto_normal,
+            GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4 => self.eval.enabled1[(cap - GL_MAP1_COLOR_4) as usize],
+            GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4 => self.eval.enabled2[(cap - GL_MAP2_COLOR_4) as usize],
             _ if (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as u32).contains(&cap) => self.lighting.lights[(cap - GL_LIGHT0) as usize].enabled,
             GL_COLOR_MATERIAL => self.lighting.color_material,
             GL_NORMALIZE => self.lighting.normalize,

@@ -344,3 +344,8 @@ pub const GL_LOAD: u32 = 0x0101;
 pub const GL_RETURN: u32 = 0x0102;
 pub const GL_MULT: u32 = 0x0103;
 pub const GL_ADD: u32 = 0x0104;
+
+// Polygon modes, also glEvalMesh's modes.
+pub const GL_POINT: u32 = 0x1B00;
+pub const GL_LINE: u32 = 0x1B01;
+pub const GL_FILL: u32 = 0x1B02;

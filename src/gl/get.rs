@@ -88,6 +88,14 @@ impl Context {
             0x0C40 /* GL_RENDER_MODE */ => ints([self.select.mode as i64]),
             0x0D70 /* GL_NAME_STACK_DEPTH */ => ints([self.name_stack_depth() as i64]),
             GL_MAX_NAME_STACK_DEPTH => ints([super::select::MAX_NAME_STACK_DEPTH as i64]),
+            GL_MAX_EVAL_ORDER => ints([super::eval::MAX_EVAL_ORDER as i64]),
+            0x0DD0 /* GL_MAP1_GRID_DOMAIN */ => Some(Value::Floats(vec![self.eval.grid1.1 as f64, self.eval.grid1.2 as f64])),
+            0x0DD1 /* GL_MAP1_GRID_SEGMENTS */ => ints([self.eval.grid1.0 as i64]),
+            0x0DD2 /* GL_MAP2_GRID_DOMAIN */ => {
+                let g = self.eval.grid2;
+                Some(Value::Floats(vec![g.1 as f64, g.2 as f64, g.4 as f64, g.5 as f64]))
+            }
+            0x0DD3 /* GL_MAP2_GRID_SEGMENTS */ => ints([self.eval.grid2.0 as i64, self.eval.grid2.3 as i64]),
             GL_CURRENT_COLOR => Some(Value::Normalized(self.current.color.iter().map(|&c| c as f64).collect())),
             GL_COLOR_CLEAR_VALUE => Some(Value::Normalized(self.color_buffer.clear.iter().map(|&c| c as f64).collect())),
             GL_COLOR_WRITEMASK => Some(Value::Bools(self.color_buffer.write_mask.to_vec())),

@@ -10,6 +10,7 @@ pub mod command;
 pub mod context;
 pub mod enable;
 pub mod enums;
+pub mod eval;
 pub mod fragment;
 pub mod get;
 pub mod lighting;
