@@ -250,7 +250,7 @@ super::entry_points! {
     todo glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat);
     todo glTexGeni(coord: GLenum, pname: GLenum, param: GLint);
     todo glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint);
-    todo glClipPlane(plane: GLenum, equation: *const GLdouble);
+    list glClipPlane(plane: GLenum, equation: *const GLdouble) { |_c| Command::ClipPlane(plane, arr::<GLdouble, 4>(equation)?) }
     todo glRasterPos2d(x: GLdouble, y: GLdouble);
     todo glRasterPos2dv(v: *const GLdouble);
     todo glRasterPos2f(x: GLfloat, y: GLfloat);
@@ -402,7 +402,7 @@ super::entry_points! {
     exec["as glGetIntegerv"] glGetFloatv(pname: GLenum, params: *mut GLfloat) { |c| c.get_into(pname, params, |v| v.as_f64().into_iter().map(|x| x as f32).collect()) }
     exec["as glGetIntegerv"] glGetDoublev(pname: GLenum, params: *mut GLdouble) { |c| c.get_into(pname, params, get::Value::as_f64) }
     todo glGetPointerv(pname: GLenum, params: *mut *mut c_void);
-    todo glGetClipPlane(plane: GLenum, equation: *mut GLdouble);
+    exec glGetClipPlane(plane: GLenum, equation: *mut GLdouble) { |c| match c.get_clip_plane(plane) { Some(p) => write_out(equation, &p), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &v), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetLightiv(light: GLenum, pname: GLenum, params: *mut GLint) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &ints_out(&v, is_color_param(pname))), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMaterialfv(face: GLenum, pname: GLenum, params: *mut GLfloat) { |c| match c.get_material(face, pname) { Some(v) => write_out(params, &v), None => c.set_error(GL_INVALID_ENUM) } }

@@ -74,6 +74,7 @@ pub enum Command {
     /// glCallLists: names before the list base is added (added when run).
     CallLists(Vec<u32>),
     ListBase(u32),
+    ClipPlane(u32, [f64; 4]),
     // Section 5.2, 5.3: the name stack and feedback markers.
     NameStack(super::select::NameOp),
     // Section 5.1: evaluators. Map points are copied at the call.
@@ -200,6 +201,7 @@ impl Context {
             CallList(n) => self.call_list(*n),
             CallLists(names) => self.call_lists(names),
             ListBase(b) => self.lists.base = *b,
+            ClipPlane(p, eq) => self.clip_plane(*p, *eq),
             NameStack(op) => self.name_stack(*op),
             Map { target, u, uorder, v, points } => self.map(*target, *u, *uorder, *v, points.clone()),
             EvalCoord(u, v) => self.eval_coord(*u, *v),

@@ -4,7 +4,7 @@
 use super::command::Command;
 use super::enums::*;
 use super::state::*;
-use super::{begin_end, enable, eval, lighting, lists, matrix, pixels, select, validate};
+use super::{begin_end, clip_plane, enable, eval, lighting, lists, matrix, pixels, select, validate};
 use crate::framebuffer::{Config, Framebuffer, Present};
 
 pub struct Context {
@@ -26,6 +26,7 @@ pub struct Context {
     pub select: select::SelectState,
     /// Evaluator maps and grids (section 5.1).
     pub eval: eval::EvalState,
+    pub user_clip: clip_plane::UserClipState,
     pub line: LineState,
     pub point: PointState,
     /// Capabilities glEnable stores whose rendering is not implemented yet.
@@ -64,6 +65,7 @@ impl Context {
             accum_clear: [0.0; 4],
             select: Default::default(),
             eval: Default::default(),
+            user_clip: Default::default(),
             line: Default::default(),
             point: Default::default(),
             other_caps: Default::default(),

@@ -5,7 +5,8 @@
 use super::context::Context;
 use super::enums::*;
 use super::lighting::MAX_LIGHTS;
-use super::validate::{DIRTY_FRAGMENT, DIRTY_LIGHTING, DIRTY_RASTER};
+use super::clip_plane::MAX_CLIP_PLANES;
+use super::validate::{DIRTY_FRAGMENT, DIRTY_LIGHTING, DIRTY_RASTER, DIRTY_TRANSFORM};
 use crate::render::fragment::CompareFunc;
 use std::collections::BTreeSet;
 
@@ -49,7 +50,6 @@ fn is_stored_cap(cap: u32) -> bool {
             | GL_HISTOGRAM
             | GL_MINMAX
     )
-        || (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&cap)
 }
 
 impl Context {
@@ -69,6 +69,10 @@ impl Context {
             }
             GL_DITHER => self.color_buffer.dither = on,
             GL_AUTO_NORMAL => self.eval.auto_normal = on,
+            _ if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap) => {
+                self.user_clip.enabled[(cap - GL_CLIP_PLANE0) as usize] = on;
+                self.dirty |= DIRTY_TRANSFORM;
+            }
             GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4 => self.eval.enabled1[(cap - GL_MAP1_COLOR_4) as usize] = on,
             GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4 => self.eval.enabled2[(cap - GL_MAP2_COLOR_4) as usize] = on,
             GL_LIGHTING => {
@@ -130,6 +134,9 @@ impl Context {
             GL_LINE_STIPPLE => self.line.stipple,
             GL_LIGHTING => self.lighting.enabled,
             GL_AUTO_NORMAL => self.eval.auto_normal,
+            _ if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap) => {
+                self.user_clip.enabled[(cap - GL_CLIP_PLANE0) as usize]
+            }
             GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4 => self.eval.enabled1[(cap - GL_MAP1_COLOR_4) as usize],
             GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4 => self.eval.enabled2[(cap - GL_MAP2_COLOR_4) as usize],
             _ if (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as u32).contains(&cap) => self.lighting.lights[(cap - GL_LIGHT0) as usize].enabled,

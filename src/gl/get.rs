@@ -96,6 +96,7 @@ impl Context {
                 Some(Value::Floats(vec![g.1 as f64, g.2 as f64, g.4 as f64, g.5 as f64]))
             }
             0x0DD3 /* GL_MAP2_GRID_SEGMENTS */ => ints([self.eval.grid2.0 as i64, self.eval.grid2.3 as i64]),
+            GL_MAX_CLIP_PLANES => ints([super::clip_plane::MAX_CLIP_PLANES as i64]),
             GL_CURRENT_COLOR => Some(Value::Normalized(self.current.color.iter().map(|&c| c as f64).collect())),
             GL_COLOR_CLEAR_VALUE => Some(Value::Normalized(self.color_buffer.clear.iter().map(|&c| c as f64).collect())),
             GL_COLOR_WRITEMASK => Some(Value::Bools(self.color_buffer.write_mask.to_vec())),

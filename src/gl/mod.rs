@@ -6,6 +6,7 @@
 pub mod accum;
 pub mod begin_end;
 pub mod clear;
+pub mod clip_plane;
 pub mod command;
 pub mod context;
 pub mod enable;

@@ -13,6 +13,7 @@
 
 use super::context::Context;
 use super::enums::*;
+use crate::render::clip::Plane;
 use crate::render::ClipVertex;
 use glam::Vec4;
 
@@ -110,21 +111,29 @@ impl SelectState {
     }
 }
 
-/// The six frustum planes, >= 0 inside.
-const FRUSTUM: [fn(&Vec4) -> f32; 6] = [|p| p.w + p.x, |p| p.w - p.x, |p| p.w + p.y, |p| p.w - p.y, |p| p.w + p.z, |p| p.w - p.z];
+/// The six frustum planes.
+const FRUSTUM: [Plane; 6] = [
+    Plane { n: Vec4::new(1.0, 0.0, 0.0, 1.0), d: 0.0 },
+    Plane { n: Vec4::new(-1.0, 0.0, 0.0, 1.0), d: 0.0 },
+    Plane { n: Vec4::new(0.0, 1.0, 0.0, 1.0), d: 0.0 },
+    Plane { n: Vec4::new(0.0, -1.0, 0.0, 1.0), d: 0.0 },
+    Plane { n: Vec4::new(0.0, 0.0, 1.0, 1.0), d: 0.0 },
+    Plane { n: Vec4::new(0.0, 0.0, -1.0, 1.0), d: 0.0 },
+];
 
-/// Clips a convex polygon (or a segment, or a point) to the view volume.
-fn clip_to_frustum(mut poly: Vec<ClipVertex>) -> Vec<ClipVertex> {
+/// Clips a convex polygon (or a segment, or a point) to the view volume
+/// and the user clip planes.
+fn clip_to_frustum(mut poly: Vec<ClipVertex>, user: &[Plane]) -> Vec<ClipVertex> {
     if poly.iter().any(|v| !v.pos.is_finite()) {
         return Vec::new();
     }
-    for plane in FRUSTUM {
+    for plane in FRUSTUM.iter().chain(user) {
         if poly.is_empty() {
             break;
         }
         let n = poly.len();
         if n == 1 {
-            if plane(&poly[0].pos) < 0.0 {
+            if plane.dist(&poly[0].pos) < 0.0 {
                 poly.clear();
             }
             continue;
@@ -133,7 +142,7 @@ fn clip_to_frustum(mut poly: Vec<ClipVertex>) -> Vec<ClipVertex> {
         let edges = if n == 2 { 1 } else { n };
         for i in 0..edges {
             let (a, b) = (&poly[i], &poly[(i + 1) % n]);
-            let (da, db) = (plane(&a.pos), plane(&b.pos));
+            let (da, db) = (plane.dist(&a.pos), plane.dist(&b.pos));
             if da >= 0.0 {
                 out.push(*a);
             }
@@ -142,7 +151,7 @@ fn clip_to_frustum(mut poly: Vec<ClipVertex>) -> Vec<ClipVertex> {
                 out.push(ClipVertex::lerp(inside, outside, di / (di - dout)));
             }
         }
-        if n == 2 && plane(&poly[1].pos) >= 0.0 {
+        if n == 2 && plane.dist(&poly[1].pos) >= 0.0 {
             out.push(poly[1]);
         }
         poly = out;
@@ -270,7 +279,8 @@ impl Context {
     /// A primitive in selection or feedback mode: `kind` is the feedback
     /// token; `reset` marks the first segment of a line (LINE_RESET_TOKEN).
     pub fn select_primitive(&mut self, verts: &[&ClipVertex], kind: f32, reset: bool) {
-        let clipped = clip_to_frustum(verts.iter().map(|v| **v).collect());
+        let user = &self.derived.render.clip_planes[crate::render::clip::FIXED_PLANES.len()..];
+        let clipped = clip_to_frustum(verts.iter().map(|v| **v).collect(), user);
         if clipped.is_empty() || (verts.len() >= 3 && clipped.len() < 3) {
             return;
         }

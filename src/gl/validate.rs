@@ -40,6 +40,7 @@ impl Default for Derived {
                 front_ccw: true,
                 flat: false,
                 two_side: false,
+                clip_planes: crate::render::clip::FIXED_PLANES.to_vec(),
                 fragment: FragmentState::default(),
             },
         }
@@ -70,6 +71,9 @@ impl Context {
         if d & DIRTY_TRANSFORM != 0 {
             let m = *self.transform.projection.top() * *self.transform.modelview.top();
             self.derived.mvp = m.as_mat4();
+            let mut planes = crate::render::clip::FIXED_PLANES.to_vec();
+            planes.extend(self.clip_space_planes(self.transform.projection.top()));
+            self.derived.render.clip_planes = planes;
         }
         if d & (DIRTY_LIGHTING | DIRTY_TRANSFORM) != 0 {
             let l = &self.lighting;

@@ -34,6 +34,9 @@ pub struct RenderState {
     /// glFrontFace(GL_CCW)?
     pub front_ccw: bool,
     pub flat: bool,
+    /// Clipping planes in clip coordinates: clip::FIXED_PLANES, then the
+    /// enabled user clip planes.
+    pub clip_planes: Vec<clip::Plane>,
     /// Two-sided lighting: back-facing polygons take their back colour.
     pub two_side: bool,
     pub fragment: FragmentState,
@@ -54,7 +57,7 @@ pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3]
         return;
     }
     let mut poly = clip::Polygon::new();
-    match clip::clip_triangle(v, &mut poly) {
+    match clip::clip_triangle(&rs.clip_planes, v, &mut poly) {
         clip::Outcome::Rejected => {}
         clip::Outcome::Inside => {
             let w = [0, 1, 2].map(|i| setup::to_window(rs, v[i]));

@@ -38,6 +38,10 @@ pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVer
     if p.x < -p.w || p.x > p.w || p.y < -p.w || p.y > p.w || p.z < -p.w || p.z > p.w {
         return;
     }
+    // User clip planes (after the fixed ones).
+    if rs.clip_planes[super::clip::FIXED_PLANES.len()..].iter().any(|pl| !(pl.dist(&p) >= 0.0)) {
+        return;
+    }
     let wv = to_window(rs, v);
     let w = raster_size(size);
     let (x0, y0) = (first_pixel(wv.x, w), first_pixel(wv.y, w));
