@@ -17,6 +17,7 @@ use super::types::*;
 use crate::gl::enums::*;
 use crate::gl::lighting::{is_color_param, light_model_param_count, light_param_count, material_param_count, read_params};
 use crate::gl::eval::read_points;
+use crate::gl::polygon::{pack_stipple, unpack_stipple};
 use crate::gl::select::NameOp;
 use crate::gl::{get, lists::decode_names, Command, Context};
 use crate::glu;
@@ -96,8 +97,8 @@ super::entry_points! {
     exec glGetError() -> GLenum { |c| c.take_error() }
     list["GL_LINE_SMOOTH and GL_POINT_SMOOTH are not antialiased yet (issue 3)"] glBegin(mode: GLenum) { |_c| Command::Begin(mode) }
     list glEnd() { |_c| Command::End }
-    todo glEdgeFlag(flag: GLboolean);
-    todo glEdgeFlagv(flag: *const GLboolean);
+    list glEdgeFlag(flag: GLboolean) { |_c| Command::EdgeFlag(truth(flag)) }
+    list glEdgeFlagv(flag: *const GLboolean) { |_c| Command::EdgeFlag(truth(arr::<GLboolean, 1>(flag)?[0])) }
     list glVertex2d(x: GLdouble, y: GLdouble) { |_c| Command::Vertex(position(&[x, y])) }
     list glVertex2dv(v: *const GLdouble) { |_c| Command::Vertex(position(&arr::<GLdouble, 2>(v)?)) }
     list glVertex2f(x: GLfloat, y: GLfloat) { |_c| Command::Vertex(position(&[x, y])) }
@@ -294,9 +295,9 @@ super::entry_points! {
     list glLineStipple(factor: GLint, pattern: GLushort) { |_c| Command::LineStipple(factor, pattern) }
     list glCullFace(mode: GLenum) { |_c| Command::CullFace(mode) }
     list glFrontFace(mode: GLenum) { |_c| Command::FrontFace(mode) }
-    todo glPolygonStipple(mask: *const GLubyte);
-    todo glPolygonMode(face: GLenum, mode: GLenum);
-    todo glPolygonOffset(factor: GLfloat, units: GLfloat);
+    list glPolygonStipple(mask: *const GLubyte) { |c| { if mask.is_null() { return None; } Command::PolygonStipple(Box::new(unpack_stipple(&c.pixel_store.unpack, mask))) } }
+    list glPolygonMode(face: GLenum, mode: GLenum) { |_c| Command::PolygonMode(face, mode) }
+    list["applies to filled polygons; GL_POLYGON_OFFSET_LINE and _POINT are stored but not applied yet"] glPolygonOffset(factor: GLfloat, units: GLfloat) { |_c| Command::PolygonOffset(factor, units) }
     client["as glPixelStorei"] glPixelStoref(pname: GLenum, param: GLfloat) { |c| c.pixel_store(pname, param as f64) }
     client["pack modes apply to glReadPixels; unpack modes are stored for issue 5"] glPixelStorei(pname: GLenum, param: GLint) { |c| c.pixel_store(pname, param as f64) }
     todo glPixelTransferf(pname: GLenum, param: GLfloat);
@@ -423,7 +424,7 @@ super::entry_points! {
     exec glGetMapdv(target: GLenum, query: GLenum, v: *mut GLdouble) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &x), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMapfv(target: GLenum, query: GLenum, v: *mut GLfloat) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &x.iter().map(|&f| f as f32).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &get::Value::Floats(x).as_i32()), None => c.set_error(GL_INVALID_ENUM) } }
-    todo glGetPolygonStipple(mask: *mut GLubyte);
+    exec glGetPolygonStipple(mask: *mut GLubyte) { |c| if !mask.is_null() { pack_stipple(&c.pixel_store.pack, &c.polygon.stipple_pattern, mask) } }
     exec glGetString(name: GLenum) -> *const GLubyte { |c| match get::string(name) { Some(s) => s.as_ptr(), None => { c.set_error(GL_INVALID_ENUM); std::ptr::null() } } }
     todo glPushAttrib(mask: GLbitfield);
     todo glPopAttrib();

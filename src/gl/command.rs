@@ -75,6 +75,11 @@ pub enum Command {
     CallLists(Vec<u32>),
     ListBase(u32),
     ClipPlane(u32, [f64; 4]),
+    // Sections 2.6.2 and 3.5: edge flags and polygon modes.
+    EdgeFlag(bool),
+    PolygonMode(u32, u32),
+    PolygonOffset(f32, f32),
+    PolygonStipple(Box<[u32; 32]>),
     // Section 5.2, 5.3: the name stack and feedback markers.
     NameStack(super::select::NameOp),
     // Section 5.1: evaluators. Map points are copied at the call.
@@ -97,6 +102,7 @@ impl Command {
                 | Command::Normal(_)
                 | Command::Material(..)
                 | Command::EvalCoord(..)
+                | Command::EdgeFlag(_)
                 | Command::EvalPoint(..)
                 | Command::End
                 | Command::CallList(_)
@@ -154,16 +160,19 @@ impl Context {
                     return self.set_error(GL_INVALID_VALUE);
                 }
                 self.point.size = *s;
+                self.dirty |= super::validate::DIRTY_RASTER;
             }
             LineWidth(w) => {
                 if !(*w > 0.0) {
                     return self.set_error(GL_INVALID_VALUE);
                 }
                 self.line.width = *w;
+                self.dirty |= super::validate::DIRTY_RASTER;
             }
             LineStipple(factor, pattern) => {
                 self.line.stipple_repeat = (*factor).clamp(1, 256);
                 self.line.stipple_pattern = *pattern;
+                self.dirty |= super::validate::DIRTY_RASTER;
             }
             Scissor(x, y, w, h) => self.set_scissor(*x, *y, *w, *h),
             AlphaFunc(f, r) => self.alpha_func(*f, *r),
@@ -202,6 +211,10 @@ impl Context {
             CallLists(names) => self.call_lists(names),
             ListBase(b) => self.lists.base = *b,
             ClipPlane(p, eq) => self.clip_plane(*p, *eq),
+            EdgeFlag(f) => self.current.edge_flag = *f,
+            PolygonMode(face, mode) => self.polygon_mode(*face, *mode),
+            PolygonOffset(f, u) => self.polygon_offset(*f, *u),
+            PolygonStipple(p) => self.polygon_stipple(**p),
             NameStack(op) => self.name_stack(*op),
             Map { target, u, uorder, v, points } => self.map(*target, *u, *uorder, *v, points.clone()),
             EvalCoord(u, v) => self.eval_coord(*u, *v),

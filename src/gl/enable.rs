@@ -23,7 +23,6 @@ fn is_stored_cap(cap: u32) -> bool {
         GL_POINT_SMOOTH
             | GL_LINE_SMOOTH
             | GL_POLYGON_SMOOTH
-            | GL_POLYGON_STIPPLE
             | GL_FOG
             | GL_TEXTURE_GEN_S
             | GL_TEXTURE_GEN_T
@@ -33,9 +32,6 @@ fn is_stored_cap(cap: u32) -> bool {
             | GL_TEXTURE_2D
             | GL_TEXTURE_3D
             | GL_TEXTURE_CUBE_MAP
-            | GL_POLYGON_OFFSET_POINT
-            | GL_POLYGON_OFFSET_LINE
-            | GL_POLYGON_OFFSET_FILL
             | GL_COLOR_SUM
             | GL_MULTISAMPLE
             | GL_SAMPLE_ALPHA_TO_COVERAGE
@@ -107,7 +103,20 @@ impl Context {
                 } = on;
                 self.dirty |= DIRTY_FRAGMENT;
             }
-            GL_LINE_STIPPLE => self.line.stipple = on,
+            GL_LINE_STIPPLE => {
+                self.line.stipple = on;
+                self.dirty |= DIRTY_RASTER;
+            }
+            GL_POLYGON_STIPPLE => {
+                self.polygon.stipple = on;
+                self.dirty |= DIRTY_RASTER;
+            }
+            GL_POLYGON_OFFSET_FILL => {
+                self.polygon.offset_fill = on;
+                self.dirty |= DIRTY_RASTER;
+            }
+            GL_POLYGON_OFFSET_LINE => self.polygon.offset_line = on,
+            GL_POLYGON_OFFSET_POINT => self.polygon.offset_point = on,
             _ if is_stored_cap(cap) => {
                 if on {
                     self.other_caps.0.insert(cap);
@@ -132,6 +141,10 @@ impl Context {
             GL_COLOR_LOGIC_OP => self.color_buffer.color_logic_op,
             GL_INDEX_LOGIC_OP => self.color_buffer.index_logic_op,
             GL_LINE_STIPPLE => self.line.stipple,
+            GL_POLYGON_STIPPLE => self.polygon.stipple,
+            GL_POLYGON_OFFSET_FILL => self.polygon.offset_fill,
+            GL_POLYGON_OFFSET_LINE => self.polygon.offset_line,
+            GL_POLYGON_OFFSET_POINT => self.polygon.offset_point,
             GL_LIGHTING => self.lighting.enabled,
             GL_AUTO_NORMAL => self.eval.auto_normal,
             _ if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap) => {

@@ -97,6 +97,10 @@ impl Context {
             }
             0x0DD3 /* GL_MAP2_GRID_SEGMENTS */ => ints([self.eval.grid2.0 as i64, self.eval.grid2.3 as i64]),
             GL_MAX_CLIP_PLANES => ints([super::clip_plane::MAX_CLIP_PLANES as i64]),
+            0x0B40 /* GL_POLYGON_MODE */ => ints([self.polygon.mode[0] as i64, self.polygon.mode[1] as i64]),
+            0x8038 /* GL_POLYGON_OFFSET_FACTOR */ => Some(Value::Floats(vec![self.polygon.offset_factor as f64])),
+            0x2A00 /* GL_POLYGON_OFFSET_UNITS */ => Some(Value::Floats(vec![self.polygon.offset_units as f64])),
+            0x0B43 /* GL_EDGE_FLAG */ => Some(Value::Bools(vec![self.current.edge_flag])),
             GL_CURRENT_COLOR => Some(Value::Normalized(self.current.color.iter().map(|&c| c as f64).collect())),
             GL_COLOR_CLEAR_VALUE => Some(Value::Normalized(self.color_buffer.clear.iter().map(|&c| c as f64).collect())),
             GL_COLOR_WRITEMASK => Some(Value::Bools(self.color_buffer.write_mask.to_vec())),

@@ -18,6 +18,7 @@ pub mod lighting;
 pub mod lists;
 pub mod matrix;
 pub mod pixels;
+pub mod polygon;
 pub mod select;
 pub mod state;
 pub mod validate;

@@ -130,11 +130,34 @@ pub struct PolygonState {
     pub cull: bool,
     pub cull_mode: u32,
     pub front_face: u32,
+    /// glPolygonMode for front and back faces.
+    pub mode: [u32; 2],
+    pub offset_factor: f32,
+    pub offset_units: f32,
+    /// GL_POLYGON_OFFSET_POINT, _LINE, _FILL.
+    pub offset_point: bool,
+    pub offset_line: bool,
+    pub offset_fill: bool,
+    pub stipple: bool,
+    /// Bit x of row y (rows bottom-up, as window y).
+    pub stipple_pattern: [u32; 32],
 }
 
 impl Default for PolygonState {
     fn default() -> Self {
-        PolygonState { cull: false, cull_mode: super::enums::GL_BACK, front_face: super::enums::GL_CCW }
+        PolygonState {
+            cull: false,
+            cull_mode: super::enums::GL_BACK,
+            front_face: super::enums::GL_CCW,
+            mode: [super::enums::GL_FILL; 2],
+            offset_factor: 0.0,
+            offset_units: 0.0,
+            offset_point: false,
+            offset_line: false,
+            offset_fill: false,
+            stipple: false,
+            stipple_pattern: [!0; 32],
+        }
     }
 }
 
@@ -170,11 +193,12 @@ impl Default for HintState {
 pub struct CurrentState {
     pub color: [f32; 4],
     pub normal: [f32; 3],
+    pub edge_flag: bool,
 }
 
 impl Default for CurrentState {
     fn default() -> Self {
-        CurrentState { color: [1.0; 4], normal: [0.0, 0.0, 1.0] }
+        CurrentState { color: [1.0; 4], normal: [0.0, 0.0, 1.0], edge_flag: true }
     }
 }
 

@@ -40,6 +40,11 @@ impl Default for Derived {
                 front_ccw: true,
                 flat: false,
                 two_side: false,
+                polygon_mode: [GL_FILL; 2],
+                offset_fill: None,
+                polygon_stipple: None,
+                line: crate::render::line::LineParams { width: 1.0, stipple: None },
+                point_size: 1.0,
                 clip_planes: crate::render::clip::FIXED_PLANES.to_vec(),
                 fragment: FragmentState::default(),
             },
@@ -109,6 +114,16 @@ impl Context {
             };
             rs.front_ccw = self.polygon.front_face == GL_CCW;
             rs.flat = self.shade_model == GL_FLAT;
+            let p = &self.polygon;
+            rs.polygon_mode = p.mode;
+            rs.offset_fill = p.offset_fill.then_some((p.offset_factor, p.offset_units));
+            rs.polygon_stipple = p.stipple.then(|| Box::new(p.stipple_pattern));
+            let l = &self.line;
+            rs.line = crate::render::line::LineParams {
+                width: l.width,
+                stipple: if l.stipple { Some((l.stipple_repeat as u32, l.stipple_pattern)) } else { None },
+            };
+            rs.point_size = self.point.size;
         }
         if let Some(f) = fragment {
             rs.fragment = f;

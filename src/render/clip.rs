@@ -138,7 +138,12 @@ fn clip_polygon_to_plane(poly: &mut Polygon, plane: &Plane) {
             // shared edge yields the same point from either triangle.
             let (inside, outside, di, dout) = if a_in { (a, b, da, db) } else { (b, a, db, da) };
             let t = di / (di - dout);
-            scratch.push(ClipVertex::lerp(inside, outside, t));
+            let mut v = ClipVertex::lerp(inside, outside, t);
+            // Leaving the half-space, the new vertex starts an edge along
+            // the plane (never a boundary edge); entering, it continues
+            // the original edge a->b.
+            v.edge = !a_in && a.edge;
+            scratch.push(v);
         }
     }
     std::mem::swap(verts, scratch);
@@ -149,7 +154,7 @@ mod tests {
     use super::*;
 
     fn v(p: [f32; 4]) -> ClipVertex {
-        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE }
+        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE, edge: true }
     }
 
     /// Two triangles sharing the edge (a, b), traversed in opposite

@@ -122,10 +122,17 @@ fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], f
         let c = |ch: usize| plane([0, 1, 2].map(|i| col(i)[ch] as f64 * scale(i)));
         (None, [c(0), c(1), c(2), c(3)])
     };
+    let mut z = plane([v[0].z, v[1].z, v[2].z]);
+    if let Some((factor, units)) = rs.offset_fill {
+        // Polygon offset (3.5.5): m * factor + r * units, with m the
+        // largest depth slope and r the depth buffer's resolution.
+        let m = z.dx.abs().max(z.dy.abs());
+        z.a0 += m * factor as f64 + units as f64 / crate::framebuffer::DEPTH_MAX as f64;
+    }
     TriangleSetup {
         x0: x[0],
         y0: y[0],
-        z: plane([v[0].z, v[1].z, v[2].z]),
+        z,
         q: plane(q),
         color,
         perspective,
