@@ -426,10 +426,10 @@ super::entry_points! {
     exec glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &get::Value::Floats(x).as_i32()), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetPolygonStipple(mask: *mut GLubyte) { |c| if !mask.is_null() { pack_stipple(&c.pixel_store.pack, &c.polygon.stipple_pattern, mask) } }
     exec glGetString(name: GLenum) -> *const GLubyte { |c| match get::string(name) { Some(s) => s.as_ptr(), None => { c.set_error(GL_INVALID_ENUM); std::ptr::null() } } }
-    todo glPushAttrib(mask: GLbitfield);
-    todo glPopAttrib();
-    todo glPushClientAttrib(mask: GLbitfield);
-    todo glPopClientAttrib();
+    list["saves the groups implemented so far: current, point, line, polygon, stipple, lighting, depth, accum, stencil, viewport, transform, enable, color buffer, hint, eval, list, scissor"] glPushAttrib(mask: GLbitfield) { |_c| Command::PushAttrib(mask) }
+    list glPopAttrib() { |_c| Command::PopAttrib }
+    client["saves the pixel-store modes; vertex-array state comes with vertex arrays"] glPushClientAttrib(mask: GLbitfield) { |c| c.push_client_attrib(mask) }
+    client glPopClientAttrib() { |c| c.pop_client_attrib() }
     todo glDrawRangeElements(mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, type_: GLenum, indices: *const c_void);
     todo glTexImage3D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void);
     todo glTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void);

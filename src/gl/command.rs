@@ -75,6 +75,8 @@ pub enum Command {
     CallLists(Vec<u32>),
     ListBase(u32),
     ClipPlane(u32, [f64; 4]),
+    PushAttrib(u32),
+    PopAttrib,
     // Sections 2.6.2 and 3.5: edge flags and polygon modes.
     EdgeFlag(bool),
     PolygonMode(u32, u32),
@@ -211,6 +213,8 @@ impl Context {
             CallLists(names) => self.call_lists(names),
             ListBase(b) => self.lists.base = *b,
             ClipPlane(p, eq) => self.clip_plane(*p, *eq),
+            PushAttrib(mask) => self.push_attrib(*mask),
+            PopAttrib => self.pop_attrib(),
             EdgeFlag(f) => self.current.edge_flag = *f,
             PolygonMode(face, mode) => self.polygon_mode(*face, *mode),
             PolygonOffset(f, u) => self.polygon_offset(*f, *u),

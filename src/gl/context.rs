@@ -4,7 +4,7 @@
 use super::command::Command;
 use super::enums::*;
 use super::state::*;
-use super::{begin_end, clip_plane, enable, eval, lighting, lists, matrix, pixels, select, validate};
+use super::{attrib, begin_end, clip_plane, enable, eval, lighting, lists, matrix, pixels, select, validate};
 use crate::framebuffer::{Config, Framebuffer, Present};
 
 pub struct Context {
@@ -27,6 +27,8 @@ pub struct Context {
     /// Evaluator maps and grids (section 5.1).
     pub eval: eval::EvalState,
     pub user_clip: clip_plane::UserClipState,
+    /// glPushAttrib / glPushClientAttrib stacks.
+    pub attrib: attrib::AttribStacks,
     pub line: LineState,
     pub point: PointState,
     /// Capabilities glEnable stores whose rendering is not implemented yet.
@@ -66,6 +68,7 @@ impl Context {
             select: Default::default(),
             eval: Default::default(),
             user_clip: Default::default(),
+            attrib: Default::default(),
             line: Default::default(),
             point: Default::default(),
             other_caps: Default::default(),

@@ -4,6 +4,7 @@
 //! renderer needs at the next draw.
 
 pub mod accum;
+pub mod attrib;
 pub mod begin_end;
 pub mod clear;
 pub mod clip_plane;
