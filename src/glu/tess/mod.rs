@@ -583,14 +583,14 @@ impl Job {
             return;
         }
         let flags = self.has_edge_flag();
-        let bset: std::collections::HashSet<(usize, usize)> = if flags { r.boundary.iter().map(|&(a, b)| (a.min(b), a.max(b))).collect() } else { Default::default() };
+        let bi = if flags { Some(sweep::BoundaryIndex::new(r)) } else { None };
         self.begin(GL_TRIANGLES);
         let mut last: Option<bool> = None;
         for t in &r.triangles {
             for i in 0..3 {
                 if flags {
                     let (a, b) = (t[i], t[(i + 1) % 3]);
-                    let f = bset.contains(&(a.min(b), a.max(b)));
+                    let f = bi.as_ref().is_some_and(|bi| bi.on_boundary(a, b));
                     if last != Some(f) {
                         self.edge_flag(f);
                         last = Some(f);

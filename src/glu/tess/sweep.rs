@@ -263,6 +263,21 @@ pub struct Region {
     pub triangles: Vec<[usize; 3]>,
 }
 
+/// Which triangle edges lie on the region's boundary (for the edge flags).
+pub struct BoundaryIndex {
+    set: std::collections::HashSet<(usize, usize)>,
+}
+
+impl BoundaryIndex {
+    pub fn new(r: &Region) -> Self {
+        BoundaryIndex { set: r.boundary.iter().map(|&(a, b)| (a.min(b), a.max(b))).collect() }
+    }
+
+    pub fn on_boundary(&self, a: usize, b: usize) -> bool {
+        self.set.contains(&(a.min(b), a.max(b)))
+    }
+}
+
 fn lex_less(p: [f64; 2], q: [f64; 2]) -> bool {
     p[0] < q[0] || (p[0] == q[0] && p[1] < q[1])
 }
@@ -494,9 +509,11 @@ struct Tri<'a> {
 impl Tri<'_> {
     fn tri(&mut self, a: usize, b: usize, c: usize) {
         let o = orient(self.verts[a].p, self.verts[b].p, self.verts[c].p);
-        if o > 0.0 {
+        // Zero-area triangles (collinear vertices) are kept: they keep the
+        // mesh free of T-junctions, so edge flags stay exact.
+        if o >= 0.0 {
             self.out.push([a, b, c]);
-        } else if o < 0.0 {
+        } else {
             self.out.push([a, c, b]);
         }
     }
