@@ -370,9 +370,11 @@ fn check_coverage(cs: &[Vec<[f64; 3]>], rule: u32, r: &mut Rng, flags: bool, wha
 
 #[test]
 fn exact_coverage_random_polygons() {
-    let mut r = Rng(0x9e3779b97f4a7c15);
+    // TESS_SEED / TESS_POLYGONS run a longer search (e.g. 200000 polygons).
+    let env = |k: &str, d: u64| std::env::var(k).ok().and_then(|v| v.parse().ok()).unwrap_or(d);
+    let mut r = Rng(env("TESS_SEED", 0x9e3779b97f4a7c15) | 1);
     let mut n = 0;
-    for i in 0..2400u64 {
+    for i in 0..env("TESS_POLYGONS", 2400) {
         let family = i % 4;
         let cs = random_polygon(&mut r, family);
         for &rule in &RULES {
