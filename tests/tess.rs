@@ -272,6 +272,18 @@ fn random_polygon(r: &mut Rng, family: u64) -> Vec<Vec<[f64; 3]>> {
                 cs.push(star(r, cx, cy, 3.0, rev));
             }
         }
+        // Many crossings: 20 to 60 random vertices.
+        4 => {
+            let n = 20 + r.below(41);
+            cs.push((0..n).map(|_| [r.f() * 10.0, r.f() * 10.0, 0.0]).collect());
+        }
+        // Near-degenerate: grid points nudged by up to 1e-9, nearly parallel edges.
+        5 => {
+            for _ in 0..1 + r.below(3) {
+                let n = 3 + r.below(8);
+                cs.push((0..n).map(|_| [r.below(5) as f64 + (r.f() - 0.5) * 1e-9, r.below(5) as f64 + (r.f() - 0.5) * 1e-9, 0.0]).collect());
+            }
+        }
         // Axis-aligned rectangles on a grid: coincident and overlapping edges.
         _ => {
             for _ in 0..1 + r.below(4) {
@@ -375,7 +387,7 @@ fn exact_coverage_random_polygons() {
     let mut r = Rng(env("TESS_SEED", 0x9e3779b97f4a7c15) | 1);
     let mut n = 0;
     for i in 0..env("TESS_POLYGONS", 2400) {
-        let family = i % 4;
+        let family = i % 6;
         let cs = random_polygon(&mut r, family);
         for &rule in &RULES {
             check_coverage(&cs, rule, &mut r, i % 2 == 0, &format!("polygon {i} family {family} rule {rule}"));
@@ -592,17 +604,37 @@ fn stress_degenerate_input() {
 }
 
 #[test]
-fn big_polygon_is_not_quadratic() {
-    // A 100k-vertex circle with a wavy rim.
+fn big_polygons_are_not_quadratic() {
+    // A 100k-vertex flower, and a square with 1000 circular holes of 100 vertices.
     let n = 100_000;
-    let c: Vec<[f64; 3]> = (0..n).map(|i| {
-        let a = i as f64 / n as f64 * std::f64::consts::TAU;
-        let rr = 1.0 + 0.1 * ((i % 2) as f64);
-        [rr * a.cos(), rr * a.sin(), 0.0]
-    }).collect();
-    let t0 = std::time::Instant::now();
-    let out = tess(&[c], &Opts { rule: GLU_TESS_WINDING_ODD, flags: false, combine: true, boundary: false, normal: None });
-    let ntri: usize = out.prims.iter().map(|p| p.len() / 3).sum();
-    assert_eq!(ntri, n - 2);
-    assert!(t0.elapsed().as_secs_f64() < 10.0, "{:?}", t0.elapsed());
+    let flower: Vec<[f64; 3]> = (0..n)
+        .map(|i| {
+            let a = i as f64 / n as f64 * std::f64::consts::TAU;
+            let rr = 1.0 + 0.3 * (50.0 * a).sin();
+            [rr * a.cos(), rr * a.sin(), 0.0]
+        })
+        .collect();
+    let mut holes = vec![vec![[0.0, 0.0, 0.0], [40.0, 0.0, 0.0], [40.0, 25.0, 0.0], [0.0, 25.0, 0.0]]];
+    for k in 0..1000 {
+        let (cx, cy) = (0.5 + (k % 40) as f64, 0.5 + (k / 40) as f64);
+        holes.push((0..100).map(|i| {
+            let a = -(i as f64) / 100.0 * std::f64::consts::TAU;
+            [cx + 0.4 * a.cos(), cy + 0.4 * a.sin(), 0.0]
+        }).collect());
+    }
+    for (cs, want_tris) in [(vec![flower], n - 2), (holes, 4 + 100 * 1000 + 2 * 1000 - 2)] {
+        let t0 = std::time::Instant::now();
+        let out = tess(&cs, &Opts { rule: GLU_TESS_WINDING_ODD, flags: false, combine: true, boundary: false, normal: None });
+        let ntri: usize = out.prims.iter().map(|p| p.len() / 3).sum();
+        assert_eq!(ntri, want_tris);
+        let area: f64 = out.prims.iter().flat_map(|p| p.chunks(3)).map(tri_area).sum();
+        let want = rule_area_shoelace(&cs);
+        assert!((area - want).abs() < 1e-9 * want.abs(), "{area} vs {want}");
+        assert!(t0.elapsed().as_secs_f64() < 5.0, "{:?}", t0.elapsed());
+    }
+}
+
+/// Signed area by the shoelace formula (for simple, properly nested input).
+fn rule_area_shoelace(cs: &[Vec<[f64; 3]>]) -> f64 {
+    cs.iter().map(|c| (0..c.len()).map(|i| { let (a, b) = (c[i], c[(i + 1) % c.len()]); 0.5 * (a[0] * b[1] - a[1] * b[0]) }).sum::<f64>()).sum()
 }

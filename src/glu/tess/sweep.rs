@@ -90,37 +90,17 @@ pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: Vec<Seg>, comb: &
         // splits[i] = (param, vertex) points to insert into segment i.
         let mut splits: Vec<Vec<(f64, usize)>> = vec![Vec::new(); n];
         let mut any = false;
-        let mut order: Vec<usize> = (0..n).collect();
-        let minx = |s: &Seg, v: &[Vert]| v[s.a].p[0].min(v[s.b].p[0]);
-        let maxx = |s: &Seg, v: &[Vert]| v[s.a].p[0].max(v[s.b].p[0]);
-        order.sort_by(|&i, &j| minx(&segs[i], verts).total_cmp(&minx(&segs[j], verts)));
-        for oi in 0..n {
-            let i = order[oi];
-            let si = segs[i];
-            let hi_x = maxx(&si, verts) + EPS;
-            let (ylo_i, yhi_i) = {
-                let (y0, y1) = (verts[si.a].p[1], verts[si.b].p[1]);
-                (y0.min(y1) - EPS, y0.max(y1) + EPS)
-            };
-            for &j in &order[oi + 1..] {
-                let sj = segs[j];
-                if minx(&sj, verts) > hi_x {
-                    break;
+        for (i, j) in candidate_pairs(verts, &segs) {
+            let (si, sj) = (segs[i], segs[j]);
+            if let Some(found) = intersect(verts, grid, si, sj, comb) {
+                let (pi, pj) = found?;
+                for (t, v) in pi {
+                    splits[i].push((t, v));
+                    any = true;
                 }
-                let (y0, y1) = (verts[sj.a].p[1], verts[sj.b].p[1]);
-                if y0.max(y1) < ylo_i || y0.min(y1) > yhi_i {
-                    continue;
-                }
-                if let Some(found) = intersect(verts, grid, si, sj, comb) {
-                    let (pi, pj) = found?;
-                    for (t, v) in pi {
-                        splits[i].push((t, v));
-                        any = true;
-                    }
-                    for (t, v) in pj {
-                        splits[j].push((t, v));
-                        any = true;
-                    }
+                for (t, v) in pj {
+                    splits[j].push((t, v));
+                    any = true;
                 }
             }
         }
@@ -149,6 +129,78 @@ pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: Vec<Seg>, comb: &
         segs = out;
     }
     Some(segs)
+}
+
+/// The pairs of edges whose boxes (grown by EPS) overlap, each once, in a
+/// deterministic order: a uniform grid of about sqrt(n) x sqrt(n) cells;
+/// a pair is reported by the cell holding the low corner of the two boxes'
+/// overlap. Edges spanning many cells are checked against all edges.
+fn candidate_pairs(verts: &[Vert], segs: &[Seg]) -> Vec<(usize, usize)> {
+    let n = segs.len();
+    let bb: Vec<[f64; 4]> = segs
+        .iter()
+        .map(|s| {
+            let (p, q) = (verts[s.a].p, verts[s.b].p);
+            [p[0].min(q[0]) - EPS, p[1].min(q[1]) - EPS, p[0].max(q[0]) + EPS, p[1].max(q[1]) + EPS]
+        })
+        .collect();
+    let overlap = |i: usize, j: usize| {
+        let (a, b) = (&bb[i], &bb[j]);
+        a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3]
+    };
+    let mut pairs = Vec::new();
+    if n < 2 {
+        return pairs;
+    }
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for b in &bb {
+        lo = [lo[0].min(b[0]), lo[1].min(b[1])];
+        hi = [hi[0].max(b[2]), hi[1].max(b[3])];
+    }
+    let g = ((n as f64).sqrt() as usize).clamp(1, 1024);
+    let size = [((hi[0] - lo[0]) / g as f64).max(f64::MIN_POSITIVE), ((hi[1] - lo[1]) / g as f64).max(f64::MIN_POSITIVE)];
+    let cell = |x: f64, k: usize| (((x - lo[k]) / size[k]) as usize).min(g - 1);
+    let mut cells: Vec<Vec<u32>> = vec![Vec::new(); g * g];
+    let mut long = Vec::new();
+    for (i, b) in bb.iter().enumerate() {
+        let (x0, y0, x1, y1) = (cell(b[0], 0), cell(b[1], 1), cell(b[2], 0), cell(b[3], 1));
+        if (x1 - x0 + 1) * (y1 - y0 + 1) > 64 {
+            long.push(i);
+            continue;
+        }
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                cells[y * g + x].push(i as u32);
+            }
+        }
+    }
+    let mut is_long = vec![false; n];
+    for &i in &long {
+        is_long[i] = true;
+    }
+    for (c, list) in cells.iter().enumerate() {
+        let (cx, cy) = (c % g, c / g);
+        for (k, &i) in list.iter().enumerate() {
+            for &j in &list[k + 1..] {
+                let (i, j) = (i as usize, j as usize);
+                if !overlap(i, j) {
+                    continue;
+                }
+                let (a, b) = (&bb[i], &bb[j]);
+                if cell(a[0].max(b[0]), 0) == cx && cell(a[1].max(b[1]), 1) == cy {
+                    pairs.push((i, j));
+                }
+            }
+        }
+    }
+    for &i in &long {
+        for j in 0..n {
+            if j != i && (!is_long[j] || j > i) && overlap(i, j) {
+                pairs.push((i, j));
+            }
+        }
+    }
+    pairs
 }
 
 type Splits = (Vec<(f64, usize)>, Vec<(f64, usize)>);
