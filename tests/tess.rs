@@ -357,7 +357,23 @@ fn check_coverage(cs: &[Vec<[f64; 3]>], rule: u32, r: &mut Rng, flags: bool, wha
                 let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
                 let l = (dx * dx + dy * dy).sqrt();
                 let m = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-                let h = 1e-7;
+                // Probe at half the clearance to the nearest other input edge.
+                let clear = cs
+                    .iter()
+                    .flat_map(|c| (0..c.len()).map(move |i| (c[i], c[(i + 1) % c.len()])))
+                    .map(|(p, q)| seg_dist(m, p, q))
+                    .filter(|&d| d > 1e-11)
+                    .fold(f64::INFINITY, f64::min);
+                // Skip edges crossed at their midpoint by another input edge
+                // (cancelling overlaps leave such edges inside the region).
+                let crossed = cs.iter().flat_map(|c| (0..c.len()).map(move |i| (c[i], c[(i + 1) % c.len()]))).any(|(p, q)| {
+                    let par = ((q[0] - p[0]) * dy - (q[1] - p[1]) * dx).abs() <= 1e-12 * l * ((q[0] - p[0]).hypot(q[1] - p[1]));
+                    !par && seg_dist(m, p, q) < 1e-9
+                });
+                if clear < 1e-9 || crossed {
+                    continue;
+                }
+                let h = (0.5 * clear).min(1e-4);
                 let right = [m[0] + dy / l * h, m[1] - dx / l * h];
                 let left = [m[0] - dy / l * h, m[1] + dx / l * h];
                 let near = cs.iter().flatten().any(|v| ((v[0] - m[0]).powi(2) + (v[1] - m[1]).powi(2)).sqrt() < 1e-5);
@@ -373,7 +389,10 @@ fn check_coverage(cs: &[Vec<[f64; 3]>], rule: u32, r: &mut Rng, flags: bool, wha
                     let shared = tris.iter().any(|u| {
                         tri_area(u).abs() < 1e-9 && (0..3).any(|j| key(u[j].0) == key(b) && key(u[(j + 1) % 3].0) == key(a))
                     });
-                    assert!(f || shared, "{what}: boundary edge {a:?}-{b:?} not flagged {cs:?} {tris:?}");
+                    if !(f || shared) {
+                        let touching: Vec<_> = tris.iter().filter(|u| u.iter().any(|v| key(v.0) == key(a) || key(v.0) == key(b))).collect();
+                        panic!("{what}: boundary edge {a:?}-{b:?} not flagged; left {:?} right {:?}; triangles at its ends {touching:?} CONTOURS {cs:?}", winding(cs, left), winding(cs, right));
+                    }
                 }
             }
         }

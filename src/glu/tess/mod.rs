@@ -18,6 +18,11 @@
 //! The tessellator never calls GL. Callbacks may call back into it: while
 //! gluTessEndPolygon runs its callbacks, calls on the same object are
 //! ignored, and gluDeleteTess is deferred until it returns.
+//!
+//! Safety of the `unsafe fn`s below: `t` is NULL or a pointer returned by
+//! [`new_tess`] and not yet deleted; other pointers are NULL or valid as
+//! glu.h describes them; callbacks have the signatures glu.h gives them.
+#![allow(clippy::missing_safety_doc)]
 
 pub mod sweep;
 
@@ -63,7 +68,6 @@ type FnBool = unsafe extern "system" fn(GLboolean);
 type FnBoolData = unsafe extern "system" fn(GLboolean, *mut c_void);
 type FnPtr = unsafe extern "system" fn(*mut c_void);
 type FnPtrData = unsafe extern "system" fn(*mut c_void, *mut c_void);
-type FnVoid = unsafe extern "system" fn();
 type FnCombine = unsafe extern "system" fn(*const f64, *const *mut c_void, *const f32, *mut *mut c_void);
 type FnCombineData = unsafe extern "system" fn(*const f64, *const *mut c_void, *const f32, *mut *mut c_void, *mut c_void);
 
@@ -440,7 +444,7 @@ impl Job {
             if let Some(f) = self.cbf(GLU_TESS_END_DATA) {
                 std::mem::transmute::<unsafe extern "system" fn(), FnPtr>(f)(self.pdata);
             } else if let Some(f) = self.cbf(GLU_TESS_END) {
-                std::mem::transmute::<unsafe extern "system" fn(), FnVoid>(f)();
+                f();
             }
         }
     }

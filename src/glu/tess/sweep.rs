@@ -34,6 +34,12 @@ pub struct Grid {
     cells: HashMap<(i64, i64), Vec<usize>>,
 }
 
+impl Default for Grid {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 impl Grid {
     pub fn new() -> Self {
         Grid { cells: HashMap::new() }
@@ -51,7 +57,7 @@ impl Grid {
                     for &i in list {
                         let q = verts[i].p;
                         let d = (q[0] - p[0]).abs().max((q[1] - p[1]).abs());
-                        if d <= EPS && best.map_or(true, |(bd, _)| d < bd) {
+                        if d <= EPS && best.is_none_or(|(bd, _)| d < bd) {
                             best = Some((d, i));
                         }
                     }
