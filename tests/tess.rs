@@ -625,6 +625,7 @@ fn stress_degenerate_input() {
 #[test]
 fn big_polygons_are_not_quadratic() {
     // A 100k-vertex flower, and a square with 1000 circular holes of 100 vertices.
+    // (Each must take well under the 5 s allowed; they take ~0.1-0.3 s.)
     let n = 100_000;
     let flower: Vec<[f64; 3]> = (0..n)
         .map(|i| {
@@ -641,7 +642,15 @@ fn big_polygons_are_not_quadratic() {
             [cx + 0.4 * a.cos(), cy + 0.4 * a.sin(), 0.0]
         }).collect());
     }
-    for (cs, want_tris) in [(vec![flower], n - 2), (holes, 4 + 100 * 1000 + 2 * 1000 - 2)] {
+    // A comb of 20000 teeth, and the same turned a quarter.
+    let mut comb = vec![[0.0, 0.0, 0.0], [20000.0, 0.0, 0.0]];
+    for k in (0..20000).rev() {
+        let x = k as f64;
+        comb.extend([[x + 0.9, 10.0, 0.0], [x + 0.5, 1.0, 0.0], [x + 0.1, 10.0, 0.0]]);
+    }
+    let turned: Vec<[f64; 3]> = comb.iter().map(|p| [-p[1], p[0], 0.0]).collect();
+    let m = comb.len();
+    for (cs, want_tris) in [(vec![flower], n - 2), (holes, 4 + 100 * 1000 + 2 * 1000 - 2), (vec![comb], m - 2), (vec![turned], m - 2)] {
         let t0 = std::time::Instant::now();
         let out = tess(&cs, &Opts { rule: GLU_TESS_WINDING_ODD, flags: false, combine: true, boundary: false, normal: None });
         let ntri: usize = out.prims.iter().map(|p| p.len() / 3).sum();

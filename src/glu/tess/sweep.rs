@@ -138,9 +138,9 @@ pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: Vec<Seg>, comb: &
 }
 
 /// The pairs of edges whose boxes (grown by EPS) overlap, each once, in a
-/// deterministic order: a uniform grid of about sqrt(n) x sqrt(n) cells;
+/// deterministic order: a uniform grid of about n square cells;
 /// a pair is reported by the cell holding the low corner of the two boxes'
-/// overlap. Edges spanning many cells are checked against all edges.
+/// overlap. Edges spanning more than 64 cells are checked against all edges.
 fn candidate_pairs(verts: &[Vert], segs: &[Seg]) -> Vec<(usize, usize)> {
     let n = segs.len();
     let bb: Vec<[f64; 4]> = segs
@@ -163,10 +163,20 @@ fn candidate_pairs(verts: &[Vert], segs: &[Seg]) -> Vec<(usize, usize)> {
         lo = [lo[0].min(b[0]), lo[1].min(b[1])];
         hi = [hi[0].max(b[2]), hi[1].max(b[3])];
     }
-    let g = ((n as f64).sqrt() as usize).clamp(1, 1024);
-    let size = [((hi[0] - lo[0]) / g as f64).max(f64::MIN_POSITIVE), ((hi[1] - lo[1]) / g as f64).max(f64::MIN_POSITIVE)];
-    let cell = |x: f64, k: usize| (((x - lo[k]) / size[k]) as usize).min(g - 1);
-    let mut cells: Vec<Vec<u32>> = vec![Vec::new(); g * g];
+    // About n square cells (the box's aspect ratio kept), at most 2^20.
+    let (w, h) = ((hi[0] - lo[0]).max(EPS), (hi[1] - lo[1]).max(EPS));
+    let cells_wanted = (n as f64).min((1u64 << 20) as f64);
+    let side = (w * h / cells_wanted).sqrt();
+    let cap = (2 * n + 4).min(1 << 21);
+    let mut gs = [((w / side) as usize).clamp(1, cap), ((h / side) as usize).clamp(1, cap)];
+    while gs[0] * gs[1] > cap {
+        let k = if gs[0] > gs[1] { 0 } else { 1 };
+        gs[k] = (gs[k] / 2).max(1);
+    }
+    let size = [(w / gs[0] as f64).max(f64::MIN_POSITIVE), (h / gs[1] as f64).max(f64::MIN_POSITIVE)];
+    let cell = |x: f64, k: usize| (((x - lo[k]) / size[k]) as usize).min(gs[k] - 1);
+    let g = gs[0];
+    let mut cells: Vec<Vec<u32>> = vec![Vec::new(); gs[0] * gs[1]];
     let mut long = Vec::new();
     for (i, b) in bb.iter().enumerate() {
         let (x0, y0, x1, y1) = (cell(b[0], 0), cell(b[1], 1), cell(b[2], 0), cell(b[3], 1));
