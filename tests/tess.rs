@@ -453,6 +453,11 @@ fn orientation_follows_normal() {
             assert!(tri_area(t) * sign > 0.0, "{n:?} {t:?}");
         }
     }
+    // A huge or tiny user normal works like a unit one.
+    for n in [[0.0, 0.0, 1e300], [1e-300, 0.0, 1e-300]] {
+        let out = tess(&sq, &Opts { rule: GLU_TESS_WINDING_NONZERO, flags: false, combine: true, boundary: false, normal: Some(n) });
+        assert_eq!(out.prims.iter().map(|p| p.len()).sum::<usize>(), 6, "{n:?}");
+    }
     // A tilted plane: vertices come back untouched.
     let tilted = vec![vec![[0.0, 0.0, 0.0], [1.0, 0.0, 1.0], [1.0, 1.0, 1.0], [0.0, 1.0, 0.0]]];
     let out = tess(&tilted, &Opts { rule: GLU_TESS_WINDING_ODD, flags: false, combine: true, boundary: false, normal: None });

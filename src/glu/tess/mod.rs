@@ -511,6 +511,8 @@ impl Job {
             }
             n = s;
         }
+        let big = n[0].abs().max(n[1].abs()).max(n[2].abs());
+        let n = n.map(|x| x / big); // no overflow in the norm of a huge normal
         let ln = norm(n);
         let n = n.map(|x| x / ln);
         // Basis (u, v) with u × v = n.
