@@ -608,20 +608,20 @@ super::entry_points! {
     free gluCylinder(quad: *mut GLUquadric, base: GLdouble, top: GLdouble, height: GLdouble, slices: GLint, stacks: GLint) { glu::quadric::with(quad, |q| q.cylinder(&mut glu::quadric::GlSink, base, top, height, slices, stacks)) }
     free gluDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint) { glu::quadric::with(quad, |q| q.disk(&mut glu::quadric::GlSink, inner, outer, slices, loops)) }
     free gluPartialDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint, start: GLdouble, sweep: GLdouble) { glu::quadric::with(quad, |q| q.partial_disk(&mut glu::quadric::GlSink, inner, outer, slices, loops, start, sweep)) }
-    todo gluNewTess() -> *mut GLUtesselator;
-    todo gluDeleteTess(tess: *mut GLUtesselator);
-    todo gluTessBeginPolygon(tess: *mut GLUtesselator, data: *mut c_void);
-    todo gluTessBeginContour(tess: *mut GLUtesselator);
-    todo gluTessVertex(tess: *mut GLUtesselator, location: *mut GLdouble, data: *mut c_void);
-    todo gluTessEndContour(tess: *mut GLUtesselator);
-    todo gluTessEndPolygon(tess: *mut GLUtesselator);
-    todo gluTessCallback(tess: *mut GLUtesselator, which: GLenum, CallBackFunc: GLproc);
-    todo gluTessProperty(tess: *mut GLUtesselator, which: GLenum, data: GLdouble);
-    todo gluGetTessProperty(tess: *mut GLUtesselator, which: GLenum, data: *mut GLdouble);
-    todo gluTessNormal(tess: *mut GLUtesselator, valueX: GLdouble, valueY: GLdouble, valueZ: GLdouble);
-    todo gluBeginPolygon(tess: *mut GLUtesselator);
-    todo gluNextContour(tess: *mut GLUtesselator, type_: GLenum);
-    todo gluEndPolygon(tess: *mut GLUtesselator);
+    free gluNewTess() -> *mut GLUtesselator { glu::tess::new_tess() }
+    free gluDeleteTess(tess: *mut GLUtesselator) { glu::tess::delete_tess(tess) }
+    free gluTessBeginPolygon(tess: *mut GLUtesselator, data: *mut c_void) { glu::tess::begin_polygon(tess, data) }
+    free gluTessBeginContour(tess: *mut GLUtesselator) { glu::tess::begin_contour(tess) }
+    free gluTessVertex(tess: *mut GLUtesselator, location: *mut GLdouble, data: *mut c_void) { glu::tess::vertex(tess, location, data) }
+    free gluTessEndContour(tess: *mut GLUtesselator) { glu::tess::end_contour(tess) }
+    free gluTessEndPolygon(tess: *mut GLUtesselator) { glu::tess::end_polygon(tess) }
+    free gluTessCallback(tess: *mut GLUtesselator, which: GLenum, CallBackFunc: GLproc) { glu::tess::callback(tess, which, CallBackFunc) }
+    free gluTessProperty(tess: *mut GLUtesselator, which: GLenum, data: GLdouble) { glu::tess::property(tess, which, data) }
+    free gluGetTessProperty(tess: *mut GLUtesselator, which: GLenum, data: *mut GLdouble) { glu::tess::get_property(tess, which, data) }
+    free gluTessNormal(tess: *mut GLUtesselator, valueX: GLdouble, valueY: GLdouble, valueZ: GLdouble) { glu::tess::normal(tess, valueX, valueY, valueZ) }
+    free gluBeginPolygon(tess: *mut GLUtesselator) { glu::tess::begin_polygon_11(tess) }
+    free gluNextContour(tess: *mut GLUtesselator, type_: GLenum) { glu::tess::next_contour(tess, type_) }
+    free gluEndPolygon(tess: *mut GLUtesselator) { glu::tess::end_polygon_11(tess) }
     todo gluNewNurbsRenderer() -> *mut GLUnurbs;
     todo gluDeleteNurbsRenderer(nurb: *mut GLUnurbs);
     todo gluNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, value: GLfloat);
