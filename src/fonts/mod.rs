@@ -328,3 +328,45 @@ mod tests {
         assert_eq!(f.bitmap(0x4E00), f.bitmap(0xFFFD));
     }
 }
+
+/// A sample sheet of every built-in font, for looking at: run with
+/// `SOFTGL_FONT_SAMPLE=docs/fonts-sample.png cargo test --release --lib
+/// fonts::sample -- --ignored`. Glyphs are placed as glBitmap would place
+/// them (origin at the raster position, then the advance).
+#[cfg(test)]
+mod sample {
+    use super::*;
+
+    #[test]
+    #[ignore]
+    fn write_sample_sheet() {
+        let Some(path) = std::env::var_os("SOFTGL_FONT_SAMPLE") else { return };
+        let text = "Привет OpenGL!!! Ïðèâåò ÀÉÖÜßàéöüÿ №ёЁ";
+        let mut fonts: Vec<Font> = misc_fixed::ALL.iter().map(|&data| Font { data, scale: 1, embolden: false }).collect();
+        fonts.push(select(36, 700));
+        fonts.push(select(20, 700));
+        let (w, h) = (720usize, fonts.iter().map(|f| f.cell_height() as usize + 6).sum::<usize>() + 6);
+        let mut px = vec![[0u8, 0, 0, 255]; w * h];
+        let mut baseline = h as i32 - 3;
+        for f in &fonts {
+            baseline -= (f.data.ascent as u32 * f.scale) as i32 + 3;
+            let mut x = 6.0f32;
+            for ch in text.chars() {
+                let b = f.bitmap(ch as u32);
+                for y in 0..b.height as usize {
+                    for xx in 0..b.width as usize {
+                        if b.pixel(xx, y) {
+                            let (px_x, px_y) = ((x - b.xorig) as i32 + xx as i32, (baseline as f32 - b.yorig) as i32 + y as i32);
+                            if (0..w as i32).contains(&px_x) && (0..h as i32).contains(&px_y) {
+                                px[px_y as usize * w + px_x as usize] = [255, 255, 0, 255];
+                            }
+                        }
+                    }
+                }
+                x += b.xmove;
+            }
+            baseline -= (f.data.descent as u32 * f.scale) as i32 + 3;
+        }
+        crate::winsys::dump::write_png(std::path::Path::new(&path), w, h, &px).unwrap();
+    }
+}
