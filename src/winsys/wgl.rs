@@ -492,7 +492,7 @@ pub fn swap_buffers(hdc: Hdc) -> Bool {
     }
     // SAFETY: current contexts are live.
     let c = unsafe { &mut *cur };
-    if !c.dc.as_ref().is_some_and(|(h, _)| *h == hdc) {
+    if c.dc.as_ref().is_none_or(|(h, _)| *h != hdc) {
         return 1;
     }
     if c.gl.in_begin_end() {
