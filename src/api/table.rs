@@ -696,4 +696,28 @@ super::entry_points! {
     todo glXGetSelectedEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: *mut std::ffi::c_ulong);
     free glXGetProcAddressARB(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
     free glXGetProcAddress(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
+
+    // ---- softgl_wgl.h ----
+    free wglCreateContext(hdc: *mut c_void) -> *mut c_void { crate::winsys::wgl::create_context(hdc) }
+    free wglDeleteContext(hglrc: *mut c_void) -> c_int { crate::winsys::wgl::delete_context(hglrc) }
+    free wglMakeCurrent(hdc: *mut c_void, hglrc: *mut c_void) -> c_int { crate::winsys::wgl::make_current(hdc, hglrc) }
+    free wglGetCurrentContext() -> *mut c_void { crate::winsys::wgl::get_current_context() }
+    free wglGetCurrentDC() -> *mut c_void { crate::winsys::wgl::get_current_dc() }
+    free["checks both contexts and returns TRUE, but display lists are not shared yet"] wglShareLists(hglrc1: *mut c_void, hglrc2: *mut c_void) -> c_int { crate::winsys::wgl::share_lists(hglrc1, hglrc2) }
+    free["copies the current, point, line, polygon, lighting, depth, stencil, viewport, colour-buffer, hint, scissor and list-base groups; not transform, fog, texture, pixel-mode, evaluator or accumulation state"] wglCopyContext(hglrcSrc: *mut c_void, hglrcDst: *mut c_void, mask: u32) -> c_int { crate::winsys::wgl::copy_context(hglrcSrc, hglrcDst, mask) }
+    free wglGetProcAddress(lpszProc: *const c_char) -> GLproc { proc_from_name(lpszProc) }
+    free wglChoosePixelFormat(hdc: *mut c_void, ppfd: *const crate::winsys::wgl::PixelFormatDescriptor) -> c_int { crate::winsys::wgl::choose_pixel_format(hdc, ppfd) }
+    free wglDescribePixelFormat(hdc: *mut c_void, iPixelFormat: c_int, nBytes: u32, ppfd: *mut crate::winsys::wgl::PixelFormatDescriptor) -> c_int { crate::winsys::wgl::describe_pixel_format(hdc, iPixelFormat, nBytes, ppfd) }
+    free wglSetPixelFormat(hdc: *mut c_void, iPixelFormat: c_int, ppfd: *const crate::winsys::wgl::PixelFormatDescriptor) -> c_int { crate::winsys::wgl::set_pixel_format(hdc, iPixelFormat, ppfd) }
+    free wglGetPixelFormat(hdc: *mut c_void) -> c_int { crate::winsys::wgl::get_pixel_format(hdc) }
+    free wglSwapBuffers(hdc: *mut c_void) -> c_int { crate::winsys::wgl::swap_buffers(hdc) }
+    free["built-in misc-fixed bitmap fonts chosen by height and weight (docs/fonts.md), not the DC's GDI font"] wglUseFontBitmapsA(hdc: *mut c_void, first: u32, count: u32, listBase: u32) -> c_int { crate::winsys::wgl::use_font_bitmaps(hdc, first, count, listBase, false) }
+    free["as wglUseFontBitmapsA; code points beyond ASCII, Latin-1, Cyrillic and code pages 1251/1252 draw U+FFFD"] wglUseFontBitmapsW(hdc: *mut c_void, first: u32, count: u32, listBase: u32) -> c_int { crate::winsys::wgl::use_font_bitmaps(hdc, first, count, listBase, true) }
+    todo wglUseFontOutlinesA(hdc: *mut c_void, first: u32, count: u32, listBase: u32, deviation: f32, extrusion: f32, format: c_int, lpgmf: *mut c_void) -> c_int;
+    todo wglUseFontOutlinesW(hdc: *mut c_void, first: u32, count: u32, listBase: u32, deviation: f32, extrusion: f32, format: c_int, lpgmf: *mut c_void) -> c_int;
+    free softglCreateDC(width: c_int, height: c_int) -> *mut c_void { crate::winsys::wgl::create_dc(width, height) }
+    free softglDestroyDC(hdc: *mut c_void) -> c_int { crate::winsys::wgl::destroy_dc(hdc) }
+    free softglResizeDC(hdc: *mut c_void, width: c_int, height: c_int) -> c_int { crate::winsys::wgl::resize_dc(hdc, width, height) }
+    free softglSelectFont(hdc: *mut c_void, height: c_int, weight: c_int, charset: c_int) -> c_int { crate::winsys::wgl::select_font(hdc, height, weight, charset) }
+    free softglGetDCImage(hdc: *mut c_void, width: *mut c_int, height: *mut c_int) -> *const GLubyte { crate::winsys::wgl::dc_image(hdc, width, height) }
 }
