@@ -18,14 +18,14 @@ fn groups_come_back_and_others_stay() {
     c.execute(&Command::PushAttrib(GL_COLOR_BUFFER_BIT | GL_ENABLE_BIT | GL_LIGHTING_BIT | GL_VIEWPORT_BIT));
     c.execute(&Command::ClearColor([0.5, 0.5, 0.5, 1.0]));
     c.execute(&Command::Enable(GL_DEPTH_TEST));
-    c.execute(&Command::Enable(GL_LIGHT3));
+    c.execute(&Command::Enable(GL_LIGHT0 + 3));
     c.execute(&Command::ShadeModel(GL_FLAT));
     c.execute(&Command::Viewport(1, 1, 2, 2));
     c.execute(&Command::LineWidth(3.0)); // line group: not saved
     c.execute(&Command::PopAttrib);
     assert_eq!(c.color_buffer.clear, [0.0; 4]);
     assert_eq!(c.is_enabled(GL_DEPTH_TEST), Some(false));
-    assert_eq!(c.is_enabled(GL_LIGHT3), Some(false));
+    assert_eq!(c.is_enabled(GL_LIGHT0 + 3), Some(false));
     assert_eq!(c.shade_model, GL_SMOOTH);
     assert_eq!((c.viewport.x, c.viewport.width), (0, 4));
     assert_eq!(c.line.width, 3.0);
