@@ -7,6 +7,7 @@ pub mod begin_end;
 pub mod clear;
 pub mod command;
 pub mod context;
+pub mod draw_pixels;
 pub mod enable;
 pub mod enums;
 pub mod fragment;
@@ -14,7 +15,10 @@ pub mod get;
 pub mod lighting;
 pub mod lists;
 pub mod matrix;
+pub mod pixel_data;
+pub mod pixel_transfer;
 pub mod pixels;
+pub mod raster_pos;
 pub mod state;
 pub mod validate;
 
