@@ -94,7 +94,7 @@ pub fn packed_fields(ty: u32) -> Option<(usize, &'static [(u32, u32)])> {
 /// type whose component count does not match the format (3-component
 /// types need RGB, 4-component ones RGBA or BGRA) is INVALID_OPERATION.
 pub fn check_format_type(format: u32, ty: u32) -> Result<Kind, u32> {
-    let (kind, comps) = format_info(format).ok_or(GL_INVALID_ENUM)?;
+    let (kind, _) = format_info(format).ok_or(GL_INVALID_ENUM)?;
     if ty == GL_BITMAP {
         return if matches!(kind, Kind::ColorIndex | Kind::Stencil) { Ok(kind) } else { Err(GL_INVALID_ENUM) };
     }
@@ -106,7 +106,6 @@ pub fn check_format_type(format: u32, ty: u32) -> Result<Kind, u32> {
         3 => format == GL_RGB,
         _ => matches!(format, GL_RGBA | GL_BGRA),
     };
-    let _ = comps;
     if ok {
         Ok(kind)
     } else {
@@ -297,7 +296,7 @@ impl<'a> Source<'a> {
                         }
                         None => {
                             for c in 0..comps.len() {
-                                raw[c] = read_elem(&p[c * l.elem..], self.ty, l.swap, true) as f32;
+                                raw[c] = read_elem(&p[c * l.elem..(c + 1) * l.elem], self.ty, l.swap, true) as f32;
                             }
                         }
                     }
