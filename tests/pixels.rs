@@ -653,10 +653,14 @@ fn bitmap_pixels_movement_clipping_and_lists() {
     d.execute(&Command::Color([0.0, 0.0, 1.0, 1.0]));
     d.execute(&Command::WindowPos([5.7, 3.2, 0.0]));
     // Compile into a list, then change the unpack modes: the list keeps its bitmap.
+    d.new_list(1, GL_COMPILE);
     let cmd = unsafe { d.build_bitmap(10, 2, [1.5, 0.0], [12.0, -1.0], lsb.as_ptr()) };
-    d.execute(&Command::ListBase(0));
+    d.submit(cmd);
+    d.end_list();
+    assert!(d.fb.color.iter().all(|p| *p == [0; 4]), "GL_COMPILE draws nothing");
     d.pixel_store(GL_UNPACK_LSB_FIRST, 0.0);
-    d.execute(&cmd);
+    d.pixel_store(GL_UNPACK_SKIP_PIXELS, 0.0);
+    d.execute(&Command::CallList(1));
     let set2: Vec<(usize, usize)> = (0..H).flat_map(|y| (0..W).map(move |x| (x, y))).filter(|&(x, y)| d.fb.color[d.fb.index(x, y)][2] == 255).collect();
     assert_eq!(set2, vec![(4, 3), (5, 3), (13, 3), (6, 4), (12, 4)]);
     // A NULL bitmap only moves the position.
