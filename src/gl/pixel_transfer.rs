@@ -113,14 +113,14 @@ impl PixelTransfer {
         let identity_sb = self.scale == [1.0; 4] && self.bias == [0.0; 4];
         for c in px.iter_mut() {
             if !identity_sb {
-                for k in 0..4 {
-                    c[k] = c[k] * self.scale[k] + self.bias[k];
+                for (k, v) in c.iter_mut().enumerate() {
+                    *v = *v * self.scale[k] + self.bias[k];
                 }
             }
             if self.map_color {
-                for k in 0..4 {
+                for (k, v) in c.iter_mut().enumerate() {
                     // R_TO_R .. A_TO_A are maps 6 .. 9.
-                    c[k] = self.lookup_color(6 + k, c[k]);
+                    *v = self.lookup_color(6 + k, *v);
                 }
             }
             for v in c.iter_mut() {
@@ -189,7 +189,7 @@ impl Context {
     pub fn pixel_map(&mut self, map: u32, values: &[f32]) {
         let Some(m) = map_index(map) else { return self.set_error(GL_INVALID_ENUM) };
         let n = values.len();
-        if n < 1 || n > MAX_PIXEL_MAP_TABLE || (is_index_input(map) || map == GL_PIXEL_MAP_S_TO_S) && !n.is_power_of_two() {
+        if !(1..=MAX_PIXEL_MAP_TABLE).contains(&n) || (is_index_input(map) || map == GL_PIXEL_MAP_S_TO_S) && !n.is_power_of_two() {
             return self.set_error(GL_INVALID_VALUE);
         }
         let values = if is_color_map(map) { values.iter().map(|v| v.clamp(0.0, 1.0)).collect() } else { values.to_vec() };

@@ -101,6 +101,7 @@ impl Context {
     /// # Safety
     /// `out` must be NULL or large enough for the image as the pack modes
     /// lay it out.
+    #[allow(clippy::too_many_arguments)]
     pub unsafe fn read_pixels(&mut self, x: i32, y: i32, w: i32, h: i32, format: u32, ty: u32, out: *mut u8) {
         if w < 0 || h < 0 {
             return self.set_error(GL_INVALID_VALUE);
