@@ -62,6 +62,7 @@ pub fn rectangle(clip: Rect, origin: [f64; 2], zoom: [f64; 2], w: usize, h: usiz
 /// Calls `frag(x, y)` for every set bit of a bitmap whose rows are
 /// `stride` bytes, most significant bit first, with its lower left pixel
 /// at (x0, y0), inside `clip`.
+#[allow(clippy::too_many_arguments)]
 pub fn bitmap(clip: Rect, x0: i64, y0: i64, w: usize, h: usize, stride: usize, bits: &[u8], mut frag: impl FnMut(usize, usize)) {
     for j in 0..h {
         let y = y0 + j as i64;
