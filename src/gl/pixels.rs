@@ -38,34 +38,6 @@ pub struct PixelStore {
     pub unpack: PixelModes,
 }
 
-/// Where each pixel of a width x height image lives in client memory
-/// (section 3.6.4's addressing, shared by pack and unpack).
-#[derive(Clone, Copy, Debug)]
-pub struct Layout {
-    /// Byte offset of pixel (0, 0).
-    pub start: usize,
-    /// Bytes between rows.
-    pub row_stride: usize,
-    /// Bytes per pixel (group).
-    pub pixel_size: usize,
-    pub elem_size: usize,
-}
-
-impl PixelModes {
-    pub fn layout(&self, width: usize, components: usize, elem_size: usize) -> Layout {
-        let l = if self.row_length > 0 { self.row_length as usize } else { width };
-        let a = self.alignment as usize;
-        let group = components * elem_size;
-        let row_stride = if elem_size >= a { group * l } else { a * (group * l).div_ceil(a) };
-        Layout {
-            start: self.skip_pixels as usize * group + self.skip_rows as usize * row_stride,
-            row_stride,
-            pixel_size: group,
-            elem_size,
-        }
-    }
-}
-
 impl Context {
     /// glPixelStore (either form; floats are rounded for integer modes).
     pub fn pixel_store(&mut self, pname: u32, value: f64) {
