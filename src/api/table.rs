@@ -24,6 +24,7 @@ use crate::glu;
 use crate::winsys::glx::{self, xlib::{Display, XVisualInfo}, Bool, FbConfig, GlxContext};
 use crate::winsys::osmesa::{self, OsContext};
 use std::ffi::{c_char, c_int, c_void};
+use crate::gl::pixel_transfer::{map_index, map_value_to_uint, map_values_from_uint, MAX_PIXEL_MAP_TABLE};
 
 /// GLU's opaque object types, as C sees them.
 pub type GLUquadric = c_void;
@@ -89,6 +90,29 @@ unsafe fn proc_from_name(name: *const c_char) -> GLproc {
     } else {
         Some(std::mem::transmute::<*const (), unsafe extern "system" fn()>(addr))
     }
+}
+
+/// glWindowPos's command from 2 or 3 coordinates (z defaults to 0).
+fn window_pos<T: Component>(v: &[T]) -> Command {
+    let p = position(v);
+    Command::WindowPos([p[0], p[1], p[2]])
+}
+
+/// glPixelMap's command: the map is checked and the values read (mapsize
+/// of them) and converted now; an invalid map or size becomes an error
+/// command. NULL values: nothing.
+unsafe fn pixel_map<T: Copy>(map: GLenum, mapsize: GLsizei, values: *const T, conv: impl Fn(GLenum, &[T]) -> Vec<f32>) -> Option<Command> {
+    if map_index(map).is_none() {
+        return Some(Command::Error(GL_INVALID_ENUM));
+    }
+    if mapsize < 1 || mapsize as usize > MAX_PIXEL_MAP_TABLE {
+        return Some(Command::Error(GL_INVALID_VALUE));
+    }
+    if values.is_null() {
+        return None;
+    }
+    let v = slice(values, mapsize as i64);
+    Some(Command::PixelMap(map, conv(map, &v)))
 }
 
 super::entry_points! {
@@ -252,30 +276,30 @@ super::entry_points! {
     todo glTexGeni(coord: GLenum, pname: GLenum, param: GLint);
     todo glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint);
     list glClipPlane(plane: GLenum, equation: *const GLdouble) { |_c| Command::ClipPlane(plane, arr::<GLdouble, 4>(equation)?) }
-    todo glRasterPos2d(x: GLdouble, y: GLdouble);
-    todo glRasterPos2dv(v: *const GLdouble);
-    todo glRasterPos2f(x: GLfloat, y: GLfloat);
-    todo glRasterPos2fv(v: *const GLfloat);
-    todo glRasterPos2i(x: GLint, y: GLint);
-    todo glRasterPos2iv(v: *const GLint);
-    todo glRasterPos2s(x: GLshort, y: GLshort);
-    todo glRasterPos2sv(v: *const GLshort);
-    todo glRasterPos3d(x: GLdouble, y: GLdouble, z: GLdouble);
-    todo glRasterPos3dv(v: *const GLdouble);
-    todo glRasterPos3f(x: GLfloat, y: GLfloat, z: GLfloat);
-    todo glRasterPos3fv(v: *const GLfloat);
-    todo glRasterPos3i(x: GLint, y: GLint, z: GLint);
-    todo glRasterPos3iv(v: *const GLint);
-    todo glRasterPos3s(x: GLshort, y: GLshort, z: GLshort);
-    todo glRasterPos3sv(v: *const GLshort);
-    todo glRasterPos4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble);
-    todo glRasterPos4dv(v: *const GLdouble);
-    todo glRasterPos4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat);
-    todo glRasterPos4fv(v: *const GLfloat);
-    todo glRasterPos4i(x: GLint, y: GLint, z: GLint, w: GLint);
-    todo glRasterPos4iv(v: *const GLint);
-    todo glRasterPos4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort);
-    todo glRasterPos4sv(v: *const GLshort);
+    list glRasterPos2d(x: GLdouble, y: GLdouble) { |_c| Command::RasterPos(position(&[x, y])) }
+    list glRasterPos2dv(v: *const GLdouble) { |_c| Command::RasterPos(position(&arr::<GLdouble, 2>(v)?)) }
+    list glRasterPos2f(x: GLfloat, y: GLfloat) { |_c| Command::RasterPos(position(&[x, y])) }
+    list glRasterPos2fv(v: *const GLfloat) { |_c| Command::RasterPos(position(&arr::<GLfloat, 2>(v)?)) }
+    list glRasterPos2i(x: GLint, y: GLint) { |_c| Command::RasterPos(position(&[x, y])) }
+    list glRasterPos2iv(v: *const GLint) { |_c| Command::RasterPos(position(&arr::<GLint, 2>(v)?)) }
+    list glRasterPos2s(x: GLshort, y: GLshort) { |_c| Command::RasterPos(position(&[x, y])) }
+    list glRasterPos2sv(v: *const GLshort) { |_c| Command::RasterPos(position(&arr::<GLshort, 2>(v)?)) }
+    list glRasterPos3d(x: GLdouble, y: GLdouble, z: GLdouble) { |_c| Command::RasterPos(position(&[x, y, z])) }
+    list glRasterPos3dv(v: *const GLdouble) { |_c| Command::RasterPos(position(&arr::<GLdouble, 3>(v)?)) }
+    list glRasterPos3f(x: GLfloat, y: GLfloat, z: GLfloat) { |_c| Command::RasterPos(position(&[x, y, z])) }
+    list glRasterPos3fv(v: *const GLfloat) { |_c| Command::RasterPos(position(&arr::<GLfloat, 3>(v)?)) }
+    list glRasterPos3i(x: GLint, y: GLint, z: GLint) { |_c| Command::RasterPos(position(&[x, y, z])) }
+    list glRasterPos3iv(v: *const GLint) { |_c| Command::RasterPos(position(&arr::<GLint, 3>(v)?)) }
+    list glRasterPos3s(x: GLshort, y: GLshort, z: GLshort) { |_c| Command::RasterPos(position(&[x, y, z])) }
+    list glRasterPos3sv(v: *const GLshort) { |_c| Command::RasterPos(position(&arr::<GLshort, 3>(v)?)) }
+    list glRasterPos4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) { |_c| Command::RasterPos(position(&[x, y, z, w])) }
+    list glRasterPos4dv(v: *const GLdouble) { |_c| Command::RasterPos(position(&arr::<GLdouble, 4>(v)?)) }
+    list glRasterPos4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) { |_c| Command::RasterPos(position(&[x, y, z, w])) }
+    list glRasterPos4fv(v: *const GLfloat) { |_c| Command::RasterPos(position(&arr::<GLfloat, 4>(v)?)) }
+    list glRasterPos4i(x: GLint, y: GLint, z: GLint, w: GLint) { |_c| Command::RasterPos(position(&[x, y, z, w])) }
+    list glRasterPos4iv(v: *const GLint) { |_c| Command::RasterPos(position(&arr::<GLint, 4>(v)?)) }
+    list glRasterPos4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) { |_c| Command::RasterPos(position(&[x, y, z, w])) }
+    list glRasterPos4sv(v: *const GLshort) { |_c| Command::RasterPos(position(&arr::<GLshort, 4>(v)?)) }
     list glMaterialf(face: GLenum, pname: GLenum, param: GLfloat) { |c| Command::Material(face, scalar_param(c, material_param_count(pname), pname)?, [param, 0.0, 0.0, 0.0]) }
     list glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat) { |_c| Command::Material(face, pname, read_params(params, material_param_count(pname), pname)?) }
     list glMateriali(face: GLenum, pname: GLenum, param: GLint) { |c| Command::Material(face, scalar_param(c, material_param_count(pname), pname)?, [param as f32, 0.0, 0.0, 0.0]) }
@@ -298,16 +322,16 @@ super::entry_points! {
     list glPolygonStipple(mask: *const GLubyte) { |c| { if mask.is_null() { return None; } Command::PolygonStipple(Box::new(unpack_stipple(&c.pixel_store.unpack, mask))) } }
     list glPolygonMode(face: GLenum, mode: GLenum) { |_c| Command::PolygonMode(face, mode) }
     list["applies to filled polygons; GL_POLYGON_OFFSET_LINE and _POINT are stored but not applied yet"] glPolygonOffset(factor: GLfloat, units: GLfloat) { |_c| Command::PolygonOffset(factor, units) }
-    client["as glPixelStorei"] glPixelStoref(pname: GLenum, param: GLfloat) { |c| c.pixel_store(pname, param as f64) }
-    client["pack modes apply to glReadPixels; unpack modes are stored for issue 5"] glPixelStorei(pname: GLenum, param: GLint) { |c| c.pixel_store(pname, param as f64) }
-    todo glPixelTransferf(pname: GLenum, param: GLfloat);
-    todo glPixelTransferi(pname: GLenum, param: GLint);
-    todo glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat);
-    todo glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint);
-    todo glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort);
-    todo glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glPixelZoom(xfactor: GLfloat, yfactor: GLfloat);
-    todo glBitmap(width: GLsizei, height: GLsizei, xorig: GLfloat, yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, bitmap: *const GLubyte);
+    client glPixelStoref(pname: GLenum, param: GLfloat) { |c| c.pixel_store(pname, param as f64) }
+    client glPixelStorei(pname: GLenum, param: GLint) { |c| c.pixel_store(pname, param as f64) }
+    list glPixelTransferf(pname: GLenum, param: GLfloat) { |_c| Command::PixelTransfer(pname, param as f64) }
+    list glPixelTransferi(pname: GLenum, param: GLint) { |_c| Command::PixelTransfer(pname, param as f64) }
+    list glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) { |_c| pixel_map(map, mapsize, values, |_, v| v.to_vec())? }
+    list glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) { |_c| pixel_map(map, mapsize, values, |m, v| map_values_from_uint(m, v, 32))? }
+    list glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) { |_c| pixel_map(map, mapsize, values, |m, v| map_values_from_uint(m, &v.iter().map(|&x| x as u32).collect::<Vec<_>>(), 16))? }
+    list["texturing and fog of the fragments come with those features"] glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.build_draw_pixels(width, height, format, type_, pixels as *const u8)? }
+    list glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) { |_c| Command::PixelZoom(xfactor, yfactor) }
+    list["texturing and fog of the fragments come with those features"] glBitmap(width: GLsizei, height: GLsizei, xorig: GLfloat, yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, bitmap: *const GLubyte) { |c| c.build_bitmap(width, height, [xorig, yorig], [xmove, ymove], bitmap) }
     todo glTexImage1D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void);
     todo glTexImage2D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void);
     todo glCopyTexImage1D(target: GLenum, level: GLint, internalFormat: GLenum, x: GLint, y: GLint, width: GLsizei, border: GLint);
@@ -354,8 +378,8 @@ super::entry_points! {
     list glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) { |_c| Command::ClearAccum([red, green, blue, alpha]) }
     list glAccum(op: GLenum, value: GLfloat) { |_c| Command::Accum(op, value) }
     todo glReadBuffer(mode: GLenum);
-    exec["packed pixel types (3_3_2 .. 2_10_10_10_REV) and GL_BITMAP are not packed yet; pixel transfer is not applied (issue 5)"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
-    todo glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum);
+    exec["the ARB_imaging transfer stages (colour table, convolution, colour matrix, histogram) are not implemented"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
+    list["texturing and fog of the fragments come with those features"] glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) { |_c| Command::CopyPixels(x, y, width, height, type_) }
     list glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) { |c| Command::Map { target, u: (u1 as f32, u2 as f32), uorder: order, v: None, points: map_points(c, read_points(target, points, stride, order, 0, 1))? } }
     list glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat) { |c| Command::Map { target, u: (u1, u2), uorder: order, v: None, points: map_points(c, read_points(target, points, stride, order, 0, 1))? } }
     list glMap2d(target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint, v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: *const GLdouble) { |c| Command::Map { target, u: (u1 as f32, u2 as f32), uorder, v: Some(((v1 as f32, v2 as f32), vorder)), points: map_points(c, read_points(target, points, ustride, uorder, vstride, vorder))? } }
@@ -418,9 +442,9 @@ super::entry_points! {
     todo glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat);
     todo glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint);
     todo glGetTexImage(target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: *mut c_void);
-    todo glGetPixelMapfv(map: GLenum, values: *mut GLfloat);
-    todo glGetPixelMapuiv(map: GLenum, values: *mut GLuint);
-    todo glGetPixelMapusv(map: GLenum, values: *mut GLushort);
+    exec glGetPixelMapfv(map: GLenum, values: *mut GLfloat) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, v), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetPixelMapuiv(map: GLenum, values: *mut GLuint) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 32)).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetPixelMapusv(map: GLenum, values: *mut GLushort) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 16) as u16).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMapdv(target: GLenum, query: GLenum, v: *mut GLdouble) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &x), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMapfv(target: GLenum, query: GLenum, v: *mut GLfloat) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &x.iter().map(|&f| f as f32).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &get::Value::Floats(x).as_i32()), None => c.set_error(GL_INVALID_ENUM) } }
@@ -543,22 +567,22 @@ super::entry_points! {
     todo glSecondaryColor3us(red: GLushort, green: GLushort, blue: GLushort);
     todo glSecondaryColor3usv(v: *const GLushort);
     todo glSecondaryColorPointer(size: GLint, type_: GLenum, stride: GLsizei, pointer: *const c_void);
-    todo glWindowPos2d(x: GLdouble, y: GLdouble);
-    todo glWindowPos2dv(v: *const GLdouble);
-    todo glWindowPos2f(x: GLfloat, y: GLfloat);
-    todo glWindowPos2fv(v: *const GLfloat);
-    todo glWindowPos2i(x: GLint, y: GLint);
-    todo glWindowPos2iv(v: *const GLint);
-    todo glWindowPos2s(x: GLshort, y: GLshort);
-    todo glWindowPos2sv(v: *const GLshort);
-    todo glWindowPos3d(x: GLdouble, y: GLdouble, z: GLdouble);
-    todo glWindowPos3dv(v: *const GLdouble);
-    todo glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat);
-    todo glWindowPos3fv(v: *const GLfloat);
-    todo glWindowPos3i(x: GLint, y: GLint, z: GLint);
-    todo glWindowPos3iv(v: *const GLint);
-    todo glWindowPos3s(x: GLshort, y: GLshort, z: GLshort);
-    todo glWindowPos3sv(v: *const GLshort);
+    list glWindowPos2d(x: GLdouble, y: GLdouble) { |_c| window_pos(&[x, y]) }
+    list glWindowPos2dv(v: *const GLdouble) { |_c| window_pos(&arr::<GLdouble, 2>(v)?) }
+    list glWindowPos2f(x: GLfloat, y: GLfloat) { |_c| window_pos(&[x, y]) }
+    list glWindowPos2fv(v: *const GLfloat) { |_c| window_pos(&arr::<GLfloat, 2>(v)?) }
+    list glWindowPos2i(x: GLint, y: GLint) { |_c| window_pos(&[x, y]) }
+    list glWindowPos2iv(v: *const GLint) { |_c| window_pos(&arr::<GLint, 2>(v)?) }
+    list glWindowPos2s(x: GLshort, y: GLshort) { |_c| window_pos(&[x, y]) }
+    list glWindowPos2sv(v: *const GLshort) { |_c| window_pos(&arr::<GLshort, 2>(v)?) }
+    list glWindowPos3d(x: GLdouble, y: GLdouble, z: GLdouble) { |_c| window_pos(&[x, y, z]) }
+    list glWindowPos3dv(v: *const GLdouble) { |_c| window_pos(&arr::<GLdouble, 3>(v)?) }
+    list glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat) { |_c| window_pos(&[x, y, z]) }
+    list glWindowPos3fv(v: *const GLfloat) { |_c| window_pos(&arr::<GLfloat, 3>(v)?) }
+    list glWindowPos3i(x: GLint, y: GLint, z: GLint) { |_c| window_pos(&[x, y, z]) }
+    list glWindowPos3iv(v: *const GLint) { |_c| window_pos(&arr::<GLint, 3>(v)?) }
+    list glWindowPos3s(x: GLshort, y: GLshort, z: GLshort) { |_c| window_pos(&[x, y, z]) }
+    list glWindowPos3sv(v: *const GLshort) { |_c| window_pos(&arr::<GLshort, 3>(v)?) }
     todo glGenQueries(n: GLsizei, ids: *mut GLuint);
     todo glDeleteQueries(n: GLsizei, ids: *const GLuint);
     todo glIsQuery(id: GLuint) -> GLboolean;

@@ -5,7 +5,9 @@
 
 use super::context::Context;
 use super::enums::*;
+use super::draw_pixels::{Bitmap, PixelRect};
 use glam::DMat4;
+use std::rc::Rc;
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum Command {
@@ -92,6 +94,25 @@ pub enum Command {
     EvalMesh1(u32, i32, i32),
     EvalMesh2(u32, i32, i32, i32, i32),
     PassThrough(f32),
+    // Sections 2.13, 3.6, 3.7, 4.3.3: raster position and pixel rectangles.
+    /// glRasterPos: object coordinates.
+    RasterPos([f32; 4]),
+    /// glWindowPos: window x, y and depth.
+    WindowPos([f32; 3]),
+    PixelTransfer(u32, f64),
+    /// glPixelMap: the map and its entries as floats.
+    PixelMap(u32, Vec<f32>),
+    PixelZoom(f32, f32),
+    /// glBitmap, unpacked when built.
+    Bitmap(Rc<Bitmap>),
+    /// glDrawPixels, unpacked when built.
+    DrawPixels(Rc<PixelRect>),
+    /// glCopyPixels(x, y, width, height, type).
+    CopyPixels(i32, i32, i32, i32, u32),
+    /// A command whose arguments failed a check made when it was built
+    /// (unpacking needs a valid format and type): executing it raises the
+    /// error, so a display list raises it when called, as the spec says.
+    Error(u32),
 }
 
 impl Command {
@@ -227,6 +248,15 @@ impl Context {
             EvalMesh1(mode, i1, i2) => self.eval_mesh1(*mode, *i1, *i2),
             EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(*mode, *i1, *i2, *j1, *j2),
             PassThrough(t) => self.pass_through(*t),
+            RasterPos(p) => self.raster_pos(*p),
+            WindowPos(p) => self.window_pos(*p),
+            PixelTransfer(pname, v) => self.pixel_transfer(*pname, *v),
+            PixelMap(map, v) => self.pixel_map(*map, v),
+            PixelZoom(x, y) => self.pixel_zoom(*x, *y),
+            Bitmap(b) => self.bitmap(b),
+            DrawPixels(r) => self.draw_pixels(r),
+            CopyPixels(x, y, w, h, ty) => self.copy_pixels(*x, *y, *w, *h, *ty),
+            Error(e) => self.set_error(*e),
         }
     }
 }

@@ -38,6 +38,10 @@ pub struct Context {
     pub prim: Option<begin_end::Assembly>,
     pub lists: lists::Lists,
     pub pixel_store: pixels::PixelStore,
+    /// Pixel transfer, maps and zoom (GL_PIXEL_MODE_BIT).
+    pub pixel: super::pixel_transfer::PixelTransfer,
+    /// The current raster position (section 2.13).
+    pub raster: super::raster_pos::RasterPos,
     /// The framebuffer this context draws into and reads from.
     pub fb: Framebuffer,
     /// Where glFlush/glFinish deliver the image (set by the window system).
@@ -76,6 +80,8 @@ impl Context {
             prim: None,
             lists: Default::default(),
             pixel_store: Default::default(),
+            pixel: Default::default(),
+            raster: Default::default(),
             fb: Framebuffer::new(config),
             surface: None,
             dirty: validate::DIRTY_ALL,

@@ -197,6 +197,32 @@ impl Context {
             GL_UNPACK_ALIGNMENT => ints([self.pixel_store.unpack.alignment as i64]),
             GL_UNPACK_SKIP_IMAGES => ints([self.pixel_store.unpack.skip_images as i64]),
             GL_UNPACK_IMAGE_HEIGHT => ints([self.pixel_store.unpack.image_height as i64]),
+            // Raster position and pixel transfer (tables 6.7, 6.17, 6.18).
+            GL_CURRENT_RASTER_POSITION => Some(Value::Floats(self.raster.pos.iter().map(|&c| c as f64).collect())),
+            GL_CURRENT_RASTER_POSITION_VALID => Some(Value::Bools(vec![self.raster.valid])),
+            GL_CURRENT_RASTER_COLOR => Some(Value::Normalized(self.raster.color.iter().map(|&c| c as f64).collect())),
+            GL_CURRENT_RASTER_SECONDARY_COLOR => Some(Value::Normalized(self.raster.secondary_color.iter().map(|&c| c as f64).collect())),
+            GL_CURRENT_RASTER_DISTANCE => Some(Value::Floats(vec![self.raster.distance as f64])),
+            GL_CURRENT_RASTER_TEXTURE_COORDS => Some(Value::Floats(self.raster.tex.iter().map(|&c| c as f64).collect())),
+            GL_CURRENT_RASTER_INDEX => Some(Value::Floats(vec![self.raster.index as f64])),
+            GL_ZOOM_X => Some(Value::Floats(vec![self.pixel.zoom[0] as f64])),
+            GL_ZOOM_Y => Some(Value::Floats(vec![self.pixel.zoom[1] as f64])),
+            GL_MAP_COLOR => Some(Value::Bools(vec![self.pixel.map_color])),
+            GL_MAP_STENCIL => Some(Value::Bools(vec![self.pixel.map_stencil])),
+            GL_INDEX_SHIFT => ints([self.pixel.index_shift as i64]),
+            GL_INDEX_OFFSET => ints([self.pixel.index_offset as i64]),
+            GL_RED_SCALE | GL_GREEN_SCALE | GL_BLUE_SCALE | GL_ALPHA_SCALE => {
+                let k = [GL_RED_SCALE, GL_GREEN_SCALE, GL_BLUE_SCALE, GL_ALPHA_SCALE].iter().position(|&e| e == pname)?;
+                Some(Value::Floats(vec![self.pixel.scale[k] as f64]))
+            }
+            GL_RED_BIAS | GL_GREEN_BIAS | GL_BLUE_BIAS | GL_ALPHA_BIAS => {
+                let k = [GL_RED_BIAS, GL_GREEN_BIAS, GL_BLUE_BIAS, GL_ALPHA_BIAS].iter().position(|&e| e == pname)?;
+                Some(Value::Floats(vec![self.pixel.bias[k] as f64]))
+            }
+            GL_DEPTH_SCALE => Some(Value::Floats(vec![self.pixel.depth_scale as f64])),
+            GL_DEPTH_BIAS => Some(Value::Floats(vec![self.pixel.depth_bias as f64])),
+            GL_PIXEL_MAP_I_TO_I_SIZE..=GL_PIXEL_MAP_A_TO_A_SIZE => ints([self.pixel.maps[(pname - GL_PIXEL_MAP_I_TO_I_SIZE) as usize].len() as i64]),
+            GL_MAX_PIXEL_MAP_TABLE => ints([super::pixel_transfer::MAX_PIXEL_MAP_TABLE as i64]),
             _ => None,
         }
     }

@@ -11,6 +11,7 @@ pub mod clip;
 pub mod fragment;
 pub mod light;
 pub mod line;
+pub mod pixels;
 pub mod point;
 pub mod polygon_mode;
 pub mod raster;
