@@ -74,7 +74,8 @@ impl Context {
                 (front, back)
             }
         };
-        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color };
+        let tex = self.vertex_texcoords(obj);
+        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, tex };
         self.assemble(&mut asm, v);
         self.prim = Some(asm);
     }

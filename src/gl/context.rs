@@ -4,7 +4,7 @@
 use super::command::Command;
 use super::enums::*;
 use super::state::*;
-use super::{begin_end, enable, lighting, lists, matrix, pixels, validate};
+use super::{begin_end, enable, lighting, lists, matrix, pixels, texture, validate};
 use crate::framebuffer::{Config, Framebuffer, Present};
 
 pub struct Context {
@@ -29,6 +29,7 @@ pub struct Context {
     pub prim: Option<begin_end::Assembly>,
     pub lists: lists::Lists,
     pub pixel_store: pixels::PixelStore,
+    pub texture: texture::TextureState,
     /// The framebuffer this context draws into and reads from.
     pub fb: Framebuffer,
     /// Where glFlush/glFinish deliver the image (set by the window system).
@@ -62,6 +63,7 @@ impl Context {
             prim: None,
             lists: Default::default(),
             pixel_store: Default::default(),
+            texture: Default::default(),
             fb: Framebuffer::new(config),
             surface: None,
             dirty: validate::DIRTY_ALL,

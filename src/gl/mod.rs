@@ -16,6 +16,7 @@ pub mod lists;
 pub mod matrix;
 pub mod pixels;
 pub mod state;
+pub mod texture;
 pub mod validate;
 
 pub use command::Command;

@@ -170,11 +170,13 @@ impl Default for HintState {
 pub struct CurrentState {
     pub color: [f32; 4],
     pub normal: [f32; 3],
+    /// Per texture unit (s, t, r, q).
+    pub tex_coords: [[f32; 4]; crate::render::texture::MAX_UNITS],
 }
 
 impl Default for CurrentState {
     fn default() -> Self {
-        CurrentState { color: [1.0; 4], normal: [0.0, 0.0, 1.0] }
+        CurrentState { color: [1.0; 4], normal: [0.0, 0.0, 1.0], tex_coords: [[0.0, 0.0, 0.0, 1.0]; crate::render::texture::MAX_UNITS] }
     }
 }
 

@@ -129,7 +129,7 @@ mod tests {
     use glam::Vec4;
 
     fn v(p: [f32; 4]) -> ClipVertex {
-        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE }
+        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE, tex: Default::default() }
     }
 
     /// Two triangles sharing the edge (a, b), traversed in opposite

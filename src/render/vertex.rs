@@ -12,6 +12,9 @@ pub struct ClipVertex {
     /// The colour back-facing polygons take: the back face's lit colour
     /// under two-sided lighting, else the same as `color`.
     pub back_color: Vec4,
+    /// Texture coordinates (s, t, r, q) per unit, after texgen and the
+    /// texture matrix.
+    pub tex: [Vec4; super::texture::MAX_UNITS],
 }
 
 impl ClipVertex {
@@ -23,6 +26,7 @@ impl ClipVertex {
             pos: a.pos + (b.pos - a.pos) * t,
             color: a.color + (b.color - a.color) * t,
             back_color: a.back_color + (b.back_color - a.back_color) * t,
+            tex: std::array::from_fn(|u| a.tex[u] + (b.tex[u] - a.tex[u]) * t),
         }
     }
 }
