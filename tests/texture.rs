@@ -15,10 +15,10 @@ fn context(w: usize, h: usize) -> Context {
 
 /// glTexImage2D with RGBA bytes.
 fn tex_image_2d(c: &mut Context, level: i32, ifmt: u32, w: i32, h: i32, border: i32, data: &[u8]) {
-    c.execute(&Command::ActiveTexture(t::GL_TEXTURE0 + active(c)));
+    c.submit(Command::ActiveTexture(t::GL_TEXTURE0 + active(c)));
     let cmd = unsafe { c.tex_image_command(2, t::GL_TEXTURE_2D, level, ifmt as i32, [w, h, 1], border, t::GL_RGBA, t::GL_UNSIGNED_BYTE, if data.is_empty() { std::ptr::null() } else { data.as_ptr() }) };
     if let Some(cmd) = cmd {
-        c.execute(&cmd);
+        c.submit(cmd);
     }
 }
 
@@ -436,4 +436,190 @@ fn perspective_correct_coordinates() {
         let texel = (t * 16.0).floor() as u8;
         assert_eq!(px(&c, x, 0)[0], 16u8.wrapping_mul(texel), "pixel {x}");
     }
+}
+
+/// glTexImage of any dimensionality from RGBA floats.
+fn tex_image_f(c: &mut Context, dims: u8, target: u32, ifmt: u32, size: [i32; 3], format: u32, data: &[f32]) {
+    let cmd = unsafe { c.tex_image_command(dims, target, 0, ifmt as i32, size, 0, format, t::GL_FLOAT, data.as_ptr() as *const u8) };
+    if let Some(cmd) = cmd {
+        c.execute(&cmd);
+    }
+}
+
+fn nearest(c: &mut Context, target: u32) {
+    c.execute(&Command::TexParameter(target, t::GL_TEXTURE_MIN_FILTER, [t::GL_NEAREST as f32, 0.0, 0.0, 0.0]));
+    c.execute(&Command::TexParameter(target, t::GL_TEXTURE_MAG_FILTER, [t::GL_NEAREST as f32, 0.0, 0.0, 0.0]));
+    c.execute(&Command::TexEnv(t::GL_TEXTURE_ENV, t::GL_TEXTURE_ENV_MODE, [t::GL_REPLACE as f32, 0.0, 0.0, 0.0]));
+}
+
+/// One pixel drawn with texture coordinates `str`.
+fn one_pixel(c: &mut Context, str: [f32; 4]) -> [u8; 4] {
+    c.execute(&Command::TexCoord(t::GL_TEXTURE0, str));
+    quad_same(c);
+    px(c, 0, 0)
+}
+
+fn quad_same(c: &mut Context) {
+    c.execute(&Command::Begin(GL_QUADS));
+    for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+        c.execute(&Command::Vertex([x, y, 0.0, 1.0]));
+    }
+    c.execute(&Command::End);
+}
+
+#[test]
+fn cube_map_faces() {
+    let mut c = context(1, 1);
+    for f in 0..6u32 {
+        let v = [f as f32 / 8.0, 0.0, 0.0, 1.0];
+        let data: Vec<f32> = (0..4).flat_map(|_| v).collect();
+        tex_image_f(&mut c, 2, t::GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, t::GL_RGBA, [2, 2, 1], t::GL_RGBA, &data);
+    }
+    nearest(&mut c, t::GL_TEXTURE_CUBE_MAP);
+    c.execute(&Command::Enable(t::GL_TEXTURE_CUBE_MAP));
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    let dirs = [[1.0, 0.1, 0.2], [-1.0, 0.1, 0.2], [0.1, 1.0, 0.2], [0.1, -1.0, 0.2], [0.1, 0.2, 1.0], [0.1, 0.2, -1.0]];
+    for (f, d) in dirs.iter().enumerate() {
+        let p = one_pixel(&mut c, [d[0], d[1], d[2], 1.0]);
+        assert_eq!(p[0] as i32, (f as f32 / 8.0 * 255.0).round() as i32, "face {f}");
+    }
+}
+
+#[test]
+fn texture_3d_trilinear() {
+    let mut c = context(1, 1);
+    // 2x2x2: the red channel is the slice index / 2.
+    let data: Vec<f32> = (0..8).flat_map(|i| [if i >= 4 { 0.5 } else { 0.0 }, 0.0, 0.0, 1.0]).collect();
+    tex_image_f(&mut c, 3, t::GL_TEXTURE_3D, t::GL_RGBA16, [2, 2, 2], t::GL_RGBA, &data);
+    nearest(&mut c, t::GL_TEXTURE_3D);
+    c.execute(&Command::TexParameter(t::GL_TEXTURE_3D, t::GL_TEXTURE_MAG_FILTER, [t::GL_LINEAR as f32, 0.0, 0.0, 0.0]));
+    c.execute(&Command::TexParameter(t::GL_TEXTURE_3D, t::GL_TEXTURE_WRAP_R, [t::GL_CLAMP_TO_EDGE as f32, 0.0, 0.0, 0.0]));
+    c.execute(&Command::Enable(t::GL_TEXTURE_3D));
+    assert_eq!(one_pixel(&mut c, [0.5, 0.5, 0.5, 1.0])[0], 64);
+    assert_eq!(one_pixel(&mut c, [0.5, 0.5, 0.75, 1.0])[0], 128);
+    assert_eq!(one_pixel(&mut c, [0.5, 0.5, 0.0, 1.0])[0], 0);
+    // The q coordinate divides r too.
+    assert_eq!(one_pixel(&mut c, [1.0, 1.0, 1.5, 2.0])[0], 128);
+}
+
+#[test]
+fn depth_texture_compare() {
+    let mut c = context(1, 1);
+    let depth = [0.25f32, 0.75];
+    let cmd = unsafe { c.tex_image_command(2, t::GL_TEXTURE_2D, 0, t::GL_DEPTH_COMPONENT24 as i32, [2, 1, 1], 0, t::GL_DEPTH_COMPONENT, t::GL_FLOAT, depth.as_ptr() as *const u8) };
+    c.execute(&cmd.unwrap());
+    nearest(&mut c, t::GL_TEXTURE_2D);
+    c.execute(&Command::Enable(t::GL_TEXTURE_2D));
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    // No comparison: luminance = depth.
+    assert_eq!(one_pixel(&mut c, [0.25, 0.5, 0.5, 1.0])[..3], [64, 64, 64]);
+    c.execute(&Command::TexParameter(t::GL_TEXTURE_2D, t::GL_TEXTURE_COMPARE_MODE, [t::GL_COMPARE_R_TO_TEXTURE as f32, 0.0, 0.0, 0.0]));
+    // LEQUAL: r = 0.5 <= 0.25 fails at texel 0, passes at texel 1.
+    assert_eq!(one_pixel(&mut c, [0.25, 0.5, 0.5, 1.0])[0], 0);
+    assert_eq!(one_pixel(&mut c, [0.75, 0.5, 0.5, 1.0])[0], 255);
+    c.execute(&Command::TexParameter(t::GL_TEXTURE_2D, t::GL_TEXTURE_COMPARE_FUNC, [GL_GEQUAL as f32, 0.0, 0.0, 0.0]));
+    assert_eq!(one_pixel(&mut c, [0.25, 0.5, 0.5, 1.0])[0], 255);
+    // DEPTH_TEXTURE_MODE ALPHA with REPLACE: colour from the fragment.
+    c.execute(&Command::TexParameter(t::GL_TEXTURE_2D, t::GL_DEPTH_TEXTURE_MODE, [t::GL_ALPHA as f32, 0.0, 0.0, 0.0]));
+    c.execute(&Command::Color([0.0, 1.0, 0.0, 1.0]));
+    assert_eq!(one_pixel(&mut c, [0.75, 0.5, 0.5, 1.0]), [0, 255, 0, 0]);
+}
+
+#[test]
+fn copy_tex_image_and_get_tex_image() {
+    let mut c = context(4, 4);
+    c.execute(&Command::ClearColor([1.0, 0.5, 0.0, 1.0]));
+    c.execute(&Command::Clear(GL_COLOR_BUFFER_BIT));
+    c.execute(&Command::CopyTex(Box::new(softgl::gl::texture::CopyTexCmd {
+        dims: 2,
+        sub: false,
+        target: t::GL_TEXTURE_2D,
+        level: 0,
+        internal_format: t::GL_RGBA8,
+        offset: [0; 3],
+        rect: [2, 2, 4, 4],
+        border: 0,
+    })));
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    let mut out = [0u8; 4 * 16];
+    unsafe { c.get_tex_image(t::GL_TEXTURE_2D, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE, out.as_mut_ptr()) };
+    assert_eq!(out[..4], [255, 128, 0, 255], "inside the window");
+    assert_eq!(out[4 * 2..4 * 3], [0, 0, 0, 0], "outside the window reads zero");
+    // Packed readback: 5_6_5 of (1, 0.5, 0).
+    let mut p = [0u16; 16];
+    unsafe { c.get_tex_image(t::GL_TEXTURE_2D, 0, t::GL_RGB, t::GL_UNSIGNED_SHORT_5_6_5, p.as_mut_ptr() as *mut u8) };
+    assert_eq!(p[0], (31 << 11) | (32 << 5));
+}
+
+#[test]
+fn generate_mipmap_and_level_queries() {
+    let mut c = context(1, 1);
+    c.execute(&Command::TexParameter(t::GL_TEXTURE_2D, t::GL_GENERATE_MIPMAP, [1.0, 0.0, 0.0, 0.0]));
+    let data: Vec<u8> = (0..16).flat_map(|i| if i % 2 == 0 { [255, 0, 0, 255] } else { [0, 0, 0, 255] }).collect();
+    tex_image_2d(&mut c, 0, t::GL_RGBA, 4, 4, 0, &data);
+    let w = |c: &mut Context, l| c.get_tex_level_parameter(t::GL_TEXTURE_2D, l, t::GL_TEXTURE_WIDTH).unwrap().as_i32()[0];
+    assert_eq!((w(&mut c, 1), w(&mut c, 2), w(&mut c, 3)), (2, 1, 0));
+    let mut out = [0u8; 4];
+    unsafe { c.get_tex_image(t::GL_TEXTURE_2D, 2, t::GL_RGBA, t::GL_UNSIGNED_BYTE, out.as_mut_ptr()) };
+    assert_eq!(out, [128, 0, 0, 255]);
+    // The default min filter now has its mipmaps: complete.
+    c.execute(&Command::Enable(t::GL_TEXTURE_2D));
+    c.execute(&Command::TexEnv(t::GL_TEXTURE_ENV, t::GL_TEXTURE_ENV_MODE, [t::GL_REPLACE as f32, 0.0, 0.0, 0.0]));
+    c.execute(&Command::Color([0.0, 1.0, 0.0, 1.0]));
+    quad(&mut c, 0.0, 0.0, 1.0, 1.0);
+    assert_eq!(px(&c, 0, 0), [128, 0, 0, 255], "1 pixel for 4 texels: level 2");
+    let bits = c.get_tex_level_parameter(t::GL_TEXTURE_2D, 0, t::GL_TEXTURE_RED_SIZE).unwrap().as_i32()[0];
+    assert_eq!(bits, 8);
+}
+
+#[test]
+fn textured_lines_points_and_clipping() {
+    let mut c = context(8, 8);
+    setup_2d(&mut c, 8, 1, t::GL_NEAREST);
+    // A horizontal line along row 3 from s = 0 to 1.
+    c.execute(&Command::Begin(GL_LINES));
+    c.execute(&Command::TexCoord(t::GL_TEXTURE0, [0.0, 0.0, 0.0, 1.0]));
+    c.execute(&Command::Vertex([-1.0, -0.125, 0.0, 1.0]));
+    c.execute(&Command::TexCoord(t::GL_TEXTURE0, [1.0, 0.0, 0.0, 1.0]));
+    c.execute(&Command::Vertex([1.0, -0.125, 0.0, 1.0]));
+    c.execute(&Command::End);
+    for x in 0..7 {
+        assert_eq!(px(&c, x, 3)[0], 16 * x as u8, "line pixel {x}");
+    }
+    // A point takes its vertex's coordinates.
+    c.execute(&Command::Begin(GL_POINTS));
+    c.execute(&Command::TexCoord(t::GL_TEXTURE0, [0.7, 0.0, 0.0, 1.0]));
+    c.execute(&Command::Vertex([-0.875, 0.875, 0.0, 1.0]));
+    c.execute(&Command::End);
+    assert_eq!(px(&c, 0, 7)[0], 16 * 5);
+    // A quad crossing the near plane (z from -2 to 0.5 as y goes from -1
+    // to 1): clipped at y = -0.2, its coordinates still follow x.
+    c.execute(&Command::Begin(GL_QUADS));
+    for (x, z, s) in [(-1.0, -2.0, 0.0), (1.0, -2.0, 1.0), (1.0, 0.5, 1.0), (-1.0, 0.5, 0.0)] {
+        c.execute(&Command::TexCoord(t::GL_TEXTURE0, [s, 0.0, 0.0, 1.0]));
+        c.execute(&Command::Vertex([x, if z < 0.0 { -1.0 } else { 1.0 }, z, 1.0]));
+    }
+    c.execute(&Command::End);
+    for x in 0..8 {
+        assert_eq!(px(&c, x, 6)[0], 16 * x as u8, "clipped quad pixel {x}");
+        assert_eq!(px(&c, x, 2), [0; 4], "row 2 lies below the near-plane cut at y = -0.2");
+    }
+}
+
+#[test]
+fn tex_image_in_display_list() {
+    let mut c = context(8, 8);
+    c.execute(&Command::ActiveTexture(t::GL_TEXTURE0));
+    // Compile the image; change the client data; replay.
+    let mut data = ramp(8, 8);
+    c.new_list(1, GL_COMPILE);
+    tex_image_2d(&mut c, 0, t::GL_RGBA8, 8, 8, 0, &data);
+    c.end_list();
+    data.iter_mut().for_each(|b| *b = 0);
+    c.execute(&Command::CallList(1));
+    param(&mut c, t::GL_TEXTURE_MIN_FILTER, t::GL_NEAREST);
+    c.execute(&Command::Enable(t::GL_TEXTURE_2D));
+    c.execute(&Command::TexEnv(t::GL_TEXTURE_ENV, t::GL_TEXTURE_ENV_MODE, [t::GL_REPLACE as f32, 0.0, 0.0, 0.0]));
+    quad(&mut c, 0.0, 0.0, 1.0, 1.0);
+    assert_eq!(px(&c, 3, 5)[..2], [48, 80]);
 }
