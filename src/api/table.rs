@@ -246,11 +246,11 @@ super::entry_points! {
     list glPushMatrix() { |_c| Command::PushMatrix }
     list glPopMatrix() { |_c| Command::PopMatrix }
     list glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
-    list glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| x as f64))) } }
+    list glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
     list glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
-    list glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| x as f64))) } }
+    list glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
     list glTexGeni(coord: GLenum, pname: GLenum, param: GLint) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
-    list glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| x as f64))) } }
+    list glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
     todo glClipPlane(plane: GLenum, equation: *const GLdouble);
     todo glRasterPos2d(x: GLdouble, y: GLdouble);
     todo glRasterPos2dv(v: *const GLdouble);

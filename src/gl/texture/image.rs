@@ -306,6 +306,7 @@ fn put_elem(out: &mut [u8], ty: u32, v: f32, swap: bool) {
 ///
 /// # Safety
 /// `ptr` must have room for the image as the modes lay it out.
+#[allow(clippy::too_many_arguments)]
 pub unsafe fn pack(modes: &PixelModes, w: usize, h: usize, d: usize, format: u32, ty: u32, pixels: &[[f32; 4]], ptr: *mut u8) {
     let comps = format_components(format).unwrap_or(&[0]);
     let (n_elems, esize, pk) = match packed(ty) {

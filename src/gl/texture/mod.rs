@@ -144,8 +144,8 @@ impl TexObject {
                 let mut size = n0;
                 for l in base + 1..=q as usize {
                     size = size.map(|s| (s / 2).max(1));
-                    for k in dims..3 {
-                        size[k] = 1;
+                    for s in size.iter_mut().skip(dims) {
+                        *s = 1;
                     }
                     let img = self.image(f, l)?;
                     if img.inner(dims) != size || img.internal_format != first.internal_format || img.border != first.border {
@@ -590,6 +590,7 @@ impl Context {
         }
         let full = [img.width, img.height, img.depth];
         let b = img.border;
+        #[allow(clippy::needless_range_loop)]
         for k in 0..dims {
             let (o, s) = (cmd.offset[k], cmd.size[k]);
             if s < 0 || o < -b || o as i64 + s as i64 > (full[k] - b) as i64 {
