@@ -25,6 +25,8 @@ use crate::winsys::glx::{self, xlib::{Display, XVisualInfo}, Bool, FbConfig, Glx
 use crate::winsys::osmesa::{self, OsContext};
 use std::ffi::{c_char, c_int, c_void};
 use crate::gl::pixel_transfer::{map_index, map_value_to_uint, map_values_from_uint, MAX_PIXEL_MAP_TABLE};
+use crate::gl::texture::enums::{GL_TEXTURE0 as TEX0, GL_TEXTURE_BORDER_COLOR as TBORDER, GL_TEXTURE_ENV_COLOR as TENV_COLOR, GL_TEXTURE_GEN_MODE as TGEN_MODE};
+use crate::gl::texture::CopyTexCmd;
 
 /// GLU's opaque object types, as C sees them.
 pub type GLUquadric = c_void;
@@ -115,6 +117,11 @@ unsafe fn pixel_map<T: Copy>(map: GLenum, mapsize: GLsizei, values: *const T, co
     Some(Command::PixelMap(map, conv(map, &v)))
 }
 
+/// Texture coordinates from 1 to 4 components: t and r default to 0, q to 1.
+fn texcoord<T: Component>(v: &[T]) -> [f32; 4] {
+    [v[0].plain(), v.get(1).map_or(0.0, |c| c.plain()), v.get(2).map_or(0.0, |c| c.plain()), v.get(3).map_or(1.0, |c| c.plain())]
+}
+
 super::entry_points! {
 
     // ---- gl.h ----
@@ -147,38 +154,38 @@ super::entry_points! {
     list glVertex4iv(v: *const GLint) { |_c| Command::Vertex(position(&arr::<GLint, 4>(v)?)) }
     list glVertex4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) { |_c| Command::Vertex(position(&[x, y, z, w])) }
     list glVertex4sv(v: *const GLshort) { |_c| Command::Vertex(position(&arr::<GLshort, 4>(v)?)) }
-    todo glTexCoord1d(s: GLdouble);
-    todo glTexCoord1dv(v: *const GLdouble);
-    todo glTexCoord1f(s: GLfloat);
-    todo glTexCoord1fv(v: *const GLfloat);
-    todo glTexCoord1i(s: GLint);
-    todo glTexCoord1iv(v: *const GLint);
-    todo glTexCoord1s(s: GLshort);
-    todo glTexCoord1sv(v: *const GLshort);
-    todo glTexCoord2d(s: GLdouble, t: GLdouble);
-    todo glTexCoord2dv(v: *const GLdouble);
-    todo glTexCoord2f(s: GLfloat, t: GLfloat);
-    todo glTexCoord2fv(v: *const GLfloat);
-    todo glTexCoord2i(s: GLint, t: GLint);
-    todo glTexCoord2iv(v: *const GLint);
-    todo glTexCoord2s(s: GLshort, t: GLshort);
-    todo glTexCoord2sv(v: *const GLshort);
-    todo glTexCoord3d(s: GLdouble, t: GLdouble, r: GLdouble);
-    todo glTexCoord3dv(v: *const GLdouble);
-    todo glTexCoord3f(s: GLfloat, t: GLfloat, r: GLfloat);
-    todo glTexCoord3fv(v: *const GLfloat);
-    todo glTexCoord3i(s: GLint, t: GLint, r: GLint);
-    todo glTexCoord3iv(v: *const GLint);
-    todo glTexCoord3s(s: GLshort, t: GLshort, r: GLshort);
-    todo glTexCoord3sv(v: *const GLshort);
-    todo glTexCoord4d(s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble);
-    todo glTexCoord4dv(v: *const GLdouble);
-    todo glTexCoord4f(s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat);
-    todo glTexCoord4fv(v: *const GLfloat);
-    todo glTexCoord4i(s: GLint, t: GLint, r: GLint, q: GLint);
-    todo glTexCoord4iv(v: *const GLint);
-    todo glTexCoord4s(s: GLshort, t: GLshort, r: GLshort, q: GLshort);
-    todo glTexCoord4sv(v: *const GLshort);
+    list glTexCoord1d(s: GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&[s])) }
+    list glTexCoord1dv(v: *const GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLdouble, 1>(v)?)) }
+    list glTexCoord1f(s: GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&[s])) }
+    list glTexCoord1fv(v: *const GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLfloat, 1>(v)?)) }
+    list glTexCoord1i(s: GLint) { |_c| Command::TexCoord(TEX0, texcoord(&[s])) }
+    list glTexCoord1iv(v: *const GLint) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLint, 1>(v)?)) }
+    list glTexCoord1s(s: GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&[s])) }
+    list glTexCoord1sv(v: *const GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLshort, 1>(v)?)) }
+    list glTexCoord2d(s: GLdouble, t: GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t])) }
+    list glTexCoord2dv(v: *const GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLdouble, 2>(v)?)) }
+    list glTexCoord2f(s: GLfloat, t: GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t])) }
+    list glTexCoord2fv(v: *const GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLfloat, 2>(v)?)) }
+    list glTexCoord2i(s: GLint, t: GLint) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t])) }
+    list glTexCoord2iv(v: *const GLint) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLint, 2>(v)?)) }
+    list glTexCoord2s(s: GLshort, t: GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t])) }
+    list glTexCoord2sv(v: *const GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLshort, 2>(v)?)) }
+    list glTexCoord3d(s: GLdouble, t: GLdouble, r: GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r])) }
+    list glTexCoord3dv(v: *const GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLdouble, 3>(v)?)) }
+    list glTexCoord3f(s: GLfloat, t: GLfloat, r: GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r])) }
+    list glTexCoord3fv(v: *const GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLfloat, 3>(v)?)) }
+    list glTexCoord3i(s: GLint, t: GLint, r: GLint) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r])) }
+    list glTexCoord3iv(v: *const GLint) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLint, 3>(v)?)) }
+    list glTexCoord3s(s: GLshort, t: GLshort, r: GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r])) }
+    list glTexCoord3sv(v: *const GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLshort, 3>(v)?)) }
+    list glTexCoord4d(s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r, q])) }
+    list glTexCoord4dv(v: *const GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLdouble, 4>(v)?)) }
+    list glTexCoord4f(s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r, q])) }
+    list glTexCoord4fv(v: *const GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLfloat, 4>(v)?)) }
+    list glTexCoord4i(s: GLint, t: GLint, r: GLint, q: GLint) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r, q])) }
+    list glTexCoord4iv(v: *const GLint) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLint, 4>(v)?)) }
+    list glTexCoord4s(s: GLshort, t: GLshort, r: GLshort, q: GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r, q])) }
+    list glTexCoord4sv(v: *const GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLshort, 4>(v)?)) }
     list glNormal3b(nx: GLbyte, ny: GLbyte, nz: GLbyte) { |_c| Command::Normal(normal(&[nx, ny, nz])) }
     list glNormal3bv(v: *const GLbyte) { |_c| Command::Normal(normal(&arr::<GLbyte, 3>(v)?)) }
     list glNormal3d(nx: GLdouble, ny: GLdouble, nz: GLdouble) { |_c| Command::Normal(normal(&[nx, ny, nz])) }
@@ -269,12 +276,12 @@ super::entry_points! {
     list glOrtho(left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, zNear: GLdouble, zFar: GLdouble) { |_c| Command::Ortho([left, right, bottom, top, zNear, zFar]) }
     list glPushMatrix() { |_c| Command::PushMatrix }
     list glPopMatrix() { |_c| Command::PopMatrix }
-    todo glTexGend(coord: GLenum, pname: GLenum, param: GLdouble);
-    todo glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble);
-    todo glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat);
-    todo glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat);
-    todo glTexGeni(coord: GLenum, pname: GLenum, param: GLint);
-    todo glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint);
+    list glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
+    list glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
+    list glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
+    list glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
+    list glTexGeni(coord: GLenum, pname: GLenum, param: GLint) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
+    list glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
     list glClipPlane(plane: GLenum, equation: *const GLdouble) { |_c| Command::ClipPlane(plane, arr::<GLdouble, 4>(equation)?) }
     list glRasterPos2d(x: GLdouble, y: GLdouble) { |_c| Command::RasterPos(position(&[x, y])) }
     list glRasterPos2dv(v: *const GLdouble) { |_c| Command::RasterPos(position(&arr::<GLdouble, 2>(v)?)) }
@@ -332,28 +339,28 @@ super::entry_points! {
     list["texturing and fog of the fragments come with those features"] glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.build_draw_pixels(width, height, format, type_, pixels as *const u8)? }
     list glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) { |_c| Command::PixelZoom(xfactor, yfactor) }
     list["texturing and fog of the fragments come with those features"] glBitmap(width: GLsizei, height: GLsizei, xorig: GLfloat, yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, bitmap: *const GLubyte) { |c| c.build_bitmap(width, height, [xorig, yorig], [xmove, ymove], bitmap) }
-    todo glTexImage1D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glTexImage2D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glCopyTexImage1D(target: GLenum, level: GLint, internalFormat: GLenum, x: GLint, y: GLint, width: GLsizei, border: GLint);
-    todo glCopyTexImage2D(target: GLenum, level: GLint, internalFormat: GLenum, x: GLint, y: GLint, width: GLsizei, height: GLsizei, border: GLint);
-    todo glTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glCopyTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, x: GLint, y: GLint, width: GLsizei);
-    todo glCopyTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
-    todo glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat);
-    todo glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat);
-    todo glTexParameteri(target: GLenum, pname: GLenum, param: GLint);
-    todo glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint);
-    todo glGenTextures(n: GLsizei, textures: *mut GLuint);
-    todo glDeleteTextures(n: GLsizei, textures: *const GLuint);
-    todo glBindTexture(target: GLenum, texture: GLuint);
-    todo glPrioritizeTextures(n: GLsizei, textures: *const GLuint, priorities: *const GLclampf);
-    todo glAreTexturesResident(n: GLsizei, textures: *const GLuint, residences: *mut GLboolean) -> GLboolean;
-    todo glIsTexture(texture: GLuint) -> GLboolean;
-    todo glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat);
-    todo glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat);
-    todo glTexEnvi(target: GLenum, pname: GLenum, param: GLint);
-    todo glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint);
+    list glTexImage1D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_image_command(1, target, level, internalFormat, [width, 1, 1], border, format, type_, pixels as *const u8)? }
+    list glTexImage2D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_image_command(2, target, level, internalFormat, [width, height, 1], border, format, type_, pixels as *const u8)? }
+    list glCopyTexImage1D(target: GLenum, level: GLint, internalFormat: GLenum, x: GLint, y: GLint, width: GLsizei, border: GLint) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 1, sub: false, target, level, internal_format: internalFormat, offset: [0; 3], rect: [x, y, width, 1], border })) }
+    list glCopyTexImage2D(target: GLenum, level: GLint, internalFormat: GLenum, x: GLint, y: GLint, width: GLsizei, height: GLsizei, border: GLint) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 2, sub: false, target, level, internal_format: internalFormat, offset: [0; 3], rect: [x, y, width, height], border })) }
+    list glTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_sub_image_command(1, target, level, [xoffset, 0, 0], [width, 1, 1], format, type_, pixels as *const u8) }
+    list glTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_sub_image_command(2, target, level, [xoffset, yoffset, 0], [width, height, 1], format, type_, pixels as *const u8) }
+    list glCopyTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, x: GLint, y: GLint, width: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 1, sub: true, target, level, internal_format: 0, offset: [xoffset, 0, 0], rect: [x, y, width, 1], border: 0 })) }
+    list glCopyTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 2, sub: true, target, level, internal_format: 0, offset: [xoffset, yoffset, 0], rect: [x, y, width, height], border: 0 })) }
+    list glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) { |c| { if pname == TBORDER { c.set_error(GL_INVALID_ENUM); return None; } Command::TexParameter(target, pname, [param, 0.0, 0.0, 0.0]) } }
+    list glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TBORDER { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexParameter(target, pname, std::array::from_fn(|i| v.get(i).copied().unwrap_or(0.0))) } }
+    list glTexParameteri(target: GLenum, pname: GLenum, param: GLint) { |c| { if pname == TBORDER { c.set_error(GL_INVALID_ENUM); return None; } Command::TexParameter(target, pname, [param as f32, 0.0, 0.0, 0.0]) } }
+    list glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| { let border = pname == TBORDER; let v = slice(params, if border { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexParameter(target, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| if border { x.normalized() } else { x as f32 }))) } }
+    exec glGenTextures(n: GLsizei, textures: *mut GLuint) { |c| if let Some(v) = c.gen_textures(n) { write_out(textures, &v) } }
+    exec glDeleteTextures(n: GLsizei, textures: *const GLuint) { |c| { if n < 0 { return c.set_error(GL_INVALID_VALUE); } c.delete_textures(&slice(textures, n as i64)) } }
+    list glBindTexture(target: GLenum, texture: GLuint) { |_c| Command::BindTexture(target, texture) }
+    list glPrioritizeTextures(n: GLsizei, textures: *const GLuint, priorities: *const GLclampf) { |c| { if n < 0 { c.set_error(GL_INVALID_VALUE); return None; } Command::PrioritizeTextures(slice(textures, n as i64).into_iter().zip(slice(priorities, n as i64)).collect()) } }
+    exec glAreTexturesResident(n: GLsizei, textures: *const GLuint, residences: *mut GLboolean) -> GLboolean { |c| { if n < 0 { c.set_error(GL_INVALID_VALUE); return 0; } let _ = residences; match c.are_textures_resident(&slice(textures, n as i64)) { Some(_) => 1, None => 0 } } }
+    exec glIsTexture(texture: GLuint) -> GLboolean { |c| gl_bool(c.is_texture(texture)) }
+    list glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) { |c| { if pname == TENV_COLOR { c.set_error(GL_INVALID_ENUM); return None; } Command::TexEnv(target, pname, [param, 0.0, 0.0, 0.0]) } }
+    list glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TENV_COLOR { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexEnv(target, pname, std::array::from_fn(|i| v.get(i).copied().unwrap_or(0.0))) } }
+    list glTexEnvi(target: GLenum, pname: GLenum, param: GLint) { |c| { if pname == TENV_COLOR { c.set_error(GL_INVALID_ENUM); return None; } Command::TexEnv(target, pname, [param as f32, 0.0, 0.0, 0.0]) } }
+    list glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| { let color = pname == TENV_COLOR; let v = slice(params, if color { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexEnv(target, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| if color { x.normalized() } else { x as f32 }))) } }
     todo glFogf(pname: GLenum, param: GLfloat);
     todo glFogfv(pname: GLenum, params: *const GLfloat);
     todo glFogi(pname: GLenum, param: GLint);
@@ -432,16 +439,16 @@ super::entry_points! {
     exec glGetLightiv(light: GLenum, pname: GLenum, params: *mut GLint) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &ints_out(&v, is_color_param(pname))), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMaterialfv(face: GLenum, pname: GLenum, params: *mut GLfloat) { |c| match c.get_material(face, pname) { Some(v) => write_out(params, &v), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMaterialiv(face: GLenum, pname: GLenum, params: *mut GLint) { |c| match c.get_material(face, pname) { Some(v) => write_out(params, &ints_out(&v, is_color_param(pname))), None => c.set_error(GL_INVALID_ENUM) } }
-    todo glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint);
-    todo glGetTexGendv(coord: GLenum, pname: GLenum, params: *mut GLdouble);
-    todo glGetTexGenfv(coord: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetTexGeniv(coord: GLenum, pname: GLenum, params: *mut GLint);
-    todo glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint);
-    todo glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat);
-    todo glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint);
-    todo glGetTexImage(target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: *mut c_void);
+    exec glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_tex_env(target, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_env(target, pname) { write_out(params, &v.as_i32()) } }
+    exec glGetTexGendv(coord: GLenum, pname: GLenum, params: *mut GLdouble) { |c| if let Some(v) = c.get_tex_gen(coord, pname) { write_out(params, &v.as_f64()) } }
+    exec glGetTexGenfv(coord: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_tex_gen(coord, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetTexGeniv(coord: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_gen(coord, pname) { write_out(params, &v.as_i32()) } }
+    exec glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_tex_parameter(target, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_parameter(target, pname) { write_out(params, &v.as_i32()) } }
+    exec glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_tex_level_parameter(target, level, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_level_parameter(target, level, pname) { write_out(params, &v.as_i32()) } }
+    exec["no pixel transfer (scale, bias, maps) yet"] glGetTexImage(target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.get_tex_image(target, level, format, type_, pixels as *mut u8) }
     exec glGetPixelMapfv(map: GLenum, values: *mut GLfloat) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, v), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetPixelMapuiv(map: GLenum, values: *mut GLuint) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 32)).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetPixelMapusv(map: GLenum, values: *mut GLushort) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 16) as u16).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
@@ -455,9 +462,9 @@ super::entry_points! {
     client["saves the pixel-store modes; vertex-array state comes with vertex arrays"] glPushClientAttrib(mask: GLbitfield) { |c| c.push_client_attrib(mask) }
     client glPopClientAttrib() { |c| c.pop_client_attrib() }
     todo glDrawRangeElements(mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, type_: GLenum, indices: *const c_void);
-    todo glTexImage3D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glCopyTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
+    list glTexImage3D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_image_command(3, target, level, internalFormat, [width, height, depth], border, format, type_, pixels as *const u8)? }
+    list glTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_sub_image_command(3, target, level, [xoffset, yoffset, zoffset], [width, height, depth], format, type_, pixels as *const u8) }
+    list glCopyTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 3, sub: true, target, level, internal_format: 0, offset: [xoffset, yoffset, zoffset], rect: [x, y, width, height], border: 0 })) }
     list glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) { |_c| Command::BlendColor([red, green, blue, alpha]) }
     list glBlendEquation(mode: GLenum) { |_c| Command::BlendEquation(mode) }
     todo glColorTable(target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, type_: GLenum, table: *const c_void);
@@ -492,52 +499,52 @@ super::entry_points! {
     todo glGetMinmax(target: GLenum, reset: GLboolean, format: GLenum, type_: GLenum, values: *mut c_void);
     todo glGetMinmaxParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat);
     todo glGetMinmaxParameteriv(target: GLenum, pname: GLenum, params: *mut GLint);
-    todo glActiveTexture(texture: GLenum);
-    todo glClientActiveTexture(texture: GLenum);
-    todo glMultiTexCoord1d(target: GLenum, s: GLdouble);
-    todo glMultiTexCoord1dv(target: GLenum, v: *const GLdouble);
-    todo glMultiTexCoord1f(target: GLenum, s: GLfloat);
-    todo glMultiTexCoord1fv(target: GLenum, v: *const GLfloat);
-    todo glMultiTexCoord1i(target: GLenum, s: GLint);
-    todo glMultiTexCoord1iv(target: GLenum, v: *const GLint);
-    todo glMultiTexCoord1s(target: GLenum, s: GLshort);
-    todo glMultiTexCoord1sv(target: GLenum, v: *const GLshort);
-    todo glMultiTexCoord2d(target: GLenum, s: GLdouble, t: GLdouble);
-    todo glMultiTexCoord2dv(target: GLenum, v: *const GLdouble);
-    todo glMultiTexCoord2f(target: GLenum, s: GLfloat, t: GLfloat);
-    todo glMultiTexCoord2fv(target: GLenum, v: *const GLfloat);
-    todo glMultiTexCoord2i(target: GLenum, s: GLint, t: GLint);
-    todo glMultiTexCoord2iv(target: GLenum, v: *const GLint);
-    todo glMultiTexCoord2s(target: GLenum, s: GLshort, t: GLshort);
-    todo glMultiTexCoord2sv(target: GLenum, v: *const GLshort);
-    todo glMultiTexCoord3d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble);
-    todo glMultiTexCoord3dv(target: GLenum, v: *const GLdouble);
-    todo glMultiTexCoord3f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat);
-    todo glMultiTexCoord3fv(target: GLenum, v: *const GLfloat);
-    todo glMultiTexCoord3i(target: GLenum, s: GLint, t: GLint, r: GLint);
-    todo glMultiTexCoord3iv(target: GLenum, v: *const GLint);
-    todo glMultiTexCoord3s(target: GLenum, s: GLshort, t: GLshort, r: GLshort);
-    todo glMultiTexCoord3sv(target: GLenum, v: *const GLshort);
-    todo glMultiTexCoord4d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble);
-    todo glMultiTexCoord4dv(target: GLenum, v: *const GLdouble);
-    todo glMultiTexCoord4f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat);
-    todo glMultiTexCoord4fv(target: GLenum, v: *const GLfloat);
-    todo glMultiTexCoord4i(target: GLenum, s: GLint, t: GLint, r: GLint, q: GLint);
-    todo glMultiTexCoord4iv(target: GLenum, v: *const GLint);
-    todo glMultiTexCoord4s(target: GLenum, s: GLshort, t: GLshort, r: GLshort, q: GLshort);
-    todo glMultiTexCoord4sv(target: GLenum, v: *const GLshort);
+    list glActiveTexture(texture: GLenum) { |_c| Command::ActiveTexture(texture) }
+    client glClientActiveTexture(texture: GLenum) { |c| c.client_active_texture(texture) }
+    list glMultiTexCoord1d(target: GLenum, s: GLdouble) { |_c| Command::TexCoord(target, texcoord(&[s])) }
+    list glMultiTexCoord1dv(target: GLenum, v: *const GLdouble) { |_c| Command::TexCoord(target, texcoord(&arr::<GLdouble, 1>(v)?)) }
+    list glMultiTexCoord1f(target: GLenum, s: GLfloat) { |_c| Command::TexCoord(target, texcoord(&[s])) }
+    list glMultiTexCoord1fv(target: GLenum, v: *const GLfloat) { |_c| Command::TexCoord(target, texcoord(&arr::<GLfloat, 1>(v)?)) }
+    list glMultiTexCoord1i(target: GLenum, s: GLint) { |_c| Command::TexCoord(target, texcoord(&[s])) }
+    list glMultiTexCoord1iv(target: GLenum, v: *const GLint) { |_c| Command::TexCoord(target, texcoord(&arr::<GLint, 1>(v)?)) }
+    list glMultiTexCoord1s(target: GLenum, s: GLshort) { |_c| Command::TexCoord(target, texcoord(&[s])) }
+    list glMultiTexCoord1sv(target: GLenum, v: *const GLshort) { |_c| Command::TexCoord(target, texcoord(&arr::<GLshort, 1>(v)?)) }
+    list glMultiTexCoord2d(target: GLenum, s: GLdouble, t: GLdouble) { |_c| Command::TexCoord(target, texcoord(&[s, t])) }
+    list glMultiTexCoord2dv(target: GLenum, v: *const GLdouble) { |_c| Command::TexCoord(target, texcoord(&arr::<GLdouble, 2>(v)?)) }
+    list glMultiTexCoord2f(target: GLenum, s: GLfloat, t: GLfloat) { |_c| Command::TexCoord(target, texcoord(&[s, t])) }
+    list glMultiTexCoord2fv(target: GLenum, v: *const GLfloat) { |_c| Command::TexCoord(target, texcoord(&arr::<GLfloat, 2>(v)?)) }
+    list glMultiTexCoord2i(target: GLenum, s: GLint, t: GLint) { |_c| Command::TexCoord(target, texcoord(&[s, t])) }
+    list glMultiTexCoord2iv(target: GLenum, v: *const GLint) { |_c| Command::TexCoord(target, texcoord(&arr::<GLint, 2>(v)?)) }
+    list glMultiTexCoord2s(target: GLenum, s: GLshort, t: GLshort) { |_c| Command::TexCoord(target, texcoord(&[s, t])) }
+    list glMultiTexCoord2sv(target: GLenum, v: *const GLshort) { |_c| Command::TexCoord(target, texcoord(&arr::<GLshort, 2>(v)?)) }
+    list glMultiTexCoord3d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble) { |_c| Command::TexCoord(target, texcoord(&[s, t, r])) }
+    list glMultiTexCoord3dv(target: GLenum, v: *const GLdouble) { |_c| Command::TexCoord(target, texcoord(&arr::<GLdouble, 3>(v)?)) }
+    list glMultiTexCoord3f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat) { |_c| Command::TexCoord(target, texcoord(&[s, t, r])) }
+    list glMultiTexCoord3fv(target: GLenum, v: *const GLfloat) { |_c| Command::TexCoord(target, texcoord(&arr::<GLfloat, 3>(v)?)) }
+    list glMultiTexCoord3i(target: GLenum, s: GLint, t: GLint, r: GLint) { |_c| Command::TexCoord(target, texcoord(&[s, t, r])) }
+    list glMultiTexCoord3iv(target: GLenum, v: *const GLint) { |_c| Command::TexCoord(target, texcoord(&arr::<GLint, 3>(v)?)) }
+    list glMultiTexCoord3s(target: GLenum, s: GLshort, t: GLshort, r: GLshort) { |_c| Command::TexCoord(target, texcoord(&[s, t, r])) }
+    list glMultiTexCoord3sv(target: GLenum, v: *const GLshort) { |_c| Command::TexCoord(target, texcoord(&arr::<GLshort, 3>(v)?)) }
+    list glMultiTexCoord4d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble) { |_c| Command::TexCoord(target, texcoord(&[s, t, r, q])) }
+    list glMultiTexCoord4dv(target: GLenum, v: *const GLdouble) { |_c| Command::TexCoord(target, texcoord(&arr::<GLdouble, 4>(v)?)) }
+    list glMultiTexCoord4f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) { |_c| Command::TexCoord(target, texcoord(&[s, t, r, q])) }
+    list glMultiTexCoord4fv(target: GLenum, v: *const GLfloat) { |_c| Command::TexCoord(target, texcoord(&arr::<GLfloat, 4>(v)?)) }
+    list glMultiTexCoord4i(target: GLenum, s: GLint, t: GLint, r: GLint, q: GLint) { |_c| Command::TexCoord(target, texcoord(&[s, t, r, q])) }
+    list glMultiTexCoord4iv(target: GLenum, v: *const GLint) { |_c| Command::TexCoord(target, texcoord(&arr::<GLint, 4>(v)?)) }
+    list glMultiTexCoord4s(target: GLenum, s: GLshort, t: GLshort, r: GLshort, q: GLshort) { |_c| Command::TexCoord(target, texcoord(&[s, t, r, q])) }
+    list glMultiTexCoord4sv(target: GLenum, v: *const GLshort) { |_c| Command::TexCoord(target, texcoord(&arr::<GLshort, 4>(v)?)) }
     list glLoadTransposeMatrixf(m: *const GLfloat) { |_c| Command::LoadMatrix(matrix(arr::<GLfloat, 16>(m)?.map(f64::from)).transpose()) }
     list glLoadTransposeMatrixd(m: *const GLdouble) { |_c| Command::LoadMatrix(matrix(arr::<GLdouble, 16>(m)?).transpose()) }
     list glMultTransposeMatrixf(m: *const GLfloat) { |_c| Command::MultMatrix(matrix(arr::<GLfloat, 16>(m)?.map(f64::from)).transpose()) }
     list glMultTransposeMatrixd(m: *const GLdouble) { |_c| Command::MultMatrix(matrix(arr::<GLdouble, 16>(m)?).transpose()) }
     todo glSampleCoverage(value: GLclampf, invert: GLboolean);
-    todo glCompressedTexImage1D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void);
-    todo glCompressedTexImage2D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void);
-    todo glCompressedTexImage3D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void);
-    todo glCompressedTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void);
-    todo glCompressedTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void);
-    todo glCompressedTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void);
-    todo glGetCompressedTexImage(target: GLenum, level: GLint, img: *mut c_void);
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexImage1D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, internalformat, width, border, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexImage2D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, internalformat, width, height, border, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexImage3D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, internalformat, width, height, depth, border, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, xoffset, width, format, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, xoffset, yoffset, width, height, format, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, xoffset, yoffset, zoffset, width, height, depth, format, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no image is compressed: GL_INVALID_OPERATION"] glGetCompressedTexImage(target: GLenum, level: GLint, img: *mut c_void) { |c| { let _ = (target, level, img); c.set_error(GL_INVALID_OPERATION) } }
     list glBlendFuncSeparate(sfactorRGB: GLenum, dfactorRGB: GLenum, sfactorAlpha: GLenum, dfactorAlpha: GLenum) { |_c| Command::BlendFunc([sfactorRGB, dfactorRGB, sfactorAlpha, dfactorAlpha]) }
     todo glFogCoordf(coord: GLfloat);
     todo glFogCoordfv(coord: *const GLfloat);

@@ -78,7 +78,8 @@ impl Context {
                 (front, back)
             }
         };
-        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag };
+        let tex = self.vertex_texcoords(obj);
+        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex };
         self.assemble(&mut asm, v);
         self.prim = Some(asm);
     }

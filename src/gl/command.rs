@@ -113,6 +113,20 @@ pub enum Command {
     /// (unpacking needs a valid format and type): executing it raises the
     /// error, so a display list raises it when called, as the spec says.
     Error(u32),
+    // Section 3.8 and 2.11.4: texturing. TexCoord(unit enum, strq).
+    TexCoord(u32, [f32; 4]),
+    ActiveTexture(u32),
+    BindTexture(u32, u32),
+    /// glTexParameter(target, pname, values as floats).
+    TexParameter(u32, u32, [f32; 4]),
+    /// glTexEnv(target, pname, values as floats).
+    TexEnv(u32, u32, [f32; 4]),
+    /// glTexGen(coord, pname, values).
+    TexGen(u32, u32, [f64; 4]),
+    TexImage(Box<super::texture::TexImageCmd>),
+    TexSubImage(Box<super::texture::TexSubImageCmd>),
+    CopyTex(Box<super::texture::CopyTexCmd>),
+    PrioritizeTextures(Vec<(u32, f32)>),
 }
 
 impl Command {
@@ -127,6 +141,7 @@ impl Command {
                 | Command::EvalCoord(..)
                 | Command::EdgeFlag(_)
                 | Command::EvalPoint(..)
+                | Command::TexCoord(..)
                 | Command::End
                 | Command::CallList(_)
                 | Command::CallLists(_)
@@ -257,6 +272,16 @@ impl Context {
             DrawPixels(r) => self.draw_pixels(r),
             CopyPixels(x, y, w, h, ty) => self.copy_pixels(*x, *y, *w, *h, *ty),
             Error(e) => self.set_error(*e),
+            TexCoord(unit, v) => self.tex_coord(*unit, *v),
+            ActiveTexture(e) => self.active_texture(*e),
+            BindTexture(t, name) => self.bind_texture(*t, *name),
+            TexParameter(t, p, v) => self.tex_parameter(*t, *p, *v),
+            TexEnv(t, p, v) => self.tex_env(*t, *p, *v),
+            TexGen(c, p, v) => self.tex_gen(*c, *p, *v),
+            TexImage(cmd) => self.tex_image(cmd),
+            TexSubImage(cmd) => self.tex_sub_image(cmd),
+            CopyTex(cmd) => self.copy_tex(cmd),
+            PrioritizeTextures(p) => self.prioritize_textures(p),
         }
     }
 }

@@ -4,7 +4,7 @@
 use super::command::Command;
 use super::enums::*;
 use super::state::*;
-use super::{attrib, begin_end, clip_plane, enable, eval, lighting, lists, matrix, pixels, select, validate};
+use super::{attrib, begin_end, clip_plane, enable, eval, lighting, lists, matrix, pixels, select, texture, validate};
 use crate::framebuffer::{Config, Framebuffer, Present};
 
 pub struct Context {
@@ -42,6 +42,7 @@ pub struct Context {
     pub pixel: super::pixel_transfer::PixelTransfer,
     /// The current raster position (section 2.13).
     pub raster: super::raster_pos::RasterPos,
+    pub texture: texture::TextureState,
     /// The framebuffer this context draws into and reads from.
     pub fb: Framebuffer,
     /// Where glFlush/glFinish deliver the image (set by the window system).
@@ -82,6 +83,7 @@ impl Context {
             pixel_store: Default::default(),
             pixel: Default::default(),
             raster: Default::default(),
+            texture: Default::default(),
             fb: Framebuffer::new(config),
             surface: None,
             dirty: validate::DIRTY_ALL,

@@ -50,6 +50,9 @@ fn is_stored_cap(cap: u32) -> bool {
 
 impl Context {
     pub fn set_enabled(&mut self, cap: u32, on: bool) {
+        if self.set_texture_enabled(cap, on) {
+            return;
+        }
         match cap {
             GL_DEPTH_TEST => {
                 self.depth.test = on;
@@ -130,6 +133,9 @@ impl Context {
 
     /// glIsEnabled; None for an invalid capability.
     pub fn is_enabled(&self, cap: u32) -> Option<bool> {
+        if let Some(on) = self.texture_is_enabled(cap) {
+            return Some(on);
+        }
         Some(match cap {
             GL_DEPTH_TEST => self.depth.test,
             GL_SCISSOR_TEST => self.scissor.test,

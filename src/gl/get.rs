@@ -71,6 +71,9 @@ impl Context {
         if let Some(on) = self.is_enabled(pname) {
             return Some(Value::Bools(vec![on]));
         }
+        if let Some(v) = self.texture_get(pname) {
+            return Some(v);
+        }
         let fb = &self.fb.config;
         let has = |bits: u8| bits as i64;
         match pname {
@@ -139,13 +142,13 @@ impl Context {
             GL_MATRIX_MODE => ints([self.transform.mode as i64]),
             GL_MODELVIEW_MATRIX => Some(Value::Floats(self.transform.modelview.top().to_cols_array().to_vec())),
             GL_PROJECTION_MATRIX => Some(Value::Floats(self.transform.projection.top().to_cols_array().to_vec())),
-            GL_TEXTURE_MATRIX => Some(Value::Floats(self.transform.texture.top().to_cols_array().to_vec())),
+            GL_TEXTURE_MATRIX => Some(Value::Floats(self.transform.texture().top().to_cols_array().to_vec())),
             GL_TRANSPOSE_MODELVIEW_MATRIX => Some(Value::Floats(self.transform.modelview.top().transpose().to_cols_array().to_vec())),
             GL_TRANSPOSE_PROJECTION_MATRIX => Some(Value::Floats(self.transform.projection.top().transpose().to_cols_array().to_vec())),
-            GL_TRANSPOSE_TEXTURE_MATRIX => Some(Value::Floats(self.transform.texture.top().transpose().to_cols_array().to_vec())),
+            GL_TRANSPOSE_TEXTURE_MATRIX => Some(Value::Floats(self.transform.texture().top().transpose().to_cols_array().to_vec())),
             GL_MODELVIEW_STACK_DEPTH => ints([self.transform.modelview.depth() as i64]),
             GL_PROJECTION_STACK_DEPTH => ints([self.transform.projection.depth() as i64]),
-            GL_TEXTURE_STACK_DEPTH => ints([self.transform.texture.depth() as i64]),
+            GL_TEXTURE_STACK_DEPTH => ints([self.transform.texture().depth() as i64]),
             GL_MAX_MODELVIEW_STACK_DEPTH => ints([MAX_MODELVIEW_DEPTH as i64]),
             GL_MAX_PROJECTION_STACK_DEPTH => ints([MAX_PROJECTION_DEPTH as i64]),
             GL_MAX_TEXTURE_STACK_DEPTH => ints([MAX_TEXTURE_DEPTH as i64]),

@@ -26,6 +26,7 @@ pub mod polygon;
 pub mod select;
 pub mod raster_pos;
 pub mod state;
+pub mod texture;
 pub mod validate;
 
 pub use command::Command;

@@ -194,11 +194,18 @@ pub struct CurrentState {
     pub color: [f32; 4],
     pub normal: [f32; 3],
     pub edge_flag: bool,
+    /// Per texture unit (s, t, r, q).
+    pub tex_coords: [[f32; 4]; crate::render::texture::MAX_UNITS],
 }
 
 impl Default for CurrentState {
     fn default() -> Self {
-        CurrentState { color: [1.0; 4], normal: [0.0, 0.0, 1.0], edge_flag: true }
+        CurrentState {
+            color: [1.0; 4],
+            normal: [0.0, 0.0, 1.0],
+            edge_flag: true,
+            tex_coords: [[0.0, 0.0, 0.0, 1.0]; crate::render::texture::MAX_UNITS],
+        }
     }
 }
 

@@ -15,6 +15,8 @@ pub const DIRTY_VIEWPORT: u32 = 1 << 1;
 pub const DIRTY_FRAGMENT: u32 = 1 << 2;
 pub const DIRTY_RASTER: u32 = 1 << 3;
 pub const DIRTY_LIGHTING: u32 = 1 << 4;
+/// Texture objects, images, parameters, environments, enables, texgen.
+pub const DIRTY_TEXTURE: u32 = 1 << 12;
 pub const DIRTY_ALL: u32 = !0;
 
 /// State derived from GL state for the renderer.
@@ -47,6 +49,7 @@ impl Default for Derived {
                 point_size: 1.0,
                 clip_planes: crate::render::clip::FIXED_PLANES.to_vec(),
                 fragment: FragmentState::default(),
+                texture: None,
             },
         }
     }
@@ -91,6 +94,9 @@ impl Context {
                 )
             });
             self.derived.render.two_side = l.enabled && l.two_side;
+        }
+        if d & (DIRTY_TEXTURE | DIRTY_TRANSFORM | DIRTY_LIGHTING) != 0 {
+            self.validate_texture(d & DIRTY_TEXTURE != 0);
         }
         let fragment = (d & DIRTY_FRAGMENT != 0).then(|| self.fragment_state());
         let rs = &mut self.derived.render;

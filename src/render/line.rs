@@ -219,6 +219,8 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
     let (fxa, fya) = (xa as f64 * inv, ya as f64 * inv);
     let (fdx, fdy) = (dx as f64 * inv, dy as f64 * inv);
     let len2 = fdx * fdx + fdy * fdy;
+    // The parameter change of one pixel along the major axis (texture LOD).
+    let step = 1.0 / fdx.abs().max(fdy.abs());
     let flat = if rs.flat { Some(fragment::color_to_u8(flat_color)) } else { None };
     let fs = &rs.fragment;
     let shade = |fb: &mut Framebuffer, px: i64, py: i64| {
@@ -227,6 +229,20 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
         }
         let t = (((px as f64 + 0.5 - fxa) * fdx + (py as f64 + 0.5 - fya) * fdy) / len2).clamp(0.0, 1.0);
         let z = wa.z + t * (wb.z - wa.z);
+        if let Some(stage) = &rs.texture {
+            // Texturing (3.8): the primary colour, then the units.
+            let primary = match flat {
+                Some(c) => Vec4::from_array(c.map(|v| v as f32 / 255.0)),
+                None => {
+                    let (ka, kb) = ((1.0 - t) * wa.q, t * wb.q);
+                    ((wa.color.as_dvec4() * ka + wb.color.as_dvec4() * kb) / (ka + kb)).as_vec4().clamp(Vec4::ZERO, Vec4::ONE)
+                }
+            };
+            let coords = super::texture::line_coords(stage, &wa.tex, wa.q, &wb.tex, wb.q, t, step);
+            let c = fragment::color_to_u8(stage.shade(&coords, primary));
+            fragment::shade_fragment(fs, fb, px as usize, py as usize, z, c);
+            return;
+        }
         let color = match flat {
             Some(c) => c,
             None => {

@@ -16,6 +16,7 @@ pub mod point;
 pub mod polygon_mode;
 pub mod raster;
 pub mod setup;
+pub mod texture;
 pub mod vertex;
 
 use crate::framebuffer::{Framebuffer, Rect};
@@ -52,6 +53,9 @@ pub struct RenderState {
     /// Two-sided lighting: back-facing polygons take their back colour.
     pub two_side: bool,
     pub fragment: FragmentState,
+    /// Texturing: the enabled units with complete textures; None when no
+    /// unit textures.
+    pub texture: Option<std::sync::Arc<texture::TextureStage>>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
