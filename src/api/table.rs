@@ -17,6 +17,7 @@ use super::types::*;
 use crate::gl::enums::*;
 use crate::gl::lighting::{is_color_param, light_model_param_count, light_param_count, material_param_count, read_params};
 use crate::gl::eval::read_points;
+use crate::gl::fog::fog_param_count;
 use crate::gl::polygon::{pack_stipple, unpack_stipple};
 use crate::gl::select::NameOp;
 use crate::gl::{get, lists::decode_names, Command, Context};
@@ -79,6 +80,21 @@ fn ints_out(v: &[f32], color: bool) -> Vec<GLint> {
 /// glMap's points, or the error its arguments give.
 fn map_points(c: &mut Context, r: Result<Vec<f32>, GLenum>) -> Option<Vec<f32>> {
     r.map_err(|e| c.set_error(e)).ok()
+}
+
+/// glFog*v's values: the colour maps integers like glColor, the rest
+/// convert plainly.
+unsafe fn read_fog<T: Component>(p: *const T, pname: GLenum) -> Option<[f32; 4]> {
+    if p.is_null() {
+        return None;
+    }
+    let n = fog_param_count(pname);
+    let mut v = [0.0f32; 4];
+    for (i, out) in v.iter_mut().enumerate().take(n) {
+        let x = std::ptr::read_unaligned(p.add(i));
+        *out = if pname == crate::gl::fog::GL_FOG_COLOR { x.normalized() } else { x.plain() };
+    }
+    Some(v)
 }
 
 /// GetProcAddress by C string.
@@ -361,10 +377,10 @@ super::entry_points! {
     list glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TENV_COLOR { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexEnv(target, pname, std::array::from_fn(|i| v.get(i).copied().unwrap_or(0.0))) } }
     list glTexEnvi(target: GLenum, pname: GLenum, param: GLint) { |c| { if pname == TENV_COLOR { c.set_error(GL_INVALID_ENUM); return None; } Command::TexEnv(target, pname, [param as f32, 0.0, 0.0, 0.0]) } }
     list glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| { let color = pname == TENV_COLOR; let v = slice(params, if color { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexEnv(target, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| if color { x.normalized() } else { x as f32 }))) } }
-    todo glFogf(pname: GLenum, param: GLfloat);
-    todo glFogfv(pname: GLenum, params: *const GLfloat);
-    todo glFogi(pname: GLenum, param: GLint);
-    todo glFogiv(pname: GLenum, params: *const GLint);
+    list glFogf(pname: GLenum, param: GLfloat) { |c| Command::Fog(scalar_param(c, fog_param_count(pname), pname)?, [param, 0.0, 0.0, 0.0]) }
+    list glFogfv(pname: GLenum, params: *const GLfloat) { |_c| Command::Fog(pname, read_fog(params, pname)?) }
+    list glFogi(pname: GLenum, param: GLint) { |c| Command::Fog(scalar_param(c, fog_param_count(pname), pname)?, [param as f32, 0.0, 0.0, 0.0]) }
+    list glFogiv(pname: GLenum, params: *const GLint) { |_c| Command::Fog(pname, read_fog(params, pname)?) }
     list glScissor(x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::Scissor(x, y, width, height) }
     list glAlphaFunc(func: GLenum, ref_: GLclampf) { |_c| Command::AlphaFunc(func, ref_) }
     list glStencilFunc(func: GLenum, ref_: GLint, mask: GLuint) { |_c| Command::StencilFunc(func, ref_, mask) }

@@ -79,7 +79,13 @@ impl Context {
             }
         };
         let tex = self.vertex_texcoords(obj);
-        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex };
+        let fog = match &self.derived.render.fog {
+            None => 0.0,
+            // The fog coordinate (3.10): the eye-space distance, taken as
+            // |z_eye| as the spec allows.
+            Some(f) => f.vertex_value((self.derived.modelview * obj).z.abs()),
+        };
+        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog };
         self.assemble(&mut asm, v);
         self.prim = Some(asm);
     }

@@ -77,6 +77,8 @@ pub enum Command {
     CallLists(Vec<u32>),
     ListBase(u32),
     ClipPlane(u32, [f64; 4]),
+    /// glFog(pname, values).
+    Fog(u32, [f32; 4]),
     PushAttrib(u32),
     PopAttrib,
     // Sections 2.6.2 and 3.5: edge flags and polygon modes.
@@ -249,6 +251,7 @@ impl Context {
             CallLists(names) => self.call_lists(names),
             ListBase(b) => self.lists.base = *b,
             ClipPlane(p, eq) => self.clip_plane(*p, *eq),
+            Fog(pname, v) => self.fog(*pname, *v),
             PushAttrib(mask) => self.push_attrib(*mask),
             PopAttrib => self.pop_attrib(),
             EdgeFlag(f) => self.current.edge_flag = *f,

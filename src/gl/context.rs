@@ -4,7 +4,7 @@
 use super::command::Command;
 use super::enums::*;
 use super::state::*;
-use super::{attrib, begin_end, clip_plane, enable, eval, lighting, lists, matrix, pixels, select, texture, validate};
+use super::{attrib, begin_end, clip_plane, enable, eval, fog, lighting, lists, matrix, pixels, select, texture, validate};
 use crate::framebuffer::{Config, Framebuffer, Present};
 
 pub struct Context {
@@ -29,6 +29,7 @@ pub struct Context {
     pub user_clip: clip_plane::UserClipState,
     /// glPushAttrib / glPushClientAttrib stacks.
     pub attrib: attrib::AttribStacks,
+    pub fog: fog::FogState,
     pub line: LineState,
     pub point: PointState,
     /// Capabilities glEnable stores whose rendering is not implemented yet.
@@ -74,6 +75,7 @@ impl Context {
             eval: Default::default(),
             user_clip: Default::default(),
             attrib: Default::default(),
+            fog: Default::default(),
             line: Default::default(),
             point: Default::default(),
             other_caps: Default::default(),

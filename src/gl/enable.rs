@@ -6,7 +6,7 @@ use super::context::Context;
 use super::enums::*;
 use super::lighting::MAX_LIGHTS;
 use super::clip_plane::MAX_CLIP_PLANES;
-use super::validate::{DIRTY_FRAGMENT, DIRTY_LIGHTING, DIRTY_RASTER, DIRTY_TRANSFORM};
+use super::validate::{DIRTY_FOG, DIRTY_FRAGMENT, DIRTY_LIGHTING, DIRTY_RASTER, DIRTY_TRANSFORM};
 use crate::render::fragment::CompareFunc;
 use std::collections::BTreeSet;
 
@@ -23,7 +23,6 @@ fn is_stored_cap(cap: u32) -> bool {
         GL_POINT_SMOOTH
             | GL_LINE_SMOOTH
             | GL_POLYGON_SMOOTH
-            | GL_FOG
             | GL_TEXTURE_GEN_S
             | GL_TEXTURE_GEN_T
             | GL_TEXTURE_GEN_R
@@ -68,6 +67,10 @@ impl Context {
             }
             GL_DITHER => self.color_buffer.dither = on,
             GL_AUTO_NORMAL => self.eval.auto_normal = on,
+            GL_FOG => {
+                self.fog.enabled = on;
+                self.dirty |= DIRTY_FOG;
+            }
             _ if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap) => {
                 self.user_clip.enabled[(cap - GL_CLIP_PLANE0) as usize] = on;
                 self.dirty |= DIRTY_TRANSFORM;
@@ -153,6 +156,7 @@ impl Context {
             GL_POLYGON_OFFSET_POINT => self.polygon.offset_point,
             GL_LIGHTING => self.lighting.enabled,
             GL_AUTO_NORMAL => self.eval.auto_normal,
+            GL_FOG => self.fog.enabled,
             _ if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap) => {
                 self.user_clip.enabled[(cap - GL_CLIP_PLANE0) as usize]
             }
@@ -235,5 +239,6 @@ impl Context {
             _ => return self.set_error(GL_INVALID_ENUM),
         };
         *slot = mode;
+        self.dirty |= DIRTY_FOG; // GL_FOG_HINT picks per-vertex or per-fragment fog
     }
 }

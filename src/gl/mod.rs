@@ -14,6 +14,7 @@ pub mod draw_pixels;
 pub mod enable;
 pub mod enums;
 pub mod eval;
+pub mod fog;
 pub mod fragment;
 pub mod get;
 pub mod lighting;

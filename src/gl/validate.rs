@@ -17,6 +17,7 @@ pub const DIRTY_RASTER: u32 = 1 << 3;
 pub const DIRTY_LIGHTING: u32 = 1 << 4;
 /// Texture objects, images, parameters, environments, enables, texgen.
 pub const DIRTY_TEXTURE: u32 = 1 << 12;
+pub const DIRTY_FOG: u32 = 1 << 13;
 pub const DIRTY_ALL: u32 = !0;
 
 /// State derived from GL state for the renderer.
@@ -24,6 +25,8 @@ pub const DIRTY_ALL: u32 = !0;
 pub struct Derived {
     /// Projection * modelview, in f32 for the vertex stage.
     pub mvp: Mat4,
+    /// The modelview matrix in f32, for eye-space fog distances.
+    pub modelview: Mat4,
     /// Lighting prepared for the vertex stage; None when lighting is off.
     pub lighting: Option<LightingSetup>,
     pub render: RenderState,
@@ -33,6 +36,7 @@ impl Default for Derived {
     fn default() -> Self {
         Derived {
             mvp: Mat4::IDENTITY,
+            modelview: Mat4::IDENTITY,
             lighting: None,
             render: RenderState {
                 viewport_scale: [0.0; 3],
@@ -42,6 +46,7 @@ impl Default for Derived {
                 front_ccw: true,
                 flat: false,
                 two_side: false,
+                fog: None,
                 polygon_mode: [GL_FILL; 2],
                 offset_fill: None,
                 polygon_stipple: None,
@@ -79,6 +84,7 @@ impl Context {
         if d & DIRTY_TRANSFORM != 0 {
             let m = *self.transform.projection.top() * *self.transform.modelview.top();
             self.derived.mvp = m.as_mat4();
+            self.derived.modelview = self.transform.modelview.top().as_mat4();
             let mut planes = crate::render::clip::FIXED_PLANES.to_vec();
             planes.extend(self.clip_space_planes(self.transform.projection.top()));
             self.derived.render.clip_planes = planes;
@@ -99,6 +105,11 @@ impl Context {
             self.validate_texture(d & DIRTY_TEXTURE != 0);
         }
         let fragment = (d & DIRTY_FRAGMENT != 0).then(|| self.fragment_state());
+        if d & DIRTY_FOG != 0 {
+            self.derived.render.fog = self.fog_params();
+            // The vertex stage needs eye coordinates for the fog distance.
+            self.derived.modelview = self.transform.modelview.top().as_mat4();
+        }
         let rs = &mut self.derived.render;
         if d & DIRTY_VIEWPORT != 0 {
             let v = &self.viewport;

@@ -229,18 +229,22 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
         }
         let t = (((px as f64 + 0.5 - fxa) * fdx + (py as f64 + 0.5 - fya) * fdy) / len2).clamp(0.0, 1.0);
         let z = wa.z + t * (wb.z - wa.z);
-        if let Some(stage) = &rs.texture {
-            // Texturing (3.8): the primary colour, then the units.
+        if rs.texture.is_some() || rs.fog.is_some() {
+            // Texturing (3.8): the primary colour, then the units; then
+            // fog (3.10) on the result, perspective-correct like colours.
+            let (ka, kb) = ((1.0 - t) * wa.q, t * wb.q);
             let primary = match flat {
                 Some(c) => Vec4::from_array(c.map(|v| v as f32 / 255.0)),
-                None => {
-                    let (ka, kb) = ((1.0 - t) * wa.q, t * wb.q);
-                    ((wa.color.as_dvec4() * ka + wb.color.as_dvec4() * kb) / (ka + kb)).as_vec4().clamp(Vec4::ZERO, Vec4::ONE)
-                }
+                None => ((wa.color.as_dvec4() * ka + wb.color.as_dvec4() * kb) / (ka + kb)).as_vec4().clamp(Vec4::ZERO, Vec4::ONE),
             };
-            let coords = super::texture::line_coords(stage, &wa.tex, wa.q, &wb.tex, wb.q, t, step);
-            let c = fragment::color_to_u8(stage.shade(&coords, primary));
-            fragment::shade_fragment(fs, fb, px as usize, py as usize, z, c);
+            let mut c = match &rs.texture {
+                Some(stage) => stage.shade(&super::texture::line_coords(stage, &wa.tex, wa.q, &wb.tex, wb.q, t, step), primary),
+                None => primary,
+            };
+            if let Some(f) = &rs.fog {
+                c = f.apply(c, ((wa.fog as f64 * ka + wb.fog as f64 * kb) / (ka + kb)) as f32);
+            }
+            fragment::shade_fragment(fs, fb, px as usize, py as usize, z, fragment::color_to_u8(c));
             return;
         }
         let color = match flat {

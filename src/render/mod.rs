@@ -8,6 +8,7 @@
 //! operations in the spec's order).
 
 pub mod clip;
+pub mod fog;
 pub mod fragment;
 pub mod light;
 pub mod line;
@@ -50,6 +51,8 @@ pub struct RenderState {
     /// Line and point state, for polygons drawn as lines or points.
     pub line: line::LineParams,
     pub point_size: f32,
+    /// Fog, when GL_FOG is on.
+    pub fog: Option<fog::Fog>,
     /// Two-sided lighting: back-facing polygons take their back colour.
     pub two_side: bool,
     pub fragment: FragmentState,

@@ -45,14 +45,16 @@ pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVer
     let wv = to_window(rs, v);
     let w = raster_size(size);
     let (x0, y0) = (first_pixel(wv.x, w), first_pixel(wv.y, w));
-    let color = match &rs.texture {
+    let primary = v.color.clamp(glam::Vec4::ZERO, glam::Vec4::ONE);
+    let mut c = match &rs.texture {
         // Texturing (3.8): every fragment takes the vertex's coordinates.
-        Some(stage) => {
-            let primary = v.color.clamp(glam::Vec4::ZERO, glam::Vec4::ONE);
-            fragment::color_to_u8(stage.shade(&super::texture::point_coords(stage, &v.tex), primary))
-        }
-        None => fragment::color_to_u8(v.color),
+        Some(stage) => stage.shade(&super::texture::point_coords(stage, &v.tex), primary),
+        None => primary,
     };
+    if let Some(f) = &rs.fog {
+        c = f.apply(c, v.fog);
+    }
+    let color = fragment::color_to_u8(c);
     let xs = x0.max(r.x0 as i64)..(x0 + w).min(r.x1 as i64);
     for y in y0.max(r.y0 as i64)..(y0 + w).min(r.y1 as i64) {
         for x in xs.clone() {

@@ -29,6 +29,7 @@ pub struct WindowVertex {
     pub color: Vec4,
     pub back_color: Vec4,
     pub tex: [Vec4; super::texture::MAX_UNITS],
+    pub fog: f32,
 }
 
 #[inline]
@@ -44,6 +45,7 @@ pub fn to_window(rs: &RenderState, v: &ClipVertex) -> WindowVertex {
         color: v.color,
         back_color: v.back_color,
         tex: v.tex,
+        fog: v.fog,
     }
 }
 
@@ -73,6 +75,9 @@ pub struct TriangleSetup {
     /// Texturing: planes of s/w, t/w, r/w, q/w per unit (section 3.8.7's
     /// perspective-correct coordinates are their ratios to q/w).
     pub tex: Option<Box<TexPlanes>>,
+    /// Fog: the plane of the fog value (times 1/w when perspective) and
+    /// the fog parameters.
+    pub fog: Option<(Plane, super::fog::Fog)>,
 }
 
 /// Texture coordinate planes of a triangle and the stage that samples.
@@ -150,8 +155,10 @@ fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], f
         }
         Box::new(TexPlanes { stage: stage.clone(), planes })
     });
+    let fog = rs.fog.map(|f| (plane([0, 1, 2].map(|i| v[i].fog as f64 * if perspective { q[i] } else { 1.0 })), f));
     TriangleSetup {
         tex,
+        fog,
         x0: x[0],
         y0: y[0],
         z,

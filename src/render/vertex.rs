@@ -18,6 +18,8 @@ pub struct ClipVertex {
     /// Texture coordinates (s, t, r, q) per unit, after texgen and the
     /// texture matrix.
     pub tex: [Vec4; super::texture::MAX_UNITS],
+    /// Fog: the fog coordinate, or f itself when fog is per vertex.
+    pub fog: f32,
 }
 
 impl ClipVertex {
@@ -31,6 +33,7 @@ impl ClipVertex {
             back_color: a.back_color + (b.back_color - a.back_color) * t,
             edge: a.edge,
             tex: std::array::from_fn(|u| a.tex[u] + (b.tex[u] - a.tex[u]) * t),
+            fog: a.fog + (b.fog - a.fog) * t,
         }
     }
 }

@@ -167,6 +167,15 @@ fn eval(p: &Plane, cx: f64, cy: f64) -> f64 {
 /// The colour of a triangle's fragment at (cx, cy) relative to its origin.
 #[inline(always)]
 fn triangle_color(t: &TriangleSetup, cx: f64, cy: f64) -> [u8; 4] {
+    if let Some((plane, fog)) = &t.fog {
+        // Fog (3.10) after texturing, on the unconverted colour.
+        let c = match &t.tex {
+            Some(tp) => textured_color(t, tp, cx, cy),
+            None => primary_color(t, cx, cy),
+        };
+        let w = if t.perspective { 1.0 / eval(&t.q, cx, cy) } else { 1.0 };
+        return color_to_u8(fog.apply(c, (eval(plane, cx, cy) * w) as f32));
+    }
     if let Some(tp) = &t.tex {
         return color_to_u8(textured_color(t, tp, cx, cy));
     }
@@ -183,19 +192,25 @@ fn triangle_color(t: &TriangleSetup, cx: f64, cy: f64) -> [u8; 4] {
     }
 }
 
-/// Texturing (section 3.8) of a triangle's fragment at (cx, cy): the
-/// primary colour, then each unit's sample and environment. Coordinates
-/// are the perspective-correct ratios S/Q of the planes, and their screen
-/// derivatives the exact ones of those ratios, (S' - s Q') / Q.
-fn textured_color(t: &TriangleSetup, tp: &super::setup::TexPlanes, cx: f64, cy: f64) -> Vec4 {
-    let primary = match t.flat {
+/// The interpolated (or flat) primary colour, clamped, as floats.
+#[inline]
+fn primary_color(t: &TriangleSetup, cx: f64, cy: f64) -> Vec4 {
+    match t.flat {
         Some(c) => Vec4::from_array(c.map(|v| v as f32 / 255.0)),
         None => {
             let w = if t.perspective { 1.0 / eval(&t.q, cx, cy) } else { 1.0 };
             let c: [f32; 4] = std::array::from_fn(|ch| (eval(&t.color[ch], cx, cy) * w) as f32);
             Vec4::from_array(c).clamp(Vec4::ZERO, Vec4::ONE)
         }
-    };
+    }
+}
+
+/// Texturing (section 3.8) of a triangle's fragment at (cx, cy): the
+/// primary colour, then each unit's sample and environment. Coordinates
+/// are the perspective-correct ratios S/Q of the planes, and their screen
+/// derivatives the exact ones of those ratios, (S' - s Q') / Q.
+fn textured_color(t: &TriangleSetup, tp: &super::setup::TexPlanes, cx: f64, cy: f64) -> Vec4 {
+    let primary = primary_color(t, cx, cy);
     let mut coords = [super::texture::Coord::default(); super::texture::MAX_UNITS];
     for &u in &tp.stage.active {
         let p = &tp.planes[u];

@@ -1,0 +1,66 @@
+//! Fog (GL 1.5 section 3.10): after texturing, each fragment's colour is
+//! blended towards the fog colour by f, where f comes from the fog
+//! coordinate c (the eye-space distance |z_eye|, or glFogCoord's value):
+//! LINEAR (e - c) / (e - s), EXP exp(-d c), EXP2 exp(-(d c)^2), clamped to
+//! [0, 1]. Alpha is unchanged.
+//!
+//! With GL_FOG_HINT = GL_FASTEST f is computed per vertex and interpolated
+//! (the spec allows it); otherwise c is interpolated and f computed for
+//! each fragment, which is exact.
+
+use glam::Vec4;
+
+pub const GL_EXP: u32 = 0x0800;
+pub const GL_EXP2: u32 = 0x0801;
+pub const GL_LINEAR: u32 = 0x2601;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fog {
+    pub mode: u32,
+    pub density: f32,
+    pub start: f32,
+    pub end: f32,
+    pub color: Vec4,
+    /// f per fragment (exact) or per vertex (GL_FASTEST).
+    pub per_fragment: bool,
+}
+
+impl Fog {
+    /// f for fog coordinate c.
+    #[inline]
+    pub fn factor(&self, c: f32) -> f32 {
+        let f = match self.mode {
+            GL_LINEAR => {
+                if self.end == self.start {
+                    1.0
+                } else {
+                    (self.end - c) / (self.end - self.start)
+                }
+            }
+            GL_EXP2 => {
+                let dc = self.density * c;
+                (-(dc * dc)).exp()
+            }
+            _ => (-self.density * c).exp(),
+        };
+        f.clamp(0.0, 1.0)
+    }
+
+    /// The value a vertex carries for interpolation: c, or f per vertex.
+    #[inline]
+    pub fn vertex_value(&self, c: f32) -> f32 {
+        if self.per_fragment {
+            c
+        } else {
+            self.factor(c)
+        }
+    }
+
+    /// Fogs a colour given the interpolated vertex value.
+    #[inline]
+    pub fn apply(&self, color: Vec4, value: f32) -> Vec4 {
+        let f = if self.per_fragment { self.factor(value) } else { value.clamp(0.0, 1.0) };
+        let rgb = color.truncate() * f + self.color.truncate() * (1.0 - f);
+        rgb.extend(color.w)
+    }
+}
