@@ -117,3 +117,32 @@ fn fog_errors_and_queries() {
     unsafe { c.get_into(GL_FOG_MODE, m.as_mut_ptr(), softgl::gl::get::Value::as_i32) };
     assert_eq!(m[0] as u32, GL_EXP, "the initial mode");
 }
+
+/// GL 1.4 point parameters: distance attenuation and the size clamp.
+#[test]
+fn point_size_attenuation() {
+    let count = |c: &Context| c.fb.color.iter().filter(|p| p[0] != 0).count();
+    let draw = |att: [f32; 3], min: f32, max: f32| {
+        let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+        c.fb.resize(32, 32).unwrap();
+        c.surface_resized(32, 32);
+        c.execute(&Command::MatrixMode(GL_PROJECTION));
+        c.execute(&Command::Ortho([-1.0, 1.0, -1.0, 1.0, 0.0, 100.0]));
+        c.execute(&Command::MatrixMode(GL_MODELVIEW));
+        c.execute(&Command::Translate([0.0, 0.0, -4.0]));
+        c.execute(&Command::PointSize(8.0));
+        c.execute(&Command::PointParameter(0x8129, att));
+        c.execute(&Command::PointParameter(0x8126, [min, 0.0, 0.0]));
+        c.execute(&Command::PointParameter(0x8127, [max, 0.0, 0.0]));
+        c.execute(&Command::Begin(GL_POINTS));
+        c.execute(&Command::Vertex([0.0, 0.0, 0.0, 1.0]));
+        c.execute(&Command::End);
+        assert_eq!(c.take_error(), GL_NO_ERROR);
+        count(&c)
+    };
+    assert_eq!(draw([1.0, 0.0, 0.0], 0.0, 64.0), 64, "no attenuation: 8x8");
+    // d = 4: 1 / (0 + 0 + 1/4 * 16) = 1/4 -> sqrt = 1/2 -> size 4.
+    assert_eq!(draw([0.0, 0.0, 0.25], 0.0, 64.0), 16);
+    assert_eq!(draw([0.0, 0.0, 0.25], 6.0, 64.0), 36, "clamped up to the minimum");
+    assert_eq!(draw([1.0, 0.0, 0.0], 0.0, 3.0), 9, "clamped down to the maximum");
+}

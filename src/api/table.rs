@@ -97,6 +97,19 @@ unsafe fn read_fog<T: Component>(p: *const T, pname: GLenum) -> Option<[f32; 4]>
     Some(v)
 }
 
+/// glPointParameter*v's values: 3 for the attenuation, else 1.
+unsafe fn point_params<T: Component>(p: *const T, pname: GLenum) -> Option<[f32; 3]> {
+    if p.is_null() {
+        return None;
+    }
+    let n = if pname == 0x8129 { 3 } else { 1 };
+    let mut v = [0.0f32; 3];
+    for (i, out) in v.iter_mut().enumerate().take(n) {
+        *out = std::ptr::read_unaligned(p.add(i)).plain();
+    }
+    Some(v)
+}
+
 /// GetProcAddress by C string.
 unsafe fn proc_from_name(name: *const c_char) -> GLproc {
     if name.is_null() {
@@ -569,10 +582,10 @@ super::entry_points! {
     todo glFogCoordPointer(type_: GLenum, stride: GLsizei, pointer: *const c_void);
     todo glMultiDrawArrays(mode: GLenum, first: *const GLint, count: *const GLsizei, drawcount: GLsizei);
     todo glMultiDrawElements(mode: GLenum, count: *const GLsizei, type_: GLenum, indices: *const *const c_void, drawcount: GLsizei);
-    todo glPointParameterf(pname: GLenum, param: GLfloat);
-    todo glPointParameterfv(pname: GLenum, params: *const GLfloat);
-    todo glPointParameteri(pname: GLenum, param: GLint);
-    todo glPointParameteriv(pname: GLenum, params: *const GLint);
+    list glPointParameterf(pname: GLenum, param: GLfloat) { |c| Command::PointParameter(scalar_param(c, (pname != 0x8129) as usize, pname)?, [param, 0.0, 0.0]) }
+    list glPointParameterfv(pname: GLenum, params: *const GLfloat) { |_c| Command::PointParameter(pname, point_params(params, pname)?) }
+    list glPointParameteri(pname: GLenum, param: GLint) { |c| Command::PointParameter(scalar_param(c, (pname != 0x8129) as usize, pname)?, [param as f32, 0.0, 0.0]) }
+    list glPointParameteriv(pname: GLenum, params: *const GLint) { |_c| Command::PointParameter(pname, point_params(params, pname)?) }
     todo glSecondaryColor3b(red: GLbyte, green: GLbyte, blue: GLbyte);
     todo glSecondaryColor3bv(v: *const GLbyte);
     todo glSecondaryColor3d(red: GLdouble, green: GLdouble, blue: GLdouble);

@@ -26,6 +26,8 @@ pub struct Assembly {
     count: usize,
     /// The line stipple counter s (section 3.4.3).
     stipple: u32,
+    /// The current point's size after attenuation (GL_POINTS).
+    point_size: f32,
 }
 
 impl Context {
@@ -35,7 +37,7 @@ impl Context {
         }
         // Begin inside Begin is caught by the Begin/End rule (execute).
         self.validate();
-        self.prim = Some(Assembly { mode, verts: Vec::with_capacity(4), count: 0, stipple: 0 });
+        self.prim = Some(Assembly { mode, verts: Vec::with_capacity(4), count: 0, stipple: 0, point_size: 1.0 });
     }
 
     pub fn end(&mut self) {
@@ -86,8 +88,27 @@ impl Context {
             Some(f) => f.vertex_value((self.derived.modelview * obj).z.abs()),
         };
         let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog };
+        if asm.mode == GL_POINTS {
+            asm.point_size = self.derived_point_size(obj);
+        }
         self.assemble(&mut asm, v);
         self.prim = Some(asm);
+    }
+
+    /// The point size after GL 1.4's distance attenuation and clamping
+    /// (section 3.3). Fading applies only with multisampling, which softgl
+    /// does not have.
+    fn derived_point_size(&self, obj: Vec4) -> f32 {
+        let p = &self.point;
+        let [a, b, c] = p.attenuation;
+        let size = if [a, b, c] == [1.0, 0.0, 0.0] {
+            p.size
+        } else {
+            let d = (self.transform.modelview.top().as_mat4() * obj).truncate().length();
+            let k = a + b * d + c * d * d;
+            if k > 0.0 { p.size * (1.0 / k).sqrt() } else { p.size }
+        };
+        size.clamp(p.size_min, p.size_max.max(p.size_min))
     }
 
     fn assemble(&mut self, asm: &mut Assembly, v: ClipVertex) {
@@ -157,7 +178,7 @@ impl Context {
                 self.select_primitive(&[&v], select::GL_POINT_TOKEN, false);
             }
             GL_POINTS => {
-                render::point::draw_point(&self.derived.render, &mut self.fb, self.point.size, &v);
+                render::point::draw_point(&self.derived.render, &mut self.fb, asm.point_size, &v);
             }
             GL_LINES => {
                 if n % 2 == 1 {

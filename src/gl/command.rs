@@ -77,6 +77,8 @@ pub enum Command {
     CallLists(Vec<u32>),
     ListBase(u32),
     ClipPlane(u32, [f64; 4]),
+    /// glPointParameter(pname, up to 3 values).
+    PointParameter(u32, [f32; 3]),
     /// glFog(pname, values).
     Fog(u32, [f32; 4]),
     PushAttrib(u32),
@@ -251,6 +253,7 @@ impl Context {
             CallLists(names) => self.call_lists(names),
             ListBase(b) => self.lists.base = *b,
             ClipPlane(p, eq) => self.clip_plane(*p, *eq),
+            PointParameter(pname, v) => self.point_parameter(*pname, *v),
             Fog(pname, v) => self.fog(*pname, *v),
             PushAttrib(mask) => self.push_attrib(*mask),
             PopAttrib => self.pop_attrib(),

@@ -222,6 +222,19 @@ impl Context {
         self.dirty |= DIRTY_RASTER;
     }
 
+    /// glPointParameter (GL 1.4, section 3.3).
+    pub fn point_parameter(&mut self, pname: u32, v: [f32; 3]) {
+        let p = &mut self.point;
+        match pname {
+            0x8126 | 0x8127 | 0x8128 if v[0] < 0.0 => return self.set_error(GL_INVALID_VALUE),
+            0x8126 /* GL_POINT_SIZE_MIN */ => p.size_min = v[0],
+            0x8127 /* GL_POINT_SIZE_MAX */ => p.size_max = v[0],
+            0x8128 /* GL_POINT_FADE_THRESHOLD_SIZE */ => p.fade_threshold = v[0],
+            0x8129 /* GL_POINT_DISTANCE_ATTENUATION */ => p.attenuation = v,
+            _ => return self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
     /// glHint (section 5.6).
     pub fn hint(&mut self, target: u32, mode: u32) {
         if !matches!(mode, GL_FASTEST | GL_NICEST | GL_DONT_CARE) {

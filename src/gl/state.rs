@@ -232,10 +232,16 @@ impl Default for LineState {
 #[derive(Clone, Debug)]
 pub struct PointState {
     pub size: f32,
+    /// GL 1.4 point parameters: derived sizes are clamped to [min, max].
+    pub size_min: f32,
+    pub size_max: f32,
+    pub fade_threshold: f32,
+    /// Distance attenuation (a, b, c): size * sqrt(1 / (a + b d + c d^2)).
+    pub attenuation: [f32; 3],
 }
 
 impl Default for PointState {
     fn default() -> Self {
-        PointState { size: 1.0 }
+        PointState { size: 1.0, size_min: 0.0, size_max: 64.0, fade_threshold: 1.0, attenuation: [1.0, 0.0, 0.0] }
     }
 }
