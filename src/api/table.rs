@@ -764,7 +764,7 @@ super::entry_points! {
     free wglGetCurrentContext() -> *mut c_void { crate::winsys::wgl::get_current_context() }
     free wglGetCurrentDC() -> *mut c_void { crate::winsys::wgl::get_current_dc() }
     free["checks both contexts and returns TRUE, but display lists are not shared yet"] wglShareLists(hglrc1: *mut c_void, hglrc2: *mut c_void) -> c_int { crate::winsys::wgl::share_lists(hglrc1, hglrc2) }
-    free["copies the current, point, line, polygon, lighting, depth, stencil, viewport, colour-buffer, hint, scissor and list-base groups; not transform, fog, texture, pixel-mode, evaluator or accumulation state"] wglCopyContext(hglrcSrc: *mut c_void, hglrcDst: *mut c_void, mask: u32) -> c_int { crate::winsys::wgl::copy_context(hglrcSrc, hglrcDst, mask) }
+    free["copies the groups glPushAttrib saves (see glPushAttrib)"] wglCopyContext(hglrcSrc: *mut c_void, hglrcDst: *mut c_void, mask: u32) -> c_int { crate::winsys::wgl::copy_context(hglrcSrc, hglrcDst, mask) }
     free wglGetProcAddress(lpszProc: *const c_char) -> GLproc { proc_from_name(lpszProc) }
     free wglChoosePixelFormat(hdc: *mut c_void, ppfd: *const crate::winsys::wgl::PixelFormatDescriptor) -> c_int { crate::winsys::wgl::choose_pixel_format(hdc, ppfd) }
     free wglDescribePixelFormat(hdc: *mut c_void, iPixelFormat: c_int, nBytes: u32, ppfd: *mut crate::winsys::wgl::PixelFormatDescriptor) -> c_int { crate::winsys::wgl::describe_pixel_format(hdc, iPixelFormat, nBytes, ppfd) }

@@ -85,8 +85,21 @@ impl Context {
         if self.attrib.server.len() >= MAX_ATTRIB_STACK_DEPTH {
             return self.set_error(GL_STACK_OVERFLOW);
         }
+        let s = self.save_attrib(mask);
+        self.attrib.server.push(s);
+    }
+
+    pub fn pop_attrib(&mut self) {
+        match self.attrib.server.pop() {
+            Some(s) => self.restore_attrib(s),
+            None => self.set_error(GL_STACK_UNDERFLOW),
+        }
+    }
+
+    /// A copy of the groups in `mask` (glPushAttrib, wglCopyContext).
+    pub fn save_attrib(&self, mask: u32) -> Saved {
         let has = |bit: u32| mask & bit != 0;
-        let s = Saved {
+        Saved {
             mask,
             current: has(GL_CURRENT_BIT).then(|| self.current.clone()),
             point: has(GL_POINT_BIT).then(|| self.point.clone()),
@@ -106,14 +119,11 @@ impl Context {
             eval: has(GL_EVAL_BIT).then(|| self.eval.clone()),
             list_base: has(GL_LIST_BIT).then_some(self.lists.base),
             scissor: has(GL_SCISSOR_BIT).then(|| self.scissor.clone()),
-        };
-        self.attrib.server.push(s);
+        }
     }
 
-    pub fn pop_attrib(&mut self) {
-        let Some(s) = self.attrib.server.pop() else {
-            return self.set_error(GL_STACK_UNDERFLOW);
-        };
+    /// Puts saved groups back (glPopAttrib, wglCopyContext).
+    pub fn restore_attrib(&mut self, s: Saved) {
         if let Some(v) = s.current {
             self.current = v;
         }

@@ -512,11 +512,9 @@ pub fn share_lists(a: Hglrc, b: Hglrc) -> Bool {
     (context(a).is_some() && context(b).is_some()) as Bool
 }
 
-/// wglCopyContext: copies the attribute groups of `mask` that softgl keeps
-/// per group (current, point, line, polygon, lighting, depth, stencil,
-/// viewport, colour buffer, hint, scissor, list base, and the enables
-/// that have no group of their own yet). The destination must not be
-/// current in any thread.
+/// wglCopyContext: copies the attribute groups of `mask`, as glPushAttrib
+/// saves them (gl::attrib). The destination must not be current in any
+/// thread.
 pub unsafe fn copy_context(src: Hglrc, dst: Hglrc, mask: u32) -> Bool {
     let (Some(s), Some(d)) = (context(src), context(dst)) else { return 0 };
     if s == d {
@@ -525,61 +523,9 @@ pub unsafe fn copy_context(src: Hglrc, dst: Hglrc, mask: u32) -> Bool {
     if (*d).bound.load(Ordering::Acquire) {
         return 0;
     }
-    let (s, d) = (&(*s).gl, &mut (*d).gl);
-    use crate::gl::enums::{GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT, GL_STENCIL_BUFFER_BIT};
-    // glPushAttrib's group bits (GL 1.5 table 6.3).
-    const GL_CURRENT_BIT: u32 = 0x1;
-    const GL_POINT_BIT: u32 = 0x2;
-    const GL_LINE_BIT: u32 = 0x4;
-    const GL_POLYGON_BIT: u32 = 0x8;
-    const GL_LIGHTING_BIT: u32 = 0x40;
-    const GL_VIEWPORT_BIT: u32 = 0x800;
-    const GL_ENABLE_BIT: u32 = 0x2000;
-    const GL_HINT_BIT: u32 = 0x8000;
-    const GL_LIST_BIT: u32 = 0x20000;
-    const GL_SCISSOR_BIT: u32 = 0x80000;
-    let has = |bit: u32| mask & bit != 0;
-    if has(GL_CURRENT_BIT) {
-        d.current = s.current.clone();
-    }
-    if has(GL_POINT_BIT) {
-        d.point = s.point.clone();
-    }
-    if has(GL_LINE_BIT) {
-        d.line = s.line.clone();
-    }
-    if has(GL_POLYGON_BIT) {
-        d.polygon = s.polygon.clone();
-    }
-    if has(GL_LIGHTING_BIT) {
-        d.lighting = s.lighting.clone();
-        d.shade_model = s.shade_model;
-    }
-    if has(GL_DEPTH_BUFFER_BIT) {
-        d.depth = s.depth.clone();
-    }
-    if has(GL_STENCIL_BUFFER_BIT) {
-        d.stencil = s.stencil.clone();
-    }
-    if has(GL_VIEWPORT_BIT) {
-        d.viewport = s.viewport.clone();
-    }
-    if has(GL_COLOR_BUFFER_BIT) {
-        d.color_buffer = s.color_buffer.clone();
-    }
-    if has(GL_HINT_BIT) {
-        d.hints = s.hints.clone();
-    }
-    if has(GL_SCISSOR_BIT) {
-        d.scissor = s.scissor.clone();
-    }
-    if has(GL_LIST_BIT) {
-        d.lists.base = s.lists.base;
-    }
-    if has(GL_ENABLE_BIT) {
-        d.other_caps = s.other_caps.clone();
-    }
-    d.dirty |= crate::gl::validate::DIRTY_ALL;
+    // The same groups glPushAttrib saves.
+    let saved = (*s).gl.save_attrib(mask);
+    (*d).gl.restore_attrib(saved);
     1
 }
 

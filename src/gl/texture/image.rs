@@ -250,15 +250,10 @@ pub unsafe fn unpack(modes: &PixelModes, w: usize, h: usize, d: usize, format: u
 pub fn to_texel(ifmt: &InternalFormat, p: [f32; 4]) -> [f32; 4] {
     let c = p.map(|v| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) });
     let q = |v: f32| if ifmt.quantize_8() { (v * 255.0).round() / 255.0 } else { v };
-    let [r, g, b, a] = c.map(q);
     match ifmt.base {
-        Base::Alpha => [0.0, 0.0, 0.0, a],
-        Base::Luminance => [r, r, r, 1.0],
-        Base::LuminanceAlpha => [r, r, r, a],
-        Base::Intensity => [r, r, r, r],
-        Base::Rgb => [r, g, b, 1.0],
-        Base::Rgba => [r, g, b, a],
-        Base::Depth => [c[0], c[0], c[0], 1.0],
+        // Depth keeps its full precision.
+        Base::Depth => ifmt.base.expand(c),
+        base => base.expand(c.map(q)),
     }
 }
 

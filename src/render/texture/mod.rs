@@ -61,6 +61,22 @@ pub enum Base {
     Depth,
 }
 
+impl Base {
+    /// An RGBA value as a texel of this base format (table 3.15): the
+    /// components the format keeps, the others at their defaults.
+    #[inline]
+    pub fn expand(self, [r, g, b, a]: [f32; 4]) -> [f32; 4] {
+        match self {
+            Base::Alpha => [0.0, 0.0, 0.0, a],
+            Base::Luminance | Base::Depth => [r, r, r, 1.0],
+            Base::LuminanceAlpha => [r, r, r, a],
+            Base::Intensity => [r, r, r, r],
+            Base::Rgb => [r, g, b, 1.0],
+            Base::Rgba => [r, g, b, a],
+        }
+    }
+}
+
 /// One image (one level of one face), border included.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Image {
@@ -400,16 +416,7 @@ impl UnitSampler {
 
     /// The border colour as a texel of this texture's format.
     fn border_texel(&self) -> [f32; 4] {
-        let [r, g, b, a] = self.params.border_color;
-        match self.base {
-            Base::Alpha => [0.0, 0.0, 0.0, a],
-            Base::Luminance => [r, r, r, 1.0],
-            Base::LuminanceAlpha => [r, r, r, a],
-            Base::Intensity => [r, r, r, r],
-            Base::Rgb => [r, g, b, 1.0],
-            Base::Rgba => [r, g, b, a],
-            Base::Depth => [r, r, r, 1.0],
-        }
+        self.base.expand(self.params.border_color)
     }
 
     /// Depth textures (3.8.14 of GL 1.4): the comparison of r against the
