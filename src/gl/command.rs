@@ -15,6 +15,16 @@ pub enum Command {
     Vertex([f32; 4]),
     Color([f32; 4]),
     Normal([f32; 3]),
+    EdgeFlag(bool),
+    /// glIndex: stored, no effect in RGBA mode.
+    Index(f32),
+    FogCoord(f32),
+    /// glSecondaryColor3: RGB and alpha 1.
+    SecondaryColor([f32; 4]),
+    /// Texture coordinates of a unit (0-based): the hook vertex arrays feed
+    /// and compile into lists (gl::arrays); glTexCoord/glMultiTexCoord
+    /// should become this or replace it.
+    MultiTexCoord(u32, [f32; 4]),
     // Section 2.14: lighting. Parameters padded to 4 values.
     Light(u32, u32, [f32; 4]),
     LightModel(u32, [f32; 4]),
@@ -72,6 +82,9 @@ pub enum Command {
     /// glCallLists: names before the list base is added (added when run).
     CallLists(Vec<u32>),
     ListBase(u32),
+    // Section 4.1.6: occlusion queries (compiled into lists).
+    BeginQuery(u32, u32),
+    EndQuery(u32),
 }
 
 impl Command {
@@ -82,6 +95,11 @@ impl Command {
             Command::Vertex(_)
                 | Command::Color(_)
                 | Command::Normal(_)
+                | Command::EdgeFlag(_)
+                | Command::Index(_)
+                | Command::FogCoord(_)
+                | Command::SecondaryColor(_)
+                | Command::MultiTexCoord(..)
                 | Command::Material(..)
                 | Command::End
                 | Command::CallList(_)
@@ -107,6 +125,11 @@ impl Context {
                 self.apply_color_material();
             }
             Normal(n) => self.current.normal = *n,
+            EdgeFlag(f) => self.current.edge_flag = *f,
+            Index(i) => self.current.index = *i,
+            FogCoord(f) => self.current.fog_coord = *f,
+            SecondaryColor(c) => self.current.secondary_color = *c,
+            MultiTexCoord(unit, t) => self.set_tex_coord(*unit as usize, *t),
             Light(l, pname, v) => self.light(*l, *pname, *v),
             LightModel(pname, v) => self.light_model(*pname, *v),
             Material(face, pname, v) => self.material(*face, *pname, *v),
@@ -184,6 +207,8 @@ impl Context {
             CallList(n) => self.call_list(*n),
             CallLists(names) => self.call_lists(names),
             ListBase(b) => self.lists.base = *b,
+            BeginQuery(target, id) => self.begin_query(*target, *id),
+            EndQuery(target) => self.end_query(*target),
         }
     }
 }

@@ -4,7 +4,7 @@
 use super::command::Command;
 use super::enums::*;
 use super::state::*;
-use super::{begin_end, enable, lighting, lists, matrix, pixels, validate};
+use super::{arrays, begin_end, buffers, enable, lighting, lists, matrix, pixels, queries, validate};
 use crate::framebuffer::{Config, Framebuffer, Present};
 
 pub struct Context {
@@ -29,6 +29,12 @@ pub struct Context {
     pub prim: Option<begin_end::Assembly>,
     pub lists: lists::Lists,
     pub pixel_store: pixels::PixelStore,
+    /// Vertex arrays (client state, GL_CLIENT_VERTEX_ARRAY_BIT).
+    pub arrays: arrays::ArrayState,
+    /// Buffer objects and their bindings.
+    pub buffers: buffers::Buffers,
+    /// Occlusion query objects.
+    pub queries: queries::Queries,
     /// The framebuffer this context draws into and reads from.
     pub fb: Framebuffer,
     /// Where glFlush/glFinish deliver the image (set by the window system).
@@ -62,6 +68,9 @@ impl Context {
             prim: None,
             lists: Default::default(),
             pixel_store: Default::default(),
+            arrays: Default::default(),
+            buffers: Default::default(),
+            queries: Default::default(),
             fb: Framebuffer::new(config),
             surface: None,
             dirty: validate::DIRTY_ALL,

@@ -116,6 +116,9 @@ impl Context {
 
     /// glIsEnabled; None for an invalid capability.
     pub fn is_enabled(&self, cap: u32) -> Option<bool> {
+        if let Some(on) = self.client_state_enabled(cap) {
+            return Some(on);
+        }
         Some(match cap {
             GL_DEPTH_TEST => self.depth.test,
             GL_SCISSOR_TEST => self.scissor.test,

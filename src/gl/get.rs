@@ -71,6 +71,9 @@ impl Context {
         if let Some(on) = self.is_enabled(pname) {
             return Some(Value::Bools(vec![on]));
         }
+        if let Some(v) = self.get_array_value(pname) {
+            return Some(v);
+        }
         let fb = &self.fb.config;
         let has = |bits: u8| bits as i64;
         match pname {

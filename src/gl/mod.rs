@@ -3,7 +3,9 @@
 //! only store state and mark dirty bits; [`validate`] derives what the
 //! renderer needs at the next draw.
 
+pub mod arrays;
 pub mod begin_end;
+pub mod buffers;
 pub mod clear;
 pub mod command;
 pub mod context;
@@ -15,6 +17,7 @@ pub mod lighting;
 pub mod lists;
 pub mod matrix;
 pub mod pixels;
+pub mod queries;
 pub mod state;
 pub mod validate;
 

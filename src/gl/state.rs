@@ -170,11 +170,29 @@ impl Default for HintState {
 pub struct CurrentState {
     pub color: [f32; 4],
     pub normal: [f32; 3],
+    /// Per texture unit (see gl::arrays on the texture coordinate hook).
+    pub tex_coord: [[f32; 4]; super::arrays::MAX_TEXTURE_UNITS],
+    /// Stored for the colour sum (section 3.9): RGB as given, alpha 1.
+    pub secondary_color: [f32; 4],
+    /// Stored for fog (section 3.10).
+    pub fog_coord: f32,
+    /// Colour index: accepted and stored; no effect in RGBA mode.
+    pub index: f32,
+    /// Stored; polygon modes (section 3.5.4) will use it.
+    pub edge_flag: bool,
 }
 
 impl Default for CurrentState {
     fn default() -> Self {
-        CurrentState { color: [1.0; 4], normal: [0.0, 0.0, 1.0] }
+        CurrentState {
+            color: [1.0; 4],
+            normal: [0.0, 0.0, 1.0],
+            tex_coord: [[0.0, 0.0, 0.0, 1.0]; super::arrays::MAX_TEXTURE_UNITS],
+            secondary_color: [0.0, 0.0, 0.0, 1.0],
+            fog_coord: 0.0,
+            index: 1.0,
+            edge_flag: true,
+        }
     }
 }
 
