@@ -311,7 +311,7 @@ fn attribute_arrays_set_current_values() {
         for ty in [GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE] {
             let (bytes, want) = color_data(ty, &[0.25, 0.0, 0.9]);
             // Padded stride: the element is at index 1.
-            let mut data = vec![0u8; 64];
+            let mut data = [0u8; 64];
             data[32..32 + bytes.len()].copy_from_slice(&bytes);
             glNormalPointer(ty, 32, data.as_ptr() as *const c_void);
             glEnableClientState(GL_NORMAL_ARRAY);
@@ -398,7 +398,7 @@ fn attribute_arrays_set_current_values() {
                         GL_SHORT => pack(&[row.iter().map(|&c| c as i16).collect::<Vec<_>>()], 0),
                         GL_INT => pack(&[row.iter().map(|&c| c as i32).collect::<Vec<_>>()], 0),
                         GL_FLOAT => pack(&[row.iter().map(|&c| c as f32).collect::<Vec<_>>()], 0),
-                        _ => pack(&[row.clone()], 0),
+                        _ => pack(std::slice::from_ref(&row), 0),
                     };
                     glTexCoordPointer(size as i32, ty, 0, bytes.as_ptr() as *const c_void);
                     glEnableClientState(GL_TEXTURE_COORD_ARRAY);
@@ -417,7 +417,8 @@ fn attribute_arrays_set_current_values() {
 
 /// Table 2.5, written out independently: (format, texcoord size, colour
 /// (size, is ubyte), normal, vertex size).
-const FORMATS: [(u32, usize, Option<(usize, bool)>, bool, usize); 14] = [
+type Format = (u32, usize, Option<(usize, bool)>, bool, usize);
+const FORMATS: [Format; 14] = [
     (0x2A20, 0, None, false, 2),                  // V2F
     (0x2A21, 0, None, false, 3),                  // V3F
     (0x2A22, 0, Some((4, true)), false, 2),       // C4UB_V2F
@@ -605,7 +606,7 @@ fn buffer_objects_as_sources_with_offsets() {
         assert_eq!(glIsBuffer(bufs[0]), 0, "generated but never bound");
         // Vertices at offset 16 of buffer 0.
         let mut vdata = vec![0u8; 16];
-        vdata.extend(pack(&[verts.clone()], 0));
+        vdata.extend(pack(std::slice::from_ref(&verts), 0));
         glBindBuffer(GL_ARRAY_BUFFER, bufs[0]);
         assert_eq!(glIsBuffer(bufs[0]), 1);
         glBufferData(GL_ARRAY_BUFFER, vdata.len() as isize, vdata.as_ptr() as *const c_void, GL_STATIC_DRAW);

@@ -194,8 +194,8 @@ super::entry_points! {
     list glColor4usv(v: *const GLushort) { |_c| Command::Color(color(&arr::<GLushort, 4>(v)?)) }
     list glIndexd(c: GLdouble) { |_c| Command::Index(c as f32) }
     list glIndexdv(v: *const GLdouble) { |_c| Command::Index(arr::<GLdouble, 1>(v)?[0] as f32) }
-    list glIndexf(c: GLfloat) { |_c| Command::Index(c as f32) }
-    list glIndexfv(v: *const GLfloat) { |_c| Command::Index(arr::<GLfloat, 1>(v)?[0] as f32) }
+    list glIndexf(c: GLfloat) { |_c| Command::Index(c) }
+    list glIndexfv(v: *const GLfloat) { |_c| Command::Index(arr::<GLfloat, 1>(v)?[0]) }
     list glIndexi(c: GLint) { |_c| Command::Index(c as f32) }
     list glIndexiv(v: *const GLint) { |_c| Command::Index(arr::<GLint, 1>(v)?[0] as f32) }
     list glIndexs(c: GLshort) { |_c| Command::Index(c as f32) }

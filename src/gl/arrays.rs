@@ -516,9 +516,8 @@ impl Context {
         for a in [Array::EdgeFlag, Array::Index, Array::SecondaryColor, Array::FogCoord] {
             self.arrays.get_mut(a).enabled = false;
         }
-        match f.tex {
-            Some((size, off)) => self.array_pointer(Array::TexCoord(unit), size, GL_FLOAT, s, pointer.wrapping_add(off)),
-            None => {}
+        if let Some((size, off)) = f.tex {
+            self.array_pointer(Array::TexCoord(unit), size, GL_FLOAT, s, pointer.wrapping_add(off));
         }
         self.arrays.tex_coord[unit].enabled = f.tex.is_some();
         if let Some((size, ty, off)) = f.color {

@@ -32,6 +32,7 @@ pub const GL_BUFFER_ACCESS: u32 = 0x88BB;
 pub const GL_BUFFER_MAPPED: u32 = 0x88BC;
 pub const GL_BUFFER_MAP_POINTER: u32 = 0x88BD;
 pub const GL_STREAM_DRAW: u32 = 0x88E0;
+pub const GL_STATIC_DRAW: u32 = 0x88E4;
 pub const GL_DYNAMIC_COPY: u32 = 0x88EA;
 
 /// A set of object names with a generator (glGenBuffers, glGenQueries).
@@ -79,7 +80,6 @@ impl Buffer {
     }
 }
 
-pub const GL_STATIC_DRAW: u32 = 0x88E4;
 
 #[derive(Debug, Default)]
 pub struct Buffers {
@@ -178,7 +178,11 @@ impl Context {
         }
     }
 
-    pub fn buffer_data(&mut self, target: u32, size: isize, data: *const u8, usage: u32) {
+    /// glBufferData.
+    ///
+    /// # Safety
+    /// `data` is NULL or points to `size` readable bytes.
+    pub unsafe fn buffer_data(&mut self, target: u32, size: isize, data: *const u8, usage: u32) {
         if self.buffer_binding(target).is_none() {
             return;
         }
@@ -197,7 +201,7 @@ impl Context {
             store.resize(size as usize, 0);
         } else {
             // SAFETY: the caller passes `size` readable bytes (glBufferData).
-            store.extend_from_slice(unsafe { std::slice::from_raw_parts(data, size as usize) });
+            store.extend_from_slice(std::slice::from_raw_parts(data, size as usize));
         }
         b.data = store;
         b.usage = usage;
@@ -238,19 +242,27 @@ impl Context {
         Some((b, o..o + s))
     }
 
-    pub fn buffer_sub_data(&mut self, target: u32, offset: isize, size: isize, data: *const u8) {
+    /// glBufferSubData.
+    ///
+    /// # Safety
+    /// `data` is NULL or points to `size` readable bytes.
+    pub unsafe fn buffer_sub_data(&mut self, target: u32, offset: isize, size: isize, data: *const u8) {
         let Some((b, r)) = self.buffer_range(target, offset, size) else { return };
         if !data.is_null() {
             // SAFETY: the caller passes `size` readable bytes.
-            b.data[r.clone()].copy_from_slice(unsafe { std::slice::from_raw_parts(data, r.len()) });
+            b.data[r.clone()].copy_from_slice(std::slice::from_raw_parts(data, r.len()));
         }
     }
 
-    pub fn get_buffer_sub_data(&mut self, target: u32, offset: isize, size: isize, data: *mut u8) {
+    /// glGetBufferSubData.
+    ///
+    /// # Safety
+    /// `data` is NULL or points to room for `size` bytes.
+    pub unsafe fn get_buffer_sub_data(&mut self, target: u32, offset: isize, size: isize, data: *mut u8) {
         let Some((b, r)) = self.buffer_range(target, offset, size) else { return };
         if !data.is_null() {
             // SAFETY: the caller provides room for `size` bytes.
-            unsafe { std::slice::from_raw_parts_mut(data, r.len()) }.copy_from_slice(&b.data[r]);
+            std::slice::from_raw_parts_mut(data, r.len()).copy_from_slice(&b.data[r]);
         }
     }
 
@@ -284,9 +296,7 @@ impl Context {
     }
 
     pub fn get_buffer_parameter(&mut self, target: u32, pname: u32) -> Option<i64> {
-        if self.buffer_binding(target).is_none() {
-            return None;
-        }
+        self.buffer_binding(target)?;
         if !matches!(pname, GL_BUFFER_SIZE | GL_BUFFER_USAGE | GL_BUFFER_ACCESS | GL_BUFFER_MAPPED) {
             self.set_error(GL_INVALID_ENUM);
             return None;
