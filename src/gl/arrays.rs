@@ -270,27 +270,40 @@ elem!(u32, |c| (c as f64 / 4294967295.0) as f32);
 elem!(f32, |c| c);
 elem!(f64, |c| c as f32);
 
-/// Reads `size` components at `p`, the rest from (0, 0, 0, 1).
-type Reader = unsafe fn(*const u8, usize) -> [f32; 4];
+/// Reads an element's components at `p`, the rest from (0, 0, 0, 1).
+type Reader = unsafe fn(*const u8) -> [f32; 4];
 
+/// A reader for `N` components of type `T`, normalized or not: chosen once
+/// per draw, so the per-vertex loop has no type, size or normalization
+/// branches.
 #[inline(always)]
-unsafe fn read<T: Elem, const NORM: bool>(p: *const u8, size: usize) -> [f32; 4] {
+unsafe fn read<T: Elem, const N: usize, const NORM: bool>(p: *const u8) -> [f32; 4] {
     let mut out = [0.0, 0.0, 0.0, 1.0];
     let p = p as *const T;
-    for (i, o) in out.iter_mut().enumerate().take(size) {
+    for (i, o) in out.iter_mut().enumerate().take(N) {
         let c = std::ptr::read_unaligned(p.add(i));
         *o = if NORM { c.normalized() } else { c.plain() };
     }
     out
 }
 
-fn reader(ty: u32, normalized: bool) -> Reader {
+fn reader(ty: u32, size: usize, normalized: bool) -> Reader {
+    macro_rules! by_size {
+        ($t:ty, $norm:literal) => {
+            match size {
+                1 => read::<$t, 1, $norm>,
+                2 => read::<$t, 2, $norm>,
+                3 => read::<$t, 3, $norm>,
+                _ => read::<$t, 4, $norm>,
+            }
+        };
+    }
     macro_rules! pick {
         ($t:ty) => {
             if normalized {
-                read::<$t, true>
+                by_size!($t, true)
             } else {
-                read::<$t, false>
+                by_size!($t, false)
             }
         };
     }
@@ -311,7 +324,6 @@ fn reader(ty: u32, normalized: bool) -> Reader {
 struct Source {
     base: *const u8,
     stride: usize,
-    size: usize,
     /// Bytes of one element.
     elem: usize,
     /// Bytes readable from `base` (a buffer object's store), or None for
@@ -332,7 +344,7 @@ impl Source {
         }
         // SAFETY: client memory: the program promises the element is there
         // (section 2.8); buffer memory: checked above.
-        unsafe { (self.read)(self.base.wrapping_add(off), self.size) }
+        unsafe { (self.read)(self.base.wrapping_add(off)) }
     }
 }
 
@@ -346,9 +358,12 @@ struct Fetch {
     index: Option<Source>,
     edge_flag: Option<Source>,
     tex_coord: [Option<Source>; MAX_TEXTURE_UNITS],
+    /// Any of edge flag, texture coordinate, secondary colour, fog
+    /// coordinate or index arrays enabled (else they are not looked at).
+    others: bool,
 }
 
-/// The attributes of one array element.
+/// The attributes of one array element, as a list records them.
 #[derive(Clone, Copy, Default)]
 struct Element {
     edge_flag: Option<bool>,
@@ -365,21 +380,23 @@ impl Fetch {
     #[inline(always)]
     fn element(&self, i: usize) -> Element {
         let get = |s: &Option<Source>| s.as_ref().map(|s| s.fetch(i));
-        let mut tex_coord = [None; MAX_TEXTURE_UNITS];
-        for (t, s) in tex_coord.iter_mut().zip(&self.tex_coord) {
-            *t = get(s);
-        }
-        Element {
-            edge_flag: get(&self.edge_flag).map(|e| e[0] != 0.0),
-            tex_coord,
+        let mut e = Element {
             color: get(&self.color),
-            // Three-component secondary colours keep alpha 1 (current-value rule).
-            secondary_color: get(&self.secondary_color),
-            fog_coord: get(&self.fog_coord).map(|f| f[0]),
-            index: get(&self.index).map(|x| x[0]),
             normal: get(&self.normal).map(|n| [n[0], n[1], n[2]]),
             vertex: get(&self.vertex),
+            ..Element::default()
+        };
+        if self.others {
+            for (t, s) in e.tex_coord.iter_mut().zip(&self.tex_coord) {
+                *t = get(s);
+            }
+            e.edge_flag = get(&self.edge_flag).map(|e| e[0] != 0.0);
+            // Three-component secondary colours keep alpha 1 (current-value rule).
+            e.secondary_color = get(&self.secondary_color);
+            e.fog_coord = get(&self.fog_coord).map(|f| f[0]);
+            e.index = get(&self.index).map(|x| x[0]);
         }
+        e
     }
 }
 
@@ -625,13 +642,19 @@ impl Context {
                 let data = self.buffers.data(p.buffer);
                 (data.as_ptr().wrapping_add(p.pointer), Some(data.len().saturating_sub(p.pointer)))
             };
-            Some(Source { base, stride, size: p.size as usize, elem, limit, read: reader(p.type_, normalized) })
+            Some(Source { base, stride, elem, limit, read: reader(p.type_, p.size as usize, normalized) })
         };
         let mut tex_coord = [None; MAX_TEXTURE_UNITS];
         for (t, p) in tex_coord.iter_mut().zip(&ar.tex_coord) {
             *t = source(p, false);
         }
+        let others = ar.edge_flag.enabled
+            || ar.secondary_color.enabled
+            || ar.fog_coord.enabled
+            || ar.index.enabled
+            || ar.tex_coord.iter().any(|t| t.enabled);
         Some(Fetch {
+            others,
             vertex: source(&ar.vertex, false),
             normal: source(&ar.normal, true),
             color: source(&ar.color, true),
@@ -643,36 +666,42 @@ impl Context {
         })
     }
 
-    /// Sets the current values of one element and sends its vertex
-    /// (glArrayElement's effect, executed).
+    /// Sets the current values of array element `i` and sends its vertex
+    /// (glArrayElement's effect, executed), reading straight from the
+    /// sources into the current values.
     #[inline]
-    fn apply_element(&mut self, e: &Element) {
-        if let Some(f) = e.edge_flag {
-            self.current.edge_flag = f;
-        }
-        for (u, t) in e.tex_coord.iter().enumerate() {
-            if let Some(t) = t {
-                self.set_tex_coord(u, *t);
+    fn apply_element(&mut self, f: &Fetch, i: usize) {
+        if f.others {
+            if let Some(s) = &f.edge_flag {
+                self.current.edge_flag = s.fetch(i)[0] != 0.0;
+            }
+            for (u, s) in f.tex_coord.iter().enumerate() {
+                if let Some(s) = s {
+                    self.set_tex_coord(u, s.fetch(i));
+                }
+            }
+            if let Some(s) = &f.secondary_color {
+                self.current.secondary_color = s.fetch(i);
+            }
+            if let Some(s) = &f.fog_coord {
+                self.current.fog_coord = s.fetch(i)[0];
+            }
+            if let Some(s) = &f.index {
+                self.current.index = s.fetch(i)[0];
             }
         }
-        if let Some(c) = e.color {
-            self.current.color = c;
-            self.apply_color_material();
+        if let Some(s) = &f.color {
+            self.current.color = s.fetch(i);
+            if self.lighting.color_material {
+                self.apply_color_material();
+            }
         }
-        if let Some(c) = e.secondary_color {
-            self.current.secondary_color = c;
+        if let Some(s) = &f.normal {
+            let n = s.fetch(i);
+            self.current.normal = [n[0], n[1], n[2]];
         }
-        if let Some(f) = e.fog_coord {
-            self.current.fog_coord = f;
-        }
-        if let Some(i) = e.index {
-            self.current.index = i;
-        }
-        if let Some(n) = e.normal {
-            self.current.normal = n;
-        }
-        if let Some(v) = e.vertex {
-            self.vertex(v);
+        if let Some(s) = &f.vertex {
+            self.vertex(s.fetch(i));
         }
     }
 
@@ -713,13 +742,12 @@ impl Context {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(f) = self.fetch() else { return };
-        let e = f.element(i as usize);
         let mode = self.lists.compile_mode();
         if mode.is_some() {
-            self.record_element(&e);
+            self.record_element(&f.element(i as usize));
         }
         if mode != Some(GL_COMPILE) {
-            self.apply_element(&e);
+            self.apply_element(&f, i as usize);
         }
     }
 
@@ -756,8 +784,7 @@ impl Context {
             return;
         }
         for k in 0..n {
-            let e = f.element(index(k));
-            self.apply_element(&e);
+            self.apply_element(f, index(k));
         }
         self.end();
     }
