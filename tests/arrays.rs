@@ -648,6 +648,10 @@ fn buffer_objects_as_sources_with_offsets() {
         assert_eq!(get_i(GL_VERTEX_ARRAY_BUFFER_BINDING), 0);
         assert_eq!(get_i(GL_COLOR_ARRAY_BUFFER_BINDING), 0);
         assert_eq!(glIsBuffer(bufs[0]), 0);
+        // Drawing with arrays whose buffer was deleted skips them, no crash.
+        glDrawArrays(GL_QUADS, 4, 4);
+        glDrawElements(GL_QUADS, 4, GL_UNSIGNED_SHORT, 2 as *const c_void);
+        assert_eq!(error(), GL_NO_ERROR);
         glDeleteBuffers(-1, bufs.as_ptr());
         assert_eq!(error(), GL_INVALID_VALUE);
     }

@@ -92,8 +92,8 @@ super::entry_points! {
     exec glGetError() -> GLenum { |c| c.take_error() }
     list["GL_LINE_SMOOTH and GL_POINT_SMOOTH are not antialiased yet (issue 3)"] glBegin(mode: GLenum) { |_c| Command::Begin(mode) }
     list glEnd() { |_c| Command::End }
-    list glEdgeFlag(flag: GLboolean) { |_c| Command::EdgeFlag(truth(flag)) }
-    list glEdgeFlagv(flag: *const GLboolean) { |_c| Command::EdgeFlag(truth(arr::<GLboolean, 1>(flag)?[0])) }
+    list["stored as the current edge flag; polygon modes, which use it, are not implemented yet"] glEdgeFlag(flag: GLboolean) { |_c| Command::EdgeFlag(truth(flag)) }
+    list["as glEdgeFlag"] glEdgeFlagv(flag: *const GLboolean) { |_c| Command::EdgeFlag(truth(arr::<GLboolean, 1>(flag)?[0])) }
     list glVertex2d(x: GLdouble, y: GLdouble) { |_c| Command::Vertex(position(&[x, y])) }
     list glVertex2dv(v: *const GLdouble) { |_c| Command::Vertex(position(&arr::<GLdouble, 2>(v)?)) }
     list glVertex2f(x: GLfloat, y: GLfloat) { |_c| Command::Vertex(position(&[x, y])) }
@@ -206,8 +206,8 @@ super::entry_points! {
     client glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Normal, 3, type_, stride, ptr as usize) }
     client glColorPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Color, size, type_, stride, ptr as usize) }
     client glIndexPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Index, 1, type_, stride, ptr as usize) }
-    client glTexCoordPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.tex_coord_pointer(size, type_, stride, ptr as usize) }
-    client glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, ptr as usize) }
+    client["texture coordinates reach the current values and display lists; texturing is not implemented yet"] glTexCoordPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.tex_coord_pointer(size, type_, stride, ptr as usize) }
+    client["as glEdgeFlag"] glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, ptr as usize) }
     client glEnableClientState(array: GLenum) { |c| c.client_state(array, true) }
     client glDisableClientState(array: GLenum) { |c| c.client_state(array, false) }
     draw glArrayElement(i: GLint) { |c| c.array_element(i) }
@@ -397,7 +397,7 @@ super::entry_points! {
     exec["answers the state implemented so far; other names give GL_INVALID_ENUM"] glGetIntegerv(pname: GLenum, params: *mut GLint) { |c| c.get_into(pname, params, get::Value::as_i32) }
     exec["as glGetIntegerv"] glGetFloatv(pname: GLenum, params: *mut GLfloat) { |c| c.get_into(pname, params, |v| v.as_f64().into_iter().map(|x| x as f32).collect()) }
     exec["as glGetIntegerv"] glGetDoublev(pname: GLenum, params: *mut GLdouble) { |c| c.get_into(pname, params, get::Value::as_f64) }
-    client glGetPointerv(pname: GLenum, params: *mut *mut c_void) { |c| if let Some(p) = c.get_pointer(pname) { write_out(params, &[p as *mut c_void]) } }
+    client["GL_FEEDBACK_BUFFER_POINTER and GL_SELECTION_BUFFER_POINTER are NULL until feedback and selection exist"] glGetPointerv(pname: GLenum, params: *mut *mut c_void) { |c| if let Some(p) = c.get_pointer(pname) { write_out(params, &[p as *mut c_void]) } }
     todo glGetClipPlane(plane: GLenum, equation: *mut GLdouble);
     exec glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &v), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetLightiv(light: GLenum, pname: GLenum, params: *mut GLint) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &ints_out(&v, is_color_param(pname))), None => c.set_error(GL_INVALID_ENUM) } }
@@ -510,34 +510,34 @@ super::entry_points! {
     todo glCompressedTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void);
     todo glGetCompressedTexImage(target: GLenum, level: GLint, img: *mut c_void);
     list glBlendFuncSeparate(sfactorRGB: GLenum, dfactorRGB: GLenum, sfactorAlpha: GLenum, dfactorAlpha: GLenum) { |_c| Command::BlendFunc([sfactorRGB, dfactorRGB, sfactorAlpha, dfactorAlpha]) }
-    list glFogCoordf(coord: GLfloat) { |_c| Command::FogCoord(coord) }
-    list glFogCoordfv(coord: *const GLfloat) { |_c| Command::FogCoord(arr::<GLfloat, 1>(coord)?[0]) }
-    list glFogCoordd(coord: GLdouble) { |_c| Command::FogCoord(coord as f32) }
-    list glFogCoorddv(coord: *const GLdouble) { |_c| Command::FogCoord(arr::<GLdouble, 1>(coord)?[0] as f32) }
-    client glFogCoordPointer(type_: GLenum, stride: GLsizei, pointer: *const c_void) { |c| c.array_pointer(Array::FogCoord, 1, type_, stride, pointer as usize) }
+    list["stored as the current fog coordinate; fog is not applied yet"] glFogCoordf(coord: GLfloat) { |_c| Command::FogCoord(coord) }
+    list["as glFogCoordf"] glFogCoordfv(coord: *const GLfloat) { |_c| Command::FogCoord(arr::<GLfloat, 1>(coord)?[0]) }
+    list["as glFogCoordf"] glFogCoordd(coord: GLdouble) { |_c| Command::FogCoord(coord as f32) }
+    list["as glFogCoordf"] glFogCoorddv(coord: *const GLdouble) { |_c| Command::FogCoord(arr::<GLdouble, 1>(coord)?[0] as f32) }
+    client["as glFogCoordf"] glFogCoordPointer(type_: GLenum, stride: GLsizei, pointer: *const c_void) { |c| c.array_pointer(Array::FogCoord, 1, type_, stride, pointer as usize) }
     draw glMultiDrawArrays(mode: GLenum, first: *const GLint, count: *const GLsizei, drawcount: GLsizei) { |c| if drawcount < 0 { c.set_error(GL_INVALID_VALUE) } else if !first.is_null() && !count.is_null() { c.multi_draw_arrays(mode, &slice(first, drawcount as i64), &slice(count, drawcount as i64)) } }
     draw glMultiDrawElements(mode: GLenum, count: *const GLsizei, type_: GLenum, indices: *const *const c_void, drawcount: GLsizei) { |c| if drawcount < 0 { c.set_error(GL_INVALID_VALUE) } else if !count.is_null() && !indices.is_null() { c.multi_draw_elements(mode, &slice(count, drawcount as i64), type_, &slice(indices, drawcount as i64).into_iter().map(|p| p as usize).collect::<Vec<_>>()) } }
     todo glPointParameterf(pname: GLenum, param: GLfloat);
     todo glPointParameterfv(pname: GLenum, params: *const GLfloat);
     todo glPointParameteri(pname: GLenum, param: GLint);
     todo glPointParameteriv(pname: GLenum, params: *const GLint);
-    list glSecondaryColor3b(red: GLbyte, green: GLbyte, blue: GLbyte) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list glSecondaryColor3bv(v: *const GLbyte) { |_c| Command::SecondaryColor(color(&arr::<GLbyte, 3>(v)?)) }
-    list glSecondaryColor3d(red: GLdouble, green: GLdouble, blue: GLdouble) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list glSecondaryColor3dv(v: *const GLdouble) { |_c| Command::SecondaryColor(color(&arr::<GLdouble, 3>(v)?)) }
-    list glSecondaryColor3f(red: GLfloat, green: GLfloat, blue: GLfloat) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list glSecondaryColor3fv(v: *const GLfloat) { |_c| Command::SecondaryColor(color(&arr::<GLfloat, 3>(v)?)) }
-    list glSecondaryColor3i(red: GLint, green: GLint, blue: GLint) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list glSecondaryColor3iv(v: *const GLint) { |_c| Command::SecondaryColor(color(&arr::<GLint, 3>(v)?)) }
-    list glSecondaryColor3s(red: GLshort, green: GLshort, blue: GLshort) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list glSecondaryColor3sv(v: *const GLshort) { |_c| Command::SecondaryColor(color(&arr::<GLshort, 3>(v)?)) }
-    list glSecondaryColor3ub(red: GLubyte, green: GLubyte, blue: GLubyte) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list glSecondaryColor3ubv(v: *const GLubyte) { |_c| Command::SecondaryColor(color(&arr::<GLubyte, 3>(v)?)) }
-    list glSecondaryColor3ui(red: GLuint, green: GLuint, blue: GLuint) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list glSecondaryColor3uiv(v: *const GLuint) { |_c| Command::SecondaryColor(color(&arr::<GLuint, 3>(v)?)) }
-    list glSecondaryColor3us(red: GLushort, green: GLushort, blue: GLushort) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list glSecondaryColor3usv(v: *const GLushort) { |_c| Command::SecondaryColor(color(&arr::<GLushort, 3>(v)?)) }
-    client glSecondaryColorPointer(size: GLint, type_: GLenum, stride: GLsizei, pointer: *const c_void) { |c| c.array_pointer(Array::SecondaryColor, size, type_, stride, pointer as usize) }
+    list["as glSecondaryColor3f"] glSecondaryColor3b(red: GLbyte, green: GLbyte, blue: GLbyte) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3bv(v: *const GLbyte) { |_c| Command::SecondaryColor(color(&arr::<GLbyte, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3d(red: GLdouble, green: GLdouble, blue: GLdouble) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3dv(v: *const GLdouble) { |_c| Command::SecondaryColor(color(&arr::<GLdouble, 3>(v)?)) }
+    list["stored as the current secondary colour; the colour sum is not applied yet"] glSecondaryColor3f(red: GLfloat, green: GLfloat, blue: GLfloat) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3fv(v: *const GLfloat) { |_c| Command::SecondaryColor(color(&arr::<GLfloat, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3i(red: GLint, green: GLint, blue: GLint) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3iv(v: *const GLint) { |_c| Command::SecondaryColor(color(&arr::<GLint, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3s(red: GLshort, green: GLshort, blue: GLshort) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3sv(v: *const GLshort) { |_c| Command::SecondaryColor(color(&arr::<GLshort, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3ub(red: GLubyte, green: GLubyte, blue: GLubyte) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3ubv(v: *const GLubyte) { |_c| Command::SecondaryColor(color(&arr::<GLubyte, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3ui(red: GLuint, green: GLuint, blue: GLuint) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3uiv(v: *const GLuint) { |_c| Command::SecondaryColor(color(&arr::<GLuint, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3us(red: GLushort, green: GLushort, blue: GLushort) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3usv(v: *const GLushort) { |_c| Command::SecondaryColor(color(&arr::<GLushort, 3>(v)?)) }
+    client["as glSecondaryColor3f"] glSecondaryColorPointer(size: GLint, type_: GLenum, stride: GLsizei, pointer: *const c_void) { |c| c.array_pointer(Array::SecondaryColor, size, type_, stride, pointer as usize) }
     todo glWindowPos2d(x: GLdouble, y: GLdouble);
     todo glWindowPos2dv(v: *const GLdouble);
     todo glWindowPos2f(x: GLfloat, y: GLfloat);

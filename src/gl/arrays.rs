@@ -32,9 +32,11 @@
 //! whatever per-vertex texture coordinate command they define.
 //!
 //! Safety: client arrays are read through the raw pointers the program
-//! gave, as GL requires; a NULL pointer with its array enabled is treated
-//! as a disabled array rather than read. Buffer-object arrays are
-//! bounds-checked: an element outside the buffer reads as (0, 0, 0, 1).
+//! gave, as GL requires. A client pointer inside the first page (NULL, or
+//! a buffer offset given while no buffer is bound, a common mistake) is
+//! never read: its array is treated as disabled, its indices as none.
+//! Buffer-object arrays are bounds-checked: an element outside the buffer
+//! reads as (0, 0, 0, 1).
 
 use super::command::Command;
 use super::context::Context;
@@ -178,6 +180,10 @@ impl ArrayState {
     }
 
     /// A deleted buffer object: arrays bound to it revert to zero (2.9.1).
+    /// Their pointers stay (offsets, below FIRST_VALID_ADDRESS when small,
+    /// are then skipped by draws); reset them to NULL besides, so that a
+    /// large offset is not read as a client address either (glGetPointerv
+    /// then returns NULL).
     pub fn unbind_buffer(&mut self, name: u32) {
         for a in [
             &mut self.vertex,
@@ -193,6 +199,7 @@ impl ArrayState {
         {
             if a.buffer == name {
                 a.buffer = 0;
+                a.pointer = 0;
             }
         }
     }
@@ -433,6 +440,10 @@ fn index_size(ty: u32) -> Option<usize> {
     }
 }
 
+/// Lowest client address read: nothing lives in the first page, and
+/// smaller "pointers" are NULL or buffer offsets used with no buffer bound.
+const FIRST_VALID_ADDRESS: usize = 4096;
+
 /// glInterleavedArrays' table 2.5: which arrays a format enables, their
 /// sizes, and offsets in units of f (a float) and c (4 unsigned bytes,
 /// rounded to a float: also 4 bytes).
@@ -634,7 +645,7 @@ impl Context {
             let elem = p.size as usize * type_size(p.type_);
             let stride = if p.stride == 0 { elem } else { p.stride as usize };
             let (base, limit) = if p.buffer == 0 {
-                if p.pointer == 0 {
+                if p.pointer < FIRST_VALID_ADDRESS {
                     return None;
                 }
                 (p.pointer as *const u8, None)
@@ -828,7 +839,7 @@ impl Context {
         };
         let eb = self.buffers.element_array;
         if eb == 0 {
-            let count = if indices == 0 { 0 } else { count as usize };
+            let count = if indices < FIRST_VALID_ADDRESS { 0 } else { count as usize };
             return Some(Indices { base: indices as *const u8, ty, count });
         }
         if self.buffers.is_mapped(eb) {
