@@ -3,6 +3,7 @@
 #   make         build the library and lay out build/lib
 #   make test    all tests (Rust unit tests, header/export checks, C tests)
 #   make demo    render the demo scenes into out/
+#   make piglit  piglit's GL 1.x tests against softgl on Xvfb
 #   make bench   benchmark against Mesa into out/bench/ (BENCH_ARGS=--quick for a short run)
 #   make coverage  regenerate the README's coverage table
 
@@ -11,7 +12,7 @@ CC ?= cc
 LIB := build/lib
 SO := target/release/libsoftgl.so
 
-.PHONY: bench all lib test rust-test c-test exports-test demo coverage coverage-check deps clean
+.PHONY: piglit bench all lib test rust-test c-test exports-test demo coverage coverage-check deps clean
 
 all: lib
 
@@ -46,6 +47,10 @@ c-test: lib
 
 demo: lib
 	sh demo/run.sh
+
+# piglit's GL 1.x group on Xvfb against softgl: out/piglit.summary.txt.
+piglit: lib
+	bash tools/piglit.sh
 
 # Side by side against Mesa (llvmpipe 1 thread / all cores, softpipe): out/bench/.
 bench: deps lib

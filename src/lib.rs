@@ -7,6 +7,7 @@
 //! [`framebuffer`] (storage); [`glu`] and [`winsys`] sit beside them.
 
 pub mod api;
+pub mod fonts;
 pub mod framebuffer;
 pub mod gl;
 pub mod glu;

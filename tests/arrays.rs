@@ -406,7 +406,7 @@ fn attribute_arrays_set_current_values() {
                     glDisableClientState(GL_TEXTURE_COORD_ARRAY);
                     let mut want = [0.0, 0.0, 0.0, 1.0];
                     want[..size].copy_from_slice(&[3.0, -2.0, 5.0, 4.0][..size]);
-                    assert_eq!(current().current.tex_coord[unit as usize], want, "unit {unit} type {ty:#x} size {size}");
+                    assert_eq!(current().current.tex_coords[unit as usize], want, "unit {unit} type {ty:#x} size {size}");
                 }
             }
         }
@@ -495,7 +495,7 @@ fn interleaved_arrays_all_formats() {
                 if tsize == 4 {
                     want = [0.75, 0.5, 0.75, 1.5];
                 }
-                assert_eq!(current().current.tex_coord[0], want, "texcoord of {format:#x}");
+                assert_eq!(current().current.tex_coords[0], want, "texcoord of {format:#x}");
             }
             if normal {
                 assert_eq!(get_f::<3>(GL_CURRENT_NORMAL), [0.0, 0.6, 3.8], "normal of {format:#x}");

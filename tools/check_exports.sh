@@ -10,10 +10,10 @@ fail=0; pass=0
 ok()  { pass=$((pass + 1)); echo "ok   $1"; }
 bad() { fail=$((fail + 1)); echo "FAIL $1"; }
 
-grep -hE '^GLAPI .*APIENTRY +[A-Za-z0-9_]+ *\(' include/GL/gl.h include/GL/glu.h include/GL/osmesa.h include/GL/glx.h |
+grep -hE '^GLAPI .*APIENTRY +[A-Za-z0-9_]+ *\(' include/GL/gl.h include/GL/glu.h include/GL/osmesa.h include/GL/glx.h include/GL/softgl_wgl.h |
   sed -E 's/^GLAPI .*APIENTRY +([A-Za-z0-9_]+) *\(.*/\1/' | sort -u > "$tmp/headers"
 nm -D --defined-only "$LIB" | awk '$2 == "T" {print $3}' | sed 's/@.*//' |
-  grep -E '^(gl|glu|OSMesa|glX|wgl)[A-Z]' | sort -u > "$tmp/exports"
+  grep -E '^(gl|glu|OSMesa|glX|wgl|softgl)[A-Z]' | sort -u > "$tmp/exports"
 
 if cmp -s "$tmp/headers" "$tmp/exports"; then
   ok "headers and exports agree ($(wc -l < "$tmp/exports") names)"

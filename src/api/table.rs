@@ -19,11 +19,17 @@ use super::types::*;
 use crate::gl::enums::*;
 use crate::gl::lighting::{is_color_param, light_model_param_count, light_param_count, material_param_count, read_params};
 use crate::gl::arrays::Array;
+use crate::gl::eval::read_points;
+use crate::gl::polygon::{pack_stipple, unpack_stipple};
+use crate::gl::select::NameOp;
 use crate::gl::{get, lists::decode_names, Command, Context};
 use crate::glu;
 use crate::winsys::glx::{self, xlib::{Display, XVisualInfo}, Bool, FbConfig, GlxContext};
 use crate::winsys::osmesa::{self, OsContext};
 use std::ffi::{c_char, c_int, c_void};
+use crate::gl::pixel_transfer::{map_index, map_value_to_uint, map_values_from_uint, MAX_PIXEL_MAP_TABLE};
+use crate::gl::texture::enums::{GL_TEXTURE0 as TEX0, GL_TEXTURE_BORDER_COLOR as TBORDER, GL_TEXTURE_ENV_COLOR as TENV_COLOR, GL_TEXTURE_GEN_MODE as TGEN_MODE};
+use crate::gl::texture::CopyTexCmd;
 
 /// GLU's opaque object types, as C sees them.
 pub type GLUquadric = c_void;
@@ -73,6 +79,11 @@ fn ints_out(v: &[f32], color: bool) -> Vec<GLint> {
     if color { get::Value::Normalized(values).as_i32() } else { get::Value::Floats(values).as_i32() }
 }
 
+/// glMap's points, or the error its arguments give.
+fn map_points(c: &mut Context, r: Result<Vec<f32>, GLenum>) -> Option<Vec<f32>> {
+    r.map_err(|e| c.set_error(e)).ok()
+}
+
 /// GetProcAddress by C string.
 unsafe fn proc_from_name(name: *const c_char) -> GLproc {
     if name.is_null() {
@@ -86,14 +97,42 @@ unsafe fn proc_from_name(name: *const c_char) -> GLproc {
     }
 }
 
+/// glWindowPos's command from 2 or 3 coordinates (z defaults to 0).
+fn window_pos<T: Component>(v: &[T]) -> Command {
+    let p = position(v);
+    Command::WindowPos([p[0], p[1], p[2]])
+}
+
+/// glPixelMap's command: the map is checked and the values read (mapsize
+/// of them) and converted now; an invalid map or size becomes an error
+/// command. NULL values: nothing.
+unsafe fn pixel_map<T: Copy>(map: GLenum, mapsize: GLsizei, values: *const T, conv: impl Fn(GLenum, &[T]) -> Vec<f32>) -> Option<Command> {
+    if map_index(map).is_none() {
+        return Some(Command::Error(GL_INVALID_ENUM));
+    }
+    if mapsize < 1 || mapsize as usize > MAX_PIXEL_MAP_TABLE {
+        return Some(Command::Error(GL_INVALID_VALUE));
+    }
+    if values.is_null() {
+        return None;
+    }
+    let v = slice(values, mapsize as i64);
+    Some(Command::PixelMap(map, conv(map, &v)))
+}
+
+/// Texture coordinates from 1 to 4 components: t and r default to 0, q to 1.
+fn texcoord<T: Component>(v: &[T]) -> [f32; 4] {
+    [v[0].plain(), v.get(1).map_or(0.0, |c| c.plain()), v.get(2).map_or(0.0, |c| c.plain()), v.get(3).map_or(1.0, |c| c.plain())]
+}
+
 super::entry_points! {
 
     // ---- gl.h ----
     exec glGetError() -> GLenum { |c| c.take_error() }
     list["GL_LINE_SMOOTH and GL_POINT_SMOOTH are not antialiased yet (issue 3)"] glBegin(mode: GLenum) { |_c| Command::Begin(mode) }
     list glEnd() { |_c| Command::End }
-    list["stored as the current edge flag; polygon modes, which use it, are not implemented yet"] glEdgeFlag(flag: GLboolean) { |_c| Command::EdgeFlag(truth(flag)) }
-    list["as glEdgeFlag"] glEdgeFlagv(flag: *const GLboolean) { |_c| Command::EdgeFlag(truth(arr::<GLboolean, 1>(flag)?[0])) }
+    list glEdgeFlag(flag: GLboolean) { |_c| Command::EdgeFlag(truth(flag)) }
+    list glEdgeFlagv(flag: *const GLboolean) { |_c| Command::EdgeFlag(truth(arr::<GLboolean, 1>(flag)?[0])) }
     list glVertex2d(x: GLdouble, y: GLdouble) { |_c| Command::Vertex(position(&[x, y])) }
     list glVertex2dv(v: *const GLdouble) { |_c| Command::Vertex(position(&arr::<GLdouble, 2>(v)?)) }
     list glVertex2f(x: GLfloat, y: GLfloat) { |_c| Command::Vertex(position(&[x, y])) }
@@ -118,38 +157,38 @@ super::entry_points! {
     list glVertex4iv(v: *const GLint) { |_c| Command::Vertex(position(&arr::<GLint, 4>(v)?)) }
     list glVertex4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) { |_c| Command::Vertex(position(&[x, y, z, w])) }
     list glVertex4sv(v: *const GLshort) { |_c| Command::Vertex(position(&arr::<GLshort, 4>(v)?)) }
-    todo glTexCoord1d(s: GLdouble);
-    todo glTexCoord1dv(v: *const GLdouble);
-    todo glTexCoord1f(s: GLfloat);
-    todo glTexCoord1fv(v: *const GLfloat);
-    todo glTexCoord1i(s: GLint);
-    todo glTexCoord1iv(v: *const GLint);
-    todo glTexCoord1s(s: GLshort);
-    todo glTexCoord1sv(v: *const GLshort);
-    todo glTexCoord2d(s: GLdouble, t: GLdouble);
-    todo glTexCoord2dv(v: *const GLdouble);
-    todo glTexCoord2f(s: GLfloat, t: GLfloat);
-    todo glTexCoord2fv(v: *const GLfloat);
-    todo glTexCoord2i(s: GLint, t: GLint);
-    todo glTexCoord2iv(v: *const GLint);
-    todo glTexCoord2s(s: GLshort, t: GLshort);
-    todo glTexCoord2sv(v: *const GLshort);
-    todo glTexCoord3d(s: GLdouble, t: GLdouble, r: GLdouble);
-    todo glTexCoord3dv(v: *const GLdouble);
-    todo glTexCoord3f(s: GLfloat, t: GLfloat, r: GLfloat);
-    todo glTexCoord3fv(v: *const GLfloat);
-    todo glTexCoord3i(s: GLint, t: GLint, r: GLint);
-    todo glTexCoord3iv(v: *const GLint);
-    todo glTexCoord3s(s: GLshort, t: GLshort, r: GLshort);
-    todo glTexCoord3sv(v: *const GLshort);
-    todo glTexCoord4d(s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble);
-    todo glTexCoord4dv(v: *const GLdouble);
-    todo glTexCoord4f(s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat);
-    todo glTexCoord4fv(v: *const GLfloat);
-    todo glTexCoord4i(s: GLint, t: GLint, r: GLint, q: GLint);
-    todo glTexCoord4iv(v: *const GLint);
-    todo glTexCoord4s(s: GLshort, t: GLshort, r: GLshort, q: GLshort);
-    todo glTexCoord4sv(v: *const GLshort);
+    list glTexCoord1d(s: GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&[s])) }
+    list glTexCoord1dv(v: *const GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLdouble, 1>(v)?)) }
+    list glTexCoord1f(s: GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&[s])) }
+    list glTexCoord1fv(v: *const GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLfloat, 1>(v)?)) }
+    list glTexCoord1i(s: GLint) { |_c| Command::TexCoord(TEX0, texcoord(&[s])) }
+    list glTexCoord1iv(v: *const GLint) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLint, 1>(v)?)) }
+    list glTexCoord1s(s: GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&[s])) }
+    list glTexCoord1sv(v: *const GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLshort, 1>(v)?)) }
+    list glTexCoord2d(s: GLdouble, t: GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t])) }
+    list glTexCoord2dv(v: *const GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLdouble, 2>(v)?)) }
+    list glTexCoord2f(s: GLfloat, t: GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t])) }
+    list glTexCoord2fv(v: *const GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLfloat, 2>(v)?)) }
+    list glTexCoord2i(s: GLint, t: GLint) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t])) }
+    list glTexCoord2iv(v: *const GLint) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLint, 2>(v)?)) }
+    list glTexCoord2s(s: GLshort, t: GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t])) }
+    list glTexCoord2sv(v: *const GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLshort, 2>(v)?)) }
+    list glTexCoord3d(s: GLdouble, t: GLdouble, r: GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r])) }
+    list glTexCoord3dv(v: *const GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLdouble, 3>(v)?)) }
+    list glTexCoord3f(s: GLfloat, t: GLfloat, r: GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r])) }
+    list glTexCoord3fv(v: *const GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLfloat, 3>(v)?)) }
+    list glTexCoord3i(s: GLint, t: GLint, r: GLint) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r])) }
+    list glTexCoord3iv(v: *const GLint) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLint, 3>(v)?)) }
+    list glTexCoord3s(s: GLshort, t: GLshort, r: GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r])) }
+    list glTexCoord3sv(v: *const GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLshort, 3>(v)?)) }
+    list glTexCoord4d(s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r, q])) }
+    list glTexCoord4dv(v: *const GLdouble) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLdouble, 4>(v)?)) }
+    list glTexCoord4f(s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r, q])) }
+    list glTexCoord4fv(v: *const GLfloat) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLfloat, 4>(v)?)) }
+    list glTexCoord4i(s: GLint, t: GLint, r: GLint, q: GLint) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r, q])) }
+    list glTexCoord4iv(v: *const GLint) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLint, 4>(v)?)) }
+    list glTexCoord4s(s: GLshort, t: GLshort, r: GLshort, q: GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&[s, t, r, q])) }
+    list glTexCoord4sv(v: *const GLshort) { |_c| Command::TexCoord(TEX0, texcoord(&arr::<GLshort, 4>(v)?)) }
     list glNormal3b(nx: GLbyte, ny: GLbyte, nz: GLbyte) { |_c| Command::Normal(normal(&[nx, ny, nz])) }
     list glNormal3bv(v: *const GLbyte) { |_c| Command::Normal(normal(&arr::<GLbyte, 3>(v)?)) }
     list glNormal3d(nx: GLdouble, ny: GLdouble, nz: GLdouble) { |_c| Command::Normal(normal(&[nx, ny, nz])) }
@@ -240,37 +279,37 @@ super::entry_points! {
     list glOrtho(left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, zNear: GLdouble, zFar: GLdouble) { |_c| Command::Ortho([left, right, bottom, top, zNear, zFar]) }
     list glPushMatrix() { |_c| Command::PushMatrix }
     list glPopMatrix() { |_c| Command::PopMatrix }
-    todo glTexGend(coord: GLenum, pname: GLenum, param: GLdouble);
-    todo glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble);
-    todo glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat);
-    todo glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat);
-    todo glTexGeni(coord: GLenum, pname: GLenum, param: GLint);
-    todo glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint);
-    todo glClipPlane(plane: GLenum, equation: *const GLdouble);
-    todo glRasterPos2d(x: GLdouble, y: GLdouble);
-    todo glRasterPos2dv(v: *const GLdouble);
-    todo glRasterPos2f(x: GLfloat, y: GLfloat);
-    todo glRasterPos2fv(v: *const GLfloat);
-    todo glRasterPos2i(x: GLint, y: GLint);
-    todo glRasterPos2iv(v: *const GLint);
-    todo glRasterPos2s(x: GLshort, y: GLshort);
-    todo glRasterPos2sv(v: *const GLshort);
-    todo glRasterPos3d(x: GLdouble, y: GLdouble, z: GLdouble);
-    todo glRasterPos3dv(v: *const GLdouble);
-    todo glRasterPos3f(x: GLfloat, y: GLfloat, z: GLfloat);
-    todo glRasterPos3fv(v: *const GLfloat);
-    todo glRasterPos3i(x: GLint, y: GLint, z: GLint);
-    todo glRasterPos3iv(v: *const GLint);
-    todo glRasterPos3s(x: GLshort, y: GLshort, z: GLshort);
-    todo glRasterPos3sv(v: *const GLshort);
-    todo glRasterPos4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble);
-    todo glRasterPos4dv(v: *const GLdouble);
-    todo glRasterPos4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat);
-    todo glRasterPos4fv(v: *const GLfloat);
-    todo glRasterPos4i(x: GLint, y: GLint, z: GLint, w: GLint);
-    todo glRasterPos4iv(v: *const GLint);
-    todo glRasterPos4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort);
-    todo glRasterPos4sv(v: *const GLshort);
+    list glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
+    list glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
+    list glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
+    list glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
+    list glTexGeni(coord: GLenum, pname: GLenum, param: GLint) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
+    list glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
+    list glClipPlane(plane: GLenum, equation: *const GLdouble) { |_c| Command::ClipPlane(plane, arr::<GLdouble, 4>(equation)?) }
+    list glRasterPos2d(x: GLdouble, y: GLdouble) { |_c| Command::RasterPos(position(&[x, y])) }
+    list glRasterPos2dv(v: *const GLdouble) { |_c| Command::RasterPos(position(&arr::<GLdouble, 2>(v)?)) }
+    list glRasterPos2f(x: GLfloat, y: GLfloat) { |_c| Command::RasterPos(position(&[x, y])) }
+    list glRasterPos2fv(v: *const GLfloat) { |_c| Command::RasterPos(position(&arr::<GLfloat, 2>(v)?)) }
+    list glRasterPos2i(x: GLint, y: GLint) { |_c| Command::RasterPos(position(&[x, y])) }
+    list glRasterPos2iv(v: *const GLint) { |_c| Command::RasterPos(position(&arr::<GLint, 2>(v)?)) }
+    list glRasterPos2s(x: GLshort, y: GLshort) { |_c| Command::RasterPos(position(&[x, y])) }
+    list glRasterPos2sv(v: *const GLshort) { |_c| Command::RasterPos(position(&arr::<GLshort, 2>(v)?)) }
+    list glRasterPos3d(x: GLdouble, y: GLdouble, z: GLdouble) { |_c| Command::RasterPos(position(&[x, y, z])) }
+    list glRasterPos3dv(v: *const GLdouble) { |_c| Command::RasterPos(position(&arr::<GLdouble, 3>(v)?)) }
+    list glRasterPos3f(x: GLfloat, y: GLfloat, z: GLfloat) { |_c| Command::RasterPos(position(&[x, y, z])) }
+    list glRasterPos3fv(v: *const GLfloat) { |_c| Command::RasterPos(position(&arr::<GLfloat, 3>(v)?)) }
+    list glRasterPos3i(x: GLint, y: GLint, z: GLint) { |_c| Command::RasterPos(position(&[x, y, z])) }
+    list glRasterPos3iv(v: *const GLint) { |_c| Command::RasterPos(position(&arr::<GLint, 3>(v)?)) }
+    list glRasterPos3s(x: GLshort, y: GLshort, z: GLshort) { |_c| Command::RasterPos(position(&[x, y, z])) }
+    list glRasterPos3sv(v: *const GLshort) { |_c| Command::RasterPos(position(&arr::<GLshort, 3>(v)?)) }
+    list glRasterPos4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) { |_c| Command::RasterPos(position(&[x, y, z, w])) }
+    list glRasterPos4dv(v: *const GLdouble) { |_c| Command::RasterPos(position(&arr::<GLdouble, 4>(v)?)) }
+    list glRasterPos4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) { |_c| Command::RasterPos(position(&[x, y, z, w])) }
+    list glRasterPos4fv(v: *const GLfloat) { |_c| Command::RasterPos(position(&arr::<GLfloat, 4>(v)?)) }
+    list glRasterPos4i(x: GLint, y: GLint, z: GLint, w: GLint) { |_c| Command::RasterPos(position(&[x, y, z, w])) }
+    list glRasterPos4iv(v: *const GLint) { |_c| Command::RasterPos(position(&arr::<GLint, 4>(v)?)) }
+    list glRasterPos4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) { |_c| Command::RasterPos(position(&[x, y, z, w])) }
+    list glRasterPos4sv(v: *const GLshort) { |_c| Command::RasterPos(position(&arr::<GLshort, 4>(v)?)) }
     list glMaterialf(face: GLenum, pname: GLenum, param: GLfloat) { |c| Command::Material(face, scalar_param(c, material_param_count(pname), pname)?, [param, 0.0, 0.0, 0.0]) }
     list glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat) { |_c| Command::Material(face, pname, read_params(params, material_param_count(pname), pname)?) }
     list glMateriali(face: GLenum, pname: GLenum, param: GLint) { |c| Command::Material(face, scalar_param(c, material_param_count(pname), pname)?, [param as f32, 0.0, 0.0, 0.0]) }
@@ -290,41 +329,41 @@ super::entry_points! {
     list glLineStipple(factor: GLint, pattern: GLushort) { |_c| Command::LineStipple(factor, pattern) }
     list glCullFace(mode: GLenum) { |_c| Command::CullFace(mode) }
     list glFrontFace(mode: GLenum) { |_c| Command::FrontFace(mode) }
-    todo glPolygonStipple(mask: *const GLubyte);
-    todo glPolygonMode(face: GLenum, mode: GLenum);
-    todo glPolygonOffset(factor: GLfloat, units: GLfloat);
-    client["as glPixelStorei"] glPixelStoref(pname: GLenum, param: GLfloat) { |c| c.pixel_store(pname, param as f64) }
-    client["pack modes apply to glReadPixels; unpack modes are stored for issue 5"] glPixelStorei(pname: GLenum, param: GLint) { |c| c.pixel_store(pname, param as f64) }
-    todo glPixelTransferf(pname: GLenum, param: GLfloat);
-    todo glPixelTransferi(pname: GLenum, param: GLint);
-    todo glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat);
-    todo glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint);
-    todo glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort);
-    todo glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glPixelZoom(xfactor: GLfloat, yfactor: GLfloat);
-    todo glBitmap(width: GLsizei, height: GLsizei, xorig: GLfloat, yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, bitmap: *const GLubyte);
-    todo glTexImage1D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glTexImage2D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glCopyTexImage1D(target: GLenum, level: GLint, internalFormat: GLenum, x: GLint, y: GLint, width: GLsizei, border: GLint);
-    todo glCopyTexImage2D(target: GLenum, level: GLint, internalFormat: GLenum, x: GLint, y: GLint, width: GLsizei, height: GLsizei, border: GLint);
-    todo glTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glCopyTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, x: GLint, y: GLint, width: GLsizei);
-    todo glCopyTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
-    todo glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat);
-    todo glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat);
-    todo glTexParameteri(target: GLenum, pname: GLenum, param: GLint);
-    todo glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint);
-    todo glGenTextures(n: GLsizei, textures: *mut GLuint);
-    todo glDeleteTextures(n: GLsizei, textures: *const GLuint);
-    todo glBindTexture(target: GLenum, texture: GLuint);
-    todo glPrioritizeTextures(n: GLsizei, textures: *const GLuint, priorities: *const GLclampf);
-    todo glAreTexturesResident(n: GLsizei, textures: *const GLuint, residences: *mut GLboolean) -> GLboolean;
-    todo glIsTexture(texture: GLuint) -> GLboolean;
-    todo glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat);
-    todo glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat);
-    todo glTexEnvi(target: GLenum, pname: GLenum, param: GLint);
-    todo glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint);
+    list glPolygonStipple(mask: *const GLubyte) { |c| { if mask.is_null() { return None; } Command::PolygonStipple(Box::new(unpack_stipple(&c.pixel_store.unpack, mask))) } }
+    list glPolygonMode(face: GLenum, mode: GLenum) { |_c| Command::PolygonMode(face, mode) }
+    list["applies to filled polygons; GL_POLYGON_OFFSET_LINE and _POINT are stored but not applied yet"] glPolygonOffset(factor: GLfloat, units: GLfloat) { |_c| Command::PolygonOffset(factor, units) }
+    client glPixelStoref(pname: GLenum, param: GLfloat) { |c| c.pixel_store(pname, param as f64) }
+    client glPixelStorei(pname: GLenum, param: GLint) { |c| c.pixel_store(pname, param as f64) }
+    list glPixelTransferf(pname: GLenum, param: GLfloat) { |_c| Command::PixelTransfer(pname, param as f64) }
+    list glPixelTransferi(pname: GLenum, param: GLint) { |_c| Command::PixelTransfer(pname, param as f64) }
+    list glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) { |_c| pixel_map(map, mapsize, values, |_, v| v.to_vec())? }
+    list glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) { |_c| pixel_map(map, mapsize, values, |m, v| map_values_from_uint(m, v, 32))? }
+    list glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) { |_c| pixel_map(map, mapsize, values, |m, v| map_values_from_uint(m, &v.iter().map(|&x| x as u32).collect::<Vec<_>>(), 16))? }
+    list["texturing and fog of the fragments come with those features"] glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.build_draw_pixels(width, height, format, type_, pixels as *const u8)? }
+    list glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) { |_c| Command::PixelZoom(xfactor, yfactor) }
+    list["texturing and fog of the fragments come with those features"] glBitmap(width: GLsizei, height: GLsizei, xorig: GLfloat, yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, bitmap: *const GLubyte) { |c| c.build_bitmap(width, height, [xorig, yorig], [xmove, ymove], bitmap) }
+    list glTexImage1D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_image_command(1, target, level, internalFormat, [width, 1, 1], border, format, type_, pixels as *const u8)? }
+    list glTexImage2D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_image_command(2, target, level, internalFormat, [width, height, 1], border, format, type_, pixels as *const u8)? }
+    list glCopyTexImage1D(target: GLenum, level: GLint, internalFormat: GLenum, x: GLint, y: GLint, width: GLsizei, border: GLint) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 1, sub: false, target, level, internal_format: internalFormat, offset: [0; 3], rect: [x, y, width, 1], border })) }
+    list glCopyTexImage2D(target: GLenum, level: GLint, internalFormat: GLenum, x: GLint, y: GLint, width: GLsizei, height: GLsizei, border: GLint) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 2, sub: false, target, level, internal_format: internalFormat, offset: [0; 3], rect: [x, y, width, height], border })) }
+    list glTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_sub_image_command(1, target, level, [xoffset, 0, 0], [width, 1, 1], format, type_, pixels as *const u8) }
+    list glTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_sub_image_command(2, target, level, [xoffset, yoffset, 0], [width, height, 1], format, type_, pixels as *const u8) }
+    list glCopyTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, x: GLint, y: GLint, width: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 1, sub: true, target, level, internal_format: 0, offset: [xoffset, 0, 0], rect: [x, y, width, 1], border: 0 })) }
+    list glCopyTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 2, sub: true, target, level, internal_format: 0, offset: [xoffset, yoffset, 0], rect: [x, y, width, height], border: 0 })) }
+    list glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) { |c| { if pname == TBORDER { c.set_error(GL_INVALID_ENUM); return None; } Command::TexParameter(target, pname, [param, 0.0, 0.0, 0.0]) } }
+    list glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TBORDER { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexParameter(target, pname, std::array::from_fn(|i| v.get(i).copied().unwrap_or(0.0))) } }
+    list glTexParameteri(target: GLenum, pname: GLenum, param: GLint) { |c| { if pname == TBORDER { c.set_error(GL_INVALID_ENUM); return None; } Command::TexParameter(target, pname, [param as f32, 0.0, 0.0, 0.0]) } }
+    list glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| { let border = pname == TBORDER; let v = slice(params, if border { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexParameter(target, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| if border { x.normalized() } else { x as f32 }))) } }
+    exec glGenTextures(n: GLsizei, textures: *mut GLuint) { |c| if let Some(v) = c.gen_textures(n) { write_out(textures, &v) } }
+    exec glDeleteTextures(n: GLsizei, textures: *const GLuint) { |c| { if n < 0 { return c.set_error(GL_INVALID_VALUE); } c.delete_textures(&slice(textures, n as i64)) } }
+    list glBindTexture(target: GLenum, texture: GLuint) { |_c| Command::BindTexture(target, texture) }
+    list glPrioritizeTextures(n: GLsizei, textures: *const GLuint, priorities: *const GLclampf) { |c| { if n < 0 { c.set_error(GL_INVALID_VALUE); return None; } Command::PrioritizeTextures(slice(textures, n as i64).into_iter().zip(slice(priorities, n as i64)).collect()) } }
+    exec glAreTexturesResident(n: GLsizei, textures: *const GLuint, residences: *mut GLboolean) -> GLboolean { |c| { if n < 0 { c.set_error(GL_INVALID_VALUE); return 0; } let _ = residences; match c.are_textures_resident(&slice(textures, n as i64)) { Some(_) => 1, None => 0 } } }
+    exec glIsTexture(texture: GLuint) -> GLboolean { |c| gl_bool(c.is_texture(texture)) }
+    list glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) { |c| { if pname == TENV_COLOR { c.set_error(GL_INVALID_ENUM); return None; } Command::TexEnv(target, pname, [param, 0.0, 0.0, 0.0]) } }
+    list glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TENV_COLOR { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexEnv(target, pname, std::array::from_fn(|i| v.get(i).copied().unwrap_or(0.0))) } }
+    list glTexEnvi(target: GLenum, pname: GLenum, param: GLint) { |c| { if pname == TENV_COLOR { c.set_error(GL_INVALID_ENUM); return None; } Command::TexEnv(target, pname, [param as f32, 0.0, 0.0, 0.0]) } }
+    list glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| { let color = pname == TENV_COLOR; let v = slice(params, if color { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexEnv(target, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| if color { x.normalized() } else { x as f32 }))) } }
     todo glFogf(pname: GLenum, param: GLfloat);
     todo glFogfv(pname: GLenum, params: *const GLfloat);
     todo glFogi(pname: GLenum, param: GLint);
@@ -341,44 +380,44 @@ super::entry_points! {
     list glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) { |_c| Command::ColorMask([truth(red), truth(green), truth(blue), truth(alpha)]) }
     list glDepthMask(flag: GLboolean) { |_c| Command::DepthMask(truth(flag)) }
     list glStencilMask(mask: GLuint) { |_c| Command::StencilMask(mask) }
-    list["GL_ACCUM_BUFFER_BIT is accepted but the accumulation buffer is not cleared yet (issue 3)"] glClear(mask: GLbitfield) { |_c| Command::Clear(mask) }
+    list glClear(mask: GLbitfield) { |_c| Command::Clear(mask) }
     list glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) { |_c| Command::ClearColor([red, green, blue, alpha]) }
     todo glClearIndex(c: GLfloat);
     list glClearDepth(depth: GLclampd) { |_c| Command::ClearDepth(depth) }
     list glClearStencil(s: GLint) { |_c| Command::ClearStencil(s) }
-    todo glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
-    todo glAccum(op: GLenum, value: GLfloat);
+    list glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) { |_c| Command::ClearAccum([red, green, blue, alpha]) }
+    list glAccum(op: GLenum, value: GLfloat) { |_c| Command::Accum(op, value) }
     todo glReadBuffer(mode: GLenum);
-    exec["packed pixel types (3_3_2 .. 2_10_10_10_REV) and GL_BITMAP are not packed yet; pixel transfer is not applied (issue 5)"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
-    todo glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum);
-    todo glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble);
-    todo glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat);
-    todo glMap2d(target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint, v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: *const GLdouble);
-    todo glMap2f(target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint, v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: *const GLfloat);
-    todo glEvalCoord1d(u: GLdouble);
-    todo glEvalCoord1dv(u: *const GLdouble);
-    todo glEvalCoord1f(u: GLfloat);
-    todo glEvalCoord1fv(u: *const GLfloat);
-    todo glEvalCoord2d(u: GLdouble, v: GLdouble);
-    todo glEvalCoord2dv(u: *const GLdouble);
-    todo glEvalCoord2f(u: GLfloat, v: GLfloat);
-    todo glEvalCoord2fv(u: *const GLfloat);
-    todo glMapGrid1d(un: GLint, u1: GLdouble, u2: GLdouble);
-    todo glMapGrid1f(un: GLint, u1: GLfloat, u2: GLfloat);
-    todo glMapGrid2d(un: GLint, u1: GLdouble, u2: GLdouble, vn: GLint, v1: GLdouble, v2: GLdouble);
-    todo glMapGrid2f(un: GLint, u1: GLfloat, u2: GLfloat, vn: GLint, v1: GLfloat, v2: GLfloat);
-    todo glEvalMesh1(mode: GLenum, i1: GLint, i2: GLint);
-    todo glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint);
-    todo glEvalPoint1(i: GLint);
-    todo glEvalPoint2(i: GLint, j: GLint);
-    todo glRenderMode(mode: GLenum) -> GLint;
-    todo glSelectBuffer(size: GLsizei, buffer: *mut GLuint);
-    todo glInitNames();
-    todo glLoadName(name: GLuint);
-    todo glPushName(name: GLuint);
-    todo glPopName();
-    todo glFeedbackBuffer(size: GLsizei, type_: GLenum, buffer: *mut GLfloat);
-    todo glPassThrough(token: GLfloat);
+    exec["the ARB_imaging transfer stages (colour table, convolution, colour matrix, histogram) are not implemented"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
+    list["texturing and fog of the fragments come with those features"] glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) { |_c| Command::CopyPixels(x, y, width, height, type_) }
+    list glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) { |c| Command::Map { target, u: (u1 as f32, u2 as f32), uorder: order, v: None, points: map_points(c, read_points(target, points, stride, order, 0, 1))? } }
+    list glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat) { |c| Command::Map { target, u: (u1, u2), uorder: order, v: None, points: map_points(c, read_points(target, points, stride, order, 0, 1))? } }
+    list glMap2d(target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint, v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: *const GLdouble) { |c| Command::Map { target, u: (u1 as f32, u2 as f32), uorder, v: Some(((v1 as f32, v2 as f32), vorder)), points: map_points(c, read_points(target, points, ustride, uorder, vstride, vorder))? } }
+    list glMap2f(target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint, v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: *const GLfloat) { |c| Command::Map { target, u: (u1, u2), uorder, v: Some(((v1, v2), vorder)), points: map_points(c, read_points(target, points, ustride, uorder, vstride, vorder))? } }
+    list glEvalCoord1d(u: GLdouble) { |_c| Command::EvalCoord(u as f32, None) }
+    list glEvalCoord1dv(u: *const GLdouble) { |_c| Command::EvalCoord(arr::<GLdouble, 1>(u)?[0] as f32, None) }
+    list glEvalCoord1f(u: GLfloat) { |_c| Command::EvalCoord(u, None) }
+    list glEvalCoord1fv(u: *const GLfloat) { |_c| Command::EvalCoord(arr::<GLfloat, 1>(u)?[0], None) }
+    list glEvalCoord2d(u: GLdouble, v: GLdouble) { |_c| Command::EvalCoord(u as f32, Some(v as f32)) }
+    list glEvalCoord2dv(u: *const GLdouble) { |_c| { let p = arr::<GLdouble, 2>(u)?; Command::EvalCoord(p[0] as f32, Some(p[1] as f32)) } }
+    list glEvalCoord2f(u: GLfloat, v: GLfloat) { |_c| Command::EvalCoord(u, Some(v)) }
+    list glEvalCoord2fv(u: *const GLfloat) { |_c| { let p = arr::<GLfloat, 2>(u)?; Command::EvalCoord(p[0], Some(p[1])) } }
+    list glMapGrid1d(un: GLint, u1: GLdouble, u2: GLdouble) { |_c| Command::MapGrid(un, (u1 as f32, u2 as f32), None) }
+    list glMapGrid1f(un: GLint, u1: GLfloat, u2: GLfloat) { |_c| Command::MapGrid(un, (u1, u2), None) }
+    list glMapGrid2d(un: GLint, u1: GLdouble, u2: GLdouble, vn: GLint, v1: GLdouble, v2: GLdouble) { |_c| Command::MapGrid(un, (u1 as f32, u2 as f32), Some((vn, (v1 as f32, v2 as f32)))) }
+    list glMapGrid2f(un: GLint, u1: GLfloat, u2: GLfloat, vn: GLint, v1: GLfloat, v2: GLfloat) { |_c| Command::MapGrid(un, (u1, u2), Some((vn, (v1, v2)))) }
+    list glEvalMesh1(mode: GLenum, i1: GLint, i2: GLint) { |_c| Command::EvalMesh1(mode, i1, i2) }
+    list glEvalMesh2(mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint) { |_c| Command::EvalMesh2(mode, i1, i2, j1, j2) }
+    list glEvalPoint1(i: GLint) { |_c| Command::EvalPoint(i, None) }
+    list glEvalPoint2(i: GLint, j: GLint) { |_c| Command::EvalPoint(i, Some(j)) }
+    exec glRenderMode(mode: GLenum) -> GLint { |c| c.render_mode(mode) }
+    exec glSelectBuffer(size: GLsizei, buffer: *mut GLuint) { |c| c.select_buffer(size, buffer) }
+    list glInitNames() { |_c| Command::NameStack(NameOp::Init) }
+    list glLoadName(name: GLuint) { |_c| Command::NameStack(NameOp::Load(name)) }
+    list glPushName(name: GLuint) { |_c| Command::NameStack(NameOp::Push(name)) }
+    list glPopName() { |_c| Command::NameStack(NameOp::Pop) }
+    exec["texture coordinates are reported as (0, 0, 0, 1) until texturing lands; glBitmap/glDrawPixels/glCopyPixels tokens not yet"] glFeedbackBuffer(size: GLsizei, type_: GLenum, buffer: *mut GLfloat) { |c| c.feedback_buffer(size, type_, buffer) }
+    list glPassThrough(token: GLfloat) { |_c| Command::PassThrough(token) }
     exec glNewList(list: GLuint, mode: GLenum) { |c| c.new_list(list, mode) }
     exec glEndList() { |c| c.end_list() }
     list glCallList(list: GLuint) { |_c| Command::CallList(list) }
@@ -398,37 +437,37 @@ super::entry_points! {
     exec["as glGetIntegerv"] glGetFloatv(pname: GLenum, params: *mut GLfloat) { |c| c.get_into(pname, params, |v| v.as_f64().into_iter().map(|x| x as f32).collect()) }
     exec["as glGetIntegerv"] glGetDoublev(pname: GLenum, params: *mut GLdouble) { |c| c.get_into(pname, params, get::Value::as_f64) }
     client["GL_FEEDBACK_BUFFER_POINTER and GL_SELECTION_BUFFER_POINTER are NULL until feedback and selection exist"] glGetPointerv(pname: GLenum, params: *mut *mut c_void) { |c| if let Some(p) = c.get_pointer(pname) { write_out(params, &[p as *mut c_void]) } }
-    todo glGetClipPlane(plane: GLenum, equation: *mut GLdouble);
+    exec glGetClipPlane(plane: GLenum, equation: *mut GLdouble) { |c| match c.get_clip_plane(plane) { Some(p) => write_out(equation, &p), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &v), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetLightiv(light: GLenum, pname: GLenum, params: *mut GLint) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &ints_out(&v, is_color_param(pname))), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMaterialfv(face: GLenum, pname: GLenum, params: *mut GLfloat) { |c| match c.get_material(face, pname) { Some(v) => write_out(params, &v), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMaterialiv(face: GLenum, pname: GLenum, params: *mut GLint) { |c| match c.get_material(face, pname) { Some(v) => write_out(params, &ints_out(&v, is_color_param(pname))), None => c.set_error(GL_INVALID_ENUM) } }
-    todo glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint);
-    todo glGetTexGendv(coord: GLenum, pname: GLenum, params: *mut GLdouble);
-    todo glGetTexGenfv(coord: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetTexGeniv(coord: GLenum, pname: GLenum, params: *mut GLint);
-    todo glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint);
-    todo glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat);
-    todo glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint);
-    todo glGetTexImage(target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: *mut c_void);
-    todo glGetPixelMapfv(map: GLenum, values: *mut GLfloat);
-    todo glGetPixelMapuiv(map: GLenum, values: *mut GLuint);
-    todo glGetPixelMapusv(map: GLenum, values: *mut GLushort);
-    todo glGetMapdv(target: GLenum, query: GLenum, v: *mut GLdouble);
-    todo glGetMapfv(target: GLenum, query: GLenum, v: *mut GLfloat);
-    todo glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint);
-    todo glGetPolygonStipple(mask: *mut GLubyte);
+    exec glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_tex_env(target, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_env(target, pname) { write_out(params, &v.as_i32()) } }
+    exec glGetTexGendv(coord: GLenum, pname: GLenum, params: *mut GLdouble) { |c| if let Some(v) = c.get_tex_gen(coord, pname) { write_out(params, &v.as_f64()) } }
+    exec glGetTexGenfv(coord: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_tex_gen(coord, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetTexGeniv(coord: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_gen(coord, pname) { write_out(params, &v.as_i32()) } }
+    exec glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_tex_parameter(target, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_parameter(target, pname) { write_out(params, &v.as_i32()) } }
+    exec glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_tex_level_parameter(target, level, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_level_parameter(target, level, pname) { write_out(params, &v.as_i32()) } }
+    exec["no pixel transfer (scale, bias, maps) yet"] glGetTexImage(target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.get_tex_image(target, level, format, type_, pixels as *mut u8) }
+    exec glGetPixelMapfv(map: GLenum, values: *mut GLfloat) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, v), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetPixelMapuiv(map: GLenum, values: *mut GLuint) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 32)).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetPixelMapusv(map: GLenum, values: *mut GLushort) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 16) as u16).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetMapdv(target: GLenum, query: GLenum, v: *mut GLdouble) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &x), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetMapfv(target: GLenum, query: GLenum, v: *mut GLfloat) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &x.iter().map(|&f| f as f32).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &get::Value::Floats(x).as_i32()), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetPolygonStipple(mask: *mut GLubyte) { |c| if !mask.is_null() { pack_stipple(&c.pixel_store.pack, &c.polygon.stipple_pattern, mask) } }
     exec glGetString(name: GLenum) -> *const GLubyte { |c| match get::string(name) { Some(s) => s.as_ptr(), None => { c.set_error(GL_INVALID_ENUM); std::ptr::null() } } }
-    todo glPushAttrib(mask: GLbitfield);
-    todo glPopAttrib();
-    todo glPushClientAttrib(mask: GLbitfield);
-    todo glPopClientAttrib();
+    list["saves the groups implemented so far: current, point, line, polygon, stipple, lighting, depth, accum, stencil, viewport, transform, enable, color buffer, hint, eval, list, scissor"] glPushAttrib(mask: GLbitfield) { |_c| Command::PushAttrib(mask) }
+    list glPopAttrib() { |_c| Command::PopAttrib }
+    client["saves the pixel-store modes; vertex-array state comes with vertex arrays"] glPushClientAttrib(mask: GLbitfield) { |c| c.push_client_attrib(mask) }
+    client glPopClientAttrib() { |c| c.pop_client_attrib() }
     draw glDrawRangeElements(mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, type_: GLenum, indices: *const c_void) { |c| c.draw_range_elements(mode, start, end, count, type_, indices as usize) }
-    todo glTexImage3D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void);
-    todo glCopyTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
+    list glTexImage3D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_image_command(3, target, level, internalFormat, [width, height, depth], border, format, type_, pixels as *const u8)? }
+    list glTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_sub_image_command(3, target, level, [xoffset, yoffset, zoffset], [width, height, depth], format, type_, pixels as *const u8) }
+    list glCopyTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 3, sub: true, target, level, internal_format: 0, offset: [xoffset, yoffset, zoffset], rect: [x, y, width, height], border: 0 })) }
     list glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) { |_c| Command::BlendColor([red, green, blue, alpha]) }
     list glBlendEquation(mode: GLenum) { |_c| Command::BlendEquation(mode) }
     todo glColorTable(target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, type_: GLenum, table: *const c_void);
@@ -463,52 +502,52 @@ super::entry_points! {
     todo glGetMinmax(target: GLenum, reset: GLboolean, format: GLenum, type_: GLenum, values: *mut c_void);
     todo glGetMinmaxParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat);
     todo glGetMinmaxParameteriv(target: GLenum, pname: GLenum, params: *mut GLint);
-    todo glActiveTexture(texture: GLenum);
+    list glActiveTexture(texture: GLenum) { |_c| Command::ActiveTexture(texture) }
     client glClientActiveTexture(texture: GLenum) { |c| c.client_active_texture(texture) }
-    todo glMultiTexCoord1d(target: GLenum, s: GLdouble);
-    todo glMultiTexCoord1dv(target: GLenum, v: *const GLdouble);
-    todo glMultiTexCoord1f(target: GLenum, s: GLfloat);
-    todo glMultiTexCoord1fv(target: GLenum, v: *const GLfloat);
-    todo glMultiTexCoord1i(target: GLenum, s: GLint);
-    todo glMultiTexCoord1iv(target: GLenum, v: *const GLint);
-    todo glMultiTexCoord1s(target: GLenum, s: GLshort);
-    todo glMultiTexCoord1sv(target: GLenum, v: *const GLshort);
-    todo glMultiTexCoord2d(target: GLenum, s: GLdouble, t: GLdouble);
-    todo glMultiTexCoord2dv(target: GLenum, v: *const GLdouble);
-    todo glMultiTexCoord2f(target: GLenum, s: GLfloat, t: GLfloat);
-    todo glMultiTexCoord2fv(target: GLenum, v: *const GLfloat);
-    todo glMultiTexCoord2i(target: GLenum, s: GLint, t: GLint);
-    todo glMultiTexCoord2iv(target: GLenum, v: *const GLint);
-    todo glMultiTexCoord2s(target: GLenum, s: GLshort, t: GLshort);
-    todo glMultiTexCoord2sv(target: GLenum, v: *const GLshort);
-    todo glMultiTexCoord3d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble);
-    todo glMultiTexCoord3dv(target: GLenum, v: *const GLdouble);
-    todo glMultiTexCoord3f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat);
-    todo glMultiTexCoord3fv(target: GLenum, v: *const GLfloat);
-    todo glMultiTexCoord3i(target: GLenum, s: GLint, t: GLint, r: GLint);
-    todo glMultiTexCoord3iv(target: GLenum, v: *const GLint);
-    todo glMultiTexCoord3s(target: GLenum, s: GLshort, t: GLshort, r: GLshort);
-    todo glMultiTexCoord3sv(target: GLenum, v: *const GLshort);
-    todo glMultiTexCoord4d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble);
-    todo glMultiTexCoord4dv(target: GLenum, v: *const GLdouble);
-    todo glMultiTexCoord4f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat);
-    todo glMultiTexCoord4fv(target: GLenum, v: *const GLfloat);
-    todo glMultiTexCoord4i(target: GLenum, s: GLint, t: GLint, r: GLint, q: GLint);
-    todo glMultiTexCoord4iv(target: GLenum, v: *const GLint);
-    todo glMultiTexCoord4s(target: GLenum, s: GLshort, t: GLshort, r: GLshort, q: GLshort);
-    todo glMultiTexCoord4sv(target: GLenum, v: *const GLshort);
+    list glMultiTexCoord1d(target: GLenum, s: GLdouble) { |_c| Command::TexCoord(target, texcoord(&[s])) }
+    list glMultiTexCoord1dv(target: GLenum, v: *const GLdouble) { |_c| Command::TexCoord(target, texcoord(&arr::<GLdouble, 1>(v)?)) }
+    list glMultiTexCoord1f(target: GLenum, s: GLfloat) { |_c| Command::TexCoord(target, texcoord(&[s])) }
+    list glMultiTexCoord1fv(target: GLenum, v: *const GLfloat) { |_c| Command::TexCoord(target, texcoord(&arr::<GLfloat, 1>(v)?)) }
+    list glMultiTexCoord1i(target: GLenum, s: GLint) { |_c| Command::TexCoord(target, texcoord(&[s])) }
+    list glMultiTexCoord1iv(target: GLenum, v: *const GLint) { |_c| Command::TexCoord(target, texcoord(&arr::<GLint, 1>(v)?)) }
+    list glMultiTexCoord1s(target: GLenum, s: GLshort) { |_c| Command::TexCoord(target, texcoord(&[s])) }
+    list glMultiTexCoord1sv(target: GLenum, v: *const GLshort) { |_c| Command::TexCoord(target, texcoord(&arr::<GLshort, 1>(v)?)) }
+    list glMultiTexCoord2d(target: GLenum, s: GLdouble, t: GLdouble) { |_c| Command::TexCoord(target, texcoord(&[s, t])) }
+    list glMultiTexCoord2dv(target: GLenum, v: *const GLdouble) { |_c| Command::TexCoord(target, texcoord(&arr::<GLdouble, 2>(v)?)) }
+    list glMultiTexCoord2f(target: GLenum, s: GLfloat, t: GLfloat) { |_c| Command::TexCoord(target, texcoord(&[s, t])) }
+    list glMultiTexCoord2fv(target: GLenum, v: *const GLfloat) { |_c| Command::TexCoord(target, texcoord(&arr::<GLfloat, 2>(v)?)) }
+    list glMultiTexCoord2i(target: GLenum, s: GLint, t: GLint) { |_c| Command::TexCoord(target, texcoord(&[s, t])) }
+    list glMultiTexCoord2iv(target: GLenum, v: *const GLint) { |_c| Command::TexCoord(target, texcoord(&arr::<GLint, 2>(v)?)) }
+    list glMultiTexCoord2s(target: GLenum, s: GLshort, t: GLshort) { |_c| Command::TexCoord(target, texcoord(&[s, t])) }
+    list glMultiTexCoord2sv(target: GLenum, v: *const GLshort) { |_c| Command::TexCoord(target, texcoord(&arr::<GLshort, 2>(v)?)) }
+    list glMultiTexCoord3d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble) { |_c| Command::TexCoord(target, texcoord(&[s, t, r])) }
+    list glMultiTexCoord3dv(target: GLenum, v: *const GLdouble) { |_c| Command::TexCoord(target, texcoord(&arr::<GLdouble, 3>(v)?)) }
+    list glMultiTexCoord3f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat) { |_c| Command::TexCoord(target, texcoord(&[s, t, r])) }
+    list glMultiTexCoord3fv(target: GLenum, v: *const GLfloat) { |_c| Command::TexCoord(target, texcoord(&arr::<GLfloat, 3>(v)?)) }
+    list glMultiTexCoord3i(target: GLenum, s: GLint, t: GLint, r: GLint) { |_c| Command::TexCoord(target, texcoord(&[s, t, r])) }
+    list glMultiTexCoord3iv(target: GLenum, v: *const GLint) { |_c| Command::TexCoord(target, texcoord(&arr::<GLint, 3>(v)?)) }
+    list glMultiTexCoord3s(target: GLenum, s: GLshort, t: GLshort, r: GLshort) { |_c| Command::TexCoord(target, texcoord(&[s, t, r])) }
+    list glMultiTexCoord3sv(target: GLenum, v: *const GLshort) { |_c| Command::TexCoord(target, texcoord(&arr::<GLshort, 3>(v)?)) }
+    list glMultiTexCoord4d(target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble) { |_c| Command::TexCoord(target, texcoord(&[s, t, r, q])) }
+    list glMultiTexCoord4dv(target: GLenum, v: *const GLdouble) { |_c| Command::TexCoord(target, texcoord(&arr::<GLdouble, 4>(v)?)) }
+    list glMultiTexCoord4f(target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) { |_c| Command::TexCoord(target, texcoord(&[s, t, r, q])) }
+    list glMultiTexCoord4fv(target: GLenum, v: *const GLfloat) { |_c| Command::TexCoord(target, texcoord(&arr::<GLfloat, 4>(v)?)) }
+    list glMultiTexCoord4i(target: GLenum, s: GLint, t: GLint, r: GLint, q: GLint) { |_c| Command::TexCoord(target, texcoord(&[s, t, r, q])) }
+    list glMultiTexCoord4iv(target: GLenum, v: *const GLint) { |_c| Command::TexCoord(target, texcoord(&arr::<GLint, 4>(v)?)) }
+    list glMultiTexCoord4s(target: GLenum, s: GLshort, t: GLshort, r: GLshort, q: GLshort) { |_c| Command::TexCoord(target, texcoord(&[s, t, r, q])) }
+    list glMultiTexCoord4sv(target: GLenum, v: *const GLshort) { |_c| Command::TexCoord(target, texcoord(&arr::<GLshort, 4>(v)?)) }
     list glLoadTransposeMatrixf(m: *const GLfloat) { |_c| Command::LoadMatrix(matrix(arr::<GLfloat, 16>(m)?.map(f64::from)).transpose()) }
     list glLoadTransposeMatrixd(m: *const GLdouble) { |_c| Command::LoadMatrix(matrix(arr::<GLdouble, 16>(m)?).transpose()) }
     list glMultTransposeMatrixf(m: *const GLfloat) { |_c| Command::MultMatrix(matrix(arr::<GLfloat, 16>(m)?.map(f64::from)).transpose()) }
     list glMultTransposeMatrixd(m: *const GLdouble) { |_c| Command::MultMatrix(matrix(arr::<GLdouble, 16>(m)?).transpose()) }
     todo glSampleCoverage(value: GLclampf, invert: GLboolean);
-    todo glCompressedTexImage1D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void);
-    todo glCompressedTexImage2D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void);
-    todo glCompressedTexImage3D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void);
-    todo glCompressedTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void);
-    todo glCompressedTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void);
-    todo glCompressedTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void);
-    todo glGetCompressedTexImage(target: GLenum, level: GLint, img: *mut c_void);
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexImage1D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, internalformat, width, border, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexImage2D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, internalformat, width, height, border, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexImage3D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, internalformat, width, height, depth, border, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, xoffset, width, format, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, xoffset, yoffset, width, height, format, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, xoffset, yoffset, zoffset, width, height, depth, format, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
+    exec["no image is compressed: GL_INVALID_OPERATION"] glGetCompressedTexImage(target: GLenum, level: GLint, img: *mut c_void) { |c| { let _ = (target, level, img); c.set_error(GL_INVALID_OPERATION) } }
     list glBlendFuncSeparate(sfactorRGB: GLenum, dfactorRGB: GLenum, sfactorAlpha: GLenum, dfactorAlpha: GLenum) { |_c| Command::BlendFunc([sfactorRGB, dfactorRGB, sfactorAlpha, dfactorAlpha]) }
     list["stored as the current fog coordinate; fog is not applied yet"] glFogCoordf(coord: GLfloat) { |_c| Command::FogCoord(coord) }
     list["as glFogCoordf"] glFogCoordfv(coord: *const GLfloat) { |_c| Command::FogCoord(arr::<GLfloat, 1>(coord)?[0]) }
@@ -538,22 +577,22 @@ super::entry_points! {
     list["as glSecondaryColor3f"] glSecondaryColor3us(red: GLushort, green: GLushort, blue: GLushort) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
     list["as glSecondaryColor3f"] glSecondaryColor3usv(v: *const GLushort) { |_c| Command::SecondaryColor(color(&arr::<GLushort, 3>(v)?)) }
     client["as glSecondaryColor3f"] glSecondaryColorPointer(size: GLint, type_: GLenum, stride: GLsizei, pointer: *const c_void) { |c| c.array_pointer(Array::SecondaryColor, size, type_, stride, pointer as usize) }
-    todo glWindowPos2d(x: GLdouble, y: GLdouble);
-    todo glWindowPos2dv(v: *const GLdouble);
-    todo glWindowPos2f(x: GLfloat, y: GLfloat);
-    todo glWindowPos2fv(v: *const GLfloat);
-    todo glWindowPos2i(x: GLint, y: GLint);
-    todo glWindowPos2iv(v: *const GLint);
-    todo glWindowPos2s(x: GLshort, y: GLshort);
-    todo glWindowPos2sv(v: *const GLshort);
-    todo glWindowPos3d(x: GLdouble, y: GLdouble, z: GLdouble);
-    todo glWindowPos3dv(v: *const GLdouble);
-    todo glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat);
-    todo glWindowPos3fv(v: *const GLfloat);
-    todo glWindowPos3i(x: GLint, y: GLint, z: GLint);
-    todo glWindowPos3iv(v: *const GLint);
-    todo glWindowPos3s(x: GLshort, y: GLshort, z: GLshort);
-    todo glWindowPos3sv(v: *const GLshort);
+    list glWindowPos2d(x: GLdouble, y: GLdouble) { |_c| window_pos(&[x, y]) }
+    list glWindowPos2dv(v: *const GLdouble) { |_c| window_pos(&arr::<GLdouble, 2>(v)?) }
+    list glWindowPos2f(x: GLfloat, y: GLfloat) { |_c| window_pos(&[x, y]) }
+    list glWindowPos2fv(v: *const GLfloat) { |_c| window_pos(&arr::<GLfloat, 2>(v)?) }
+    list glWindowPos2i(x: GLint, y: GLint) { |_c| window_pos(&[x, y]) }
+    list glWindowPos2iv(v: *const GLint) { |_c| window_pos(&arr::<GLint, 2>(v)?) }
+    list glWindowPos2s(x: GLshort, y: GLshort) { |_c| window_pos(&[x, y]) }
+    list glWindowPos2sv(v: *const GLshort) { |_c| window_pos(&arr::<GLshort, 2>(v)?) }
+    list glWindowPos3d(x: GLdouble, y: GLdouble, z: GLdouble) { |_c| window_pos(&[x, y, z]) }
+    list glWindowPos3dv(v: *const GLdouble) { |_c| window_pos(&arr::<GLdouble, 3>(v)?) }
+    list glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat) { |_c| window_pos(&[x, y, z]) }
+    list glWindowPos3fv(v: *const GLfloat) { |_c| window_pos(&arr::<GLfloat, 3>(v)?) }
+    list glWindowPos3i(x: GLint, y: GLint, z: GLint) { |_c| window_pos(&[x, y, z]) }
+    list glWindowPos3iv(v: *const GLint) { |_c| window_pos(&arr::<GLint, 3>(v)?) }
+    list glWindowPos3s(x: GLshort, y: GLshort, z: GLshort) { |_c| window_pos(&[x, y, z]) }
+    list glWindowPos3sv(v: *const GLshort) { |_c| window_pos(&arr::<GLshort, 3>(v)?) }
     exec glGenQueries(n: GLsizei, ids: *mut GLuint) { |c| if let Some(v) = c.gen_queries(n) { write_out(ids, &v) } }
     exec glDeleteQueries(n: GLsizei, ids: *const GLuint) { |c| if n < 0 { c.set_error(GL_INVALID_VALUE) } else { c.delete_queries(&slice(ids, n as i64)) } }
     exec glIsQuery(id: GLuint) -> GLboolean { |c| gl_bool(c.is_query(id)) }
@@ -603,20 +642,20 @@ super::entry_points! {
     free gluCylinder(quad: *mut GLUquadric, base: GLdouble, top: GLdouble, height: GLdouble, slices: GLint, stacks: GLint) { glu::quadric::with(quad, |q| q.cylinder(&mut glu::quadric::GlSink, base, top, height, slices, stacks)) }
     free gluDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint) { glu::quadric::with(quad, |q| q.disk(&mut glu::quadric::GlSink, inner, outer, slices, loops)) }
     free gluPartialDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint, start: GLdouble, sweep: GLdouble) { glu::quadric::with(quad, |q| q.partial_disk(&mut glu::quadric::GlSink, inner, outer, slices, loops, start, sweep)) }
-    todo gluNewTess() -> *mut GLUtesselator;
-    todo gluDeleteTess(tess: *mut GLUtesselator);
-    todo gluTessBeginPolygon(tess: *mut GLUtesselator, data: *mut c_void);
-    todo gluTessBeginContour(tess: *mut GLUtesselator);
-    todo gluTessVertex(tess: *mut GLUtesselator, location: *mut GLdouble, data: *mut c_void);
-    todo gluTessEndContour(tess: *mut GLUtesselator);
-    todo gluTessEndPolygon(tess: *mut GLUtesselator);
-    todo gluTessCallback(tess: *mut GLUtesselator, which: GLenum, CallBackFunc: GLproc);
-    todo gluTessProperty(tess: *mut GLUtesselator, which: GLenum, data: GLdouble);
-    todo gluGetTessProperty(tess: *mut GLUtesselator, which: GLenum, data: *mut GLdouble);
-    todo gluTessNormal(tess: *mut GLUtesselator, valueX: GLdouble, valueY: GLdouble, valueZ: GLdouble);
-    todo gluBeginPolygon(tess: *mut GLUtesselator);
-    todo gluNextContour(tess: *mut GLUtesselator, type_: GLenum);
-    todo gluEndPolygon(tess: *mut GLUtesselator);
+    free gluNewTess() -> *mut GLUtesselator { glu::tess::new_tess() }
+    free gluDeleteTess(tess: *mut GLUtesselator) { glu::tess::delete_tess(tess) }
+    free gluTessBeginPolygon(tess: *mut GLUtesselator, data: *mut c_void) { glu::tess::begin_polygon(tess, data) }
+    free gluTessBeginContour(tess: *mut GLUtesselator) { glu::tess::begin_contour(tess) }
+    free gluTessVertex(tess: *mut GLUtesselator, location: *mut GLdouble, data: *mut c_void) { glu::tess::vertex(tess, location, data) }
+    free gluTessEndContour(tess: *mut GLUtesselator) { glu::tess::end_contour(tess) }
+    free gluTessEndPolygon(tess: *mut GLUtesselator) { glu::tess::end_polygon(tess) }
+    free gluTessCallback(tess: *mut GLUtesselator, which: GLenum, CallBackFunc: GLproc) { glu::tess::callback(tess, which, CallBackFunc) }
+    free gluTessProperty(tess: *mut GLUtesselator, which: GLenum, data: GLdouble) { glu::tess::property(tess, which, data) }
+    free gluGetTessProperty(tess: *mut GLUtesselator, which: GLenum, data: *mut GLdouble) { glu::tess::get_property(tess, which, data) }
+    free gluTessNormal(tess: *mut GLUtesselator, valueX: GLdouble, valueY: GLdouble, valueZ: GLdouble) { glu::tess::normal(tess, valueX, valueY, valueZ) }
+    free gluBeginPolygon(tess: *mut GLUtesselator) { glu::tess::begin_polygon_11(tess) }
+    free gluNextContour(tess: *mut GLUtesselator, type_: GLenum) { glu::tess::next_contour(tess, type_) }
+    free gluEndPolygon(tess: *mut GLUtesselator) { glu::tess::end_polygon_11(tess) }
     todo gluNewNurbsRenderer() -> *mut GLUnurbs;
     todo gluDeleteNurbsRenderer(nurb: *mut GLUnurbs);
     todo gluNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, value: GLfloat);
@@ -691,4 +730,28 @@ super::entry_points! {
     todo glXGetSelectedEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: *mut std::ffi::c_ulong);
     free glXGetProcAddressARB(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
     free glXGetProcAddress(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
+
+    // ---- softgl_wgl.h ----
+    free wglCreateContext(hdc: *mut c_void) -> *mut c_void { crate::winsys::wgl::create_context(hdc) }
+    free wglDeleteContext(hglrc: *mut c_void) -> c_int { crate::winsys::wgl::delete_context(hglrc) }
+    free wglMakeCurrent(hdc: *mut c_void, hglrc: *mut c_void) -> c_int { crate::winsys::wgl::make_current(hdc, hglrc) }
+    free wglGetCurrentContext() -> *mut c_void { crate::winsys::wgl::get_current_context() }
+    free wglGetCurrentDC() -> *mut c_void { crate::winsys::wgl::get_current_dc() }
+    free["checks both contexts and returns TRUE, but display lists are not shared yet"] wglShareLists(hglrc1: *mut c_void, hglrc2: *mut c_void) -> c_int { crate::winsys::wgl::share_lists(hglrc1, hglrc2) }
+    free["copies the current, point, line, polygon, lighting, depth, stencil, viewport, colour-buffer, hint, scissor and list-base groups; not transform, fog, texture, pixel-mode, evaluator or accumulation state"] wglCopyContext(hglrcSrc: *mut c_void, hglrcDst: *mut c_void, mask: u32) -> c_int { crate::winsys::wgl::copy_context(hglrcSrc, hglrcDst, mask) }
+    free wglGetProcAddress(lpszProc: *const c_char) -> GLproc { proc_from_name(lpszProc) }
+    free wglChoosePixelFormat(hdc: *mut c_void, ppfd: *const crate::winsys::wgl::PixelFormatDescriptor) -> c_int { crate::winsys::wgl::choose_pixel_format(hdc, ppfd) }
+    free wglDescribePixelFormat(hdc: *mut c_void, iPixelFormat: c_int, nBytes: u32, ppfd: *mut crate::winsys::wgl::PixelFormatDescriptor) -> c_int { crate::winsys::wgl::describe_pixel_format(hdc, iPixelFormat, nBytes, ppfd) }
+    free wglSetPixelFormat(hdc: *mut c_void, iPixelFormat: c_int, ppfd: *const crate::winsys::wgl::PixelFormatDescriptor) -> c_int { crate::winsys::wgl::set_pixel_format(hdc, iPixelFormat, ppfd) }
+    free wglGetPixelFormat(hdc: *mut c_void) -> c_int { crate::winsys::wgl::get_pixel_format(hdc) }
+    free wglSwapBuffers(hdc: *mut c_void) -> c_int { crate::winsys::wgl::swap_buffers(hdc) }
+    free["built-in misc-fixed bitmap fonts chosen by height and weight (docs/fonts.md), not the DC's GDI font"] wglUseFontBitmapsA(hdc: *mut c_void, first: u32, count: u32, listBase: u32) -> c_int { crate::winsys::wgl::use_font_bitmaps(hdc, first, count, listBase, false) }
+    free["as wglUseFontBitmapsA; code points beyond ASCII, Latin-1, Cyrillic and code pages 1251/1252 draw U+FFFD"] wglUseFontBitmapsW(hdc: *mut c_void, first: u32, count: u32, listBase: u32) -> c_int { crate::winsys::wgl::use_font_bitmaps(hdc, first, count, listBase, true) }
+    todo wglUseFontOutlinesA(hdc: *mut c_void, first: u32, count: u32, listBase: u32, deviation: f32, extrusion: f32, format: c_int, lpgmf: *mut c_void) -> c_int;
+    todo wglUseFontOutlinesW(hdc: *mut c_void, first: u32, count: u32, listBase: u32, deviation: f32, extrusion: f32, format: c_int, lpgmf: *mut c_void) -> c_int;
+    free softglCreateDC(width: c_int, height: c_int) -> *mut c_void { crate::winsys::wgl::create_dc(width, height) }
+    free softglDestroyDC(hdc: *mut c_void) -> c_int { crate::winsys::wgl::destroy_dc(hdc) }
+    free softglResizeDC(hdc: *mut c_void, width: c_int, height: c_int) -> c_int { crate::winsys::wgl::resize_dc(hdc, width, height) }
+    free softglSelectFont(hdc: *mut c_void, height: c_int, weight: c_int, charset: c_int) -> c_int { crate::winsys::wgl::select_font(hdc, height, weight, charset) }
+    free softglGetDCImage(hdc: *mut c_void, width: *mut c_int, height: *mut c_int) -> *const GLubyte { crate::winsys::wgl::dc_image(hdc, width, height) }
 }

@@ -4,7 +4,7 @@
 //!     coverage --check README.md  exit 1 if the block is out of date
 //!
 //! Groups come from the headers: gl.h's GL_VERSION_1_x sections, glu.h,
-//! osmesa.h, glx.h. Run from the repository root.
+//! osmesa.h, glx.h, softgl_wgl.h. Run from the repository root.
 
 use softgl::api::{Kind, ENTRY_POINTS};
 use std::collections::HashMap;
@@ -17,7 +17,7 @@ const END: &str = "<!-- coverage:end -->";
 fn groups() -> (Vec<String>, HashMap<String, String>) {
     let mut order = Vec::new();
     let mut map = HashMap::new();
-    for (file, first) in [("include/GL/gl.h", "GL 1.0 and 1.1"), ("include/GL/glu.h", "GLU 1.3"), ("include/GL/osmesa.h", "OSMesa"), ("include/GL/glx.h", "GLX")] {
+    for (file, first) in [("include/GL/gl.h", "GL 1.0 and 1.1"), ("include/GL/glu.h", "GLU 1.3"), ("include/GL/osmesa.h", "OSMesa"), ("include/GL/glx.h", "GLX"), ("include/GL/softgl_wgl.h", "WGL")] {
         let text = std::fs::read_to_string(file).unwrap_or_else(|e| panic!("{file}: {e}"));
         let mut group = first.to_string();
         order.push(group.clone());

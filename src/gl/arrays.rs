@@ -24,12 +24,12 @@
 //! negative count, mapped buffer) are reported at compile time and nothing
 //! is recorded.
 //!
-//! Texture coordinates: issue 4 gives texturing to other work. Texture
-//! coordinate arrays are complete as state (per unit, glClientActiveTexture)
-//! and feed [`Context::set_tex_coord`], which stores the current texture
-//! coordinates of a unit, and `Command::MultiTexCoord(unit, stqr)` when
-//! compiled. When glTexCoord/glMultiTexCoord arrive, both should become
-//! whatever per-vertex texture coordinate command they define.
+//! Texture coordinates: one array per texture unit; glTexCoordPointer,
+//! GL_TEXTURE_COORD_ARRAY and the GL_TEXTURE_COORD_ARRAY_* queries act on
+//! the client active unit (`texture.client_active`, gl::texture's
+//! glClientActiveTexture). Executed, they set `current.tex_coords`;
+//! compiled, they record `Command::TexCoord(GL_TEXTURE0 + unit, strq)`, as
+//! glMultiTexCoord does.
 //!
 //! Safety: client arrays are read through the raw pointers the program
 //! gave, as GL requires. A client pointer inside the first page (NULL, or
@@ -44,14 +44,13 @@ use super::enums::*;
 use super::get::Value;
 
 /// Texture coordinate sets (and texture coordinate arrays) kept per vertex.
-pub const MAX_TEXTURE_UNITS: usize = 4;
+pub use crate::render::texture::MAX_UNITS as MAX_TEXTURE_UNITS;
 
 /// GL_MAX_ELEMENTS_VERTICES and GL_MAX_ELEMENTS_INDICES: a recommendation
 /// only; any count draws.
 pub const MAX_ELEMENTS: i64 = 65536;
 
 pub const GL_TEXTURE0: u32 = 0x84C0;
-pub const GL_CLIENT_ACTIVE_TEXTURE: u32 = 0x84E1;
 pub const GL_CURRENT_INDEX: u32 = 0x0B01;
 pub const GL_EDGE_FLAG: u32 = 0x0B43;
 pub const GL_CURRENT_FOG_COORD: u32 = 0x8453;
@@ -110,8 +109,6 @@ pub struct ArrayState {
     pub index: ArrayPointer,
     pub edge_flag: ArrayPointer,
     pub tex_coord: [ArrayPointer; MAX_TEXTURE_UNITS],
-    /// glClientActiveTexture, as a unit number.
-    pub client_active_texture: usize,
 }
 
 impl Default for ArrayState {
@@ -125,7 +122,6 @@ impl Default for ArrayState {
             index: ArrayPointer::initial(1),
             edge_flag: ArrayPointer { type_: GL_UNSIGNED_BYTE, ..ArrayPointer::initial(1) },
             tex_coord: [ArrayPointer::initial(4); MAX_TEXTURE_UNITS],
-            client_active_texture: 0,
         }
     }
 }
@@ -165,7 +161,7 @@ impl ArrayState {
 
     /// The array a client-state capability names (GL_TEXTURE_COORD_ARRAY:
     /// the client active unit's).
-    pub fn from_cap(&self, cap: u32) -> Option<Array> {
+    pub fn from_cap(cap: u32, client_active: usize) -> Option<Array> {
         Some(match cap {
             GL_VERTEX_ARRAY => Array::Vertex,
             GL_NORMAL_ARRAY => Array::Normal,
@@ -174,7 +170,7 @@ impl ArrayState {
             GL_FOG_COORD_ARRAY => Array::FogCoord,
             GL_INDEX_ARRAY => Array::Index,
             GL_EDGE_FLAG_ARRAY => Array::EdgeFlag,
-            GL_TEXTURE_COORD_ARRAY => Array::TexCoord(self.client_active_texture),
+            GL_TEXTURE_COORD_ARRAY => Array::TexCoord(client_active),
             _ => return None,
         })
     }
@@ -481,14 +477,6 @@ fn interleaved(format: u32) -> Option<Interleaved> {
 }
 
 impl Context {
-    /// The current texture coordinates of `unit` (the texture coordinate
-    /// hook, see the module comment).
-    pub fn set_tex_coord(&mut self, unit: usize, stqr: [f32; 4]) {
-        if let Some(t) = self.current.tex_coord.get_mut(unit) {
-            *t = stqr;
-        }
-    }
-
     /// The gl*Pointer calls. The pointer is an offset when a buffer is
     /// bound to ARRAY_BUFFER.
     pub fn array_pointer(&mut self, a: Array, size: i32, ty: u32, stride: i32, pointer: usize) {
@@ -509,13 +497,13 @@ impl Context {
 
     /// glTexCoordPointer: the client active unit's array.
     pub fn tex_coord_pointer(&mut self, size: i32, ty: u32, stride: i32, pointer: usize) {
-        let u = self.arrays.client_active_texture;
+        let u = self.texture.client_active;
         self.array_pointer(Array::TexCoord(u), size, ty, stride, pointer)
     }
 
     /// glEnableClientState / glDisableClientState.
     pub fn client_state(&mut self, cap: u32, on: bool) {
-        match self.arrays.from_cap(cap) {
+        match ArrayState::from_cap(cap, self.texture.client_active) {
             Some(a) => self.arrays.get_mut(a).enabled = on,
             None => self.set_error(GL_INVALID_ENUM),
         }
@@ -523,14 +511,7 @@ impl Context {
 
     /// glIsEnabled for the array capabilities.
     pub fn client_state_enabled(&self, cap: u32) -> Option<bool> {
-        self.arrays.from_cap(cap).map(|a| self.arrays.get(a).enabled)
-    }
-
-    pub fn client_active_texture(&mut self, texture: u32) {
-        match texture.checked_sub(GL_TEXTURE0) {
-            Some(u) if (u as usize) < MAX_TEXTURE_UNITS => self.arrays.client_active_texture = u as usize,
-            _ => self.set_error(GL_INVALID_ENUM),
-        }
+        ArrayState::from_cap(cap, self.texture.client_active).map(|a| self.arrays.get(a).enabled)
     }
 
     /// glInterleavedArrays (section 2.8, table 2.5).
@@ -540,7 +521,7 @@ impl Context {
             return self.set_error(GL_INVALID_VALUE);
         }
         let s = if stride == 0 { f.stride as i32 } else { stride };
-        let unit = self.arrays.client_active_texture;
+        let unit = self.texture.client_active;
         for a in [Array::EdgeFlag, Array::Index, Array::SecondaryColor, Array::FogCoord] {
             self.arrays.get_mut(a).enabled = false;
         }
@@ -568,7 +549,7 @@ impl Context {
             0x808F => Array::Normal,
             0x8090 => Array::Color,
             0x8091 => Array::Index,
-            0x8092 => Array::TexCoord(self.arrays.client_active_texture),
+            0x8092 => Array::TexCoord(self.texture.client_active),
             0x8093 => Array::EdgeFlag,
             0x8456 => Array::FogCoord,
             0x845D => Array::SecondaryColor,
@@ -588,7 +569,7 @@ impl Context {
     /// secondary colour); None for other names.
     pub fn get_array_value(&self, pname: u32) -> Option<Value> {
         let ar = &self.arrays;
-        let tex = &ar.tex_coord[ar.client_active_texture];
+        let tex = &ar.tex_coord[self.texture.client_active];
         let int = |v: i64| Some(Value::Ints(vec![v]));
         match pname {
             0x807A => int(ar.vertex.size as i64),
@@ -620,7 +601,6 @@ impl Context {
             0x889B => int(ar.edge_flag.buffer as i64),
             0x889C => int(ar.secondary_color.buffer as i64),
             0x889D => int(ar.fog_coord.buffer as i64),
-            GL_CLIENT_ACTIVE_TEXTURE => int((GL_TEXTURE0 as usize + ar.client_active_texture) as i64),
             GL_MAX_ELEMENTS_VERTICES | GL_MAX_ELEMENTS_INDICES => int(MAX_ELEMENTS),
             GL_CURRENT_INDEX => Some(Value::Floats(vec![self.current.index as f64])),
             GL_EDGE_FLAG => Some(Value::Bools(vec![self.current.edge_flag])),
@@ -688,7 +668,7 @@ impl Context {
             }
             for (u, s) in f.tex_coord.iter().enumerate() {
                 if let Some(s) = s {
-                    self.set_tex_coord(u, s.fetch(i));
+                    self.current.tex_coords[u] = s.fetch(i);
                 }
             }
             if let Some(s) = &f.secondary_color {
@@ -724,7 +704,7 @@ impl Context {
         }
         for (u, t) in e.tex_coord.iter().enumerate() {
             if let Some(t) = t {
-                l.record(Command::MultiTexCoord(u as u32, *t));
+                l.record(Command::TexCoord(GL_TEXTURE0 + u as u32, *t));
             }
         }
         if let Some(c) = e.color {

@@ -12,6 +12,7 @@
 
 use super::context::Context;
 use super::enums::*;
+use super::select;
 use crate::render::{self, ClipVertex};
 use glam::Vec4;
 
@@ -47,9 +48,12 @@ impl Context {
         }
         if asm.mode == GL_POLYGON && asm.verts.len() >= 3 {
             // A convex polygon as a fan; flat shading takes the first vertex.
+            // Only the polygon's own edges are boundary edges (2.6.2).
             let v = &asm.verts;
-            for i in 1..v.len() - 1 {
-                self.triangle([&v[0], &v[i], &v[i + 1]], 0);
+            let n = v.len();
+            for i in 1..n - 1 {
+                let edges = [i == 1 && v[0].edge, v[i].edge, i + 1 == n - 1 && v[n - 1].edge];
+                self.triangle([&v[0], &v[i], &v[i + 1]], 0, edges);
             }
         }
     }
@@ -74,7 +78,8 @@ impl Context {
                 (front, back)
             }
         };
-        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color };
+        let tex = self.vertex_texcoords(obj);
+        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex };
         self.assemble(&mut asm, v);
         self.prim = Some(asm);
     }
@@ -87,7 +92,7 @@ impl Context {
                 asm.verts.push(v);
                 if asm.verts.len() == 3 {
                     let t = std::mem::take(&mut asm.verts);
-                    self.triangle([&t[0], &t[1], &t[2]], 2);
+                    self.triangle([&t[0], &t[1], &t[2]], 2, [t[0].edge, t[1].edge, t[2].edge]);
                     asm.verts = t;
                     asm.verts.clear();
                 }
@@ -99,9 +104,9 @@ impl Context {
                     // the strip's orientation; the provoking vertex is the
                     // newest either way.
                     if n % 2 == 0 {
-                        self.triangle([&a, &b, &v], 2);
+                        self.triangle([&a, &b, &v], 2, [true; 3]);
                     } else {
-                        self.triangle([&b, &a, &v], 2);
+                        self.triangle([&b, &a, &v], 2, [true; 3]);
                     }
                     asm.verts[0] = b;
                     asm.verts[1] = v;
@@ -112,7 +117,7 @@ impl Context {
             GL_TRIANGLE_FAN => {
                 if n >= 2 {
                     let (a, b) = (asm.verts[0], asm.verts[1]);
-                    self.triangle([&a, &b, &v], 2);
+                    self.triangle([&a, &b, &v], 2, [true; 3]);
                     asm.verts[1] = v;
                 } else {
                     asm.verts.push(v);
@@ -122,7 +127,7 @@ impl Context {
                 asm.verts.push(v);
                 if asm.verts.len() == 4 {
                     let q = std::mem::take(&mut asm.verts);
-                    self.quad(&q[0], &q[1], &q[2], &q[3], &q[3]);
+                    self.quad(&q[0], &q[1], &q[2], &q[3], &q[3], true);
                     asm.verts = q;
                     asm.verts.clear();
                 }
@@ -133,7 +138,7 @@ impl Context {
                     // v0-v3 as Mesa's softpipe does (the spec leaves the
                     // split open); v3, the last sent, provokes.
                     let (a, b, c) = (asm.verts[0], asm.verts[1], asm.verts[2]);
-                    self.quad(&c, &a, &b, &v, &v);
+                    self.quad(&c, &a, &b, &v, &v, false);
                     asm.verts.clear();
                     asm.verts.push(c);
                     asm.verts.push(v);
@@ -142,6 +147,9 @@ impl Context {
                 }
             }
             GL_POLYGON => asm.verts.push(v),
+            GL_POINTS if self.select.mode != select::GL_RENDER => {
+                self.select_primitive(&[&v], select::GL_POINT_TOKEN, false);
+            }
             GL_POINTS => {
                 render::point::draw_point(&self.derived.render, &mut self.fb, self.point.size, &v);
             }
@@ -181,6 +189,13 @@ impl Context {
 
     /// One line segment; flat shading takes `b`'s colour.
     fn line(&mut self, a: &ClipVertex, b: &ClipVertex, stipple: &mut u32) {
+        if self.select.mode != select::GL_RENDER {
+            // The first segment of a strip or of each GL_LINES pair resets
+            // the stipple: feedback marks it with GL_LINE_RESET_TOKEN.
+            let reset = *stipple == 0;
+            *stipple += 1;
+            return self.select_primitive(&[a, b], select::GL_LINE_TOKEN, reset);
+        }
         let l = &self.line;
         let lp = render::line::LineParams {
             width: l.width,
@@ -190,14 +205,26 @@ impl Context {
     }
 
     /// A quad in boundary order (a, b, c, d), split into (a, b, d) and
-    /// (b, c, d); flat shading takes `provoking`'s colour for both.
-    fn quad(&mut self, a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, d: &ClipVertex, provoking: &ClipVertex) {
+    /// (b, c, d); flat shading takes `provoking`'s colour for both. The
+    /// diagonal is never a boundary edge; the others carry the vertices'
+    /// edge flags for GL_QUADS (`flags`) and are all boundary in strips.
+    #[allow(clippy::too_many_arguments)]
+    fn quad(&mut self, a: &ClipVertex, b: &ClipVertex, c: &ClipVertex, d: &ClipVertex, provoking: &ClipVertex, flags: bool) {
+        let f = |v: &ClipVertex| !flags || v.edge;
+        if self.select.mode != select::GL_RENDER {
+            self.select_primitive(&[a, b, d], select::GL_POLYGON_TOKEN, false);
+            return self.select_primitive(&[b, c, d], select::GL_POLYGON_TOKEN, false);
+        }
         let flat = [provoking.color, provoking.back_color];
-        render::draw_triangle(&self.derived.render, &mut self.fb, [a, b, d], flat);
-        render::draw_triangle(&self.derived.render, &mut self.fb, [b, c, d], flat);
+        render::draw_triangle(&self.derived.render, &mut self.fb, [a, b, d], flat, [f(a), false, f(d)]);
+        render::draw_triangle(&self.derived.render, &mut self.fb, [b, c, d], flat, [f(b), f(c), false]);
     }
 
-    fn triangle(&mut self, v: [&ClipVertex; 3], provoking: usize) {
-        render::draw_triangle(&self.derived.render, &mut self.fb, v, [v[provoking].color, v[provoking].back_color]);
+    /// One triangle; `edges[i]` flags the edge from v[i] to v[i + 1].
+    fn triangle(&mut self, v: [&ClipVertex; 3], provoking: usize, edges: [bool; 3]) {
+        if self.select.mode != select::GL_RENDER {
+            return self.select_primitive(&v, select::GL_POLYGON_TOKEN, false);
+        }
+        render::draw_triangle(&self.derived.render, &mut self.fb, v, [v[provoking].color, v[provoking].back_color], edges);
     }
 }

@@ -66,6 +66,8 @@ impl Context {
                 });
             }
         }
-        // GL_ACCUM_BUFFER_BIT: the accumulation buffer arrives with issue 3.
+        if mask & GL_ACCUM_BUFFER_BIT != 0 {
+            self.clear_accum_buffer(r);
+        }
     }
 }

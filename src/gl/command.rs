@@ -5,7 +5,9 @@
 
 use super::context::Context;
 use super::enums::*;
+use super::draw_pixels::{Bitmap, PixelRect};
 use glam::DMat4;
+use std::rc::Rc;
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum Command {
@@ -15,16 +17,11 @@ pub enum Command {
     Vertex([f32; 4]),
     Color([f32; 4]),
     Normal([f32; 3]),
-    EdgeFlag(bool),
     /// glIndex: stored, no effect in RGBA mode.
     Index(f32),
     FogCoord(f32),
     /// glSecondaryColor3: RGB and alpha 1.
     SecondaryColor([f32; 4]),
-    /// Texture coordinates of a unit (0-based): the hook vertex arrays feed
-    /// and compile into lists (gl::arrays); glTexCoord/glMultiTexCoord
-    /// should become this or replace it.
-    MultiTexCoord(u32, [f32; 4]),
     // Section 2.14: lighting. Parameters padded to 4 values.
     Light(u32, u32, [f32; 4]),
     LightModel(u32, [f32; 4]),
@@ -74,6 +71,8 @@ pub enum Command {
     ClearDepth(f64),
     ClearStencil(i32),
     Clear(u32),
+    ClearAccum([f32; 4]),
+    Accum(u32, f32),
     // Section 5: enables, hints, display lists.
     Enable(u32),
     Disable(u32),
@@ -85,6 +84,57 @@ pub enum Command {
     // Section 4.1.6: occlusion queries (compiled into lists).
     BeginQuery(u32, u32),
     EndQuery(u32),
+    ClipPlane(u32, [f64; 4]),
+    PushAttrib(u32),
+    PopAttrib,
+    // Sections 2.6.2 and 3.5: edge flags and polygon modes.
+    EdgeFlag(bool),
+    PolygonMode(u32, u32),
+    PolygonOffset(f32, f32),
+    PolygonStipple(Box<[u32; 32]>),
+    // Section 5.2, 5.3: the name stack and feedback markers.
+    NameStack(super::select::NameOp),
+    // Section 5.1: evaluators. Map points are copied at the call.
+    Map { target: u32, u: (f32, f32), uorder: i32, v: Option<((f32, f32), i32)>, points: Vec<f32> },
+    EvalCoord(f32, Option<f32>),
+    EvalPoint(i32, Option<i32>),
+    MapGrid(i32, (f32, f32), Option<(i32, (f32, f32))>),
+    EvalMesh1(u32, i32, i32),
+    EvalMesh2(u32, i32, i32, i32, i32),
+    PassThrough(f32),
+    // Sections 2.13, 3.6, 3.7, 4.3.3: raster position and pixel rectangles.
+    /// glRasterPos: object coordinates.
+    RasterPos([f32; 4]),
+    /// glWindowPos: window x, y and depth.
+    WindowPos([f32; 3]),
+    PixelTransfer(u32, f64),
+    /// glPixelMap: the map and its entries as floats.
+    PixelMap(u32, Vec<f32>),
+    PixelZoom(f32, f32),
+    /// glBitmap, unpacked when built.
+    Bitmap(Rc<Bitmap>),
+    /// glDrawPixels, unpacked when built.
+    DrawPixels(Rc<PixelRect>),
+    /// glCopyPixels(x, y, width, height, type).
+    CopyPixels(i32, i32, i32, i32, u32),
+    /// A command whose arguments failed a check made when it was built
+    /// (unpacking needs a valid format and type): executing it raises the
+    /// error, so a display list raises it when called, as the spec says.
+    Error(u32),
+    // Section 3.8 and 2.11.4: texturing. TexCoord(unit enum, strq).
+    TexCoord(u32, [f32; 4]),
+    ActiveTexture(u32),
+    BindTexture(u32, u32),
+    /// glTexParameter(target, pname, values as floats).
+    TexParameter(u32, u32, [f32; 4]),
+    /// glTexEnv(target, pname, values as floats).
+    TexEnv(u32, u32, [f32; 4]),
+    /// glTexGen(coord, pname, values).
+    TexGen(u32, u32, [f64; 4]),
+    TexImage(Box<super::texture::TexImageCmd>),
+    TexSubImage(Box<super::texture::TexSubImageCmd>),
+    CopyTex(Box<super::texture::CopyTexCmd>),
+    PrioritizeTextures(Vec<(u32, f32)>),
 }
 
 impl Command {
@@ -95,12 +145,14 @@ impl Command {
             Command::Vertex(_)
                 | Command::Color(_)
                 | Command::Normal(_)
-                | Command::EdgeFlag(_)
                 | Command::Index(_)
                 | Command::FogCoord(_)
                 | Command::SecondaryColor(_)
-                | Command::MultiTexCoord(..)
                 | Command::Material(..)
+                | Command::EvalCoord(..)
+                | Command::EdgeFlag(_)
+                | Command::EvalPoint(..)
+                | Command::TexCoord(..)
                 | Command::End
                 | Command::CallList(_)
                 | Command::CallLists(_)
@@ -125,11 +177,9 @@ impl Context {
                 self.apply_color_material();
             }
             Normal(n) => self.current.normal = *n,
-            EdgeFlag(f) => self.current.edge_flag = *f,
             Index(i) => self.current.index = *i,
             FogCoord(f) => self.current.fog_coord = *f,
             SecondaryColor(c) => self.current.secondary_color = *c,
-            MultiTexCoord(unit, t) => self.set_tex_coord(*unit as usize, *t),
             Light(l, pname, v) => self.light(*l, *pname, *v),
             LightModel(pname, v) => self.light_model(*pname, *v),
             Material(face, pname, v) => self.material(*face, *pname, *v),
@@ -162,16 +212,19 @@ impl Context {
                     return self.set_error(GL_INVALID_VALUE);
                 }
                 self.point.size = *s;
+                self.dirty |= super::validate::DIRTY_RASTER;
             }
             LineWidth(w) => {
                 if !(*w > 0.0) {
                     return self.set_error(GL_INVALID_VALUE);
                 }
                 self.line.width = *w;
+                self.dirty |= super::validate::DIRTY_RASTER;
             }
             LineStipple(factor, pattern) => {
                 self.line.stipple_repeat = (*factor).clamp(1, 256);
                 self.line.stipple_pattern = *pattern;
+                self.dirty |= super::validate::DIRTY_RASTER;
             }
             Scissor(x, y, w, h) => self.set_scissor(*x, *y, *w, *h),
             AlphaFunc(f, r) => self.alpha_func(*f, *r),
@@ -201,6 +254,8 @@ impl Context {
             ClearDepth(d) => self.depth.clear = d.clamp(0.0, 1.0),
             ClearStencil(s) => self.stencil.clear = *s,
             Clear(mask) => self.clear(*mask),
+            ClearAccum(c) => self.accum_clear = c.map(|v| v.clamp(-1.0, 1.0)),
+            Accum(op, value) => self.accum(*op, *value),
             Enable(cap) => self.set_enabled(*cap, true),
             Disable(cap) => self.set_enabled(*cap, false),
             Hint(target, mode) => self.hint(*target, *mode),
@@ -209,6 +264,40 @@ impl Context {
             ListBase(b) => self.lists.base = *b,
             BeginQuery(target, id) => self.begin_query(*target, *id),
             EndQuery(target) => self.end_query(*target),
+            ClipPlane(p, eq) => self.clip_plane(*p, *eq),
+            PushAttrib(mask) => self.push_attrib(*mask),
+            PopAttrib => self.pop_attrib(),
+            EdgeFlag(f) => self.current.edge_flag = *f,
+            PolygonMode(face, mode) => self.polygon_mode(*face, *mode),
+            PolygonOffset(f, u) => self.polygon_offset(*f, *u),
+            PolygonStipple(p) => self.polygon_stipple(**p),
+            NameStack(op) => self.name_stack(*op),
+            Map { target, u, uorder, v, points } => self.map(*target, *u, *uorder, *v, points.clone()),
+            EvalCoord(u, v) => self.eval_coord(*u, *v),
+            EvalPoint(i, j) => self.eval_point(*i, *j),
+            MapGrid(un, u, v) => self.map_grid(*un, *u, *v),
+            EvalMesh1(mode, i1, i2) => self.eval_mesh1(*mode, *i1, *i2),
+            EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(*mode, *i1, *i2, *j1, *j2),
+            PassThrough(t) => self.pass_through(*t),
+            RasterPos(p) => self.raster_pos(*p),
+            WindowPos(p) => self.window_pos(*p),
+            PixelTransfer(pname, v) => self.pixel_transfer(*pname, *v),
+            PixelMap(map, v) => self.pixel_map(*map, v),
+            PixelZoom(x, y) => self.pixel_zoom(*x, *y),
+            Bitmap(b) => self.bitmap(b),
+            DrawPixels(r) => self.draw_pixels(r),
+            CopyPixels(x, y, w, h, ty) => self.copy_pixels(*x, *y, *w, *h, *ty),
+            Error(e) => self.set_error(*e),
+            TexCoord(unit, v) => self.tex_coord(*unit, *v),
+            ActiveTexture(e) => self.active_texture(*e),
+            BindTexture(t, name) => self.bind_texture(*t, *name),
+            TexParameter(t, p, v) => self.tex_parameter(*t, *p, *v),
+            TexEnv(t, p, v) => self.tex_env(*t, *p, *v),
+            TexGen(c, p, v) => self.tex_gen(*c, *p, *v),
+            TexImage(cmd) => self.tex_image(cmd),
+            TexSubImage(cmd) => self.tex_sub_image(cmd),
+            CopyTex(cmd) => self.copy_tex(cmd),
+            PrioritizeTextures(p) => self.prioritize_textures(p),
         }
     }
 }

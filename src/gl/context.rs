@@ -4,7 +4,7 @@
 use super::command::Command;
 use super::enums::*;
 use super::state::*;
-use super::{arrays, begin_end, buffers, enable, lighting, lists, matrix, pixels, queries, validate};
+use super::{arrays, attrib, begin_end, buffers, clip_plane, enable, eval, lighting, lists, matrix, pixels, queries, select, texture, validate};
 use crate::framebuffer::{Config, Framebuffer, Present};
 
 pub struct Context {
@@ -20,6 +20,15 @@ pub struct Context {
     pub hints: HintState,
     pub current: CurrentState,
     pub lighting: lighting::LightingState,
+    /// glClearAccum's value, clamped to [-1, 1].
+    pub accum_clear: [f32; 4],
+    /// Render mode, selection and feedback (section 5.2, 5.3).
+    pub select: select::SelectState,
+    /// Evaluator maps and grids (section 5.1).
+    pub eval: eval::EvalState,
+    pub user_clip: clip_plane::UserClipState,
+    /// glPushAttrib / glPushClientAttrib stacks.
+    pub attrib: attrib::AttribStacks,
     pub line: LineState,
     pub point: PointState,
     /// Capabilities glEnable stores whose rendering is not implemented yet.
@@ -35,6 +44,11 @@ pub struct Context {
     pub buffers: buffers::Buffers,
     /// Occlusion query objects.
     pub queries: queries::Queries,
+    /// Pixel transfer, maps and zoom (GL_PIXEL_MODE_BIT).
+    pub pixel: super::pixel_transfer::PixelTransfer,
+    /// The current raster position (section 2.13).
+    pub raster: super::raster_pos::RasterPos,
+    pub texture: texture::TextureState,
     /// The framebuffer this context draws into and reads from.
     pub fb: Framebuffer,
     /// Where glFlush/glFinish deliver the image (set by the window system).
@@ -61,6 +75,11 @@ impl Context {
             hints: Default::default(),
             current: Default::default(),
             lighting: Default::default(),
+            accum_clear: [0.0; 4],
+            select: Default::default(),
+            eval: Default::default(),
+            user_clip: Default::default(),
+            attrib: Default::default(),
             line: Default::default(),
             point: Default::default(),
             other_caps: Default::default(),
@@ -71,6 +90,9 @@ impl Context {
             arrays: Default::default(),
             buffers: Default::default(),
             queries: Default::default(),
+            pixel: Default::default(),
+            raster: Default::default(),
+            texture: Default::default(),
             fb: Framebuffer::new(config),
             surface: None,
             dirty: validate::DIRTY_ALL,

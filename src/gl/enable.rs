@@ -5,7 +5,8 @@
 use super::context::Context;
 use super::enums::*;
 use super::lighting::MAX_LIGHTS;
-use super::validate::{DIRTY_FRAGMENT, DIRTY_LIGHTING, DIRTY_RASTER};
+use super::clip_plane::MAX_CLIP_PLANES;
+use super::validate::{DIRTY_FRAGMENT, DIRTY_LIGHTING, DIRTY_RASTER, DIRTY_TRANSFORM};
 use crate::render::fragment::CompareFunc;
 use std::collections::BTreeSet;
 
@@ -22,20 +23,15 @@ fn is_stored_cap(cap: u32) -> bool {
         GL_POINT_SMOOTH
             | GL_LINE_SMOOTH
             | GL_POLYGON_SMOOTH
-            | GL_POLYGON_STIPPLE
             | GL_FOG
             | GL_TEXTURE_GEN_S
             | GL_TEXTURE_GEN_T
             | GL_TEXTURE_GEN_R
             | GL_TEXTURE_GEN_Q
-            | GL_AUTO_NORMAL
             | GL_TEXTURE_1D
             | GL_TEXTURE_2D
             | GL_TEXTURE_3D
             | GL_TEXTURE_CUBE_MAP
-            | GL_POLYGON_OFFSET_POINT
-            | GL_POLYGON_OFFSET_LINE
-            | GL_POLYGON_OFFSET_FILL
             | GL_COLOR_SUM
             | GL_MULTISAMPLE
             | GL_SAMPLE_ALPHA_TO_COVERAGE
@@ -49,13 +45,14 @@ fn is_stored_cap(cap: u32) -> bool {
             | GL_SEPARABLE_2D
             | GL_HISTOGRAM
             | GL_MINMAX
-    ) || (GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4).contains(&cap)
-        || (GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4).contains(&cap)
-        || (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&cap)
+    )
 }
 
 impl Context {
     pub fn set_enabled(&mut self, cap: u32, on: bool) {
+        if self.set_texture_enabled(cap, on) {
+            return;
+        }
         match cap {
             GL_DEPTH_TEST => {
                 self.depth.test = on;
@@ -70,6 +67,13 @@ impl Context {
                 self.dirty |= DIRTY_RASTER;
             }
             GL_DITHER => self.color_buffer.dither = on,
+            GL_AUTO_NORMAL => self.eval.auto_normal = on,
+            _ if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap) => {
+                self.user_clip.enabled[(cap - GL_CLIP_PLANE0) as usize] = on;
+                self.dirty |= DIRTY_TRANSFORM;
+            }
+            GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4 => self.eval.enabled1[(cap - GL_MAP1_COLOR_4) as usize] = on,
+            GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4 => self.eval.enabled2[(cap - GL_MAP2_COLOR_4) as usize] = on,
             GL_LIGHTING => {
                 self.lighting.enabled = on;
                 self.dirty |= DIRTY_LIGHTING;
@@ -102,7 +106,20 @@ impl Context {
                 } = on;
                 self.dirty |= DIRTY_FRAGMENT;
             }
-            GL_LINE_STIPPLE => self.line.stipple = on,
+            GL_LINE_STIPPLE => {
+                self.line.stipple = on;
+                self.dirty |= DIRTY_RASTER;
+            }
+            GL_POLYGON_STIPPLE => {
+                self.polygon.stipple = on;
+                self.dirty |= DIRTY_RASTER;
+            }
+            GL_POLYGON_OFFSET_FILL => {
+                self.polygon.offset_fill = on;
+                self.dirty |= DIRTY_RASTER;
+            }
+            GL_POLYGON_OFFSET_LINE => self.polygon.offset_line = on,
+            GL_POLYGON_OFFSET_POINT => self.polygon.offset_point = on,
             _ if is_stored_cap(cap) => {
                 if on {
                     self.other_caps.0.insert(cap);
@@ -116,6 +133,9 @@ impl Context {
 
     /// glIsEnabled; None for an invalid capability.
     pub fn is_enabled(&self, cap: u32) -> Option<bool> {
+        if let Some(on) = self.texture_is_enabled(cap) {
+            return Some(on);
+        }
         if let Some(on) = self.client_state_enabled(cap) {
             return Some(on);
         }
@@ -130,7 +150,17 @@ impl Context {
             GL_COLOR_LOGIC_OP => self.color_buffer.color_logic_op,
             GL_INDEX_LOGIC_OP => self.color_buffer.index_logic_op,
             GL_LINE_STIPPLE => self.line.stipple,
+            GL_POLYGON_STIPPLE => self.polygon.stipple,
+            GL_POLYGON_OFFSET_FILL => self.polygon.offset_fill,
+            GL_POLYGON_OFFSET_LINE => self.polygon.offset_line,
+            GL_POLYGON_OFFSET_POINT => self.polygon.offset_point,
             GL_LIGHTING => self.lighting.enabled,
+            GL_AUTO_NORMAL => self.eval.auto_normal,
+            _ if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap) => {
+                self.user_clip.enabled[(cap - GL_CLIP_PLANE0) as usize]
+            }
+            GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4 => self.eval.enabled1[(cap - GL_MAP1_COLOR_4) as usize],
+            GL_MAP2_COLOR_4..=GL_MAP2_VERTEX_4 => self.eval.enabled2[(cap - GL_MAP2_COLOR_4) as usize],
             _ if (GL_LIGHT0..GL_LIGHT0 + MAX_LIGHTS as u32).contains(&cap) => self.lighting.lights[(cap - GL_LIGHT0) as usize].enabled,
             GL_COLOR_MATERIAL => self.lighting.color_material,
             GL_NORMALIZE => self.lighting.normalize,

@@ -337,3 +337,67 @@ pub const GL_SEPARATE_SPECULAR_COLOR: u32 = 0x81FA;
 pub const GL_COLOR_MATERIAL_FACE: u32 = 0x0B55;
 pub const GL_COLOR_MATERIAL_PARAMETER: u32 = 0x0B56;
 pub const GL_CURRENT_NORMAL: u32 = 0x0B02;
+
+// Accumulation buffer (section 4.2.4).
+pub const GL_ACCUM: u32 = 0x0100;
+pub const GL_LOAD: u32 = 0x0101;
+pub const GL_RETURN: u32 = 0x0102;
+pub const GL_MULT: u32 = 0x0103;
+pub const GL_ADD: u32 = 0x0104;
+
+// Polygon modes, also glEvalMesh's modes.
+pub const GL_POINT: u32 = 0x1B00;
+pub const GL_LINE: u32 = 0x1B01;
+pub const GL_FILL: u32 = 0x1B02;
+// Pixel rectangles (sections 2.13, 3.6, 4.3): raster position, pixel
+// transfer and maps, zoom, the packed types and GL_BITMAP.
+pub const GL_CURRENT_RASTER_COLOR: u32 = 0x0B04;
+pub const GL_CURRENT_RASTER_INDEX: u32 = 0x0B05;
+pub const GL_CURRENT_RASTER_TEXTURE_COORDS: u32 = 0x0B06;
+pub const GL_CURRENT_RASTER_POSITION: u32 = 0x0B07;
+pub const GL_CURRENT_RASTER_POSITION_VALID: u32 = 0x0B08;
+pub const GL_CURRENT_RASTER_DISTANCE: u32 = 0x0B09;
+pub const GL_CURRENT_RASTER_SECONDARY_COLOR: u32 = 0x845F;
+pub const GL_BITMAP: u32 = 0x1A00;
+pub const GL_COLOR: u32 = 0x1800;
+pub const GL_DEPTH: u32 = 0x1801;
+pub const GL_STENCIL: u32 = 0x1802;
+pub const GL_MAP_COLOR: u32 = 0x0D10;
+pub const GL_MAP_STENCIL: u32 = 0x0D11;
+pub const GL_INDEX_SHIFT: u32 = 0x0D12;
+pub const GL_INDEX_OFFSET: u32 = 0x0D13;
+pub const GL_RED_SCALE: u32 = 0x0D14;
+pub const GL_RED_BIAS: u32 = 0x0D15;
+pub const GL_ZOOM_X: u32 = 0x0D16;
+pub const GL_ZOOM_Y: u32 = 0x0D17;
+pub const GL_GREEN_SCALE: u32 = 0x0D18;
+pub const GL_GREEN_BIAS: u32 = 0x0D19;
+pub const GL_BLUE_SCALE: u32 = 0x0D1A;
+pub const GL_BLUE_BIAS: u32 = 0x0D1B;
+pub const GL_ALPHA_SCALE: u32 = 0x0D1C;
+pub const GL_ALPHA_BIAS: u32 = 0x0D1D;
+pub const GL_DEPTH_SCALE: u32 = 0x0D1E;
+pub const GL_DEPTH_BIAS: u32 = 0x0D1F;
+pub const GL_PIXEL_MAP_I_TO_I: u32 = 0x0C70;
+pub const GL_PIXEL_MAP_S_TO_S: u32 = 0x0C71;
+pub const GL_PIXEL_MAP_I_TO_R: u32 = 0x0C72;
+pub const GL_PIXEL_MAP_I_TO_G: u32 = 0x0C73;
+pub const GL_PIXEL_MAP_I_TO_B: u32 = 0x0C74;
+pub const GL_PIXEL_MAP_I_TO_A: u32 = 0x0C75;
+pub const GL_PIXEL_MAP_R_TO_R: u32 = 0x0C76;
+pub const GL_PIXEL_MAP_G_TO_G: u32 = 0x0C77;
+pub const GL_PIXEL_MAP_B_TO_B: u32 = 0x0C78;
+pub const GL_PIXEL_MAP_A_TO_A: u32 = 0x0C79;
+pub const GL_PIXEL_MAP_I_TO_I_SIZE: u32 = 0x0CB0;
+pub const GL_PIXEL_MAP_A_TO_A_SIZE: u32 = 0x0CB9;
+pub const GL_UNSIGNED_BYTE_3_3_2: u32 = 0x8032;
+pub const GL_UNSIGNED_SHORT_4_4_4_4: u32 = 0x8033;
+pub const GL_UNSIGNED_SHORT_5_5_5_1: u32 = 0x8034;
+pub const GL_UNSIGNED_INT_8_8_8_8: u32 = 0x8035;
+pub const GL_UNSIGNED_INT_10_10_10_2: u32 = 0x8036;
+pub const GL_UNSIGNED_BYTE_2_3_3_REV: u32 = 0x8362;
+pub const GL_UNSIGNED_SHORT_5_6_5_REV: u32 = 0x8364;
+pub const GL_UNSIGNED_SHORT_4_4_4_4_REV: u32 = 0x8365;
+pub const GL_UNSIGNED_SHORT_1_5_5_5_REV: u32 = 0x8366;
+pub const GL_UNSIGNED_INT_8_8_8_8_REV: u32 = 0x8367;
+pub const GL_UNSIGNED_INT_2_10_10_10_REV: u32 = 0x8368;

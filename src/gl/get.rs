@@ -71,6 +71,9 @@ impl Context {
         if let Some(on) = self.is_enabled(pname) {
             return Some(Value::Bools(vec![on]));
         }
+        if let Some(v) = self.texture_get(pname) {
+            return Some(v);
+        }
         if let Some(v) = self.get_array_value(pname) {
             return Some(v);
         }
@@ -87,6 +90,26 @@ impl Context {
             GL_COLOR_MATERIAL_FACE => ints([self.lighting.color_material_face as i64]),
             GL_COLOR_MATERIAL_PARAMETER => ints([self.lighting.color_material_mode as i64]),
             GL_MAX_LIGHTS => ints([super::lighting::MAX_LIGHTS as i64]),
+            GL_ACCUM_CLEAR_VALUE => Some(Value::Normalized(self.accum_clear.iter().map(|&c| c as f64).collect())),
+            0x0C40 /* GL_RENDER_MODE */ => ints([self.select.mode as i64]),
+            0x0D70 /* GL_NAME_STACK_DEPTH */ => ints([self.name_stack_depth() as i64]),
+            GL_MAX_NAME_STACK_DEPTH => ints([super::select::MAX_NAME_STACK_DEPTH as i64]),
+            GL_MAX_EVAL_ORDER => ints([super::eval::MAX_EVAL_ORDER as i64]),
+            0x0DD0 /* GL_MAP1_GRID_DOMAIN */ => Some(Value::Floats(vec![self.eval.grid1.1 as f64, self.eval.grid1.2 as f64])),
+            0x0DD1 /* GL_MAP1_GRID_SEGMENTS */ => ints([self.eval.grid1.0 as i64]),
+            0x0DD2 /* GL_MAP2_GRID_DOMAIN */ => {
+                let g = self.eval.grid2;
+                Some(Value::Floats(vec![g.1 as f64, g.2 as f64, g.4 as f64, g.5 as f64]))
+            }
+            0x0DD3 /* GL_MAP2_GRID_SEGMENTS */ => ints([self.eval.grid2.0 as i64, self.eval.grid2.3 as i64]),
+            GL_MAX_CLIP_PLANES => ints([super::clip_plane::MAX_CLIP_PLANES as i64]),
+            0x0B40 /* GL_POLYGON_MODE */ => ints([self.polygon.mode[0] as i64, self.polygon.mode[1] as i64]),
+            0x8038 /* GL_POLYGON_OFFSET_FACTOR */ => Some(Value::Floats(vec![self.polygon.offset_factor as f64])),
+            0x2A00 /* GL_POLYGON_OFFSET_UNITS */ => Some(Value::Floats(vec![self.polygon.offset_units as f64])),
+            0x0B43 /* GL_EDGE_FLAG */ => Some(Value::Bools(vec![self.current.edge_flag])),
+            GL_MAX_ATTRIB_STACK_DEPTH | GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => ints([super::attrib::MAX_ATTRIB_STACK_DEPTH as i64]),
+            0x0BB0 /* GL_ATTRIB_STACK_DEPTH */ => ints([self.attrib.server.len() as i64]),
+            0x0BB1 /* GL_CLIENT_ATTRIB_STACK_DEPTH */ => ints([self.attrib.client.len() as i64]),
             GL_CURRENT_COLOR => Some(Value::Normalized(self.current.color.iter().map(|&c| c as f64).collect())),
             GL_COLOR_CLEAR_VALUE => Some(Value::Normalized(self.color_buffer.clear.iter().map(|&c| c as f64).collect())),
             GL_COLOR_WRITEMASK => Some(Value::Bools(self.color_buffer.write_mask.to_vec())),
@@ -122,13 +145,13 @@ impl Context {
             GL_MATRIX_MODE => ints([self.transform.mode as i64]),
             GL_MODELVIEW_MATRIX => Some(Value::Floats(self.transform.modelview.top().to_cols_array().to_vec())),
             GL_PROJECTION_MATRIX => Some(Value::Floats(self.transform.projection.top().to_cols_array().to_vec())),
-            GL_TEXTURE_MATRIX => Some(Value::Floats(self.transform.texture.top().to_cols_array().to_vec())),
+            GL_TEXTURE_MATRIX => Some(Value::Floats(self.transform.texture().top().to_cols_array().to_vec())),
             GL_TRANSPOSE_MODELVIEW_MATRIX => Some(Value::Floats(self.transform.modelview.top().transpose().to_cols_array().to_vec())),
             GL_TRANSPOSE_PROJECTION_MATRIX => Some(Value::Floats(self.transform.projection.top().transpose().to_cols_array().to_vec())),
-            GL_TRANSPOSE_TEXTURE_MATRIX => Some(Value::Floats(self.transform.texture.top().transpose().to_cols_array().to_vec())),
+            GL_TRANSPOSE_TEXTURE_MATRIX => Some(Value::Floats(self.transform.texture().top().transpose().to_cols_array().to_vec())),
             GL_MODELVIEW_STACK_DEPTH => ints([self.transform.modelview.depth() as i64]),
             GL_PROJECTION_STACK_DEPTH => ints([self.transform.projection.depth() as i64]),
-            GL_TEXTURE_STACK_DEPTH => ints([self.transform.texture.depth() as i64]),
+            GL_TEXTURE_STACK_DEPTH => ints([self.transform.texture().depth() as i64]),
             GL_MAX_MODELVIEW_STACK_DEPTH => ints([MAX_MODELVIEW_DEPTH as i64]),
             GL_MAX_PROJECTION_STACK_DEPTH => ints([MAX_PROJECTION_DEPTH as i64]),
             GL_MAX_TEXTURE_STACK_DEPTH => ints([MAX_TEXTURE_DEPTH as i64]),
@@ -180,6 +203,32 @@ impl Context {
             GL_UNPACK_ALIGNMENT => ints([self.pixel_store.unpack.alignment as i64]),
             GL_UNPACK_SKIP_IMAGES => ints([self.pixel_store.unpack.skip_images as i64]),
             GL_UNPACK_IMAGE_HEIGHT => ints([self.pixel_store.unpack.image_height as i64]),
+            // Raster position and pixel transfer (tables 6.7, 6.17, 6.18).
+            GL_CURRENT_RASTER_POSITION => Some(Value::Floats(self.raster.pos.iter().map(|&c| c as f64).collect())),
+            GL_CURRENT_RASTER_POSITION_VALID => Some(Value::Bools(vec![self.raster.valid])),
+            GL_CURRENT_RASTER_COLOR => Some(Value::Normalized(self.raster.color.iter().map(|&c| c as f64).collect())),
+            GL_CURRENT_RASTER_SECONDARY_COLOR => Some(Value::Normalized(self.raster.secondary_color.iter().map(|&c| c as f64).collect())),
+            GL_CURRENT_RASTER_DISTANCE => Some(Value::Floats(vec![self.raster.distance as f64])),
+            GL_CURRENT_RASTER_TEXTURE_COORDS => Some(Value::Floats(self.raster.tex.iter().map(|&c| c as f64).collect())),
+            GL_CURRENT_RASTER_INDEX => Some(Value::Floats(vec![self.raster.index as f64])),
+            GL_ZOOM_X => Some(Value::Floats(vec![self.pixel.zoom[0] as f64])),
+            GL_ZOOM_Y => Some(Value::Floats(vec![self.pixel.zoom[1] as f64])),
+            GL_MAP_COLOR => Some(Value::Bools(vec![self.pixel.map_color])),
+            GL_MAP_STENCIL => Some(Value::Bools(vec![self.pixel.map_stencil])),
+            GL_INDEX_SHIFT => ints([self.pixel.index_shift as i64]),
+            GL_INDEX_OFFSET => ints([self.pixel.index_offset as i64]),
+            GL_RED_SCALE | GL_GREEN_SCALE | GL_BLUE_SCALE | GL_ALPHA_SCALE => {
+                let k = [GL_RED_SCALE, GL_GREEN_SCALE, GL_BLUE_SCALE, GL_ALPHA_SCALE].iter().position(|&e| e == pname)?;
+                Some(Value::Floats(vec![self.pixel.scale[k] as f64]))
+            }
+            GL_RED_BIAS | GL_GREEN_BIAS | GL_BLUE_BIAS | GL_ALPHA_BIAS => {
+                let k = [GL_RED_BIAS, GL_GREEN_BIAS, GL_BLUE_BIAS, GL_ALPHA_BIAS].iter().position(|&e| e == pname)?;
+                Some(Value::Floats(vec![self.pixel.bias[k] as f64]))
+            }
+            GL_DEPTH_SCALE => Some(Value::Floats(vec![self.pixel.depth_scale as f64])),
+            GL_DEPTH_BIAS => Some(Value::Floats(vec![self.pixel.depth_bias as f64])),
+            GL_PIXEL_MAP_I_TO_I_SIZE..=GL_PIXEL_MAP_A_TO_A_SIZE => ints([self.pixel.maps[(pname - GL_PIXEL_MAP_I_TO_I_SIZE) as usize].len() as i64]),
+            GL_MAX_PIXEL_MAP_TABLE => ints([super::pixel_transfer::MAX_PIXEL_MAP_TABLE as i64]),
             _ => None,
         }
     }

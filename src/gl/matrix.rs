@@ -45,7 +45,10 @@ pub struct Transform {
     pub mode: u32,
     pub modelview: Stack,
     pub projection: Stack,
-    pub texture: Stack,
+    /// One texture matrix stack per texture unit.
+    pub textures: Vec<Stack>,
+    /// ACTIVE_TEXTURE's unit: the stack GL_TEXTURE mode works on.
+    pub active_texture: usize,
 }
 
 impl Transform {
@@ -54,14 +57,20 @@ impl Transform {
             mode: GL_MODELVIEW,
             modelview: Stack::new(MAX_MODELVIEW_DEPTH),
             projection: Stack::new(MAX_PROJECTION_DEPTH),
-            texture: Stack::new(MAX_TEXTURE_DEPTH),
+            textures: vec![Stack::new(MAX_TEXTURE_DEPTH); crate::render::texture::MAX_UNITS],
+            active_texture: 0,
         }
+    }
+
+    /// The active texture unit's stack.
+    pub fn texture(&self) -> &Stack {
+        &self.textures[self.active_texture]
     }
 
     pub fn current_stack(&mut self) -> &mut Stack {
         match self.mode {
             GL_PROJECTION => &mut self.projection,
-            GL_TEXTURE => &mut self.texture,
+            GL_TEXTURE => &mut self.textures[self.active_texture],
             _ => &mut self.modelview,
         }
     }

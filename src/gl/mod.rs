@@ -4,21 +4,32 @@
 //! renderer needs at the next draw.
 
 pub mod arrays;
+pub mod accum;
+pub mod attrib;
 pub mod begin_end;
 pub mod buffers;
 pub mod clear;
+pub mod clip_plane;
 pub mod command;
 pub mod context;
+pub mod draw_pixels;
 pub mod enable;
 pub mod enums;
+pub mod eval;
 pub mod fragment;
 pub mod get;
 pub mod lighting;
 pub mod lists;
 pub mod matrix;
+pub mod pixel_data;
+pub mod pixel_transfer;
 pub mod pixels;
 pub mod queries;
+pub mod polygon;
+pub mod select;
+pub mod raster_pos;
 pub mod state;
+pub mod texture;
 pub mod validate;
 
 pub use command::Command;

@@ -130,11 +130,34 @@ pub struct PolygonState {
     pub cull: bool,
     pub cull_mode: u32,
     pub front_face: u32,
+    /// glPolygonMode for front and back faces.
+    pub mode: [u32; 2],
+    pub offset_factor: f32,
+    pub offset_units: f32,
+    /// GL_POLYGON_OFFSET_POINT, _LINE, _FILL.
+    pub offset_point: bool,
+    pub offset_line: bool,
+    pub offset_fill: bool,
+    pub stipple: bool,
+    /// Bit x of row y (rows bottom-up, as window y).
+    pub stipple_pattern: [u32; 32],
 }
 
 impl Default for PolygonState {
     fn default() -> Self {
-        PolygonState { cull: false, cull_mode: super::enums::GL_BACK, front_face: super::enums::GL_CCW }
+        PolygonState {
+            cull: false,
+            cull_mode: super::enums::GL_BACK,
+            front_face: super::enums::GL_CCW,
+            mode: [super::enums::GL_FILL; 2],
+            offset_factor: 0.0,
+            offset_units: 0.0,
+            offset_point: false,
+            offset_line: false,
+            offset_fill: false,
+            stipple: false,
+            stipple_pattern: [!0; 32],
+        }
     }
 }
 
@@ -170,16 +193,15 @@ impl Default for HintState {
 pub struct CurrentState {
     pub color: [f32; 4],
     pub normal: [f32; 3],
-    /// Per texture unit (see gl::arrays on the texture coordinate hook).
-    pub tex_coord: [[f32; 4]; super::arrays::MAX_TEXTURE_UNITS],
+    pub edge_flag: bool,
+    /// Per texture unit (s, t, r, q).
+    pub tex_coords: [[f32; 4]; crate::render::texture::MAX_UNITS],
     /// Stored for the colour sum (section 3.9): RGB as given, alpha 1.
     pub secondary_color: [f32; 4],
     /// Stored for fog (section 3.10).
     pub fog_coord: f32,
     /// Colour index: accepted and stored; no effect in RGBA mode.
     pub index: f32,
-    /// Stored; polygon modes (section 3.5.4) will use it.
-    pub edge_flag: bool,
 }
 
 impl Default for CurrentState {
@@ -187,11 +209,11 @@ impl Default for CurrentState {
         CurrentState {
             color: [1.0; 4],
             normal: [0.0, 0.0, 1.0],
-            tex_coord: [[0.0, 0.0, 0.0, 1.0]; super::arrays::MAX_TEXTURE_UNITS],
+            edge_flag: true,
+            tex_coords: [[0.0, 0.0, 0.0, 1.0]; crate::render::texture::MAX_UNITS],
             secondary_color: [0.0, 0.0, 0.0, 1.0],
             fog_coord: 0.0,
             index: 1.0,
-            edge_flag: true,
         }
     }
 }

@@ -15,6 +15,8 @@ pub const DIRTY_VIEWPORT: u32 = 1 << 1;
 pub const DIRTY_FRAGMENT: u32 = 1 << 2;
 pub const DIRTY_RASTER: u32 = 1 << 3;
 pub const DIRTY_LIGHTING: u32 = 1 << 4;
+/// Texture objects, images, parameters, environments, enables, texgen.
+pub const DIRTY_TEXTURE: u32 = 1 << 12;
 pub const DIRTY_ALL: u32 = !0;
 
 /// State derived from GL state for the renderer.
@@ -40,7 +42,14 @@ impl Default for Derived {
                 front_ccw: true,
                 flat: false,
                 two_side: false,
+                polygon_mode: [GL_FILL; 2],
+                offset_fill: None,
+                polygon_stipple: None,
+                line: crate::render::line::LineParams { width: 1.0, stipple: None },
+                point_size: 1.0,
+                clip_planes: crate::render::clip::FIXED_PLANES.to_vec(),
                 fragment: FragmentState::default(),
+                texture: None,
             },
         }
     }
@@ -70,6 +79,9 @@ impl Context {
         if d & DIRTY_TRANSFORM != 0 {
             let m = *self.transform.projection.top() * *self.transform.modelview.top();
             self.derived.mvp = m.as_mat4();
+            let mut planes = crate::render::clip::FIXED_PLANES.to_vec();
+            planes.extend(self.clip_space_planes(self.transform.projection.top()));
+            self.derived.render.clip_planes = planes;
         }
         if d & (DIRTY_LIGHTING | DIRTY_TRANSFORM) != 0 {
             let l = &self.lighting;
@@ -82,6 +94,9 @@ impl Context {
                 )
             });
             self.derived.render.two_side = l.enabled && l.two_side;
+        }
+        if d & (DIRTY_TEXTURE | DIRTY_TRANSFORM | DIRTY_LIGHTING) != 0 {
+            self.validate_texture(d & DIRTY_TEXTURE != 0);
         }
         let fragment = (d & DIRTY_FRAGMENT != 0).then(|| self.fragment_state());
         let rs = &mut self.derived.render;
@@ -105,6 +120,16 @@ impl Context {
             };
             rs.front_ccw = self.polygon.front_face == GL_CCW;
             rs.flat = self.shade_model == GL_FLAT;
+            let p = &self.polygon;
+            rs.polygon_mode = p.mode;
+            rs.offset_fill = p.offset_fill.then_some((p.offset_factor, p.offset_units));
+            rs.polygon_stipple = p.stipple.then(|| Box::new(p.stipple_pattern));
+            let l = &self.line;
+            rs.line = crate::render::line::LineParams {
+                width: l.width,
+                stipple: if l.stipple { Some((l.stipple_repeat as u32, l.stipple_pattern)) } else { None },
+            };
+            rs.point_size = self.point.size;
         }
         if let Some(f) = fragment {
             rs.fragment = f;

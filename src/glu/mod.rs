@@ -2,8 +2,9 @@
 //! public GL entry points as any program would, never context internals.
 //!
 //! Implemented so far: the matrix utilities ([`matrix`]) and the strings
-//! ([`strings`]). Tessellator, quadrics, mipmaps and NURBS are issue 6.
+//! ([`strings`]) and the polygon tessellator ([`tess`]). Quadrics, mipmaps and NURBS are issue 6.
 
 pub mod matrix;
 pub mod quadric;
 pub mod strings;
+pub mod tess;

@@ -14,21 +14,42 @@
 //! get bit-identical vertices there: no cracks.
 
 use super::vertex::ClipVertex;
+use glam::Vec4;
 
 /// Guard band, in multiples of the view volume's half-width.
 pub const GUARD: f32 = 16.0;
 /// Smallest w kept after clipping.
 const W_MIN: f32 = 1e-20;
 
-/// The planes, as functions that are >= 0 inside.
-const PLANES: [fn(&glam::Vec4) -> f32; 7] = [
-    |p| p.w + p.z,           // near: z >= -w
-    |p| p.w - p.z,           // far: z <= w
-    |p| p.w - W_MIN,         // w > 0
-    |p| GUARD * p.w + p.x,   // guard band left
-    |p| GUARD * p.w - p.x,   // guard band right
-    |p| GUARD * p.w + p.y,   // guard band bottom
-    |p| GUARD * p.w - p.y,   // guard band top
+/// A clipping plane in clip coordinates: inside where n . p >= d.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plane {
+    pub n: Vec4,
+    pub d: f32,
+}
+
+impl Plane {
+    #[inline]
+    pub fn dist(&self, p: &Vec4) -> f32 {
+        self.n.dot(*p) - self.d
+    }
+}
+
+const fn plane(x: f32, y: f32, z: f32, w: f32, d: f32) -> Plane {
+    Plane { n: Vec4::new(x, y, z, w), d }
+}
+
+/// The planes every primitive is clipped against: near (z >= -w), far
+/// (z <= w), w >= W_MIN, and the guard band in x and y. User clip planes
+/// (glClipPlane, in clip coordinates) follow them in `RenderState`.
+pub const FIXED_PLANES: [Plane; 7] = [
+    plane(0.0, 0.0, 1.0, 1.0, 0.0),
+    plane(0.0, 0.0, -1.0, 1.0, 0.0),
+    plane(0.0, 0.0, 0.0, 1.0, W_MIN),
+    plane(1.0, 0.0, 0.0, GUARD, 0.0),
+    plane(-1.0, 0.0, 0.0, GUARD, 0.0),
+    plane(0.0, 1.0, 0.0, GUARD, 0.0),
+    plane(0.0, -1.0, 0.0, GUARD, 0.0),
 ];
 
 /// A clipped polygon: at most 3 + one vertex per plane.
@@ -59,11 +80,11 @@ pub enum Outcome {
 }
 
 #[inline]
-fn outcode(p: &glam::Vec4) -> u32 {
+fn outcode(planes: &[Plane], p: &Vec4) -> u32 {
     let mut code = 0;
-    for (i, plane) in PLANES.iter().enumerate() {
+    for (i, plane) in planes.iter().enumerate() {
         // `!(x >= 0)` also catches NaN.
-        if !(plane(p) >= 0.0) {
+        if !(plane.dist(p) >= 0.0) {
             code |= 1 << i;
         }
     }
@@ -71,11 +92,11 @@ fn outcode(p: &glam::Vec4) -> u32 {
 }
 
 /// Clips a triangle. Vertices with NaN or infinite coordinates reject it.
-pub fn clip_triangle(v: [&ClipVertex; 3], out: &mut Polygon) -> Outcome {
+pub fn clip_triangle(planes: &[Plane], v: [&ClipVertex; 3], out: &mut Polygon) -> Outcome {
     if !v.iter().all(|cv| cv.pos.is_finite()) {
         return Outcome::Rejected;
     }
-    let codes = v.map(|cv| outcode(&cv.pos));
+    let codes = v.map(|cv| outcode(planes, &cv.pos));
     if codes[0] | codes[1] | codes[2] == 0 {
         return Outcome::Inside;
     }
@@ -85,7 +106,7 @@ pub fn clip_triangle(v: [&ClipVertex; 3], out: &mut Polygon) -> Outcome {
     out.verts.clear();
     out.verts.extend(v.iter().map(|cv| **cv));
     let all = codes[0] | codes[1] | codes[2];
-    for (i, plane) in PLANES.iter().enumerate() {
+    for (i, plane) in planes.iter().enumerate() {
         if all & (1 << i) == 0 {
             continue;
         }
@@ -98,15 +119,15 @@ pub fn clip_triangle(v: [&ClipVertex; 3], out: &mut Polygon) -> Outcome {
 }
 
 /// Sutherland-Hodgman against one plane.
-fn clip_polygon_to_plane(poly: &mut Polygon, plane: &fn(&glam::Vec4) -> f32) {
+fn clip_polygon_to_plane(poly: &mut Polygon, plane: &Plane) {
     let Polygon { verts, scratch } = poly;
     scratch.clear();
     let n = verts.len();
     for i in 0..n {
         let a = &verts[i];
         let b = &verts[(i + 1) % n];
-        let da = plane(&a.pos);
-        let db = plane(&b.pos);
+        let da = plane.dist(&a.pos);
+        let db = plane.dist(&b.pos);
         let a_in = da >= 0.0;
         let b_in = db >= 0.0;
         if a_in {
@@ -117,7 +138,12 @@ fn clip_polygon_to_plane(poly: &mut Polygon, plane: &fn(&glam::Vec4) -> f32) {
             // shared edge yields the same point from either triangle.
             let (inside, outside, di, dout) = if a_in { (a, b, da, db) } else { (b, a, db, da) };
             let t = di / (di - dout);
-            scratch.push(ClipVertex::lerp(inside, outside, t));
+            let mut v = ClipVertex::lerp(inside, outside, t);
+            // Leaving the half-space, the new vertex starts an edge along
+            // the plane (never a boundary edge); entering, it continues
+            // the original edge a->b.
+            v.edge = !a_in && a.edge;
+            scratch.push(v);
         }
     }
     std::mem::swap(verts, scratch);
@@ -126,10 +152,9 @@ fn clip_polygon_to_plane(poly: &mut Polygon, plane: &fn(&glam::Vec4) -> f32) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::Vec4;
 
     fn v(p: [f32; 4]) -> ClipVertex {
-        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE }
+        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE, edge: true, tex: Default::default() }
     }
 
     /// Two triangles sharing the edge (a, b), traversed in opposite
@@ -148,8 +173,8 @@ mod tests {
             let c = v([r(), r(), r(), r()]);
             let d = v([r(), r(), r(), r()]);
             let (mut p1, mut p2) = (Polygon::new(), Polygon::new());
-            let o1 = clip_triangle([&a, &b, &c], &mut p1);
-            let o2 = clip_triangle([&b, &a, &d], &mut p2);
+            let o1 = clip_triangle(&FIXED_PLANES, [&a, &b, &c], &mut p1);
+            let o2 = clip_triangle(&FIXED_PLANES, [&b, &a, &d], &mut p2);
             if !matches!(o1, Outcome::Clipped) || !matches!(o2, Outcome::Clipped) {
                 continue;
             }

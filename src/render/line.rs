@@ -31,7 +31,7 @@
 //! drawn iff bit (s / repeat) mod 16 of the pattern is set. The caller owns
 //! s (reset at glBegin and per GL_LINES segment; kept across a strip).
 
-use super::clip::GUARD;
+use super::clip::Plane;
 use super::fragment;
 use super::setup::{to_window, ONE};
 use super::vertex::ClipVertex;
@@ -41,9 +41,6 @@ use glam::Vec4;
 
 /// Largest aliased line width (GL_ALIASED_LINE_WIDTH_RANGE's maximum).
 pub const MAX_WIDTH: f32 = 64.0;
-/// Smallest w kept after clipping (as `clip`).
-const W_MIN: f32 = 1e-20;
-
 /// Line state the rasterizer needs.
 #[derive(Clone, Copy, Debug)]
 pub struct LineParams {
@@ -58,24 +55,16 @@ pub fn raster_width(width: f32) -> i64 {
     w.clamp(1, MAX_WIDTH as i64)
 }
 
-/// Clips a segment in clip coordinates: exactly at near and far, at the
-/// guard band in x and y. None when nothing is left.
-pub fn clip_segment(a: &ClipVertex, b: &ClipVertex) -> Option<(ClipVertex, ClipVertex)> {
+/// Clips a segment in clip coordinates against `planes` (exactly at near,
+/// far and user planes, at the guard band in x and y). None when nothing
+/// is left.
+pub fn clip_segment(planes: &[Plane], a: &ClipVertex, b: &ClipVertex) -> Option<(ClipVertex, ClipVertex)> {
     if !a.pos.is_finite() || !b.pos.is_finite() {
         return None;
     }
-    const PLANES: [fn(&Vec4) -> f32; 7] = [
-        |p| p.w + p.z,
-        |p| p.w - p.z,
-        |p| p.w - W_MIN,
-        |p| GUARD * p.w + p.x,
-        |p| GUARD * p.w - p.x,
-        |p| GUARD * p.w + p.y,
-        |p| GUARD * p.w - p.y,
-    ];
     let (mut t0, mut t1) = (0.0f32, 1.0f32);
-    for plane in PLANES {
-        let (da, db) = (plane(&a.pos), plane(&b.pos));
+    for plane in planes {
+        let (da, db) = (plane.dist(&a.pos), plane.dist(&b.pos));
         let (a_in, b_in) = (da >= 0.0, db >= 0.0);
         match (a_in, b_in) {
             (true, true) => {}
@@ -211,7 +200,7 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
     if r.is_empty() {
         return;
     }
-    let Some((a, b)) = clip_segment(a, b) else { return };
+    let Some((a, b)) = clip_segment(&rs.clip_planes, a, b) else { return };
     let (wa, wb) = (to_window(rs, &a), to_window(rs, &b));
     let snap = |c: f64| (c * ONE as f64).round() as i64;
     let (xa, ya, xb, yb) = (snap(wa.x), snap(wa.y), snap(wb.x), snap(wb.y));
@@ -230,6 +219,8 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
     let (fxa, fya) = (xa as f64 * inv, ya as f64 * inv);
     let (fdx, fdy) = (dx as f64 * inv, dy as f64 * inv);
     let len2 = fdx * fdx + fdy * fdy;
+    // The parameter change of one pixel along the major axis (texture LOD).
+    let step = 1.0 / fdx.abs().max(fdy.abs());
     let flat = if rs.flat { Some(fragment::color_to_u8(flat_color)) } else { None };
     let fs = &rs.fragment;
     let shade = |fb: &mut Framebuffer, px: i64, py: i64| {
@@ -238,6 +229,20 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
         }
         let t = (((px as f64 + 0.5 - fxa) * fdx + (py as f64 + 0.5 - fya) * fdy) / len2).clamp(0.0, 1.0);
         let z = wa.z + t * (wb.z - wa.z);
+        if let Some(stage) = &rs.texture {
+            // Texturing (3.8): the primary colour, then the units.
+            let primary = match flat {
+                Some(c) => Vec4::from_array(c.map(|v| v as f32 / 255.0)),
+                None => {
+                    let (ka, kb) = ((1.0 - t) * wa.q, t * wb.q);
+                    ((wa.color.as_dvec4() * ka + wb.color.as_dvec4() * kb) / (ka + kb)).as_vec4().clamp(Vec4::ZERO, Vec4::ONE)
+                }
+            };
+            let coords = super::texture::line_coords(stage, &wa.tex, wa.q, &wb.tex, wb.q, t, step);
+            let c = fragment::color_to_u8(stage.shade(&coords, primary));
+            fragment::shade_fragment(fs, fb, px as usize, py as usize, z, c);
+            return;
+        }
         let color = match flat {
             Some(c) => c,
             None => {

@@ -11,12 +11,16 @@ pub mod clip;
 pub mod fragment;
 pub mod light;
 pub mod line;
+pub mod pixels;
 pub mod point;
+pub mod polygon_mode;
 pub mod raster;
 pub mod setup;
+pub mod texture;
 pub mod vertex;
 
 use crate::framebuffer::{Framebuffer, Rect};
+use crate::gl::enums::GL_FILL;
 
 pub use fragment::FragmentState;
 pub use vertex::ClipVertex;
@@ -34,9 +38,24 @@ pub struct RenderState {
     /// glFrontFace(GL_CCW)?
     pub front_ccw: bool,
     pub flat: bool,
+    /// Clipping planes in clip coordinates: clip::FIXED_PLANES, then the
+    /// enabled user clip planes.
+    pub clip_planes: Vec<clip::Plane>,
+    /// glPolygonMode for front and back faces (GL_POINT, GL_LINE, GL_FILL).
+    pub polygon_mode: [u32; 2],
+    /// glPolygonOffset (factor, units) when enabled for filled polygons.
+    pub offset_fill: Option<(f32, f32)>,
+    /// glPolygonStipple's pattern (bit x of row y) when enabled.
+    pub polygon_stipple: Option<Box<[u32; 32]>>,
+    /// Line and point state, for polygons drawn as lines or points.
+    pub line: line::LineParams,
+    pub point_size: f32,
     /// Two-sided lighting: back-facing polygons take their back colour.
     pub two_side: bool,
     pub fragment: FragmentState,
+    /// Texturing: the enabled units with complete textures; None when no
+    /// unit textures.
+    pub texture: Option<std::sync::Arc<texture::TextureStage>>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -48,13 +67,18 @@ pub enum Cull {
 }
 
 /// Draws one triangle given in clip coordinates. `flat_color` is the
-/// provoking vertex's [front, back] colour, which a flat-shaded triangle takes.
-pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3], flat_color: [glam::Vec4; 2]) {
+/// provoking vertex's [front, back] colour, which a flat-shaded triangle
+/// takes; `edges[i]` flags the edge from v[i] to v[i + 1] as a polygon
+/// boundary (for polygon modes LINE and POINT).
+pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3], flat_color: [glam::Vec4; 2], edges: [bool; 3]) {
     if rs.draw_rect.is_empty() || rs.cull == Cull::All {
         return;
     }
+    if rs.polygon_mode != [GL_FILL; 2] {
+        return polygon_mode::draw(rs, fb, v, flat_color, edges);
+    }
     let mut poly = clip::Polygon::new();
-    match clip::clip_triangle(v, &mut poly) {
+    match clip::clip_triangle(&rs.clip_planes, v, &mut poly) {
         clip::Outcome::Rejected => {}
         clip::Outcome::Inside => {
             let w = [0, 1, 2].map(|i| setup::to_window(rs, v[i]));

@@ -38,10 +38,21 @@ pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVer
     if p.x < -p.w || p.x > p.w || p.y < -p.w || p.y > p.w || p.z < -p.w || p.z > p.w {
         return;
     }
+    // User clip planes (after the fixed ones).
+    if rs.clip_planes[super::clip::FIXED_PLANES.len()..].iter().any(|pl| !(pl.dist(&p) >= 0.0)) {
+        return;
+    }
     let wv = to_window(rs, v);
     let w = raster_size(size);
     let (x0, y0) = (first_pixel(wv.x, w), first_pixel(wv.y, w));
-    let color = fragment::color_to_u8(v.color);
+    let color = match &rs.texture {
+        // Texturing (3.8): every fragment takes the vertex's coordinates.
+        Some(stage) => {
+            let primary = v.color.clamp(glam::Vec4::ZERO, glam::Vec4::ONE);
+            fragment::color_to_u8(stage.shade(&super::texture::point_coords(stage, &v.tex), primary))
+        }
+        None => fragment::color_to_u8(v.color),
+    };
     let xs = x0.max(r.x0 as i64)..(x0 + w).min(r.x1 as i64);
     for y in y0.max(r.y0 as i64)..(y0 + w).min(r.y1 as i64) {
         for x in xs.clone() {

@@ -77,8 +77,28 @@ pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3]
     let row1 = (floor_div(ymax - half, ONE) + 1).min(r.y1 as i64);
     for py in row0..row1 {
         let (lo, hi) = span(&edges, py, r.x0 as i64, r.x1 as i64);
-        if lo < hi {
-            fragment::shade_span(&rs.fragment, setup, fb, py as usize, lo as usize, hi as usize);
+        if lo >= hi {
+            continue;
+        }
+        match &rs.polygon_stipple {
+            None => fragment::shade_span(&rs.fragment, setup, fb, py as usize, lo as usize, hi as usize),
+            Some(pattern) => {
+                // Polygon stipple (3.5.2): only pixels whose bit
+                // (x mod 32, y mod 32) is set, as runs.
+                let row = pattern[py.rem_euclid(32) as usize];
+                let mut x = lo;
+                while x < hi {
+                    if row >> (x.rem_euclid(32)) & 1 == 0 {
+                        x += 1;
+                        continue;
+                    }
+                    let start = x;
+                    while x < hi && row >> (x.rem_euclid(32)) & 1 == 1 {
+                        x += 1;
+                    }
+                    fragment::shade_span(&rs.fragment, setup, fb, py as usize, start as usize, x as usize);
+                }
+            }
         }
     }
 }

@@ -28,6 +28,7 @@ pub struct WindowVertex {
     pub q: f64,
     pub color: Vec4,
     pub back_color: Vec4,
+    pub tex: [Vec4; super::texture::MAX_UNITS],
 }
 
 #[inline]
@@ -42,6 +43,7 @@ pub fn to_window(rs: &RenderState, v: &ClipVertex) -> WindowVertex {
         q,
         color: v.color,
         back_color: v.back_color,
+        tex: v.tex,
     }
 }
 
@@ -68,6 +70,16 @@ pub struct TriangleSetup {
     /// Flat shading: the provoking vertex's colour, already converted.
     pub flat: Option<[u8; 4]>,
     pub front_facing: bool,
+    /// Texturing: planes of s/w, t/w, r/w, q/w per unit (section 3.8.7's
+    /// perspective-correct coordinates are their ratios to q/w).
+    pub tex: Option<Box<TexPlanes>>,
+}
+
+/// Texture coordinate planes of a triangle and the stage that samples.
+#[derive(Clone, Debug)]
+pub struct TexPlanes {
+    pub stage: std::sync::Arc<super::texture::TextureStage>,
+    pub planes: [[Plane; 4]; super::texture::MAX_UNITS],
 }
 
 /// Sets up and rasterizes one triangle in window coordinates.
@@ -122,10 +134,27 @@ fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], f
         let c = |ch: usize| plane([0, 1, 2].map(|i| col(i)[ch] as f64 * scale(i)));
         (None, [c(0), c(1), c(2), c(3)])
     };
+    let mut z = plane([v[0].z, v[1].z, v[2].z]);
+    if let Some((factor, units)) = rs.offset_fill {
+        // Polygon offset (3.5.5): m * factor + r * units, with m the
+        // largest depth slope and r the depth buffer's resolution.
+        let m = z.dx.abs().max(z.dy.abs());
+        z.a0 += m * factor as f64 + units as f64 / crate::framebuffer::DEPTH_MAX as f64;
+    }
+    let tex = rs.texture.as_ref().map(|stage| {
+        let mut planes = [[Plane::default(); 4]; super::texture::MAX_UNITS];
+        for &u in &stage.active {
+            for (c, p) in planes[u].iter_mut().enumerate() {
+                *p = plane([0, 1, 2].map(|i| v[i].tex[u][c] as f64 * q[i]));
+            }
+        }
+        Box::new(TexPlanes { stage: stage.clone(), planes })
+    });
     TriangleSetup {
+        tex,
         x0: x[0],
         y0: y[0],
-        z: plane([v[0].z, v[1].z, v[2].z]),
+        z,
         q: plane(q),
         color,
         perspective,

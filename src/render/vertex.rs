@@ -12,6 +12,12 @@ pub struct ClipVertex {
     /// The colour back-facing polygons take: the back face's lit colour
     /// under two-sided lighting, else the same as `color`.
     pub back_color: Vec4,
+    /// Edge flag of the polygon edge that starts at this vertex (2.6.2):
+    /// polygon mode LINE and POINT draw only flagged edges and vertices.
+    pub edge: bool,
+    /// Texture coordinates (s, t, r, q) per unit, after texgen and the
+    /// texture matrix.
+    pub tex: [Vec4; super::texture::MAX_UNITS],
 }
 
 impl ClipVertex {
@@ -23,6 +29,8 @@ impl ClipVertex {
             pos: a.pos + (b.pos - a.pos) * t,
             color: a.color + (b.color - a.color) * t,
             back_color: a.back_color + (b.back_color - a.back_color) * t,
+            edge: a.edge,
+            tex: std::array::from_fn(|u| a.tex[u] + (b.tex[u] - a.tex[u]) * t),
         }
     }
 }

@@ -4,5 +4,7 @@
 //! over Xlib (loaded at run time).
 
 pub mod current;
+pub mod dump;
 pub mod glx;
 pub mod osmesa;
+pub mod wgl;

@@ -166,6 +166,7 @@ impl UserBuffer {
 
 impl Present for UserBuffer {
     fn present(&mut self, fb: &Framebuffer) {
+        crate::winsys::dump::frame(fb);
         let pb = self.pixel_bytes();
         // SAFETY: the caller promised a buffer of at least row_pixels x height
         // pixels of this format when it called OSMesaMakeCurrent.

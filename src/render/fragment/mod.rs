@@ -172,6 +172,9 @@ fn eval(p: &Plane, cx: f64, cy: f64) -> f64 {
 /// The colour of a triangle's fragment at (cx, cy) relative to its origin.
 #[inline(always)]
 fn triangle_color(t: &TriangleSetup, cx: f64, cy: f64) -> [u8; 4] {
+    if let Some(tp) = &t.tex {
+        return color_to_u8(textured_color(t, tp, cx, cy));
+    }
     match t.flat {
         Some(c) => c,
         None => {
@@ -183,6 +186,38 @@ fn triangle_color(t: &TriangleSetup, cx: f64, cy: f64) -> [u8; 4] {
             color_to_u8(Vec4::from_array(c))
         }
     }
+}
+
+/// Texturing (section 3.8) of a triangle's fragment at (cx, cy): the
+/// primary colour, then each unit's sample and environment. Coordinates
+/// are the perspective-correct ratios S/Q of the planes, and their screen
+/// derivatives the exact ones of those ratios, (S' - s Q') / Q.
+fn textured_color(t: &TriangleSetup, tp: &super::setup::TexPlanes, cx: f64, cy: f64) -> Vec4 {
+    let primary = match t.flat {
+        Some(c) => Vec4::from_array(c.map(|v| v as f32 / 255.0)),
+        None => {
+            let w = if t.perspective { 1.0 / eval(&t.q, cx, cy) } else { 1.0 };
+            let c: [f32; 4] = std::array::from_fn(|ch| (eval(&t.color[ch], cx, cy) * w) as f32);
+            Vec4::from_array(c).clamp(Vec4::ZERO, Vec4::ONE)
+        }
+    };
+    let mut coords = [super::texture::Coord::default(); super::texture::MAX_UNITS];
+    for &u in &tp.stage.active {
+        let p = &tp.planes[u];
+        let q = eval(&p[3], cx, cy);
+        if q == 0.0 || !q.is_finite() {
+            continue;
+        }
+        let iq = 1.0 / q;
+        let c = &mut coords[u];
+        for k in 0..3 {
+            let s = eval(&p[k], cx, cy) * iq;
+            c.str[k] = s as f32;
+            c.dx[k] = ((p[k].dx - s * p[3].dx) * iq) as f32;
+            c.dy[k] = ((p[k].dy - s * p[3].dy) * iq) as f32;
+        }
+    }
+    tp.stage.shade(&coords, primary)
 }
 
 /// The stage-group key of a state: which of [`fragment`]'s const

@@ -539,6 +539,7 @@ impl XSurface {
     }
 
     fn put(&mut self, fb: &Framebuffer) {
+        crate::winsys::dump::frame(fb);
         let Some(x) = xlib() else { return };
         let (w, h) = (fb.width, fb.height);
         if w == 0 || h == 0 {

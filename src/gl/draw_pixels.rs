@@ -1,0 +1,281 @@
+//! glDrawPixels, glCopyPixels (GL 1.5 sections 3.6.4, 4.3.3) and glBitmap
+//! (section 3.7).
+//!
+//! Display lists: the client image is unpacked when the command is built
+//! (at compile time, with the unpack modes then current: section 5.4), into
+//! a [`PixelRect`] of groups before pixel transfer; transfer, zoom and the
+//! fragment operations happen when the command executes. A bitmap is
+//! likewise unpacked (GL_UNPACK_LSB_FIRST, skips, alignment) into rows of
+//! MSB-first bytes.
+//!
+//! Fragments: colour rectangles take the raster position's z; depth
+//! rectangles take the raster colour and their own z; both go through the
+//! per-fragment operations (`process_fragment`: alpha, stencil, depth,
+//! blend/logic op, masks), clipped to the window and the scissor box.
+//! Stencil rectangles write the stencil buffer directly through the
+//! stencil write mask (only ownership and the scissor test apply).
+//! Bitmap fragments take the raster colour and z.
+//!
+//! Texturing and fog of these fragments come with those features: they
+//! belong where `fragment_color` is computed below (texture with the raster
+//! texture coordinates, fog with the raster distance).
+//!
+//! glCopyPixels reads the whole source rectangle first, so overlapping
+//! source and destination behave as if every source pixel were read before
+//! any is written; source pixels outside the window produce no fragments.
+
+use super::command::Command;
+use super::context::Context;
+use super::enums::*;
+use super::pixel_data::{check_format_type, Kind, Source};
+use crate::render::fragment::{color_to_u8, depth_to_fixed, process_fragment};
+use crate::render::pixels;
+use glam::Vec4;
+use std::rc::Rc;
+
+/// Unpacked groups of a pixel rectangle, before pixel transfer.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PixelData {
+    Color(Vec<[f32; 4]>),
+    ColorIndex(Vec<f64>),
+    Depth(Vec<f64>),
+    Stencil(Vec<f64>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelRect {
+    pub width: usize,
+    pub height: usize,
+    pub data: PixelData,
+}
+
+/// A bitmap: rows of ceil(width / 8) bytes, most significant bit first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bitmap {
+    pub width: usize,
+    pub height: usize,
+    pub orig: [f32; 2],
+    pub step: [f32; 2],
+    pub bits: Vec<u8>,
+}
+
+impl Bitmap {
+    pub fn stride(&self) -> usize {
+        self.width.div_ceil(8)
+    }
+}
+
+/// Groups after pixel transfer, ready to become fragments; `None` marks
+/// groups that produce none (CopyPixels sources outside the window).
+enum Groups {
+    Color(Vec<Option<[u8; 4]>>),
+    Depth(Vec<Option<u32>>),
+    Stencil(Vec<Option<i64>>),
+}
+
+impl Context {
+    /// Builds glDrawPixels' command: unpacks the client image now. Errors
+    /// in the arguments become a command that raises them when executed.
+    ///
+    /// # Safety
+    /// `ptr` must be NULL or point to the image as the unpack modes lay it out.
+    pub unsafe fn build_draw_pixels(&self, w: i32, h: i32, format: u32, ty: u32, ptr: *const u8) -> Option<Command> {
+        if w < 0 || h < 0 {
+            return Some(Command::Error(GL_INVALID_VALUE));
+        }
+        let kind = match check_format_type(format, ty) {
+            Ok(k) => k,
+            Err(e) => return Some(Command::Error(e)),
+        };
+        if ptr.is_null() {
+            return None;
+        }
+        let (w, h) = (w as usize, h as usize);
+        let src = Source::new(&self.pixel_store.unpack, w, h, 1, format, ty, ptr);
+        let data = match kind {
+            Kind::Color => PixelData::Color(src.colors(w, h, 1)),
+            Kind::Depth => PixelData::Depth(src.values(w, h, 1, true)),
+            Kind::ColorIndex => PixelData::ColorIndex(src.values(w, h, 1, false)),
+            Kind::Stencil => PixelData::Stencil(src.values(w, h, 1, false)),
+        };
+        Some(Command::DrawPixels(Rc::new(PixelRect { width: w, height: h, data })))
+    }
+
+    /// Builds glBitmap's command, unpacking the bitmap now (a NULL bitmap
+    /// draws nothing and still moves the raster position).
+    ///
+    /// # Safety
+    /// `ptr` must be NULL or point to the bitmap as the unpack modes lay it out.
+    pub unsafe fn build_bitmap(&self, w: i32, h: i32, orig: [f32; 2], step: [f32; 2], ptr: *const u8) -> Command {
+        if w < 0 || h < 0 {
+            return Command::Error(GL_INVALID_VALUE);
+        }
+        let (w, h) = (w as usize, h as usize);
+        let stride = w.div_ceil(8);
+        let mut bits = vec![0u8; stride * h];
+        if !ptr.is_null() {
+            let src = Source::new(&self.pixel_store.unpack, w, h, 1, GL_COLOR_INDEX, GL_BITMAP, ptr);
+            for (n, v) in src.values(w, h, 1, false).into_iter().enumerate() {
+                if v != 0.0 {
+                    let (i, j) = (n % w, n / w);
+                    bits[j * stride + i / 8] |= 0x80 >> (i % 8);
+                }
+            }
+        }
+        Command::Bitmap(Rc::new(Bitmap { width: w, height: h, orig, step, bits }))
+    }
+
+    /// The colour of pixel-rectangle and bitmap fragments that take the
+    /// raster colour. (Texturing and fog would apply here.)
+    fn fragment_color(&self) -> [u8; 4] {
+        color_to_u8(Vec4::from_array(self.raster.color))
+    }
+
+    /// glDrawPixels, executed.
+    pub fn draw_pixels(&mut self, r: &PixelRect) {
+        let missing = match r.data {
+            PixelData::Depth(_) => !self.fb.has_depth(),
+            PixelData::Stencil(_) => !self.fb.has_stencil(),
+            _ => false,
+        };
+        if missing {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        if !self.raster.valid {
+            return;
+        }
+        let t = &self.pixel;
+        let groups = match &r.data {
+            PixelData::Color(c) => {
+                let mut c = c.clone();
+                t.color(&mut c);
+                Groups::Color(c.iter().map(|&p| Some(color_to_u8(Vec4::from_array(p)))).collect())
+            }
+            PixelData::ColorIndex(ix) => Groups::Color(ix.iter().map(|&i| Some(color_to_u8(Vec4::from_array(t.index_to_rgba(i))))).collect()),
+            PixelData::Depth(d) => Groups::Depth(d.iter().map(|&z| Some(depth_to_fixed(t.depth(z)))).collect()),
+            PixelData::Stencil(s) => Groups::Stencil(s.iter().map(|&i| Some(t.stencil(i))).collect()),
+        };
+        self.draw_groups(r.width, r.height, groups);
+    }
+
+    /// Turns transferred groups into fragments at the raster position.
+    fn draw_groups(&mut self, w: usize, h: usize, groups: Groups) {
+        self.validate();
+        let clip = self.scissored_surface();
+        let origin = [self.raster.pos[0] as f64, self.raster.pos[1] as f64];
+        let zoom = self.pixel.zoom.map(|z| z as f64);
+        let raster_z = depth_to_fixed(self.raster.pos[2] as f64);
+        let raster_color = self.fragment_color();
+        let fs = &self.derived.render.fragment;
+        let fb = &mut self.fb;
+        match groups {
+            Groups::Color(c) => pixels::rectangle(clip, origin, zoom, w, h, |g, x, y| {
+                if let Some(color) = c[g] {
+                    let i = fb.index(x, y);
+                    process_fragment(fs, fb, i, raster_z, color);
+                }
+            }),
+            Groups::Depth(d) => pixels::rectangle(clip, origin, zoom, w, h, |g, x, y| {
+                if let Some(z) = d[g] {
+                    let i = fb.index(x, y);
+                    process_fragment(fs, fb, i, z, raster_color);
+                }
+            }),
+            Groups::Stencil(s) => {
+                let max = ((1u32 << self.fb_stencil_bits()) - 1) as i64;
+                let wm = (self.stencil.write_mask as i64 & max) as u8;
+                let fb = &mut self.fb;
+                pixels::rectangle(clip, origin, zoom, w, h, |g, x, y| {
+                    if let Some(v) = s[g] {
+                        let i = fb.index(x, y);
+                        let v = (v & max) as u8;
+                        fb.stencil[i] = (fb.stencil[i] & !wm) | (v & wm);
+                    }
+                })
+            }
+        }
+    }
+
+    fn fb_stencil_bits(&self) -> u32 {
+        self.fb.config.stencil_bits.min(8) as u32
+    }
+
+    /// glCopyPixels.
+    pub fn copy_pixels(&mut self, x: i32, y: i32, w: i32, h: i32, ty: u32) {
+        if w < 0 || h < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let missing = match ty {
+            GL_COLOR => false,
+            GL_DEPTH => !self.fb.has_depth(),
+            GL_STENCIL => !self.fb.has_stencil(),
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+        if missing {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        if !self.raster.valid || w == 0 || h == 0 {
+            return;
+        }
+        let (w, h) = (w as usize, h as usize);
+        let fb = &self.fb;
+        // Read everything first: overlapping copies see the old pixels.
+        let at = |i: usize, j: usize| -> Option<usize> {
+            let (fx, fy) = (x as i64 + i as i64, y as i64 + j as i64);
+            (fx >= 0 && fy >= 0 && fx < fb.width as i64 && fy < fb.height as i64).then(|| fb.index(fx as usize, fy as usize))
+        };
+        let idx: Vec<Option<usize>> = (0..h).flat_map(|j| (0..w).map(move |i| (i, j))).map(|(i, j)| at(i, j)).collect();
+        let t = &self.pixel;
+        let groups = match ty {
+            GL_COLOR => {
+                let identity = t.color_is_identity();
+                Groups::Color(
+                    idx.iter()
+                        .map(|o| {
+                            o.map(|k| {
+                                let c = fb.color[k];
+                                if identity {
+                                    c
+                                } else {
+                                    let mut f = [c.map(|v| v as f32 / 255.0)];
+                                    t.color(&mut f);
+                                    color_to_u8(Vec4::from_array(f[0]))
+                                }
+                            })
+                        })
+                        .collect(),
+                )
+            }
+            GL_DEPTH => {
+                let max = crate::framebuffer::DEPTH_MAX as f64;
+                let identity = t.depth_is_identity();
+                Groups::Depth(idx.iter().map(|o| o.map(|k| if identity { fb.depth[k] } else { depth_to_fixed(t.depth(fb.depth[k] as f64 / max)) })).collect())
+            }
+            _ => Groups::Stencil(idx.iter().map(|o| o.map(|k| t.stencil(fb.stencil[k] as f64))).collect()),
+        };
+        self.draw_groups(w, h, groups);
+    }
+
+    /// glBitmap, executed.
+    pub fn bitmap(&mut self, b: &Bitmap) {
+        if !self.raster.valid {
+            return;
+        }
+        if b.width > 0 && b.height > 0 {
+            self.validate();
+            let clip = self.scissored_surface();
+            let x0 = (self.raster.pos[0] as f64 - b.orig[0] as f64).floor() as i64;
+            let y0 = (self.raster.pos[1] as f64 - b.orig[1] as f64).floor() as i64;
+            let z = depth_to_fixed(self.raster.pos[2] as f64);
+            let color = self.fragment_color();
+            let fs = &self.derived.render.fragment;
+            let fb = &mut self.fb;
+            pixels::bitmap(clip, x0, y0, b.width, b.height, b.stride(), &b.bits, |x, y| {
+                let i = fb.index(x, y);
+                process_fragment(fs, fb, i, z, color);
+            });
+        }
+        self.raster.pos[0] += b.step[0];
+        self.raster.pos[1] += b.step[1];
+    }
+}

@@ -1,0 +1,352 @@
+//! Selection and feedback (GL 1.5 sections 5.2 and 5.3): glRenderMode,
+//! glSelectBuffer, the name stack, glFeedbackBuffer, glPassThrough.
+//!
+//! In GL_SELECT and GL_FEEDBACK mode, primitives are clipped to the view
+//! volume exactly (no guard band here: a hit means the primitive
+//! intersects the clip volume), face-culled like rendered polygons, and
+//! nothing reaches the framebuffer. Polygons arrive as the triangles
+//! primitive assembly makes of them, so feedback reports each as a
+//! GL_POLYGON_TOKEN with 3 vertices (as Mesa does).
+//!
+//! The client's buffers are written as results arrive; the context keeps
+//! only their pointers and sizes, as GL does.
+
+use super::context::Context;
+use super::enums::*;
+use crate::render::clip::Plane;
+use crate::render::ClipVertex;
+use glam::Vec4;
+
+pub const GL_RENDER: u32 = 0x1C00;
+pub const GL_FEEDBACK: u32 = 0x1C01;
+pub const GL_SELECT: u32 = 0x1C02;
+pub const GL_2D: u32 = 0x0600;
+pub const GL_3D: u32 = 0x0601;
+pub const GL_3D_COLOR: u32 = 0x0602;
+pub const GL_3D_COLOR_TEXTURE: u32 = 0x0603;
+pub const GL_4D_COLOR_TEXTURE: u32 = 0x0604;
+pub const GL_PASS_THROUGH_TOKEN: f32 = 0x0700 as f32;
+pub const GL_POINT_TOKEN: f32 = 0x0701 as f32;
+pub const GL_LINE_TOKEN: f32 = 0x0702 as f32;
+pub const GL_POLYGON_TOKEN: f32 = 0x0703 as f32;
+pub const GL_LINE_RESET_TOKEN: f32 = 0x0707 as f32;
+/// GL_MAX_NAME_STACK_DEPTH.
+pub const MAX_NAME_STACK_DEPTH: usize = 64;
+
+pub struct SelectState {
+    pub mode: u32,
+    select_buf: *mut u32,
+    select_size: usize,
+    select_used: usize,
+    hits: i32,
+    overflow: bool,
+    names: Vec<u32>,
+    /// A hit since the last name-stack change: (min z, max z) in [0, 1].
+    pending: Option<(f64, f64)>,
+    feedback_buf: *mut f32,
+    feedback_size: usize,
+    feedback_type: u32,
+    feedback_used: usize,
+    feedback_overflow: bool,
+}
+
+impl Default for SelectState {
+    fn default() -> Self {
+        SelectState {
+            mode: GL_RENDER,
+            select_buf: std::ptr::null_mut(),
+            select_size: 0,
+            select_used: 0,
+            hits: 0,
+            overflow: false,
+            names: Vec::new(),
+            pending: None,
+            feedback_buf: std::ptr::null_mut(),
+            feedback_size: 0,
+            feedback_type: GL_2D,
+            feedback_used: 0,
+            feedback_overflow: false,
+        }
+    }
+}
+
+impl SelectState {
+    fn put_select(&mut self, v: u32) {
+        if self.select_used < self.select_size {
+            // SAFETY: glSelectBuffer's caller promised `size` writable values.
+            unsafe { *self.select_buf.add(self.select_used) = v };
+            self.select_used += 1;
+        } else {
+            self.overflow = true;
+        }
+    }
+
+    /// Writes the pending hit record (name-stack changes and glRenderMode).
+    fn flush_hit(&mut self) {
+        let Some((zmin, zmax)) = self.pending.take() else { return };
+        let scale = |z: f64| (z.clamp(0.0, 1.0) * 4294967295.0).round() as u32;
+        let start = self.select_used;
+        let names = self.names.clone();
+        self.put_select(names.len() as u32);
+        self.put_select(scale(zmin));
+        self.put_select(scale(zmax));
+        for n in names {
+            self.put_select(n);
+        }
+        if !self.overflow {
+            self.hits += 1;
+        } else {
+            self.select_used = start.min(self.select_used);
+        }
+    }
+
+    fn put_feedback(&mut self, v: f32) {
+        if self.feedback_used < self.feedback_size {
+            // SAFETY: glFeedbackBuffer's caller promised `size` writable values.
+            unsafe { *self.feedback_buf.add(self.feedback_used) = v };
+            self.feedback_used += 1;
+        } else {
+            self.feedback_overflow = true;
+        }
+    }
+}
+
+/// The six frustum planes.
+const FRUSTUM: [Plane; 6] = [
+    Plane { n: Vec4::new(1.0, 0.0, 0.0, 1.0), d: 0.0 },
+    Plane { n: Vec4::new(-1.0, 0.0, 0.0, 1.0), d: 0.0 },
+    Plane { n: Vec4::new(0.0, 1.0, 0.0, 1.0), d: 0.0 },
+    Plane { n: Vec4::new(0.0, -1.0, 0.0, 1.0), d: 0.0 },
+    Plane { n: Vec4::new(0.0, 0.0, 1.0, 1.0), d: 0.0 },
+    Plane { n: Vec4::new(0.0, 0.0, -1.0, 1.0), d: 0.0 },
+];
+
+/// Clips a convex polygon (or a segment, or a point) to the view volume
+/// and the user clip planes.
+fn clip_to_frustum(mut poly: Vec<ClipVertex>, user: &[Plane]) -> Vec<ClipVertex> {
+    if poly.iter().any(|v| !v.pos.is_finite()) {
+        return Vec::new();
+    }
+    for plane in FRUSTUM.iter().chain(user) {
+        if poly.is_empty() {
+            break;
+        }
+        let n = poly.len();
+        if n == 1 {
+            if plane.dist(&poly[0].pos) < 0.0 {
+                poly.clear();
+            }
+            continue;
+        }
+        let mut out = Vec::with_capacity(n + 1);
+        let edges = if n == 2 { 1 } else { n };
+        for i in 0..edges {
+            let (a, b) = (&poly[i], &poly[(i + 1) % n]);
+            let (da, db) = (plane.dist(&a.pos), plane.dist(&b.pos));
+            if da >= 0.0 {
+                out.push(*a);
+            }
+            if (da >= 0.0) != (db >= 0.0) {
+                let (inside, outside, di, dout) = if da >= 0.0 { (a, b, da, db) } else { (b, a, db, da) };
+                out.push(ClipVertex::lerp(inside, outside, di / (di - dout)));
+            }
+        }
+        if n == 2 && plane.dist(&poly[1].pos) >= 0.0 {
+            out.push(poly[1]);
+        }
+        poly = out;
+    }
+    poly
+}
+
+impl Context {
+    pub fn render_mode(&mut self, mode: u32) -> i32 {
+        if !matches!(mode, GL_RENDER | GL_SELECT | GL_FEEDBACK) {
+            self.set_error(GL_INVALID_ENUM);
+            return 0;
+        }
+        let s = &mut self.select;
+        let result = match s.mode {
+            GL_SELECT => {
+                s.flush_hit();
+                let r = if s.overflow { -1 } else { s.hits };
+                s.hits = 0;
+                s.select_used = 0;
+                s.overflow = false;
+                r
+            }
+            GL_FEEDBACK => {
+                let r = if s.feedback_overflow { -1 } else { s.feedback_used as i32 };
+                s.feedback_used = 0;
+                s.feedback_overflow = false;
+                r
+            }
+            _ => 0,
+        };
+        match mode {
+            GL_SELECT if s.select_buf.is_null() => {
+                self.set_error(GL_INVALID_OPERATION);
+                return result;
+            }
+            GL_FEEDBACK if s.feedback_buf.is_null() => {
+                self.set_error(GL_INVALID_OPERATION);
+                return result;
+            }
+            _ => {}
+        }
+        s.mode = mode;
+        result
+    }
+
+    pub fn select_buffer(&mut self, size: i32, buf: *mut u32) {
+        if size < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        if self.select.mode == GL_SELECT {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        self.select.select_buf = buf;
+        self.select.select_size = if buf.is_null() { 0 } else { size as usize };
+    }
+
+    pub fn feedback_buffer(&mut self, size: i32, ty: u32, buf: *mut f32) {
+        if !matches!(ty, GL_2D | GL_3D | GL_3D_COLOR | GL_3D_COLOR_TEXTURE | GL_4D_COLOR_TEXTURE) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        if size < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        if self.select.mode == GL_FEEDBACK {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let s = &mut self.select;
+        s.feedback_buf = buf;
+        s.feedback_size = if buf.is_null() { 0 } else { size as usize };
+        s.feedback_type = ty;
+    }
+
+    /// glInitNames / glPushName / glPopName / glLoadName: `op` says which.
+    pub fn name_stack(&mut self, op: NameOp) {
+        if self.select.mode != GL_SELECT {
+            return; // ignored outside selection mode
+        }
+        self.select.flush_hit();
+        let depth = self.select.names.len();
+        let error = match op {
+            NameOp::Push(_) if depth >= MAX_NAME_STACK_DEPTH => GL_STACK_OVERFLOW,
+            NameOp::Pop if depth == 0 => GL_STACK_UNDERFLOW,
+            NameOp::Load(_) if depth == 0 => GL_INVALID_OPERATION,
+            _ => GL_NO_ERROR,
+        };
+        if error != GL_NO_ERROR {
+            return self.set_error(error);
+        }
+        let names = &mut self.select.names;
+        match op {
+            NameOp::Init => names.clear(),
+            NameOp::Push(n) => names.push(n),
+            NameOp::Pop => {
+                names.pop();
+            }
+            NameOp::Load(n) => names[depth - 1] = n,
+        }
+    }
+
+    pub fn pass_through(&mut self, token: f32) {
+        if self.select.mode == GL_FEEDBACK {
+            self.select.put_feedback(GL_PASS_THROUGH_TOKEN);
+            self.select.put_feedback(token);
+        }
+    }
+
+    pub fn name_stack_depth(&self) -> usize {
+        self.select.names.len()
+    }
+
+    /// Window coordinates of a clip-space vertex.
+    fn window(&self, v: &ClipVertex) -> [f64; 4] {
+        let rs = &self.derived.render;
+        let w = v.pos.w as f64;
+        let (x, y, z) = (v.pos.x as f64 / w, v.pos.y as f64 / w, v.pos.z as f64 / w);
+        [
+            rs.viewport_offset[0] + rs.viewport_scale[0] * x,
+            rs.viewport_offset[1] + rs.viewport_scale[1] * y,
+            rs.viewport_offset[2] + rs.viewport_scale[2] * z,
+            w,
+        ]
+    }
+
+    /// A primitive in selection or feedback mode: `kind` is the feedback
+    /// token; `reset` marks the first segment of a line (LINE_RESET_TOKEN).
+    pub fn select_primitive(&mut self, verts: &[&ClipVertex], kind: f32, reset: bool) {
+        let user = &self.derived.render.clip_planes[crate::render::clip::FIXED_PLANES.len()..];
+        let clipped = clip_to_frustum(verts.iter().map(|v| **v).collect(), user);
+        if clipped.is_empty() || (verts.len() >= 3 && clipped.len() < 3) {
+            return;
+        }
+        let win: Vec<[f64; 4]> = clipped.iter().map(|v| self.window(v)).collect();
+        if verts.len() >= 3 {
+            // Face culling (3.5.1) applies: culled polygons are no hits.
+            let mut area = 0.0;
+            for i in 0..win.len() {
+                let (a, b) = (win[i], win[(i + 1) % win.len()]);
+                area += a[0] * b[1] - b[0] * a[1];
+            }
+            let front = (area > 0.0) == (self.polygon.front_face == GL_CCW);
+            if self.polygon.cull {
+                let culled = match self.polygon.cull_mode {
+                    GL_FRONT => front,
+                    GL_BACK => !front,
+                    _ => true,
+                };
+                if culled {
+                    return;
+                }
+            }
+        }
+        if self.select.mode == GL_SELECT {
+            let (lo, hi) = win.iter().fold((f64::MAX, f64::MIN), |(lo, hi), w| (lo.min(w[2]), hi.max(w[2])));
+            let p = self.select.pending.get_or_insert((lo, hi));
+            p.0 = p.0.min(lo);
+            p.1 = p.1.max(hi);
+            return;
+        }
+        let token = if kind == GL_LINE_TOKEN && reset { GL_LINE_RESET_TOKEN } else { kind };
+        self.select.put_feedback(token);
+        if kind == GL_POLYGON_TOKEN {
+            self.select.put_feedback(win.len() as f32);
+        }
+        let ty = self.select.feedback_type;
+        for (v, w) in clipped.iter().zip(&win) {
+            let s = &mut self.select;
+            s.put_feedback(w[0] as f32);
+            s.put_feedback(w[1] as f32);
+            if ty != GL_2D {
+                s.put_feedback(w[2] as f32);
+            }
+            if ty == GL_4D_COLOR_TEXTURE {
+                s.put_feedback(w[3] as f32);
+            }
+            if matches!(ty, GL_3D_COLOR | GL_3D_COLOR_TEXTURE | GL_4D_COLOR_TEXTURE) {
+                for c in v.color.to_array() {
+                    s.put_feedback(c);
+                }
+            }
+            if matches!(ty, GL_3D_COLOR_TEXTURE | GL_4D_COLOR_TEXTURE) {
+                // Texture coordinates: (0, 0, 0, 1) until texturing lands.
+                for t in [0.0, 0.0, 0.0, 1.0] {
+                    s.put_feedback(t);
+                }
+            }
+        }
+    }
+}
+
+/// The name-stack commands.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum NameOp {
+    Init,
+    Push(u32),
+    Pop,
+    Load(u32),
+}

@@ -1,0 +1,1127 @@
+//! Texturing state and commands (GL 1.5 sections 3.8 and 2.10.4 / 2.11.4):
+//! texture objects (glGenTextures, glBindTexture, glDeleteTextures,
+//! glIsTexture, priorities), the 1D, 2D, 3D and cube-map images and their
+//! specification (glTexImage*, glTexSubImage*, glCopyTexImage*,
+//! glCopyTexSubImage*, proxies, GENERATE_MIPMAP), parameters, the
+//! per-unit environment and texture coordinate generation, and their
+//! queries. Texture completeness (3.8.10) is decided at validation, which
+//! builds the fragment stage's `render::texture::TextureStage`.
+//!
+//! Invariants: texel arrays are shared (Arc) with the derived stage; every
+//! command that changes an image first drops the derived stage, so the
+//! change happens in place and the next draw re-derives. Object names live
+//! in `objects` once bound (IsTexture is true only then); names returned
+//! by glGenTextures and not bound yet are kept in `reserved`.
+
+pub mod enums;
+pub mod image;
+pub mod texgen;
+
+use self::enums::*;
+use self::image::{internal_format, InternalFormat};
+use super::context::Context;
+use super::enums::{GL_INVALID_ENUM, GL_INVALID_OPERATION, GL_INVALID_VALUE, GL_OUT_OF_MEMORY};
+use super::get::Value;
+use crate::render::fragment::CompareFunc;
+use crate::render::texture::{Base, Env, Filter, Image, Params, Target, TextureStage, UnitSampler, Wrap, MAX_LOD_BIAS, MAX_UNITS};
+use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
+
+/// Dirty bit: texture state the fragment stage derives from.
+pub const DIRTY_TEXTURE: u32 = super::validate::DIRTY_TEXTURE;
+
+pub const MAX_TEXTURE_SIZE: i32 = 2048;
+pub const MAX_3D_TEXTURE_SIZE: i32 = 256;
+pub const MAX_CUBE_MAP_TEXTURE_SIZE: i32 = 2048;
+/// Levels per face: log2(MAX_TEXTURE_SIZE) + 1.
+pub const MAX_LEVELS: usize = 12;
+
+const TARGETS: [Target; 4] = [Target::T1D, Target::T2D, Target::T3D, Target::Cube];
+
+fn target_index(t: Target) -> usize {
+    t as usize
+}
+
+/// A texture-object target (glBindTexture, glTexParameter, glEnable).
+fn object_target(e: u32) -> Option<Target> {
+    Some(match e {
+        GL_TEXTURE_1D => Target::T1D,
+        GL_TEXTURE_2D => Target::T2D,
+        GL_TEXTURE_3D => Target::T3D,
+        GL_TEXTURE_CUBE_MAP => Target::Cube,
+        _ => return None,
+    })
+}
+
+/// An image target: (object target, face, proxy).
+fn image_target(e: u32, dims: u8) -> Option<(Target, usize, bool)> {
+    Some(match (e, dims) {
+        (GL_TEXTURE_1D, 1) => (Target::T1D, 0, false),
+        (GL_PROXY_TEXTURE_1D, 1) => (Target::T1D, 0, true),
+        (GL_TEXTURE_2D, 2) => (Target::T2D, 0, false),
+        (GL_PROXY_TEXTURE_2D, 2) => (Target::T2D, 0, true),
+        (GL_PROXY_TEXTURE_CUBE_MAP, 2) => (Target::Cube, 0, true),
+        (GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, 2) => (Target::Cube, (e - GL_TEXTURE_CUBE_MAP_POSITIVE_X) as usize, false),
+        (GL_TEXTURE_3D, 3) => (Target::T3D, 0, false),
+        (GL_PROXY_TEXTURE_3D, 3) => (Target::T3D, 0, true),
+        _ => return None,
+    })
+}
+
+fn dims_of(t: Target) -> u8 {
+    match t {
+        Target::T1D => 1,
+        Target::T2D | Target::Cube => 2,
+        Target::T3D => 3,
+    }
+}
+
+fn max_size(t: Target) -> i32 {
+    match t {
+        Target::T3D => MAX_3D_TEXTURE_SIZE,
+        Target::Cube => MAX_CUBE_MAP_TEXTURE_SIZE,
+        _ => MAX_TEXTURE_SIZE,
+    }
+}
+
+fn log2_floor(n: i32) -> i32 {
+    31 - (n.max(1) as u32).leading_zeros() as i32
+}
+
+/// A texture object (section 3.8.11).
+#[derive(Clone, Debug)]
+pub struct TexObject {
+    /// The target it was first bound to (None: never bound).
+    pub target: Option<Target>,
+    /// images[face * MAX_LEVELS + level].
+    pub images: Vec<Option<Arc<Image>>>,
+    pub params: Params,
+    pub generate_mipmap: bool,
+    pub priority: f32,
+}
+
+impl TexObject {
+    fn new(target: Option<Target>) -> TexObject {
+        let mut params = Params::default();
+        if target == Some(Target::Cube) {
+            params.wrap = [Wrap::Repeat; 3];
+        }
+        TexObject { target, images: vec![None; 6 * MAX_LEVELS], params, generate_mipmap: false, priority: 1.0 }
+    }
+
+    fn image(&self, face: usize, level: usize) -> Option<&Arc<Image>> {
+        self.images.get(face * MAX_LEVELS + level).and_then(|i| i.as_ref())
+    }
+
+    /// Section 3.8.10: the levels base..=q of each face when the texture is
+    /// complete for its target (cube completeness for cube maps).
+    pub fn complete(&self, target: Target) -> Option<Vec<Vec<Arc<Image>>>> {
+        let p = &self.params;
+        if p.base_level < 0 || p.base_level as usize >= MAX_LEVELS || p.base_level > p.max_level {
+            return None;
+        }
+        let base = p.base_level as usize;
+        let dims = dims_of(target) as usize;
+        let faces = if target == Target::Cube { 6 } else { 1 };
+        let first = self.image(0, base)?;
+        let n0 = first.inner(dims);
+        if n0.iter().any(|&n| n <= 0) {
+            return None;
+        }
+        if target == Target::Cube && n0[0] != n0[1] {
+            return None;
+        }
+        let mut out = Vec::with_capacity(faces);
+        for f in 0..faces {
+            let b = self.image(f, base)?;
+            if b.inner(dims) != n0 || b.internal_format != first.internal_format || b.border != first.border {
+                return None;
+            }
+            let mut levels = vec![b.clone()];
+            if p.min_filter.is_mipmap() {
+                let pmax = log2_floor(*n0[..dims].iter().max().unwrap_or(&1)) + p.base_level;
+                let q = pmax.min(p.max_level).min(MAX_LEVELS as i32 - 1);
+                let mut size = n0;
+                for l in base + 1..=q as usize {
+                    size = size.map(|s| (s / 2).max(1));
+                    for s in size.iter_mut().skip(dims) {
+                        *s = 1;
+                    }
+                    let img = self.image(f, l)?;
+                    if img.inner(dims) != size || img.internal_format != first.internal_format || img.border != first.border {
+                        return None;
+                    }
+                    levels.push(img.clone());
+                }
+            }
+            out.push(levels);
+        }
+        Some(out)
+    }
+}
+
+/// Texture coordinate generation for one coordinate (2.11.4).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TexGenCoord {
+    pub enabled: bool,
+    pub mode: u32,
+    pub object_plane: [f64; 4],
+    /// Stored in eye coordinates (transformed at specification).
+    pub eye_plane: [f64; 4],
+}
+
+/// One texture unit's state (server side).
+#[derive(Clone, Debug)]
+pub struct TexUnit {
+    /// TEXTURE_1D, 2D, 3D, CUBE_MAP enables.
+    pub enabled: [bool; 4],
+    /// Bound object names per target (0: the default object).
+    pub bound: [u32; 4],
+    pub env: Env,
+    /// TEXTURE_FILTER_CONTROL's TEXTURE_LOD_BIAS.
+    pub lod_bias: f32,
+    pub gen: [TexGenCoord; 4],
+}
+
+impl Default for TexUnit {
+    fn default() -> Self {
+        let plane = |i: usize| {
+            let mut p = [0.0; 4];
+            if i < 2 {
+                p[i] = 1.0;
+            }
+            p
+        };
+        TexUnit {
+            enabled: [false; 4],
+            bound: [0; 4],
+            env: Env::default(),
+            lod_bias: 0.0,
+            gen: [0, 1, 2, 3].map(|i| TexGenCoord { enabled: false, mode: GL_EYE_LINEAR, object_plane: plane(i), eye_plane: plane(i) }),
+        }
+    }
+}
+
+/// All texturing state of a context.
+#[derive(Clone, Debug)]
+pub struct TextureState {
+    /// ACTIVE_TEXTURE - TEXTURE0.
+    pub active: usize,
+    /// CLIENT_ACTIVE_TEXTURE - TEXTURE0.
+    pub client_active: usize,
+    pub units: [TexUnit; MAX_UNITS],
+    pub objects: HashMap<u32, TexObject>,
+    pub reserved: HashSet<u32>,
+    /// The default objects (name 0) per target.
+    pub defaults: [TexObject; 4],
+    /// The proxy "objects" per target: only their level state matters.
+    pub proxies: [TexObject; 4],
+    /// Derived: what the vertex stage does per unit.
+    pub vertex: texgen::VertexTexSetup,
+}
+
+impl Default for TextureState {
+    fn default() -> Self {
+        TextureState {
+            active: 0,
+            client_active: 0,
+            units: Default::default(),
+            objects: HashMap::new(),
+            reserved: HashSet::new(),
+            defaults: TARGETS.map(|t| TexObject::new(Some(t))),
+            proxies: TARGETS.map(|t| TexObject::new(Some(t))),
+            vertex: Default::default(),
+        }
+    }
+}
+
+impl TextureState {
+    fn object(&self, unit: usize, t: Target) -> &TexObject {
+        let name = self.units[unit].bound[target_index(t)];
+        if name == 0 {
+            &self.defaults[target_index(t)]
+        } else {
+            self.objects.get(&name).unwrap_or(&self.defaults[target_index(t)])
+        }
+    }
+
+    fn object_mut(&mut self, unit: usize, t: Target) -> &mut TexObject {
+        let name = self.units[unit].bound[target_index(t)];
+        if name != 0 && self.objects.contains_key(&name) {
+            self.objects.get_mut(&name).expect("checked")
+        } else {
+            &mut self.defaults[target_index(t)]
+        }
+    }
+
+    /// The target a unit textures with: the highest-priority enabled one
+    /// (cube map, 3D, 2D, 1D), if any.
+    pub fn unit_target(&self, u: usize) -> Option<Target> {
+        let e = &self.units[u].enabled;
+        [Target::Cube, Target::T3D, Target::T2D, Target::T1D].into_iter().find(|t| e[target_index(*t)])
+    }
+}
+
+/// glTexImage's arguments, with the client pixels already unpacked (so a
+/// display list holds the image, section 5.4).
+#[derive(Clone, Debug, PartialEq)]
+pub struct TexImageCmd {
+    pub dims: u8,
+    pub target: u32,
+    pub level: i32,
+    pub internal_format: i32,
+    pub size: [i32; 3],
+    pub border: i32,
+    pub format: u32,
+    pub ty: u32,
+    pub pixels: Option<Arc<image::Pixels>>,
+}
+
+/// glTexSubImage's arguments.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TexSubImageCmd {
+    pub dims: u8,
+    pub target: u32,
+    pub level: i32,
+    pub offset: [i32; 3],
+    pub size: [i32; 3],
+    pub format: u32,
+    pub ty: u32,
+    pub pixels: Option<Arc<image::Pixels>>,
+}
+
+/// glCopyTexImage / glCopyTexSubImage arguments: target, level, internal
+/// format (0 for the Sub form), offsets, window x, y, width, height, border.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CopyTexCmd {
+    pub dims: u8,
+    pub sub: bool,
+    pub target: u32,
+    pub level: i32,
+    pub internal_format: u32,
+    pub offset: [i32; 3],
+    pub rect: [i32; 4],
+    pub border: i32,
+}
+
+fn valid_size(n: i32, border: i32, max: i32) -> bool {
+    let m = n - 2 * border;
+    n >= 0 && m >= 0 && m <= max && (m == 0 || (m & (m - 1)) == 0)
+}
+
+impl Context {
+    fn drop_derived_textures(&mut self) {
+        self.derived.render.texture = None;
+        self.dirty |= DIRTY_TEXTURE;
+    }
+
+    /// glActiveTexture.
+    pub fn active_texture(&mut self, e: u32) {
+        if !(GL_TEXTURE0..GL_TEXTURE0 + MAX_UNITS as u32).contains(&e) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.texture.active = (e - GL_TEXTURE0) as usize;
+        self.transform.active_texture = self.texture.active;
+    }
+
+    /// glClientActiveTexture.
+    pub fn client_active_texture(&mut self, e: u32) {
+        if !(GL_TEXTURE0..GL_TEXTURE0 + MAX_UNITS as u32).contains(&e) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.texture.client_active = (e - GL_TEXTURE0) as usize;
+    }
+
+    /// glTexCoord / glMultiTexCoord (unit as an enum for MultiTexCoord).
+    pub fn tex_coord(&mut self, unit: u32, v: [f32; 4]) {
+        let u = unit.wrapping_sub(GL_TEXTURE0) as usize;
+        if u >= MAX_UNITS {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.current.tex_coords[u] = v;
+    }
+
+    /// glGenTextures.
+    pub fn gen_textures(&mut self, n: i32) -> Option<Vec<u32>> {
+        if n < 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        let mut out = Vec::with_capacity(n as usize);
+        let mut next = 1u32;
+        while out.len() < n as usize {
+            if !self.texture.objects.contains_key(&next) && !self.texture.reserved.contains(&next) {
+                self.texture.reserved.insert(next);
+                out.push(next);
+            }
+            next += 1;
+        }
+        Some(out)
+    }
+
+    /// glDeleteTextures: bound objects revert to the default ones.
+    pub fn delete_textures(&mut self, names: &[u32]) {
+        for &name in names {
+            if name == 0 {
+                continue;
+            }
+            self.texture.reserved.remove(&name);
+            if self.texture.objects.remove(&name).is_some() {
+                for u in self.texture.units.iter_mut() {
+                    for b in u.bound.iter_mut() {
+                        if *b == name {
+                            *b = 0;
+                        }
+                    }
+                }
+                self.drop_derived_textures();
+            }
+        }
+    }
+
+    pub fn is_texture(&self, name: u32) -> bool {
+        name != 0 && self.texture.objects.contains_key(&name)
+    }
+
+    /// glBindTexture.
+    pub fn bind_texture(&mut self, target: u32, name: u32) {
+        let Some(t) = object_target(target) else { return self.set_error(GL_INVALID_ENUM) };
+        if name != 0 {
+            match self.texture.objects.get(&name) {
+                Some(o) if o.target != Some(t) => return self.set_error(GL_INVALID_OPERATION),
+                Some(_) => {}
+                None => {
+                    self.texture.reserved.remove(&name);
+                    self.texture.objects.insert(name, TexObject::new(Some(t)));
+                }
+            }
+        }
+        let u = self.texture.active;
+        self.texture.units[u].bound[target_index(t)] = name;
+        self.drop_derived_textures();
+    }
+
+    /// glPrioritizeTextures: priorities clamp to [0, 1]; name 0 is ignored.
+    pub fn prioritize_textures(&mut self, p: &[(u32, f32)]) {
+        for &(name, pr) in p {
+            if let Some(o) = self.texture.objects.get_mut(&name) {
+                o.priority = pr.clamp(0.0, 1.0);
+            }
+        }
+    }
+
+    /// glAreTexturesResident: every texture is resident; INVALID_VALUE for
+    /// a name that is not a texture.
+    pub fn are_textures_resident(&mut self, names: &[u32]) -> Option<Vec<bool>> {
+        if names.iter().any(|&n| !self.is_texture(n)) {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        Some(vec![true; names.len()])
+    }
+
+    /// glEnable/glDisable for the texturing capabilities of the active
+    /// unit; false when `cap` is not one of them.
+    pub fn set_texture_enabled(&mut self, cap: u32, on: bool) -> bool {
+        let u = self.texture.active;
+        let unit = &mut self.texture.units[u];
+        match cap {
+            GL_TEXTURE_1D => unit.enabled[0] = on,
+            GL_TEXTURE_2D => unit.enabled[1] = on,
+            GL_TEXTURE_3D => unit.enabled[2] = on,
+            GL_TEXTURE_CUBE_MAP => unit.enabled[3] = on,
+            GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q => unit.gen[(cap - GL_TEXTURE_GEN_S) as usize].enabled = on,
+            _ => return false,
+        }
+        self.dirty |= DIRTY_TEXTURE;
+        true
+    }
+
+    pub fn texture_is_enabled(&self, cap: u32) -> Option<bool> {
+        let unit = &self.texture.units[self.texture.active];
+        Some(match cap {
+            GL_TEXTURE_1D => unit.enabled[0],
+            GL_TEXTURE_2D => unit.enabled[1],
+            GL_TEXTURE_3D => unit.enabled[2],
+            GL_TEXTURE_CUBE_MAP => unit.enabled[3],
+            GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q => unit.gen[(cap - GL_TEXTURE_GEN_S) as usize].enabled,
+            _ => return None,
+        })
+    }
+
+    /// Builds glTexImage's command: unpacks the client image when the
+    /// arguments allow it (errors are raised when the command runs). A
+    /// proxy target runs at once and is never compiled (section 5.4).
+    ///
+    /// # Safety
+    /// `pixels` must be NULL or point to the image as the unpack modes lay it out.
+    #[allow(clippy::too_many_arguments)]
+    pub unsafe fn tex_image_command(&mut self, dims: u8, target: u32, level: i32, internal_format: i32, size: [i32; 3], border: i32, format: u32, ty: u32, pixels: *const u8) -> Option<super::Command> {
+        let mut cmd = TexImageCmd { dims, target, level, internal_format, size, border, format, ty, pixels: None };
+        let proxy = matches!(image_target(target, dims), Some((_, _, true)));
+        let sizes_ok = size.iter().all(|&s| (0..=MAX_TEXTURE_SIZE + 2).contains(&s));
+        if !proxy && !pixels.is_null() && sizes_ok && image::check_format_type(format, ty).is_ok() {
+            let [w, h, d] = size.map(|s| s as usize);
+            cmd.pixels = Some(Arc::new(image::unpack(&self.pixel_store.unpack, w, h, d, format, ty, pixels)));
+        }
+        if proxy {
+            if self.in_begin_end() {
+                self.set_error(GL_INVALID_OPERATION);
+            } else {
+                self.tex_image(&cmd);
+            }
+            return None;
+        }
+        Some(super::Command::TexImage(Box::new(cmd)))
+    }
+
+    /// Builds glTexSubImage's command.
+    ///
+    /// # Safety
+    /// As [`Self::tex_image_command`].
+    #[allow(clippy::too_many_arguments)]
+    pub unsafe fn tex_sub_image_command(&mut self, dims: u8, target: u32, level: i32, offset: [i32; 3], size: [i32; 3], format: u32, ty: u32, pixels: *const u8) -> super::Command {
+        let mut cmd = TexSubImageCmd { dims, target, level, offset, size, format, ty, pixels: None };
+        let sizes_ok = size.iter().all(|&s| (0..=MAX_TEXTURE_SIZE + 2).contains(&s));
+        if !pixels.is_null() && sizes_ok && image::check_format_type(format, ty).is_ok() {
+            let [w, h, d] = size.map(|s| s as usize);
+            cmd.pixels = Some(Arc::new(image::unpack(&self.pixel_store.unpack, w, h, d, format, ty, pixels)));
+        }
+        super::Command::TexSubImage(Box::new(cmd))
+    }
+
+    /// Checks an image call's common arguments; the target, face, proxy
+    /// flag and internal format on success (the error is set otherwise).
+    fn check_image_args(&mut self, dims: u8, target: u32, level: i32, ifmt: u32, size: [i32; 3], border: i32) -> Option<(Target, usize, bool, InternalFormat)> {
+        let Some((t, face, proxy)) = image_target(target, dims) else {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        };
+        let max = max_size(t);
+        if level < 0 || level > log2_floor(max) {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        let Some(f) = internal_format(ifmt) else {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        };
+        if !(0..=1).contains(&border) {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        for &s in &size[..dims as usize] {
+            if !valid_size(s, border, max) {
+                self.set_error(GL_INVALID_VALUE);
+                return None;
+            }
+        }
+        if t == Target::Cube && size[0] != size[1] {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        if f.base == Base::Depth && t == Target::T3D {
+            self.set_error(GL_INVALID_OPERATION);
+            return None;
+        }
+        Some((t, face, proxy, f))
+    }
+
+    /// glTexImage1D/2D/3D (section 3.8.1).
+    pub fn tex_image(&mut self, cmd: &TexImageCmd) {
+        let dims = cmd.dims as usize;
+        let mut size = cmd.size;
+        for s in size.iter_mut().skip(dims) {
+            *s = 1;
+        }
+        let Some((t, face, proxy, f)) = self.check_image_args(cmd.dims, cmd.target, cmd.level, cmd.internal_format as u32, size, cmd.border) else {
+            return;
+        };
+        if let Err(e) = image::check_format_type(cmd.format, cmd.ty) {
+            return self.set_error(e);
+        }
+        if (cmd.format == GL_DEPTH_COMPONENT) != (f.base == Base::Depth) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let (w, h, d) = (size[0], if dims >= 2 { size[1] } else { 1 }, if dims >= 3 { size[2] } else { 1 });
+        let img = Image { width: w, height: h, depth: d, border: cmd.border, internal_format: cmd.internal_format as u32, base: f.base, texels: Vec::new() };
+        let slot = face * MAX_LEVELS + cmd.level as usize;
+        if proxy {
+            // The proxy's level state: every supported size is accepted.
+            self.texture.proxies[target_index(t)].images[slot] = Some(Arc::new(img));
+            return;
+        }
+        let n = w as usize * h as usize * d as usize;
+        let mut img = img;
+        let mut texels = Vec::new();
+        if texels.try_reserve_exact(n).is_err() {
+            return self.set_error(GL_OUT_OF_MEMORY);
+        }
+        match &cmd.pixels {
+            Some(p) if p.len() == n => texels.extend(p.iter().map(|&px| image::to_texel(&f, px))),
+            _ => texels.resize(n, image::to_texel(&f, [0.0, 0.0, 0.0, 0.0])),
+        }
+        img.texels = texels;
+        self.drop_derived_textures();
+        let u = self.texture.active;
+        let obj = self.texture.object_mut(u, t);
+        obj.images[slot] = Some(Arc::new(img));
+        if obj.generate_mipmap && cmd.level == obj.params.base_level {
+            generate_mipmaps(obj, t, face, &f);
+        }
+    }
+
+    /// glTexSubImage1D/2D/3D (section 3.8.2).
+    pub fn tex_sub_image(&mut self, cmd: &TexSubImageCmd) {
+        let dims = cmd.dims as usize;
+        let Some((t, face, false)) = image_target(cmd.target, cmd.dims) else { return self.set_error(GL_INVALID_ENUM) };
+        if cmd.level < 0 || cmd.level > log2_floor(max_size(t)) {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        if let Err(e) = image::check_format_type(cmd.format, cmd.ty) {
+            return self.set_error(e);
+        }
+        let u = self.texture.active;
+        let Some(img) = self.texture.object(u, t).image(face, cmd.level as usize).cloned() else {
+            return self.set_error(GL_INVALID_OPERATION);
+        };
+        if (cmd.format == GL_DEPTH_COMPONENT) != (img.base == Base::Depth) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let full = [img.width, img.height, img.depth];
+        let b = img.border;
+        #[allow(clippy::needless_range_loop)]
+        for k in 0..dims {
+            let (o, s) = (cmd.offset[k], cmd.size[k]);
+            if s < 0 || o < -b || o as i64 + s as i64 > (full[k] - b) as i64 {
+                return self.set_error(GL_INVALID_VALUE);
+            }
+        }
+        let size = [0, 1, 2].map(|k| if k < dims { cmd.size[k] } else { 1 });
+        let offset = [0, 1, 2].map(|k| if k < dims { cmd.offset[k] + b } else { 0 });
+        let n = size.iter().map(|&s| s as usize).product::<usize>();
+        let Some(f) = internal_format(img.internal_format) else { return };
+        drop(img);
+        self.drop_derived_textures();
+        let obj = self.texture.object_mut(u, t);
+        if let Some(Some(dst)) = obj.images.get_mut(face * MAX_LEVELS + cmd.level as usize) {
+            let dst = Arc::make_mut(dst);
+            if let Some(p) = cmd.pixels.as_ref().filter(|p| p.len() == n) {
+                let (w, h) = (dst.width as usize, dst.height as usize);
+                for k in 0..size[2] as usize {
+                    for j in 0..size[1] as usize {
+                        for i in 0..size[0] as usize {
+                            let src = p[(k * size[1] as usize + j) * size[0] as usize + i];
+                            let di = ((offset[2] as usize + k) * h + offset[1] as usize + j) * w + offset[0] as usize + i;
+                            dst.texels[di] = image::to_texel(&f, src);
+                        }
+                    }
+                }
+            }
+        }
+        if obj.generate_mipmap && cmd.level == obj.params.base_level {
+            generate_mipmaps(obj, t, face, &f);
+        }
+    }
+
+    /// glCopyTexImage1D/2D and glCopyTexSubImage1D/2D/3D (sections 3.8.2):
+    /// the image comes from the framebuffer (colour, or depth for depth
+    /// formats); pixels outside the window read as zero.
+    pub fn copy_tex(&mut self, cmd: &CopyTexCmd) {
+        let [x, y, w, h] = cmd.rect;
+        let dims = cmd.dims;
+        if !cmd.sub {
+            let size = [w, if dims >= 2 { h } else { 1 }, 1];
+            if matches!(cmd.internal_format, 1..=4) {
+                return self.set_error(GL_INVALID_VALUE);
+            }
+            let Some((t, _, false)) = image_target(cmd.target, dims) else { return self.set_error(GL_INVALID_ENUM) };
+            let _ = t;
+            let Some((_, _, _, f)) = self.check_image_args(dims, cmd.target, cmd.level, cmd.internal_format, size, cmd.border) else {
+                return;
+            };
+            if f.base == Base::Depth && !self.fb.has_depth() {
+                return self.set_error(GL_INVALID_OPERATION);
+            }
+            let pixels = self.read_framebuffer(x, y, size[0], size[1], f.base == Base::Depth);
+            let img = TexImageCmd {
+                dims,
+                target: cmd.target,
+                level: cmd.level,
+                internal_format: cmd.internal_format as i32,
+                size,
+                border: cmd.border,
+                format: if f.base == Base::Depth { GL_DEPTH_COMPONENT } else { GL_RGBA },
+                ty: GL_FLOAT,
+                pixels: Some(Arc::new(pixels)),
+            };
+            self.tex_image(&img);
+        } else {
+            let Some((t, face, false)) = image_target(cmd.target, dims) else { return self.set_error(GL_INVALID_ENUM) };
+            let u = self.texture.active;
+            let Some(img) = self.texture.object(u, t).image(face, cmd.level.clamp(0, MAX_LEVELS as i32 - 1) as usize) else {
+                return self.set_error(if cmd.level < 0 || cmd.level >= MAX_LEVELS as i32 { GL_INVALID_VALUE } else { GL_INVALID_OPERATION });
+            };
+            let depth = img.base == Base::Depth;
+            if depth && !self.fb.has_depth() {
+                return self.set_error(GL_INVALID_OPERATION);
+            }
+            if w < 0 || h < 0 {
+                return self.set_error(GL_INVALID_VALUE);
+            }
+            let hh = if dims >= 2 { h } else { 1 };
+            let pixels = self.read_framebuffer(x, y, w, hh, depth);
+            let sub = TexSubImageCmd {
+                dims,
+                target: cmd.target,
+                level: cmd.level,
+                offset: cmd.offset,
+                size: [w, hh, 1],
+                format: if depth { GL_DEPTH_COMPONENT } else { GL_RGBA },
+                ty: GL_FLOAT,
+                pixels: Some(Arc::new(pixels)),
+            };
+            // A 3D copy writes one slice: a 2D-shaped region at zoffset.
+            self.tex_sub_image(&sub);
+        }
+    }
+
+    fn read_framebuffer(&self, x: i32, y: i32, w: i32, h: i32, depth: bool) -> image::Pixels {
+        let fb = &self.fb;
+        let mut out = Vec::with_capacity((w.max(0) * h.max(0)) as usize);
+        for j in 0..h {
+            for i in 0..w {
+                let (fx, fy) = (x as i64 + i as i64, y as i64 + j as i64);
+                if fx < 0 || fy < 0 || fx >= fb.width as i64 || fy >= fb.height as i64 {
+                    out.push([0.0, 0.0, 0.0, if depth { 1.0 } else { 0.0 }]);
+                    continue;
+                }
+                let idx = fb.index(fx as usize, fy as usize);
+                if depth {
+                    out.push([(fb.depth[idx] as f64 / crate::framebuffer::DEPTH_MAX as f64) as f32, 0.0, 0.0, 1.0]);
+                } else {
+                    out.push(fb.color[idx].map(|c| c as f32 / 255.0));
+                }
+            }
+        }
+        out
+    }
+
+    /// glTexParameter (section 3.8.4). Values arrive as floats (enums are
+    /// exact in f32); the border colour of the integer forms is already
+    /// normalized.
+    pub fn tex_parameter(&mut self, target: u32, pname: u32, v: [f32; 4]) {
+        let Some(t) = object_target(target) else { return self.set_error(GL_INVALID_ENUM) };
+        let e = v[0] as u32;
+        let wrap = |e: u32| {
+            Some(match e {
+                GL_REPEAT => Wrap::Repeat,
+                GL_CLAMP => Wrap::Clamp,
+                GL_CLAMP_TO_EDGE => Wrap::ClampToEdge,
+                GL_CLAMP_TO_BORDER => Wrap::ClampToBorder,
+                GL_MIRRORED_REPEAT => Wrap::MirroredRepeat,
+                _ => return None,
+            })
+        };
+        let filter = |e: u32| {
+            Some(match e {
+                GL_NEAREST => Filter::Nearest,
+                GL_LINEAR => Filter::Linear,
+                GL_NEAREST_MIPMAP_NEAREST => Filter::NearestMipmapNearest,
+                GL_LINEAR_MIPMAP_NEAREST => Filter::LinearMipmapNearest,
+                GL_NEAREST_MIPMAP_LINEAR => Filter::NearestMipmapLinear,
+                GL_LINEAR_MIPMAP_LINEAR => Filter::LinearMipmapLinear,
+                _ => return None,
+            })
+        };
+        let u = self.texture.active;
+        let obj = self.texture.object_mut(u, t);
+        let p = &mut obj.params;
+        let bad_enum = match pname {
+            GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => match wrap(e) {
+                Some(w) => {
+                    p.wrap[(pname - GL_TEXTURE_WRAP_S).min(2) as usize] = w;
+                    false
+                }
+                None => true,
+            },
+            GL_TEXTURE_MIN_FILTER => match filter(e) {
+                Some(f) => {
+                    p.min_filter = f;
+                    false
+                }
+                None => true,
+            },
+            GL_TEXTURE_MAG_FILTER => match filter(e).filter(|f| !f.is_mipmap()) {
+                Some(f) => {
+                    p.mag_filter = f;
+                    false
+                }
+                None => true,
+            },
+            GL_TEXTURE_BORDER_COLOR => {
+                p.border_color = v.map(|c| c.clamp(0.0, 1.0));
+                false
+            }
+            GL_TEXTURE_PRIORITY => {
+                obj.priority = v[0].clamp(0.0, 1.0);
+                false
+            }
+            GL_TEXTURE_MIN_LOD => {
+                p.min_lod = v[0];
+                false
+            }
+            GL_TEXTURE_MAX_LOD => {
+                p.max_lod = v[0];
+                false
+            }
+            GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL => {
+                if v[0] < 0.0 {
+                    return self.set_error(GL_INVALID_VALUE);
+                }
+                let l = v[0].round() as i32;
+                if pname == GL_TEXTURE_BASE_LEVEL {
+                    p.base_level = l;
+                } else {
+                    p.max_level = l;
+                }
+                false
+            }
+            GL_TEXTURE_LOD_BIAS => {
+                p.lod_bias = v[0];
+                false
+            }
+            GL_GENERATE_MIPMAP => {
+                obj.generate_mipmap = v[0] != 0.0;
+                false
+            }
+            GL_TEXTURE_COMPARE_MODE => match e {
+                GL_NONE | GL_COMPARE_R_TO_TEXTURE => {
+                    p.compare_mode = e == GL_COMPARE_R_TO_TEXTURE;
+                    false
+                }
+                _ => true,
+            },
+            GL_TEXTURE_COMPARE_FUNC => match CompareFunc::from_gl(e) {
+                Some(f) => {
+                    p.compare_func = f;
+                    false
+                }
+                None => true,
+            },
+            GL_DEPTH_TEXTURE_MODE => match e {
+                GL_LUMINANCE => {
+                    p.depth_mode = Base::Luminance;
+                    false
+                }
+                GL_INTENSITY => {
+                    p.depth_mode = Base::Intensity;
+                    false
+                }
+                GL_ALPHA => {
+                    p.depth_mode = Base::Alpha;
+                    false
+                }
+                _ => true,
+            },
+            _ => true,
+        };
+        if bad_enum {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.dirty |= DIRTY_TEXTURE;
+    }
+
+    /// glGetTexParameter.
+    pub fn get_tex_parameter(&mut self, target: u32, pname: u32) -> Option<Value> {
+        let Some(t) = object_target(target) else {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        };
+        let obj = self.texture.object(self.texture.active, t);
+        let p = &obj.params;
+        let wrap = |w: Wrap| match w {
+            Wrap::Repeat => GL_REPEAT,
+            Wrap::Clamp => GL_CLAMP,
+            Wrap::ClampToEdge => GL_CLAMP_TO_EDGE,
+            Wrap::ClampToBorder => GL_CLAMP_TO_BORDER,
+            Wrap::MirroredRepeat => GL_MIRRORED_REPEAT,
+        } as i64;
+        let filter = |f: Filter| match f {
+            Filter::Nearest => GL_NEAREST,
+            Filter::Linear => GL_LINEAR,
+            Filter::NearestMipmapNearest => GL_NEAREST_MIPMAP_NEAREST,
+            Filter::LinearMipmapNearest => GL_LINEAR_MIPMAP_NEAREST,
+            Filter::NearestMipmapLinear => GL_NEAREST_MIPMAP_LINEAR,
+            Filter::LinearMipmapLinear => GL_LINEAR_MIPMAP_LINEAR,
+        } as i64;
+        let v = match pname {
+            GL_TEXTURE_WRAP_S => Value::Ints(vec![wrap(p.wrap[0])]),
+            GL_TEXTURE_WRAP_T => Value::Ints(vec![wrap(p.wrap[1])]),
+            GL_TEXTURE_WRAP_R => Value::Ints(vec![wrap(p.wrap[2])]),
+            GL_TEXTURE_MIN_FILTER => Value::Ints(vec![filter(p.min_filter)]),
+            GL_TEXTURE_MAG_FILTER => Value::Ints(vec![filter(p.mag_filter)]),
+            GL_TEXTURE_BORDER_COLOR => Value::Normalized(p.border_color.iter().map(|&c| c as f64).collect()),
+            GL_TEXTURE_PRIORITY => Value::Floats(vec![obj.priority as f64]),
+            GL_TEXTURE_RESIDENT => Value::Bools(vec![true]),
+            GL_TEXTURE_MIN_LOD => Value::Floats(vec![p.min_lod as f64]),
+            GL_TEXTURE_MAX_LOD => Value::Floats(vec![p.max_lod as f64]),
+            GL_TEXTURE_BASE_LEVEL => Value::Ints(vec![p.base_level as i64]),
+            GL_TEXTURE_MAX_LEVEL => Value::Ints(vec![p.max_level as i64]),
+            GL_TEXTURE_LOD_BIAS => Value::Floats(vec![p.lod_bias as f64]),
+            GL_GENERATE_MIPMAP => Value::Bools(vec![obj.generate_mipmap]),
+            GL_TEXTURE_COMPARE_MODE => Value::Ints(vec![if p.compare_mode { GL_COMPARE_R_TO_TEXTURE } else { GL_NONE } as i64]),
+            GL_TEXTURE_COMPARE_FUNC => Value::Ints(vec![p.compare_func.to_gl() as i64]),
+            GL_DEPTH_TEXTURE_MODE => Value::Ints(vec![match p.depth_mode {
+                Base::Intensity => GL_INTENSITY,
+                Base::Alpha => GL_ALPHA,
+                _ => GL_LUMINANCE,
+            } as i64]),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        Some(v)
+    }
+
+    /// glGetTexLevelParameter (section 6.1.3).
+    pub fn get_tex_level_parameter(&mut self, target: u32, level: i32, pname: u32) -> Option<Value> {
+        let found = [1u8, 2, 3].iter().find_map(|&d| image_target(target, d));
+        let Some((t, face, proxy)) = found else {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        };
+        if level < 0 || level > log2_floor(max_size(t)) {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        let obj = if proxy { &self.texture.proxies[target_index(t)] } else { self.texture.object(self.texture.active, t) };
+        let img = obj.image(face, level as usize);
+        let f = img.and_then(|i| internal_format(i.internal_format));
+        let bits = f.map(|f| f.stored_bits()).unwrap_or([0; 7]);
+        let v = |x: i64| Some(Value::Ints(vec![x]));
+        match pname {
+            GL_TEXTURE_WIDTH => v(img.map_or(0, |i| i.width as i64)),
+            GL_TEXTURE_HEIGHT => v(img.map_or(0, |i| if dims_of(t) >= 2 { i.height } else { 1 } as i64)),
+            GL_TEXTURE_DEPTH => v(img.map_or(0, |i| if dims_of(t) >= 3 { i.depth } else { 1 } as i64)),
+            GL_TEXTURE_BORDER => v(img.map_or(0, |i| i.border as i64)),
+            GL_TEXTURE_INTERNAL_FORMAT => v(img.map_or(1, |i| i.internal_format as i64)),
+            GL_TEXTURE_RED_SIZE => v(bits[0] as i64),
+            GL_TEXTURE_GREEN_SIZE => v(bits[1] as i64),
+            GL_TEXTURE_BLUE_SIZE => v(bits[2] as i64),
+            GL_TEXTURE_ALPHA_SIZE => v(bits[3] as i64),
+            GL_TEXTURE_LUMINANCE_SIZE => v(bits[4] as i64),
+            GL_TEXTURE_INTENSITY_SIZE => v(bits[5] as i64),
+            GL_TEXTURE_DEPTH_SIZE => v(bits[6] as i64),
+            GL_TEXTURE_COMPRESSED => Some(Value::Bools(vec![false])),
+            GL_TEXTURE_COMPRESSED_IMAGE_SIZE => {
+                self.set_error(GL_INVALID_OPERATION);
+                None
+            }
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                None
+            }
+        }
+    }
+
+    /// glGetTexImage (section 6.1.4): the whole image, border included.
+    ///
+    /// # Safety
+    /// `out` must be NULL or have room for the image as the pack modes lay it out.
+    pub unsafe fn get_tex_image(&mut self, target: u32, level: i32, format: u32, ty: u32, out: *mut u8) {
+        let found = [1u8, 2, 3].iter().find_map(|&d| image_target(target, d));
+        let Some((t, face, false)) = found else { return self.set_error(GL_INVALID_ENUM) };
+        if level < 0 || level > log2_floor(max_size(t)) {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        if let Err(e) = image::check_format_type(format, ty) {
+            return self.set_error(e);
+        }
+        let Some(img) = self.texture.object(self.texture.active, t).image(face, level as usize) else { return };
+        if (format == GL_DEPTH_COMPONENT) != (img.base == Base::Depth) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        if out.is_null() || img.texels.is_empty() {
+            return;
+        }
+        let px: Vec<[f32; 4]> = img.texels.iter().map(|&tx| image::texel_to_rgba(img.base, tx)).collect();
+        image::pack(&self.pixel_store.pack, img.width as usize, img.height as usize, img.depth as usize, format, ty, &px, out);
+    }
+
+    /// glTexEnv (section 3.8.13); the integer form's colour is normalized.
+    pub fn tex_env(&mut self, target: u32, pname: u32, v: [f32; 4]) {
+        let u = self.texture.active;
+        let e = v[0] as u32;
+        if target == GL_TEXTURE_FILTER_CONTROL {
+            if pname != GL_TEXTURE_LOD_BIAS {
+                return self.set_error(GL_INVALID_ENUM);
+            }
+            self.texture.units[u].lod_bias = v[0];
+            self.dirty |= DIRTY_TEXTURE;
+            return;
+        }
+        if target != GL_TEXTURE_ENV {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let env = &mut self.texture.units[u].env;
+        let source_ok = |s: u32| matches!(s, GL_TEXTURE | GL_CONSTANT | GL_PRIMARY_COLOR | GL_PREVIOUS) || (GL_TEXTURE0..GL_TEXTURE0 + MAX_UNITS as u32).contains(&s);
+        let ok = match pname {
+            GL_TEXTURE_ENV_MODE if matches!(e, GL_MODULATE | GL_DECAL | GL_BLEND | GL_REPLACE | GL_ADD | GL_COMBINE) => {
+                env.mode = e;
+                true
+            }
+            GL_TEXTURE_ENV_COLOR => {
+                env.color = v.map(|c| c.clamp(0.0, 1.0));
+                true
+            }
+            GL_COMBINE_RGB if matches!(e, GL_REPLACE | GL_MODULATE | GL_ADD | GL_ADD_SIGNED | GL_INTERPOLATE | GL_SUBTRACT | GL_DOT3_RGB | GL_DOT3_RGBA) => {
+                env.combine_rgb = e;
+                true
+            }
+            GL_COMBINE_ALPHA if matches!(e, GL_REPLACE | GL_MODULATE | GL_ADD | GL_ADD_SIGNED | GL_INTERPOLATE | GL_SUBTRACT) => {
+                env.combine_alpha = e;
+                true
+            }
+            GL_SOURCE0_RGB..=GL_SOURCE2_RGB if source_ok(e) => {
+                env.src_rgb[(pname - GL_SOURCE0_RGB) as usize] = e;
+                true
+            }
+            GL_SOURCE0_ALPHA..=GL_SOURCE2_ALPHA if source_ok(e) => {
+                env.src_alpha[(pname - GL_SOURCE0_ALPHA) as usize] = e;
+                true
+            }
+            GL_OPERAND0_RGB..=GL_OPERAND2_RGB if matches!(e, GL_SRC_COLOR | GL_ONE_MINUS_SRC_COLOR | GL_SRC_ALPHA | GL_ONE_MINUS_SRC_ALPHA) => {
+                env.op_rgb[(pname - GL_OPERAND0_RGB) as usize] = e;
+                true
+            }
+            GL_OPERAND0_ALPHA..=GL_OPERAND2_ALPHA if matches!(e, GL_SRC_ALPHA | GL_ONE_MINUS_SRC_ALPHA) => {
+                env.op_alpha[(pname - GL_OPERAND0_ALPHA) as usize] = e;
+                true
+            }
+            GL_RGB_SCALE | GL_ALPHA_SCALE => {
+                if !matches!(v[0], 1.0 | 2.0 | 4.0) {
+                    return self.set_error(GL_INVALID_VALUE);
+                }
+                if pname == GL_RGB_SCALE {
+                    env.scale_rgb = v[0];
+                } else {
+                    env.scale_alpha = v[0];
+                }
+                true
+            }
+            _ => false,
+        };
+        if !ok {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.dirty |= DIRTY_TEXTURE;
+    }
+
+    /// glGetTexEnv.
+    pub fn get_tex_env(&mut self, target: u32, pname: u32) -> Option<Value> {
+        let u = &self.texture.units[self.texture.active];
+        let env = &u.env;
+        let i = |x: u32| Some(Value::Ints(vec![x as i64]));
+        let v = match (target, pname) {
+            (GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS) => Some(Value::Floats(vec![u.lod_bias as f64])),
+            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE) => i(env.mode),
+            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR) => Some(Value::Normalized(env.color.iter().map(|&c| c as f64).collect())),
+            (GL_TEXTURE_ENV, GL_COMBINE_RGB) => i(env.combine_rgb),
+            (GL_TEXTURE_ENV, GL_COMBINE_ALPHA) => i(env.combine_alpha),
+            (GL_TEXTURE_ENV, GL_SOURCE0_RGB..=GL_SOURCE2_RGB) => i(env.src_rgb[(pname - GL_SOURCE0_RGB) as usize]),
+            (GL_TEXTURE_ENV, GL_SOURCE0_ALPHA..=GL_SOURCE2_ALPHA) => i(env.src_alpha[(pname - GL_SOURCE0_ALPHA) as usize]),
+            (GL_TEXTURE_ENV, GL_OPERAND0_RGB..=GL_OPERAND2_RGB) => i(env.op_rgb[(pname - GL_OPERAND0_RGB) as usize]),
+            (GL_TEXTURE_ENV, GL_OPERAND0_ALPHA..=GL_OPERAND2_ALPHA) => i(env.op_alpha[(pname - GL_OPERAND0_ALPHA) as usize]),
+            (GL_TEXTURE_ENV, GL_RGB_SCALE) => Some(Value::Floats(vec![env.scale_rgb as f64])),
+            (GL_TEXTURE_ENV, GL_ALPHA_SCALE) => Some(Value::Floats(vec![env.scale_alpha as f64])),
+            _ => None,
+        };
+        if v.is_none() {
+            self.set_error(GL_INVALID_ENUM);
+        }
+        v
+    }
+
+    /// Texture queries of glGet (tables 6.8, 6.15, 6.17, 6.26).
+    pub fn texture_get(&self, pname: u32) -> Option<Value> {
+        let ts = &self.texture;
+        let u = &ts.units[ts.active];
+        let ints = |v: &[i64]| Some(Value::Ints(v.to_vec()));
+        match pname {
+            GL_ACTIVE_TEXTURE => ints(&[(GL_TEXTURE0 as usize + ts.active) as i64]),
+            GL_CLIENT_ACTIVE_TEXTURE => ints(&[(GL_TEXTURE0 as usize + ts.client_active) as i64]),
+            GL_MAX_TEXTURE_UNITS => ints(&[MAX_UNITS as i64]),
+            GL_MAX_TEXTURE_SIZE => ints(&[MAX_TEXTURE_SIZE as i64]),
+            GL_MAX_3D_TEXTURE_SIZE => ints(&[MAX_3D_TEXTURE_SIZE as i64]),
+            GL_MAX_CUBE_MAP_TEXTURE_SIZE => ints(&[MAX_CUBE_MAP_TEXTURE_SIZE as i64]),
+            GL_MAX_TEXTURE_LOD_BIAS => Some(Value::Floats(vec![MAX_LOD_BIAS as f64])),
+            GL_TEXTURE_BINDING_1D => ints(&[u.bound[0] as i64]),
+            GL_TEXTURE_BINDING_2D => ints(&[u.bound[1] as i64]),
+            GL_TEXTURE_BINDING_3D => ints(&[u.bound[2] as i64]),
+            GL_TEXTURE_BINDING_CUBE_MAP => ints(&[u.bound[3] as i64]),
+            GL_CURRENT_TEXTURE_COORDS => Some(Value::Floats(self.current.tex_coords[ts.active].iter().map(|&c| c as f64).collect())),
+            GL_NUM_COMPRESSED_TEXTURE_FORMATS => ints(&[0]),
+            GL_COMPRESSED_TEXTURE_FORMATS => Some(Value::Ints(Vec::new())),
+            _ => None,
+        }
+    }
+
+    /// Validation: the fragment stage's samplers and environments (on
+    /// texture changes), and the vertex stage's per-unit work.
+    pub fn validate_texture(&mut self, texture_changed: bool) {
+        if texture_changed {
+            let ts = &self.texture;
+            let mut stage = TextureStage { units: Default::default(), envs: [Env::default(); MAX_UNITS], active: Vec::new() };
+            for u in 0..MAX_UNITS {
+                stage.envs[u] = ts.units[u].env;
+                let Some(t) = ts.unit_target(u) else { continue };
+                let obj = ts.object(u, t);
+                if let Some(faces) = obj.complete(t) {
+                    let base = faces[0][0].base;
+                    stage.units[u] = Some(UnitSampler { target: t, faces, params: obj.params.clone(), unit_bias: ts.units[u].lod_bias, base });
+                    stage.active.push(u);
+                }
+            }
+            self.derived.render.texture = if stage.active.is_empty() { None } else { Some(Arc::new(stage)) };
+        }
+        self.texture.vertex = texgen::VertexTexSetup::new(self);
+    }
+}
+
+/// GENERATE_MIPMAP (GL 1.4): levels base + 1 .. q of one face from the
+/// base level, by the 2x2(x2) box filter. Images with a border are filtered
+/// without it (the border of derived levels is the base's border colour
+/// region left at zero).
+fn generate_mipmaps(obj: &mut TexObject, t: Target, face: usize, f: &InternalFormat) {
+    let base = obj.params.base_level.max(0) as usize;
+    let Some(b) = obj.image(face, base).cloned() else { return };
+    let dims = dims_of(t) as usize;
+    let n = b.inner(dims);
+    let bw = b.border;
+    // Strip the border.
+    let mut cur: Vec<[f32; 4]> = Vec::with_capacity((n[0] * n[1] * n[2]) as usize);
+    for k in 0..n[2] {
+        for j in 0..n[1] {
+            for i in 0..n[0] {
+                cur.push(b.texel_at(dims, i, j, k));
+            }
+        }
+    }
+    let (mut w, mut h, mut d) = (n[0] as usize, n[1] as usize, n[2] as usize);
+    let q = (base as i32 + log2_floor(n[..dims].iter().copied().max().unwrap_or(1))).min(obj.params.max_level).min(MAX_LEVELS as i32 - 1);
+    for level in base + 1..=q.max(base as i32) as usize {
+        let (next, nw, nh, nd) = image::downsample(&cur, w, h, d);
+        let texels: Vec<[f32; 4]> = if f.base == Base::Depth {
+            next.clone()
+        } else {
+            next.iter().map(|&t| image::to_texel(f, t)).collect()
+        };
+        // Derived levels have the base's border width, filled from the edge.
+        let img = Image::with_border(nw as i32, nh as i32, nd as i32, dims, bw, b.internal_format, f.base, &texels);
+        obj.images[face * MAX_LEVELS + level] = Some(Arc::new(img));
+        cur = next;
+        (w, h, d) = (nw, nh, nd);
+    }
+}

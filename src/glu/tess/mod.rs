@@ -1,0 +1,664 @@
+//! The GLU 1.3 polygon tessellator (GLU 1.3 specification, chapter 5,
+//! "Polygon Tessellation"), written from the specification.
+//!
+//! gluTessEndPolygon projects the contours onto the plane of the normal
+//! (given by gluTessNormal, or Newell's normal of the data, flipped so the
+//! polygon's total signed area is positive), normalises the 2D coordinates
+//! to about [-1, 1] (exact power-of-two scaling), splits all edges at their
+//! crossings (COMBINE for every new vertex) and at vertices lying on them,
+//! and hands the arrangement to [`sweep`], which computes windings, selects
+//! the region with the winding rule and triangulates it. Output is always
+//! GL_TRIANGLES (counter-clockwise about the normal), or GL_LINE_LOOPs with
+//! GLU_TESS_BOUNDARY_ONLY (region on the left: exteriors counter-clockwise,
+//! holes clockwise). Vertices closer than 2^-42 of the polygon's extent are
+//! merged (the first one's data is kept, COMBINE is not called for them);
+//! GLU_TESS_TOLERANCE is stored and reported but the merge distance is that
+//! fixed one. Zero-area triangles (collinear vertices) are emitted rather
+//! than dropped, so the mesh has no T-junctions and edge flags are exact:
+//! with an EDGE_FLAG callback, an edge is flagged iff it is an edge of the
+//! selected region's boundary.
+//!
+//! Cost: edge pairs are found with a uniform grid (about sqrt(n) cells a
+//! side), so typical inputs run in near-linear time (100k vertices: well
+//! under a second); inputs with very many crossings or very many long edges
+//! are quadratic, as their output is. The sweeps look edges up in their
+//! active list linearly, so polygons with a very wide active list (combs with
+//! tens of thousands of teeth) are slower than they need be.
+//!
+//! Differences from SGI's libtess worth knowing: COMBINE is called only for
+//! real crossings (not for merging coincident vertices); a NaN coordinate is
+//! reported as GLU_TESS_COORD_TOO_LARGE and replaced by 0; output is always
+//! GL_TRIANGLES (never fans or strips); after NEED_COMBINE_CALLBACK (no
+//! COMBINE callback, or one that returns NULL) nothing is output.
+//!
+//! The tessellator never calls GL. Callbacks may call back into it: while
+//! gluTessEndPolygon runs its callbacks, calls on the same object are
+//! ignored, and gluDeleteTess is deferred until it returns.
+//!
+//! Safety of the `unsafe fn`s below: `t` is NULL or a pointer returned by
+//! [`new_tess`] and not yet deleted; other pointers are NULL or valid as
+//! glu.h describes them; callbacks have the signatures glu.h gives them.
+#![allow(clippy::missing_safety_doc)]
+
+pub mod sweep;
+
+use crate::api::types::*;
+use std::ffi::c_void;
+use sweep::{Combiner, Grid, Rule, Seg, Vert};
+
+pub const GLU_TESS_BEGIN: GLenum = 100100;
+pub const GLU_TESS_VERTEX: GLenum = 100101;
+pub const GLU_TESS_END: GLenum = 100102;
+pub const GLU_TESS_ERROR: GLenum = 100103;
+pub const GLU_TESS_EDGE_FLAG: GLenum = 100104;
+pub const GLU_TESS_COMBINE: GLenum = 100105;
+pub const GLU_TESS_BEGIN_DATA: GLenum = 100106;
+pub const GLU_TESS_VERTEX_DATA: GLenum = 100107;
+pub const GLU_TESS_END_DATA: GLenum = 100108;
+pub const GLU_TESS_ERROR_DATA: GLenum = 100109;
+pub const GLU_TESS_EDGE_FLAG_DATA: GLenum = 100110;
+pub const GLU_TESS_COMBINE_DATA: GLenum = 100111;
+pub const GLU_TESS_WINDING_RULE: GLenum = 100140;
+pub const GLU_TESS_BOUNDARY_ONLY: GLenum = 100141;
+pub const GLU_TESS_TOLERANCE: GLenum = 100142;
+pub const GLU_TESS_WINDING_ODD: GLenum = 100130;
+pub const GLU_TESS_WINDING_NONZERO: GLenum = 100131;
+pub const GLU_TESS_WINDING_POSITIVE: GLenum = 100132;
+pub const GLU_TESS_WINDING_NEGATIVE: GLenum = 100133;
+pub const GLU_TESS_WINDING_ABS_GEQ_TWO: GLenum = 100134;
+pub const GLU_TESS_MISSING_BEGIN_POLYGON: GLenum = 100151;
+pub const GLU_TESS_MISSING_BEGIN_CONTOUR: GLenum = 100152;
+pub const GLU_TESS_MISSING_END_POLYGON: GLenum = 100153;
+pub const GLU_TESS_MISSING_END_CONTOUR: GLenum = 100154;
+pub const GLU_TESS_COORD_TOO_LARGE: GLenum = 100155;
+pub const GLU_TESS_NEED_COMBINE_CALLBACK: GLenum = 100156;
+pub const GLU_TESS_MAX_COORD: f64 = 1.0e150;
+use crate::glu::strings::{GLU_INVALID_ENUM, GLU_INVALID_VALUE};
+
+const GL_LINE_LOOP: GLenum = 0x0002;
+const GL_TRIANGLES: GLenum = 0x0004;
+
+type FnEnum = unsafe extern "system" fn(GLenum);
+type FnEnumData = unsafe extern "system" fn(GLenum, *mut c_void);
+type FnBool = unsafe extern "system" fn(GLboolean);
+type FnBoolData = unsafe extern "system" fn(GLboolean, *mut c_void);
+type FnPtr = unsafe extern "system" fn(*mut c_void);
+type FnPtrData = unsafe extern "system" fn(*mut c_void, *mut c_void);
+type FnCombine = unsafe extern "system" fn(*const f64, *const *mut c_void, *const f32, *mut *mut c_void);
+type FnCombineData = unsafe extern "system" fn(*const f64, *const *mut c_void, *const f32, *mut *mut c_void, *mut c_void);
+
+/// The twelve callbacks, indexed by `which - GLU_TESS_BEGIN`.
+#[derive(Clone, Copy, Default)]
+struct Callbacks([GLproc; 12]);
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum State {
+    Dormant,
+    InPolygon,
+    InContour,
+}
+
+struct InVertex {
+    p: [f64; 3],
+    data: *mut c_void,
+}
+
+/// A GLUtesselator.
+pub struct Tess {
+    cb: Callbacks,
+    state: State,
+    rule: Rule,
+    rule_enum: GLenum,
+    boundary_only: bool,
+    tolerance: f64,
+    normal: [f64; 3],
+    polygon_data: *mut c_void,
+    contours: Vec<Vec<InVertex>>,
+    busy: bool,
+    delete_pending: bool,
+}
+
+pub fn new_tess() -> *mut c_void {
+    Box::into_raw(Box::new(Tess {
+        cb: Callbacks::default(),
+        state: State::Dormant,
+        rule: Rule::Odd,
+        rule_enum: GLU_TESS_WINDING_ODD,
+        boundary_only: false,
+        tolerance: 0.0,
+        normal: [0.0; 3],
+        polygon_data: std::ptr::null_mut(),
+        contours: Vec::new(),
+        busy: false,
+        delete_pending: false,
+    }))
+    .cast()
+}
+
+/// The object behind a pointer, unless NULL or busy running callbacks.
+unsafe fn get<'a>(t: *mut c_void) -> Option<&'a mut Tess> {
+    let t = (t as *mut Tess).as_mut()?;
+    (!t.busy).then_some(t)
+}
+
+pub unsafe fn delete_tess(t: *mut c_void) {
+    let Some(r) = (t as *mut Tess).as_mut() else { return };
+    if r.busy {
+        r.delete_pending = true;
+        return;
+    }
+    r.require(State::Dormant);
+    drop(Box::from_raw(t as *mut Tess));
+}
+
+impl Tess {
+    fn error(&self, e: GLenum) {
+        error_with(&self.cb, self.polygon_data, e);
+    }
+
+    /// GLU's state rules: moving to `s` one step at a time, reporting each
+    /// missing call and supplying it.
+    fn require(&mut self, s: State) {
+        while self.state != s {
+            match (self.state, s) {
+                (State::Dormant, _) => {
+                    self.error(GLU_TESS_MISSING_BEGIN_POLYGON);
+                    self.begin_polygon(std::ptr::null_mut());
+                }
+                (State::InPolygon, State::InContour) => {
+                    self.error(GLU_TESS_MISSING_BEGIN_CONTOUR);
+                    self.begin_contour();
+                }
+                (State::InPolygon, _) => {
+                    self.error(GLU_TESS_MISSING_END_POLYGON);
+                    self.contours.clear();
+                    self.state = State::Dormant;
+                }
+                (State::InContour, _) => {
+                    self.error(GLU_TESS_MISSING_END_CONTOUR);
+                    self.state = State::InPolygon;
+                }
+            }
+        }
+    }
+
+    fn begin_polygon(&mut self, data: *mut c_void) {
+        self.contours.clear();
+        self.state = State::InPolygon;
+        self.polygon_data = data;
+    }
+
+    fn begin_contour(&mut self) {
+        self.contours.push(Vec::new());
+        self.state = State::InContour;
+    }
+}
+
+fn error_with(cb: &Callbacks, pdata: *mut c_void, e: GLenum) {
+    unsafe {
+        if let Some(f) = cb.0[(GLU_TESS_ERROR_DATA - GLU_TESS_BEGIN) as usize] {
+            std::mem::transmute::<unsafe extern "system" fn(), FnEnumData>(f)(e, pdata);
+        } else if let Some(f) = cb.0[(GLU_TESS_ERROR - GLU_TESS_BEGIN) as usize] {
+            std::mem::transmute::<unsafe extern "system" fn(), FnEnum>(f)(e);
+        }
+    }
+}
+
+pub unsafe fn begin_polygon(t: *mut c_void, data: *mut c_void) {
+    let Some(t) = get(t) else { return };
+    t.require(State::Dormant);
+    t.begin_polygon(data);
+}
+
+pub unsafe fn begin_contour(t: *mut c_void) {
+    let Some(t) = get(t) else { return };
+    t.require(State::InPolygon);
+    t.begin_contour();
+}
+
+pub unsafe fn end_contour(t: *mut c_void) {
+    let Some(t) = get(t) else { return };
+    t.require(State::InContour);
+    t.state = State::InPolygon;
+}
+
+pub unsafe fn vertex(t: *mut c_void, location: *const f64, data: *mut c_void) {
+    let Some(t) = get(t) else { return };
+    t.require(State::InContour);
+    if location.is_null() {
+        return;
+    }
+    let mut p = [0.0; 3];
+    let mut too_large = false;
+    for (i, c) in p.iter_mut().enumerate() {
+        let x = location.add(i).read_unaligned();
+        *c = if x.is_nan() {
+            too_large = true;
+            0.0
+        } else if x.abs() > GLU_TESS_MAX_COORD {
+            too_large = true;
+            x.clamp(-GLU_TESS_MAX_COORD, GLU_TESS_MAX_COORD)
+        } else {
+            x
+        };
+    }
+    if too_large {
+        t.error(GLU_TESS_COORD_TOO_LARGE);
+    }
+    if let Some(c) = t.contours.last_mut() {
+        c.push(InVertex { p, data });
+    }
+}
+
+pub unsafe fn normal(t: *mut c_void, x: f64, y: f64, z: f64) {
+    let Some(t) = get(t) else { return };
+    t.normal = [x, y, z];
+}
+
+pub unsafe fn callback(t: *mut c_void, which: GLenum, f: GLproc) {
+    let Some(t) = get(t) else { return };
+    if (GLU_TESS_BEGIN..=GLU_TESS_COMBINE_DATA).contains(&which) {
+        t.cb.0[(which - GLU_TESS_BEGIN) as usize] = f;
+    } else {
+        t.error(GLU_INVALID_ENUM);
+    }
+}
+
+pub unsafe fn property(t: *mut c_void, which: GLenum, value: f64) {
+    let Some(t) = get(t) else { return };
+    match which {
+        GLU_TESS_WINDING_RULE => {
+            let rule = if value.is_finite() && value == value.trunc() && value >= 0.0 && value <= u32::MAX as f64 {
+                match value as u32 {
+                    GLU_TESS_WINDING_ODD => Some(Rule::Odd),
+                    GLU_TESS_WINDING_NONZERO => Some(Rule::NonZero),
+                    GLU_TESS_WINDING_POSITIVE => Some(Rule::Positive),
+                    GLU_TESS_WINDING_NEGATIVE => Some(Rule::Negative),
+                    GLU_TESS_WINDING_ABS_GEQ_TWO => Some(Rule::AbsGeqTwo),
+                    _ => None,
+                }
+            } else {
+                None
+            };
+            match rule {
+                Some(r) => {
+                    t.rule = r;
+                    t.rule_enum = value as u32;
+                }
+                None => t.error(GLU_INVALID_VALUE),
+            }
+        }
+        GLU_TESS_BOUNDARY_ONLY => t.boundary_only = value != 0.0,
+        GLU_TESS_TOLERANCE => {
+            if (0.0..=1.0).contains(&value) {
+                t.tolerance = value;
+            } else {
+                t.error(GLU_INVALID_VALUE);
+            }
+        }
+        _ => t.error(GLU_INVALID_ENUM),
+    }
+}
+
+pub unsafe fn get_property(t: *mut c_void, which: GLenum, out: *mut f64) {
+    let Some(t) = (t as *mut Tess).as_mut() else { return };
+    let v = match which {
+        GLU_TESS_WINDING_RULE => t.rule_enum as f64,
+        GLU_TESS_BOUNDARY_ONLY => t.boundary_only as u8 as f64,
+        GLU_TESS_TOLERANCE => t.tolerance,
+        _ => {
+            if !t.busy {
+                t.error(GLU_INVALID_ENUM);
+            }
+            0.0
+        }
+    };
+    if !out.is_null() {
+        out.write_unaligned(v);
+    }
+}
+
+/// GLU 1.1: gluBeginPolygon.
+pub unsafe fn begin_polygon_11(t: *mut c_void) {
+    begin_polygon(t, std::ptr::null_mut());
+    begin_contour(t);
+}
+
+/// GLU 1.1: gluNextContour (the contour type is only a hint; ignored).
+pub unsafe fn next_contour(t: *mut c_void, _type: GLenum) {
+    end_contour(t);
+    begin_contour(t);
+}
+
+/// GLU 1.1: gluEndPolygon.
+pub unsafe fn end_polygon_11(t: *mut c_void) {
+    end_contour(t);
+    end_polygon(t);
+}
+
+pub unsafe fn end_polygon(tp: *mut c_void) {
+    let Some(t) = get(tp) else { return };
+    t.require(State::InPolygon);
+    t.state = State::Dormant;
+    let contours = std::mem::take(&mut t.contours);
+    let job = Job { cb: t.cb, pdata: t.polygon_data, rule: t.rule, boundary_only: t.boundary_only, normal: t.normal };
+    t.busy = true;
+    // Callbacks run with `busy` set; a panic in our code is caught by the
+    // entry point's guard, so reset the flag whatever happens.
+    struct Reset(*mut Tess);
+    impl Drop for Reset {
+        fn drop(&mut self) {
+            unsafe {
+                let t = &mut *self.0;
+                t.busy = false;
+                if t.delete_pending {
+                    t.delete_pending = false;
+                    delete_tess(self.0.cast());
+                }
+            }
+        }
+    }
+    let _reset = Reset(tp as *mut Tess);
+    job.run(&contours);
+}
+
+/// One polygon's tessellation, with a copy of the callbacks it uses.
+struct Job {
+    cb: Callbacks,
+    pdata: *mut c_void,
+    rule: Rule,
+    boundary_only: bool,
+    normal: [f64; 3],
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn norm(a: [f64; 3]) -> f64 {
+    dot(a, a).sqrt()
+}
+
+/// A power of two near 1/x (x > 0, finite), so scaling by it is exact.
+fn pow2_inv(x: f64) -> f64 {
+    if !(x > 0.0) || !x.is_finite() {
+        return 1.0;
+    }
+    let e = x.log2().ceil() as i32;
+    2f64.powi(-e.clamp(-1000, 1000))
+}
+
+struct Comb<'a> {
+    job: &'a Job,
+    p3: &'a mut Vec<[f64; 3]>,
+    data: &'a mut Vec<*mut c_void>,
+    failed: bool,
+}
+
+impl Combiner for Comb<'_> {
+    fn combine(&mut self, verts: &mut Vec<Vert>, p: [f64; 2], e: [usize; 4], t: f64, s: f64) -> Option<usize> {
+        if self.failed {
+            return None;
+        }
+        let lerp = |a: [f64; 3], b: [f64; 3], t: f64| [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])];
+        let q1 = lerp(self.p3[e[0]], self.p3[e[1]], t);
+        let q2 = lerp(self.p3[e[2]], self.p3[e[3]], s);
+        let coords = [0.5 * q1[0] + 0.5 * q2[0], 0.5 * q1[1] + 0.5 * q2[1], 0.5 * q1[2] + 0.5 * q2[2]];
+        let vd = [self.data[e[0]], self.data[e[1]], self.data[e[2]], self.data[e[3]]];
+        let w = [(0.5 * (1.0 - t)) as f32, (0.5 * t) as f32, (0.5 * (1.0 - s)) as f32, (0.5 * s) as f32];
+        let mut out: *mut c_void = std::ptr::null_mut();
+        let cb = &self.job.cb.0;
+        unsafe {
+            if let Some(f) = cb[(GLU_TESS_COMBINE_DATA - GLU_TESS_BEGIN) as usize] {
+                std::mem::transmute::<unsafe extern "system" fn(), FnCombineData>(f)(coords.as_ptr(), vd.as_ptr(), w.as_ptr(), &mut out, self.job.pdata);
+            } else if let Some(f) = cb[(GLU_TESS_COMBINE - GLU_TESS_BEGIN) as usize] {
+                std::mem::transmute::<unsafe extern "system" fn(), FnCombine>(f)(coords.as_ptr(), vd.as_ptr(), w.as_ptr(), &mut out);
+            }
+        }
+        if out.is_null() {
+            self.failed = true;
+            error_with(&self.job.cb, self.job.pdata, GLU_TESS_NEED_COMBINE_CALLBACK);
+            return None;
+        }
+        verts.push(Vert { p });
+        self.p3.push(coords);
+        self.data.push(out);
+        Some(verts.len() - 1)
+    }
+}
+
+impl Job {
+    fn cbf(&self, which: GLenum) -> GLproc {
+        self.cb.0[(which - GLU_TESS_BEGIN) as usize]
+    }
+
+    fn begin(&self, mode: GLenum) {
+        unsafe {
+            if let Some(f) = self.cbf(GLU_TESS_BEGIN_DATA) {
+                std::mem::transmute::<unsafe extern "system" fn(), FnEnumData>(f)(mode, self.pdata);
+            } else if let Some(f) = self.cbf(GLU_TESS_BEGIN) {
+                std::mem::transmute::<unsafe extern "system" fn(), FnEnum>(f)(mode);
+            }
+        }
+    }
+    fn vertex(&self, d: *mut c_void) {
+        unsafe {
+            if let Some(f) = self.cbf(GLU_TESS_VERTEX_DATA) {
+                std::mem::transmute::<unsafe extern "system" fn(), FnPtrData>(f)(d, self.pdata);
+            } else if let Some(f) = self.cbf(GLU_TESS_VERTEX) {
+                std::mem::transmute::<unsafe extern "system" fn(), FnPtr>(f)(d);
+            }
+        }
+    }
+    fn end(&self) {
+        unsafe {
+            if let Some(f) = self.cbf(GLU_TESS_END_DATA) {
+                std::mem::transmute::<unsafe extern "system" fn(), FnPtr>(f)(self.pdata);
+            } else if let Some(f) = self.cbf(GLU_TESS_END) {
+                f();
+            }
+        }
+    }
+    fn has_edge_flag(&self) -> bool {
+        self.cbf(GLU_TESS_EDGE_FLAG_DATA).is_some() || self.cbf(GLU_TESS_EDGE_FLAG).is_some()
+    }
+    fn edge_flag(&self, b: bool) {
+        unsafe {
+            if let Some(f) = self.cbf(GLU_TESS_EDGE_FLAG_DATA) {
+                std::mem::transmute::<unsafe extern "system" fn(), FnBoolData>(f)(b as GLboolean, self.pdata);
+            } else if let Some(f) = self.cbf(GLU_TESS_EDGE_FLAG) {
+                std::mem::transmute::<unsafe extern "system" fn(), FnBool>(f)(b as GLboolean);
+            }
+        }
+    }
+
+    fn run(&self, contours: &[Vec<InVertex>]) {
+        let all = || contours.iter().flatten();
+        if all().next().is_none() {
+            return;
+        }
+        // Normal: given, or Newell's (on exactly rescaled coordinates, so
+        // neither 1e150 nor 1e-150 overflows or underflows).
+        let m = all().map(|v| v.p[0].abs().max(v.p[1].abs()).max(v.p[2].abs())).fold(0.0, f64::max);
+        let k = pow2_inv(m);
+        let mut n = self.normal;
+        if !(n.iter().all(|x| x.is_finite()) && norm(n) > 0.0) {
+            let mut s = [0.0; 3];
+            for c in contours {
+                for i in 0..c.len() {
+                    let a = c[i].p.map(|x| x * k);
+                    let b = c[(i + 1) % c.len()].p.map(|x| x * k);
+                    s[0] += (a[1] - b[1]) * (a[2] + b[2]);
+                    s[1] += (a[2] - b[2]) * (a[0] + b[0]);
+                    s[2] += (a[0] - b[0]) * (a[1] + b[1]);
+                }
+            }
+            if !(norm(s) > 1e-200) || !s.iter().all(|x| x.is_finite()) {
+                // Degenerate (or cancelling) contours: the largest cross
+                // product of two spans from the first vertex.
+                let v0 = all().next().unwrap().p.map(|x| x * k);
+                let far = all().map(|v| v.p.map(|x| x * k)).max_by(|a, b| norm(sub(*a, v0)).total_cmp(&norm(sub(*b, v0)))).unwrap();
+                let d1 = sub(far, v0);
+                s = all().map(|v| cross(d1, sub(v.p.map(|x| x * k), v0))).max_by(|a, b| norm(*a).total_cmp(&norm(*b))).unwrap();
+                if !(norm(s) > 0.0) || !s.iter().all(|x| x.is_finite()) {
+                    s = [0.0, 0.0, 1.0];
+                }
+            }
+            n = s;
+        }
+        let big = n[0].abs().max(n[1].abs()).max(n[2].abs());
+        let n = n.map(|x| x / big); // no overflow in the norm of a huge normal
+        let ln = norm(n);
+        let n = n.map(|x| x / ln);
+        // Basis (u, v) with u × v = n.
+        let ax = (0..3).min_by(|&i, &j| n[i].abs().total_cmp(&n[j].abs())).unwrap();
+        // u is that axis made perpendicular to n (exactly the axis when n
+        // is axis-aligned: n = +z gives u = +x, v = +y).
+        let mut e = [0.0; 3];
+        e[ax] = 1.0;
+        let u = sub(e, n.map(|x| x * n[ax]));
+        let lu = norm(u);
+        let u = u.map(|x| x / lu);
+        let v = cross(n, u);
+        // Project (scaled), then centre and normalise.
+        let mut p2: Vec<[f64; 2]> = all().map(|q| {
+            let q = q.p.map(|x| x * k);
+            [dot(q, u), dot(q, v)]
+        }).collect();
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in &p2 {
+            for i in 0..2 {
+                lo[i] = lo[i].min(p[i]);
+                hi[i] = hi[i].max(p[i]);
+            }
+        }
+        let c = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])];
+        let ext = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+        let s = pow2_inv(ext);
+        // Sweep along the longer side (a quarter turn keeps orientation):
+        // a comb is swept along its back, not across its teeth.
+        let turn = hi[1] - lo[1] > hi[0] - lo[0];
+        for p in p2.iter_mut() {
+            let q = [(p[0] - c[0]) * s, (p[1] - c[1]) * s];
+            *p = if turn { [q[1], -q[0]] } else { q };
+        }
+        // Automatic normal: make the total signed area non-negative.
+        let auto = !(self.normal.iter().all(|x| x.is_finite()) && norm(self.normal) > 0.0);
+        if auto {
+            let mut area = 0.0;
+            let mut base = 0;
+            for cont in contours {
+                for i in 0..cont.len() {
+                    let a = p2[base + i];
+                    let b = p2[base + (i + 1) % cont.len()];
+                    area += a[0] * b[1] - a[1] * b[0];
+                }
+                base += cont.len();
+            }
+            if area < 0.0 {
+                for p in p2.iter_mut() {
+                    p[1] = -p[1];
+                }
+            }
+        }
+        // Merge near-coincident vertices.
+        let mut verts: Vec<Vert> = Vec::with_capacity(p2.len());
+        let mut p3: Vec<[f64; 3]> = Vec::with_capacity(p2.len());
+        let mut data: Vec<*mut c_void> = Vec::with_capacity(p2.len());
+        let mut grid = Grid::new();
+        let mut id = Vec::with_capacity(p2.len());
+        for (q, iv) in p2.iter().zip(all()) {
+            match grid.find(&verts, *q) {
+                Some(i) => id.push(i),
+                None => {
+                    verts.push(Vert { p: *q });
+                    p3.push(iv.p);
+                    data.push(iv.data);
+                    grid.insert(&verts, verts.len() - 1);
+                    id.push(verts.len() - 1);
+                }
+            }
+        }
+        let mut segs = Vec::new();
+        let mut base = 0;
+        for cont in contours {
+            let len = cont.len();
+            for i in 0..len {
+                let (a, b) = (id[base + i], id[base + (i + 1) % len]);
+                if a != b {
+                    segs.push(Seg { a, b });
+                }
+            }
+            base += len;
+        }
+        let mut comb = Comb { job: self, p3: &mut p3, data: &mut data, failed: false };
+        let Some(segs) = sweep::split_all(&mut verts, &mut grid, segs, &mut comb) else { return };
+        let region = sweep::region(&verts, &segs, self.rule, self.boundary_only);
+        if self.boundary_only {
+            self.emit_loops(&region.boundary, &data);
+        } else {
+            self.emit_triangles(&region, &data);
+        }
+    }
+
+    fn emit_triangles(&self, r: &sweep::Region, data: &[*mut c_void]) {
+        if r.triangles.is_empty() {
+            return;
+        }
+        let flags = self.has_edge_flag();
+        let bi = if flags { Some(sweep::BoundaryIndex::new(r)) } else { None };
+        self.begin(GL_TRIANGLES);
+        let mut last: Option<bool> = None;
+        for t in &r.triangles {
+            for i in 0..3 {
+                if flags {
+                    let (a, b) = (t[i], t[(i + 1) % 3]);
+                    let f = bi.as_ref().is_some_and(|bi| bi.on_boundary(a, b));
+                    if last != Some(f) {
+                        self.edge_flag(f);
+                        last = Some(f);
+                    }
+                }
+                self.vertex(data[t[i]]);
+            }
+        }
+        self.end();
+    }
+
+    fn emit_loops(&self, edges: &[(usize, usize)], data: &[*mut c_void]) {
+        let mut out: std::collections::HashMap<usize, Vec<usize>> = std::collections::HashMap::new();
+        for (i, &(a, _)) in edges.iter().enumerate() {
+            out.entry(a).or_default().push(i);
+        }
+        let mut used = vec![false; edges.len()];
+        for s in 0..edges.len() {
+            if used[s] {
+                continue;
+            }
+            let mut lp = Vec::new();
+            let mut e = s;
+            loop {
+                used[e] = true;
+                lp.push(edges[e].0);
+                let to = edges[e].1;
+                let next = out.get(&to).and_then(|l| l.iter().copied().find(|&x| !used[x]));
+                match next {
+                    Some(x) => e = x,
+                    None => break,
+                }
+            }
+            if lp.len() >= 2 {
+                self.begin(GL_LINE_LOOP);
+                for &v in &lp {
+                    self.vertex(data[v]);
+                }
+                self.end();
+            }
+        }
+    }
+}

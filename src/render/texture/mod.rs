@@ -1,0 +1,552 @@
+//! Texturing in the fragment stage (GL 1.5 sections 3.8.7 to 3.8.13):
+//! texel addressing with the wrap modes, the level-of-detail computation,
+//! minification and magnification filters, depth-texture comparison, and
+//! the texture environments of every unit (`env`).
+//!
+//! Validation (`gl::texture::derive`) builds one [`TextureStage`] per state
+//! change: for each unit whose texturing is enabled *and* whose texture is
+//! complete, a [`UnitSampler`] holding the levels base..q (shared, not
+//! copied) and the parameters; an incomplete texture leaves the unit
+//! disabled, as GL says.
+//!
+//! Texels are stored as f32 RGBA already expanded to the "texture source
+//! colour" of table 3.23 (a LUMINANCE texel is (L, L, L, 1), an ALPHA one
+//! (0, 0, 0, A), ...), with the image's [`Base`] format kept beside them for
+//! the environment functions. Depth textures keep their depth in every
+//! colour channel.
+//!
+//! Addressing (3.8.7): for nearest filtering i = floor(u) after the wrap
+//! mode's treatment of s; for linear filtering i0 = floor(u - 1/2),
+//! i1 = i0 + 1 with weights from frac(u - 1/2). REPEAT takes indices modulo
+//! the size, MIRRORED_REPEAT mirrors them with period 2N, CLAMP_TO_EDGE
+//! clamps them to [0, N-1]; CLAMP clamps s to [0, 1] and CLAMP_TO_BORDER
+//! clamps s to [-1/2N, 1 + 1/2N], and an index outside the image (border
+//! included) then reads the border colour.
+//!
+//! LOD (3.8.8): ρ = max(|∂(u,v,w)/∂x|, |∂(u,v,w)/∂y|) from the fragment's
+//! exact derivatives of the perspective-corrected coordinates (computed in
+//! `fragment` from the 1/w plane equations); λ = log2 ρ + bias, clamped to
+//! [min_lod, max_lod]; λ > c minifies, where c = 1/2 when the magnification
+//! filter is LINEAR and the minification filter is NEAREST_MIPMAP_NEAREST
+//! or LINEAR_MIPMAP_NEAREST, else 0.
+
+pub mod env;
+
+use crate::render::fragment::CompareFunc;
+use glam::Vec4;
+use std::sync::Arc;
+
+pub use env::Env;
+
+/// Texture units (GL_MAX_TEXTURE_UNITS).
+pub const MAX_UNITS: usize = 4;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Target {
+    T1D,
+    T2D,
+    T3D,
+    Cube,
+}
+
+/// The base internal format of an image (table 3.15).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Base {
+    Alpha,
+    Luminance,
+    LuminanceAlpha,
+    Intensity,
+    Rgb,
+    Rgba,
+    Depth,
+}
+
+/// One image (one level of one face), border included.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    /// Sizes including the border.
+    pub width: i32,
+    pub height: i32,
+    pub depth: i32,
+    pub border: i32,
+    pub internal_format: u32,
+    pub base: Base,
+    /// Row-major, bottom row first, slices after each other; empty for a
+    /// proxy image.
+    pub texels: Vec<[f32; 4]>,
+}
+
+impl Image {
+    /// Sizes without the border (1D images have height 1, 2D depth 1).
+    #[inline]
+    pub fn inner(&self, dims: usize) -> [i32; 3] {
+        let b2 = 2 * self.border;
+        [self.width - b2, if dims >= 2 { self.height - b2 } else { 1 }, if dims >= 3 { self.depth - b2 } else { 1 }]
+    }
+
+    /// An image of inner size w x h x d with a border of width `border`
+    /// around `inner` texels (the border repeats the edge texels).
+    #[allow(clippy::too_many_arguments)]
+    pub fn with_border(w: i32, h: i32, d: i32, dims: usize, border: i32, internal_format: u32, base: Base, inner: &[[f32; 4]]) -> Image {
+        let b = border;
+        let (fw, fh, fd) = (w + 2 * b, if dims >= 2 { h + 2 * b } else { 1 }, if dims >= 3 { d + 2 * b } else { 1 });
+        let mut texels = Vec::with_capacity((fw * fh * fd) as usize);
+        for z in 0..fd {
+            for y in 0..fh {
+                for x in 0..fw {
+                    let i = (x - b).clamp(0, w - 1);
+                    let j = if dims >= 2 { (y - b).clamp(0, h - 1) } else { 0 };
+                    let k = if dims >= 3 { (z - b).clamp(0, d - 1) } else { 0 };
+                    texels.push(inner[((k * h + j) * w + i) as usize]);
+                }
+            }
+        }
+        Image { width: fw, height: fh, depth: fd, border, internal_format, base, texels }
+    }
+
+    /// Texel at inner coordinates (i, j, k), which may reach into the border.
+    #[inline]
+    pub fn texel_at(&self, dims: usize, i: i32, j: i32, k: i32) -> [f32; 4] {
+        self.texel(dims, i, j, k)
+    }
+
+    /// Texel at inner coordinates (i, j, k); they may reach into the
+    /// border (-1 or size) when there is one.
+    #[inline]
+    fn texel(&self, dims: usize, i: i32, j: i32, k: i32) -> [f32; 4] {
+        let b = self.border;
+        let (x, y, z) = (i + b, if dims >= 2 { j + b } else { 0 }, if dims >= 3 { k + b } else { 0 });
+        self.texels[((z * self.height + y) * self.width + x) as usize]
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Wrap {
+    Repeat,
+    Clamp,
+    ClampToEdge,
+    ClampToBorder,
+    MirroredRepeat,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Filter {
+    Nearest,
+    Linear,
+    NearestMipmapNearest,
+    LinearMipmapNearest,
+    NearestMipmapLinear,
+    LinearMipmapLinear,
+}
+
+impl Filter {
+    pub fn is_mipmap(self) -> bool {
+        !matches!(self, Filter::Nearest | Filter::Linear)
+    }
+}
+
+/// A texture object's sampling parameters (table 6.16).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Params {
+    pub wrap: [Wrap; 3],
+    pub min_filter: Filter,
+    pub mag_filter: Filter,
+    pub border_color: [f32; 4],
+    pub min_lod: f32,
+    pub max_lod: f32,
+    pub base_level: i32,
+    pub max_level: i32,
+    pub lod_bias: f32,
+    /// TEXTURE_COMPARE_MODE is COMPARE_R_TO_TEXTURE.
+    pub compare_mode: bool,
+    pub compare_func: CompareFunc,
+    /// DEPTH_TEXTURE_MODE: Luminance, Intensity or Alpha.
+    pub depth_mode: Base,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            wrap: [Wrap::Repeat; 3],
+            min_filter: Filter::NearestMipmapLinear,
+            mag_filter: Filter::Linear,
+            border_color: [0.0; 4],
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            base_level: 0,
+            max_level: 1000,
+            lod_bias: 0.0,
+            compare_mode: false,
+            compare_func: CompareFunc::Lequal,
+            depth_mode: Base::Luminance,
+        }
+    }
+}
+
+/// A complete texture bound to an enabled unit, ready to sample.
+#[derive(Clone, Debug)]
+pub struct UnitSampler {
+    pub target: Target,
+    /// faces[f][l]: level base + l of face f (6 faces for cube maps).
+    pub faces: Vec<Vec<Arc<Image>>>,
+    pub params: Params,
+    /// The unit's TEXTURE_LOD_BIAS (GL 1.4 texture filter control).
+    pub unit_bias: f32,
+    /// The base format of the base level (what the environment sees).
+    pub base: Base,
+}
+
+/// The fragment stage's texturing configuration.
+#[derive(Clone, Debug)]
+pub struct TextureStage {
+    pub units: [Option<UnitSampler>; MAX_UNITS],
+    pub envs: [Env; MAX_UNITS],
+    /// Indices of the units with a sampler, in order.
+    pub active: Vec<usize>,
+}
+
+/// A fragment's coordinates for one unit: (s, t, r) after division by q,
+/// and their screen-space derivatives.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Coord {
+    pub str: [f32; 3],
+    pub dx: [f32; 3],
+    pub dy: [f32; 3],
+}
+
+impl TextureStage {
+    /// Textures a fragment: samples every active unit, then runs the
+    /// environments in unit order (3.8.13), starting from the primary
+    /// colour `cf`.
+    pub fn shade(&self, coords: &[Coord; MAX_UNITS], cf: Vec4) -> Vec4 {
+        let mut tex = [Vec4::ZERO; MAX_UNITS];
+        for &u in &self.active {
+            if let Some(s) = &self.units[u] {
+                tex[u] = s.sample(&coords[u]);
+            }
+        }
+        let mut prev = cf;
+        for &u in &self.active {
+            if let Some(s) = &self.units[u] {
+                prev = self.envs[u].apply(s.base_for_env(), prev, cf, tex[u], &tex, &self.units);
+            }
+        }
+        prev
+    }
+}
+
+#[inline]
+fn lerp4(a: [f32; 4], b: [f32; 4], t: f32) -> [f32; 4] {
+    [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t, a[3] + (b[3] - a[3]) * t]
+}
+
+/// Mirrors an index with period 2n.
+#[inline]
+fn mirror(i: i32, n: i32) -> i32 {
+    let m = i.rem_euclid(2 * n);
+    if m >= n {
+        2 * n - 1 - m
+    } else {
+        m
+    }
+}
+
+/// The coordinate u = s * n after the wrap mode's treatment of s, for
+/// nearest (`linear` false) or linear filtering.
+#[inline]
+fn wrap_coord(wrap: Wrap, s: f32, n: i32) -> f32 {
+    let nf = n as f32;
+    match wrap {
+        Wrap::Clamp => s.clamp(0.0, 1.0) * nf,
+        Wrap::ClampToBorder => (s * nf).clamp(-0.5, nf + 0.5),
+        // The others are resolved on indices.
+        _ => s * nf,
+    }
+}
+
+/// An index after wrapping; None: outside the image (border colour).
+#[inline]
+fn wrap_index(wrap: Wrap, i: i32, n: i32, border: i32) -> Option<i32> {
+    match wrap {
+        Wrap::Repeat => Some(i.rem_euclid(n)),
+        Wrap::MirroredRepeat => Some(mirror(i, n)),
+        Wrap::ClampToEdge => Some(i.clamp(0, n - 1)),
+        Wrap::Clamp | Wrap::ClampToBorder => {
+            if i < -border || i >= n + border {
+                None
+            } else {
+                Some(i)
+            }
+        }
+    }
+}
+
+impl UnitSampler {
+    /// The base format the environment function sees: a depth texture
+    /// reads as its DEPTH_TEXTURE_MODE.
+    #[inline]
+    fn base_for_env(&self) -> Base {
+        if self.base == Base::Depth {
+            self.params.depth_mode
+        } else {
+            self.base
+        }
+    }
+
+    fn dims(&self) -> usize {
+        match self.target {
+            Target::T1D => 1,
+            Target::T2D | Target::Cube => 2,
+            Target::T3D => 3,
+        }
+    }
+
+    /// Samples at a fragment's coordinates (3.8.7 - 3.8.9, 3.8.14 for cube maps).
+    pub fn sample(&self, c: &Coord) -> Vec4 {
+        let (face, str, dx, dy) = if self.target == Target::Cube {
+            cube_face(c)
+        } else {
+            (0, c.str, c.dx, c.dy)
+        };
+        let levels = &self.faces[face];
+        let base = &levels[0];
+        let dims = self.dims();
+        let n = base.inner(dims);
+        let rho = {
+            let lx = (0..dims).map(|k| (dx[k] * n[k] as f32).powi(2)).sum::<f32>().sqrt();
+            let ly = (0..dims).map(|k| (dy[k] * n[k] as f32).powi(2)).sum::<f32>().sqrt();
+            lx.max(ly)
+        };
+        let p = &self.params;
+        let lambda = (rho.log2() + (p.lod_bias + self.unit_bias).clamp(-MAX_LOD_BIAS, MAX_LOD_BIAS)).clamp(p.min_lod, p.max_lod);
+        let c_switch = if p.mag_filter == Filter::Linear && matches!(p.min_filter, Filter::NearestMipmapNearest | Filter::LinearMipmapNearest) {
+            0.5
+        } else {
+            0.0
+        };
+        let texel = if lambda > c_switch && !lambda.is_nan() {
+            // Minification.
+            let q = levels.len() - 1;
+            match p.min_filter {
+                Filter::Nearest => self.filter(&levels[0], str, false),
+                Filter::Linear => self.filter(&levels[0], str, true),
+                f @ (Filter::NearestMipmapNearest | Filter::LinearMipmapNearest) => {
+                    let d = if lambda <= 0.5 { 0 } else { (((lambda + 0.5).ceil() - 1.0) as usize).min(q) };
+                    self.filter(&levels[d], str, f == Filter::LinearMipmapNearest)
+                }
+                f => {
+                    let lin = f == Filter::LinearMipmapLinear;
+                    let d1 = lambda.floor();
+                    if d1 as usize >= q || d1 >= q as f32 {
+                        self.filter(&levels[q], str, lin)
+                    } else {
+                        let d1i = d1.max(0.0) as usize;
+                        let t1 = self.filter(&levels[d1i], str, lin);
+                        let t2 = self.filter(&levels[d1i + 1], str, lin);
+                        lerp4(t1, t2, lambda - lambda.floor())
+                    }
+                }
+            }
+        } else {
+            self.filter(&levels[0], str, p.mag_filter == Filter::Linear)
+        };
+        Vec4::from_array(texel)
+    }
+
+    /// Nearest or linear filtering within one image, with depth comparison
+    /// per texel (before filtering).
+    fn filter(&self, img: &Image, str: [f32; 3], linear: bool) -> [f32; 4] {
+        let dims = self.dims();
+        let n = img.inner(dims);
+        let p = &self.params;
+        let b = img.border;
+        let fetch = |i: i32, j: i32, k: i32| -> [f32; 4] {
+            let ii = wrap_index(p.wrap[0], i, n[0], b);
+            let jj = if dims >= 2 { wrap_index(p.wrap[1], j, n[1], b) } else { Some(0) };
+            let kk = if dims >= 3 { wrap_index(p.wrap[2], k, n[2], b) } else { Some(0) };
+            let t = match (ii, jj, kk) {
+                (Some(i), Some(j), Some(k)) => img.texel(dims, i, j, k),
+                _ => self.border_texel(),
+            };
+            self.compare(t, str[2])
+        };
+        let u = [0, 1, 2].map(|k| if k < dims { wrap_coord(p.wrap[k], str[k], n[k]) } else { 0.0 });
+        if !linear {
+            let i = u.map(|x| x.floor() as i32);
+            // CLAMP at s = 1 reads the last texel, not the border.
+            let fix = |k: usize, i: i32| if p.wrap[k] == Wrap::Clamp && i >= n[k] { n[k] - 1 } else { i };
+            return fetch(fix(0, i[0]), fix(1, i[1]), fix(2, i[2]));
+        }
+        let a = u.map(|x| x - 0.5);
+        let i0 = a.map(|x| x.floor() as i32);
+        let w = [a[0] - a[0].floor(), a[1] - a[1].floor(), a[2] - a[2].floor()];
+        match dims {
+            1 => lerp4(fetch(i0[0], 0, 0), fetch(i0[0] + 1, 0, 0), w[0]),
+            2 => {
+                let r0 = lerp4(fetch(i0[0], i0[1], 0), fetch(i0[0] + 1, i0[1], 0), w[0]);
+                let r1 = lerp4(fetch(i0[0], i0[1] + 1, 0), fetch(i0[0] + 1, i0[1] + 1, 0), w[0]);
+                lerp4(r0, r1, w[1])
+            }
+            _ => {
+                let slice = |k: i32| {
+                    let r0 = lerp4(fetch(i0[0], i0[1], k), fetch(i0[0] + 1, i0[1], k), w[0]);
+                    let r1 = lerp4(fetch(i0[0], i0[1] + 1, k), fetch(i0[0] + 1, i0[1] + 1, k), w[0]);
+                    lerp4(r0, r1, w[1])
+                };
+                lerp4(slice(i0[2]), slice(i0[2] + 1), w[2])
+            }
+        }
+    }
+
+    /// The border colour as a texel of this texture's format.
+    fn border_texel(&self) -> [f32; 4] {
+        let [r, g, b, a] = self.params.border_color;
+        match self.base {
+            Base::Alpha => [0.0, 0.0, 0.0, a],
+            Base::Luminance => [r, r, r, 1.0],
+            Base::LuminanceAlpha => [r, r, r, a],
+            Base::Intensity => [r, r, r, r],
+            Base::Rgb => [r, g, b, 1.0],
+            Base::Rgba => [r, g, b, a],
+            Base::Depth => [r, r, r, 1.0],
+        }
+    }
+
+    /// Depth textures (3.8.14 of GL 1.4): the comparison of r against the
+    /// texel, then DEPTH_TEXTURE_MODE.
+    #[inline]
+    fn compare(&self, t: [f32; 4], r: f32) -> [f32; 4] {
+        if self.base != Base::Depth {
+            return t;
+        }
+        let d = t[0];
+        // Comparisons use r clamped to [0, 1], as the texel is.
+        let v = if !self.params.compare_mode {
+            d
+        } else if self.params.compare_func.test(r.clamp(0.0, 1.0), d) {
+            1.0
+        } else {
+            0.0
+        };
+        match self.params.depth_mode {
+            Base::Intensity => [v, v, v, v],
+            Base::Alpha => [0.0, 0.0, 0.0, v],
+            _ => [v, v, v, 1.0],
+        }
+    }
+}
+
+/// GL_MAX_TEXTURE_LOD_BIAS.
+pub const MAX_LOD_BIAS: f32 = 16.0;
+
+/// Cube map face selection (table 3.19): the face, (s, t) on it, and the
+/// derivatives of (s, t) approximated by those of the direction over the
+/// major axis.
+fn cube_face(c: &Coord) -> (usize, [f32; 3], [f32; 3], [f32; 3]) {
+    let [rx, ry, rz] = c.str;
+    let (ax, ay, az) = (rx.abs(), ry.abs(), rz.abs());
+    // (face, sc, tc, ma) as functions of a direction.
+    let pick = |v: [f32; 3], face: usize| -> (f32, f32, f32) {
+        let [x, y, z] = v;
+        match face {
+            0 => (-z, -y, x),
+            1 => (z, -y, -x),
+            2 => (x, z, y),
+            3 => (x, -z, -y),
+            4 => (x, -y, z),
+            _ => (-x, -y, -z),
+        }
+    };
+    let face = if ax >= ay && ax >= az {
+        if rx >= 0.0 { 0 } else { 1 }
+    } else if ay >= az {
+        if ry >= 0.0 { 2 } else { 3 }
+    } else if rz >= 0.0 {
+        4
+    } else {
+        5
+    };
+    let (sc, tc, ma) = pick(c.str, face);
+    let ma = ma.abs().max(1e-30);
+    let st = [(sc / ma + 1.0) / 2.0, (tc / ma + 1.0) / 2.0, 0.0];
+    let d = |dv: [f32; 3]| {
+        let (ds, dt, _) = pick(dv, face);
+        [ds / (2.0 * ma), dt / (2.0 * ma), 0.0]
+    };
+    (face, st, d(c.dx), d(c.dy))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn img(w: i32, h: i32, f: impl Fn(i32, i32) -> [f32; 4]) -> Arc<Image> {
+        let mut texels = Vec::new();
+        for j in 0..h {
+            for i in 0..w {
+                texels.push(f(i, j));
+            }
+        }
+        Arc::new(Image { width: w, height: h, depth: 1, border: 0, internal_format: 0x1908, base: Base::Rgba, texels })
+    }
+
+    fn sampler(levels: Vec<Arc<Image>>, params: Params) -> UnitSampler {
+        UnitSampler { target: Target::T2D, faces: vec![levels], params, unit_bias: 0.0, base: Base::Rgba }
+    }
+
+    #[test]
+    fn wrap_indices() {
+        assert_eq!(mirror(-1, 4), 0);
+        assert_eq!(mirror(4, 4), 3);
+        assert_eq!(mirror(8, 4), 0);
+        assert_eq!(wrap_index(Wrap::Repeat, -1, 4, 0), Some(3));
+        assert_eq!(wrap_index(Wrap::ClampToEdge, 7, 4, 0), Some(3));
+        assert_eq!(wrap_index(Wrap::Clamp, 4, 4, 0), None);
+        assert_eq!(wrap_index(Wrap::Clamp, 4, 4, 1), Some(4));
+    }
+
+    #[test]
+    fn bilinear_weights() {
+        let s = sampler(
+            vec![img(2, 2, |i, j| [(i + 2 * j) as f32, 0.0, 0.0, 1.0])],
+            Params { min_filter: Filter::Linear, mag_filter: Filter::Linear, wrap: [Wrap::ClampToEdge; 3], ..Default::default() },
+        );
+        // Halfway between the four texel centres.
+        let c = Coord { str: [0.5, 0.5, 0.0], ..Default::default() };
+        assert!((s.sample(&c).x - 1.5).abs() < 1e-6);
+        // At texel (0, 0)'s centre plus a quarter texel in s.
+        let c = Coord { str: [0.375, 0.25, 0.0], ..Default::default() };
+        assert!((s.sample(&c).x - 0.25).abs() < 1e-6);
+    }
+}
+
+/// Texture coordinates of a line fragment at parameter `t` of the segment
+/// from a to b (window vertices with q = 1/w), perspective-correct as
+/// the colours (equation 3.7); the derivative is taken over `step`, the
+/// parameter change of one pixel along the major axis.
+pub fn line_coords(stage: &TextureStage, ta: &[Vec4; MAX_UNITS], qa: f64, tb: &[Vec4; MAX_UNITS], qb: f64, t: f64, step: f64) -> [Coord; MAX_UNITS] {
+    let mut out = [Coord::default(); MAX_UNITS];
+    let at = |u: usize, t: f64| -> Option<[f64; 3]> {
+        let (ka, kb) = ((1.0 - t) * qa, t * qb);
+        let v = (ta[u].as_dvec4() * ka + tb[u].as_dvec4() * kb) / (ka + kb);
+        (v.w != 0.0 && v.is_finite()).then(|| [v.x / v.w, v.y / v.w, v.z / v.w])
+    };
+    for &u in &stage.active {
+        let (Some(p), Some(p2)) = (at(u, t), at(u, t + step)) else { continue };
+        out[u] = Coord { str: p.map(|x| x as f32), dx: [0, 1, 2].map(|k| (p2[k] - p[k]) as f32), dy: [0.0; 3] };
+    }
+    out
+}
+
+/// Texture coordinates of a point's fragments: the vertex's, divided by q;
+/// no derivatives (points magnify).
+pub fn point_coords(stage: &TextureStage, tex: &[Vec4; MAX_UNITS]) -> [Coord; MAX_UNITS] {
+    let mut out = [Coord::default(); MAX_UNITS];
+    for &u in &stage.active {
+        let v = tex[u];
+        if v.w != 0.0 {
+            out[u].str = [v.x / v.w, v.y / v.w, v.z / v.w];
+        }
+    }
+    out
+}

@@ -1,0 +1,63 @@
+//! glPushAttrib / glPopAttrib and the client stack (GL 1.5 section 6.1.14).
+
+use softgl::framebuffer::Config;
+use softgl::gl::attrib::*;
+use softgl::gl::enums::*;
+use softgl::gl::{Command, Context};
+
+fn context() -> Context {
+    let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 16 });
+    c.fb.resize(4, 4).unwrap();
+    c.surface_resized(4, 4);
+    c
+}
+
+#[test]
+fn groups_come_back_and_others_stay() {
+    let mut c = context();
+    c.execute(&Command::PushAttrib(GL_COLOR_BUFFER_BIT | GL_ENABLE_BIT | GL_LIGHTING_BIT | GL_VIEWPORT_BIT));
+    c.execute(&Command::ClearColor([0.5, 0.5, 0.5, 1.0]));
+    c.execute(&Command::Enable(GL_DEPTH_TEST));
+    c.execute(&Command::Enable(GL_LIGHT0 + 3));
+    c.execute(&Command::ShadeModel(GL_FLAT));
+    c.execute(&Command::Viewport(1, 1, 2, 2));
+    c.execute(&Command::LineWidth(3.0)); // line group: not saved
+    c.execute(&Command::PopAttrib);
+    assert_eq!(c.color_buffer.clear, [0.0; 4]);
+    assert_eq!(c.is_enabled(GL_DEPTH_TEST), Some(false));
+    assert_eq!(c.is_enabled(GL_LIGHT0 + 3), Some(false));
+    assert_eq!(c.shade_model, GL_SMOOTH);
+    assert_eq!((c.viewport.x, c.viewport.width), (0, 4));
+    assert_eq!(c.line.width, 3.0);
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+}
+
+#[test]
+fn the_depth_group_carries_its_enable() {
+    let mut c = context();
+    c.execute(&Command::PushAttrib(GL_DEPTH_BUFFER_BIT));
+    c.execute(&Command::Enable(GL_DEPTH_TEST));
+    c.execute(&Command::DepthFunc(GL_GREATER));
+    c.execute(&Command::PopAttrib);
+    assert_eq!(c.is_enabled(GL_DEPTH_TEST), Some(false));
+    assert_eq!(c.depth.func.to_gl(), GL_LESS);
+}
+
+#[test]
+fn stack_limits() {
+    let mut c = context();
+    c.execute(&Command::PopAttrib);
+    assert_eq!(c.take_error(), GL_STACK_UNDERFLOW);
+    for _ in 0..MAX_ATTRIB_STACK_DEPTH {
+        c.execute(&Command::PushAttrib(!0));
+    }
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    c.execute(&Command::PushAttrib(!0));
+    assert_eq!(c.take_error(), GL_STACK_OVERFLOW);
+    c.pop_client_attrib();
+    assert_eq!(c.take_error(), GL_STACK_UNDERFLOW);
+    c.push_client_attrib(GL_CLIENT_PIXEL_STORE_BIT);
+    c.pixel_store(GL_UNPACK_ALIGNMENT, 1.0);
+    c.pop_client_attrib();
+    assert_eq!(c.pixel_store.unpack.alignment, 4);
+}
