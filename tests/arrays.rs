@@ -1091,6 +1091,39 @@ fn array_state_queries() {
     }
 }
 
+#[test]
+fn push_pop_client_vertex_array_state() {
+    let _c = setup();
+    unsafe {
+        let a = [0f32; 8];
+        let mut b = 0u32;
+        glGenBuffers(1, &mut b);
+        glVertexPointer(3, GL_SHORT, 8, a.as_ptr() as *const c_void);
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glClientActiveTexture(GL_TEXTURE0 + 1);
+        glPushClientAttrib(0x2);
+        glDisableClientState(GL_VERTEX_ARRAY);
+        glVertexPointer(2, GL_FLOAT, 0, null());
+        glClientActiveTexture(GL_TEXTURE0);
+        glBindBuffer(GL_ARRAY_BUFFER, b);
+        glPopClientAttrib();
+        assert_eq!(error(), GL_NO_ERROR);
+        assert_eq!(glIsEnabled(GL_VERTEX_ARRAY), 1);
+        assert_eq!(get_i(0x807A), 3);
+        assert_eq!(get_i(0x807C), 8);
+        let mut p: *mut c_void = std::ptr::null_mut();
+        glGetPointerv(0x808E, &mut p);
+        assert_eq!(p as *const f32, a.as_ptr());
+        assert_eq!(get_i(GL_CLIENT_ACTIVE_TEXTURE) as u32, GL_TEXTURE0 + 1);
+        assert_eq!(get_i(GL_ARRAY_BUFFER_BINDING), 0);
+        // The pixel-store bit alone leaves arrays alone.
+        glPushClientAttrib(0x1);
+        glDisableClientState(GL_VERTEX_ARRAY);
+        glPopClientAttrib();
+        assert_eq!(glIsEnabled(GL_VERTEX_ARRAY), 0);
+    }
+}
+
 /// The immediate-mode attributes this work stores: current values, and
 /// recorded in lists.
 #[test]

@@ -462,7 +462,7 @@ super::entry_points! {
     exec glGetString(name: GLenum) -> *const GLubyte { |c| match get::string(name) { Some(s) => s.as_ptr(), None => { c.set_error(GL_INVALID_ENUM); std::ptr::null() } } }
     list["saves the groups implemented so far: current, point, line, polygon, stipple, lighting, depth, accum, stencil, viewport, transform, enable, color buffer, hint, eval, list, scissor"] glPushAttrib(mask: GLbitfield) { |_c| Command::PushAttrib(mask) }
     list glPopAttrib() { |_c| Command::PopAttrib }
-    client["saves the pixel-store modes; vertex-array state comes with vertex arrays"] glPushClientAttrib(mask: GLbitfield) { |c| c.push_client_attrib(mask) }
+    client glPushClientAttrib(mask: GLbitfield) { |c| c.push_client_attrib(mask) }
     client glPopClientAttrib() { |c| c.pop_client_attrib() }
     draw glDrawRangeElements(mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, type_: GLenum, indices: *const c_void) { |c| c.draw_range_elements(mode, start, end, count, type_, indices as usize) }
     list glTexImage3D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_image_command(3, target, level, internalFormat, [width, height, depth], border, format, type_, pixels as *const u8)? }

@@ -201,6 +201,19 @@ impl ArrayState {
     }
 }
 
+/// glPushClientAttrib's GL_CLIENT_VERTEX_ARRAY_BIT.
+pub const GL_CLIENT_VERTEX_ARRAY_BIT: u32 = 0x2;
+
+/// The GL_CLIENT_VERTEX_ARRAY_BIT group (table 6.6 to 6.9): the arrays, the
+/// client active texture unit and the two buffer bindings.
+#[derive(Clone, Debug)]
+pub struct ClientArrays {
+    arrays: ArrayState,
+    client_active: usize,
+    array_buffer: u32,
+    element_array_buffer: u32,
+}
+
 /// Bytes of one component of `ty`, for the types arrays accept.
 fn type_size(ty: u32) -> usize {
     match ty {
@@ -477,6 +490,41 @@ fn interleaved(format: u32) -> Option<Interleaved> {
 }
 
 impl Context {
+    /// The vertex-array group, for glPushClientAttrib.
+    pub fn client_arrays(&self) -> ClientArrays {
+        ClientArrays {
+            arrays: self.arrays.clone(),
+            client_active: self.texture.client_active,
+            array_buffer: self.buffers.array,
+            element_array_buffer: self.buffers.element_array,
+        }
+    }
+
+    /// glPopClientAttrib of the vertex-array group. A binding to a buffer
+    /// deleted since the push comes back as zero (and its array as NULL),
+    /// as deletion would have left it.
+    pub fn restore_client_arrays(&mut self, mut saved: ClientArrays) {
+        let gone = |b: u32| b != 0 && !self.buffers.is_buffer(b);
+        let dead: Vec<u32> = [saved.array_buffer, saved.element_array_buffer]
+            .into_iter()
+            .chain(saved.arrays.all().map(|p| p.buffer))
+            .filter(|&b| gone(b))
+            .collect();
+        for b in dead {
+            saved.arrays.unbind_buffer(b);
+            if saved.array_buffer == b {
+                saved.array_buffer = 0;
+            }
+            if saved.element_array_buffer == b {
+                saved.element_array_buffer = 0;
+            }
+        }
+        self.arrays = saved.arrays;
+        self.texture.client_active = saved.client_active;
+        self.buffers.array = saved.array_buffer;
+        self.buffers.element_array = saved.element_array_buffer;
+    }
+
     /// The gl*Pointer calls. The pointer is an offset when a buffer is
     /// bound to ARRAY_BUFFER.
     pub fn array_pointer(&mut self, a: Array, size: i32, ty: u32, stride: i32, pointer: usize) {
