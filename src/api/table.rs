@@ -246,7 +246,7 @@ super::entry_points! {
     client glColorPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Color, size, type_, stride, ptr as usize) }
     client glIndexPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Index, 1, type_, stride, ptr as usize) }
     client["texture coordinates reach the current values and display lists; texturing is not implemented yet"] glTexCoordPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.tex_coord_pointer(size, type_, stride, ptr as usize) }
-    client["as glEdgeFlag"] glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, ptr as usize) }
+    client glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, ptr as usize) }
     client glEnableClientState(array: GLenum) { |c| c.client_state(array, true) }
     client glDisableClientState(array: GLenum) { |c| c.client_state(array, false) }
     draw glArrayElement(i: GLint) { |c| c.array_element(i) }
