@@ -146,3 +146,19 @@ fn point_size_attenuation() {
     assert_eq!(draw([0.0, 0.0, 0.25], 6.0, 64.0), 36, "clamped up to the minimum");
     assert_eq!(draw([1.0, 0.0, 0.0], 0.0, 3.0), 9, "clamped down to the maximum");
 }
+
+/// GL_FOG_COORD_SRC = GL_FOG_COORD takes glFogCoord's value per vertex.
+#[test]
+fn fog_coordinate_source() {
+    let mut c = context();
+    c.execute(&Command::Enable(GL_FOG));
+    set(&mut c, GL_FOG_MODE, GL_LINEAR as f32);
+    set(&mut c, GL_FOG_END, 10.0);
+    set(&mut c, GL_FOG_COORD_SRC, GL_FOG_COORD as f32);
+    c.execute(&Command::Fog(GL_FOG_COLOR, [0.0, 0.0, 1.0, 1.0]));
+    c.current.fog_coord = 7.5; // as glFogCoordf(7.5) leaves it
+    // The quad is at eye distance 1; the fog coordinate says 7.5: f = 0.25.
+    c.execute(&Command::Translate([0.0, 0.0, -1.0]));
+    let got = quad_at(&mut c, 1.0, [1.0, 0.0, 0.0, 1.0]);
+    assert_eq!(got, [64, 0, 191, 255]);
+}

@@ -27,6 +27,16 @@ pub enum Kind {
     /// Client state (pixel store, arrays): immediate, never compiled, and
     /// not checked against Begin/End.
     client,
+    /// A vertex-array draw (glArrayElement, glDrawArrays, glDrawElements
+    /// and their range and multi forms). Not a [`crate::gl::Command`]
+    /// itself: it reads client arrays, which a list must capture at
+    /// compile time (section 5.4). The body calls a `Context::draw_*`
+    /// method (gl::arrays) that, while a list is being compiled, records
+    /// the vertex commands the draw generates, and otherwise (or also, in
+    /// GL_COMPILE_AND_EXECUTE) feeds the arrays to primitive assembly. The
+    /// method applies the Begin/End rule itself (glArrayElement is allowed
+    /// between Begin and End, the others are not).
+    draw,
     /// Needs no context: GLU and the window-system calls.
     free,
     /// Exported so programs link and load, but not implemented yet: does
@@ -123,6 +133,13 @@ macro_rules! entry_point {
         }
     };
     (client $name:ident ( $($arg:ident : $ty:ty),* ) -> $ret:ty { |$c:ident| $body:expr }) => {
+        #[no_mangle]
+        #[allow(unused_parens)]
+        pub unsafe extern "system" fn $name($($arg: $ty),*) -> $ret {
+            $crate::api::dispatch::with_current(|$c: &mut $crate::gl::Context| $body)
+        }
+    };
+    (draw $name:ident ( $($arg:ident : $ty:ty),* ) -> $ret:ty { |$c:ident| $body:expr }) => {
         #[no_mangle]
         #[allow(unused_parens)]
         pub unsafe extern "system" fn $name($($arg: $ty),*) -> $ret {

@@ -28,6 +28,7 @@ use std::ffi::{c_char, c_int, c_void};
 use crate::gl::pixel_transfer::{map_index, map_value_to_uint, map_values_from_uint, MAX_PIXEL_MAP_TABLE};
 use crate::gl::texture::enums::{GL_TEXTURE0 as TEX0, GL_TEXTURE_BORDER_COLOR as TBORDER, GL_TEXTURE_ENV_COLOR as TENV_COLOR, GL_TEXTURE_GEN_MODE as TGEN_MODE};
 use crate::gl::texture::CopyTexCmd;
+use crate::gl::arrays::Array;
 
 /// GLU's opaque object types, as C sees them.
 pub type GLUquadric = c_void;
@@ -257,28 +258,28 @@ super::entry_points! {
     list glColor4uiv(v: *const GLuint) { |_c| Command::Color(color(&arr::<GLuint, 4>(v)?)) }
     list glColor4us(red: GLushort, green: GLushort, blue: GLushort, alpha: GLushort) { |_c| Command::Color(color(&[red, green, blue, alpha])) }
     list glColor4usv(v: *const GLushort) { |_c| Command::Color(color(&arr::<GLushort, 4>(v)?)) }
-    todo glIndexd(c: GLdouble);
-    todo glIndexdv(v: *const GLdouble);
-    todo glIndexf(c: GLfloat);
-    todo glIndexfv(v: *const GLfloat);
-    todo glIndexi(c: GLint);
-    todo glIndexiv(v: *const GLint);
-    todo glIndexs(c: GLshort);
-    todo glIndexsv(v: *const GLshort);
-    todo glIndexub(c: GLubyte);
-    todo glIndexubv(v: *const GLubyte);
-    todo glVertexPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void);
-    todo glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void);
-    todo glColorPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void);
-    todo glIndexPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void);
-    todo glTexCoordPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void);
-    todo glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void);
-    todo glEnableClientState(array: GLenum);
-    todo glDisableClientState(array: GLenum);
-    todo glArrayElement(i: GLint);
-    todo glDrawArrays(mode: GLenum, first: GLint, count: GLsizei);
-    todo glDrawElements(mode: GLenum, count: GLsizei, type_: GLenum, indices: *const c_void);
-    todo glInterleavedArrays(format: GLenum, stride: GLsizei, pointer: *const c_void);
+    list glIndexd(c: GLdouble) { |_c| Command::Index(c as f32) }
+    list glIndexdv(v: *const GLdouble) { |_c| Command::Index(arr::<GLdouble, 1>(v)?[0] as f32) }
+    list glIndexf(c: GLfloat) { |_c| Command::Index(c) }
+    list glIndexfv(v: *const GLfloat) { |_c| Command::Index(arr::<GLfloat, 1>(v)?[0]) }
+    list glIndexi(c: GLint) { |_c| Command::Index(c as f32) }
+    list glIndexiv(v: *const GLint) { |_c| Command::Index(arr::<GLint, 1>(v)?[0] as f32) }
+    list glIndexs(c: GLshort) { |_c| Command::Index(c as f32) }
+    list glIndexsv(v: *const GLshort) { |_c| Command::Index(arr::<GLshort, 1>(v)?[0] as f32) }
+    list glIndexub(c: GLubyte) { |_c| Command::Index(c as f32) }
+    list glIndexubv(v: *const GLubyte) { |_c| Command::Index(arr::<GLubyte, 1>(v)?[0] as f32) }
+    client glVertexPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Vertex, size, type_, stride, ptr as usize) }
+    client glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Normal, 3, type_, stride, ptr as usize) }
+    client glColorPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Color, size, type_, stride, ptr as usize) }
+    client glIndexPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Index, 1, type_, stride, ptr as usize) }
+    client["texture coordinates reach the current values and display lists; texturing is not implemented yet"] glTexCoordPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.tex_coord_pointer(size, type_, stride, ptr as usize) }
+    client glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, ptr as usize) }
+    client glEnableClientState(array: GLenum) { |c| c.client_state(array, true) }
+    client glDisableClientState(array: GLenum) { |c| c.client_state(array, false) }
+    draw glArrayElement(i: GLint) { |c| c.array_element(i) }
+    draw glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) { |c| c.draw_arrays(mode, first, count) }
+    draw glDrawElements(mode: GLenum, count: GLsizei, type_: GLenum, indices: *const c_void) { |c| c.draw_elements(mode, count, type_, indices as usize) }
+    client glInterleavedArrays(format: GLenum, stride: GLsizei, pointer: *const c_void) { |c| c.interleaved_arrays(format, stride, pointer as usize) }
     list glRectd(x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) { |_c| Command::Rect([x1 as f32, y1 as f32, x2 as f32, y2 as f32]) }
     list glRectdv(v1: *const GLdouble, v2: *const GLdouble) { |_c| { let (a, b) = (arr::<GLdouble, 2>(v1)?, arr::<GLdouble, 2>(v2)?); Command::Rect([a[0] as f32, a[1] as f32, b[0] as f32, b[1] as f32]) } }
     list glRectf(x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) { |_c| Command::Rect([x1 as f32, y1 as f32, x2 as f32, y2 as f32]) }
@@ -462,7 +463,7 @@ super::entry_points! {
     exec["answers the state implemented so far; other names give GL_INVALID_ENUM"] glGetIntegerv(pname: GLenum, params: *mut GLint) { |c| c.get_into(pname, params, get::Value::as_i32) }
     exec["as glGetIntegerv"] glGetFloatv(pname: GLenum, params: *mut GLfloat) { |c| c.get_into(pname, params, |v| v.as_f64().into_iter().map(|x| x as f32).collect()) }
     exec["as glGetIntegerv"] glGetDoublev(pname: GLenum, params: *mut GLdouble) { |c| c.get_into(pname, params, get::Value::as_f64) }
-    todo glGetPointerv(pname: GLenum, params: *mut *mut c_void);
+    client["GL_FEEDBACK_BUFFER_POINTER and GL_SELECTION_BUFFER_POINTER are NULL until feedback and selection exist"] glGetPointerv(pname: GLenum, params: *mut *mut c_void) { |c| if let Some(p) = c.get_pointer(pname) { write_out(params, &[p as *mut c_void]) } }
     exec glGetClipPlane(plane: GLenum, equation: *mut GLdouble) { |c| match c.get_clip_plane(plane) { Some(p) => write_out(equation, &p), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &v), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetLightiv(light: GLenum, pname: GLenum, params: *mut GLint) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &ints_out(&v, is_color_param(pname))), None => c.set_error(GL_INVALID_ENUM) } }
@@ -488,9 +489,9 @@ super::entry_points! {
     exec glGetString(name: GLenum) -> *const GLubyte { |c| match get::string(name) { Some(s) => s.as_ptr(), None => { c.set_error(GL_INVALID_ENUM); std::ptr::null() } } }
     list["saves the groups implemented so far: current, point, line, polygon, stipple, lighting, depth, accum, stencil, viewport, transform, enable, color buffer, hint, eval, list, scissor"] glPushAttrib(mask: GLbitfield) { |_c| Command::PushAttrib(mask) }
     list glPopAttrib() { |_c| Command::PopAttrib }
-    client["saves the pixel-store modes; vertex-array state comes with vertex arrays"] glPushClientAttrib(mask: GLbitfield) { |c| c.push_client_attrib(mask) }
+    client glPushClientAttrib(mask: GLbitfield) { |c| c.push_client_attrib(mask) }
     client glPopClientAttrib() { |c| c.pop_client_attrib() }
-    todo glDrawRangeElements(mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, type_: GLenum, indices: *const c_void);
+    draw glDrawRangeElements(mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, type_: GLenum, indices: *const c_void) { |c| c.draw_range_elements(mode, start, end, count, type_, indices as usize) }
     list glTexImage3D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_image_command(3, target, level, internalFormat, [width, height, depth], border, format, type_, pixels as *const u8)? }
     list glTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_sub_image_command(3, target, level, [xoffset, yoffset, zoffset], [width, height, depth], format, type_, pixels as *const u8) }
     list glCopyTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 3, sub: true, target, level, internal_format: 0, offset: [xoffset, yoffset, zoffset], rect: [x, y, width, height], border: 0 })) }
@@ -575,34 +576,34 @@ super::entry_points! {
     exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, xoffset, yoffset, zoffset, width, height, depth, format, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
     exec["no image is compressed: GL_INVALID_OPERATION"] glGetCompressedTexImage(target: GLenum, level: GLint, img: *mut c_void) { |c| { let _ = (target, level, img); c.set_error(GL_INVALID_OPERATION) } }
     list glBlendFuncSeparate(sfactorRGB: GLenum, dfactorRGB: GLenum, sfactorAlpha: GLenum, dfactorAlpha: GLenum) { |_c| Command::BlendFunc([sfactorRGB, dfactorRGB, sfactorAlpha, dfactorAlpha]) }
-    todo glFogCoordf(coord: GLfloat);
-    todo glFogCoordfv(coord: *const GLfloat);
-    todo glFogCoordd(coord: GLdouble);
-    todo glFogCoorddv(coord: *const GLdouble);
-    todo glFogCoordPointer(type_: GLenum, stride: GLsizei, pointer: *const c_void);
-    todo glMultiDrawArrays(mode: GLenum, first: *const GLint, count: *const GLsizei, drawcount: GLsizei);
-    todo glMultiDrawElements(mode: GLenum, count: *const GLsizei, type_: GLenum, indices: *const *const c_void, drawcount: GLsizei);
+    list glFogCoordf(coord: GLfloat) { |_c| Command::FogCoord(coord) }
+    list glFogCoordfv(coord: *const GLfloat) { |_c| Command::FogCoord(arr::<GLfloat, 1>(coord)?[0]) }
+    list glFogCoordd(coord: GLdouble) { |_c| Command::FogCoord(coord as f32) }
+    list glFogCoorddv(coord: *const GLdouble) { |_c| Command::FogCoord(arr::<GLdouble, 1>(coord)?[0] as f32) }
+    client glFogCoordPointer(type_: GLenum, stride: GLsizei, pointer: *const c_void) { |c| c.array_pointer(Array::FogCoord, 1, type_, stride, pointer as usize) }
+    draw glMultiDrawArrays(mode: GLenum, first: *const GLint, count: *const GLsizei, drawcount: GLsizei) { |c| if drawcount < 0 { c.set_error(GL_INVALID_VALUE) } else if !first.is_null() && !count.is_null() { c.multi_draw_arrays(mode, &slice(first, drawcount as i64), &slice(count, drawcount as i64)) } }
+    draw glMultiDrawElements(mode: GLenum, count: *const GLsizei, type_: GLenum, indices: *const *const c_void, drawcount: GLsizei) { |c| if drawcount < 0 { c.set_error(GL_INVALID_VALUE) } else if !count.is_null() && !indices.is_null() { c.multi_draw_elements(mode, &slice(count, drawcount as i64), type_, &slice(indices, drawcount as i64).into_iter().map(|p| p as usize).collect::<Vec<_>>()) } }
     list glPointParameterf(pname: GLenum, param: GLfloat) { |c| Command::PointParameter(scalar_param(c, (pname != 0x8129) as usize, pname)?, [param, 0.0, 0.0]) }
     list glPointParameterfv(pname: GLenum, params: *const GLfloat) { |_c| Command::PointParameter(pname, point_params(params, pname)?) }
     list glPointParameteri(pname: GLenum, param: GLint) { |c| Command::PointParameter(scalar_param(c, (pname != 0x8129) as usize, pname)?, [param as f32, 0.0, 0.0]) }
     list glPointParameteriv(pname: GLenum, params: *const GLint) { |_c| Command::PointParameter(pname, point_params(params, pname)?) }
-    todo glSecondaryColor3b(red: GLbyte, green: GLbyte, blue: GLbyte);
-    todo glSecondaryColor3bv(v: *const GLbyte);
-    todo glSecondaryColor3d(red: GLdouble, green: GLdouble, blue: GLdouble);
-    todo glSecondaryColor3dv(v: *const GLdouble);
-    todo glSecondaryColor3f(red: GLfloat, green: GLfloat, blue: GLfloat);
-    todo glSecondaryColor3fv(v: *const GLfloat);
-    todo glSecondaryColor3i(red: GLint, green: GLint, blue: GLint);
-    todo glSecondaryColor3iv(v: *const GLint);
-    todo glSecondaryColor3s(red: GLshort, green: GLshort, blue: GLshort);
-    todo glSecondaryColor3sv(v: *const GLshort);
-    todo glSecondaryColor3ub(red: GLubyte, green: GLubyte, blue: GLubyte);
-    todo glSecondaryColor3ubv(v: *const GLubyte);
-    todo glSecondaryColor3ui(red: GLuint, green: GLuint, blue: GLuint);
-    todo glSecondaryColor3uiv(v: *const GLuint);
-    todo glSecondaryColor3us(red: GLushort, green: GLushort, blue: GLushort);
-    todo glSecondaryColor3usv(v: *const GLushort);
-    todo glSecondaryColorPointer(size: GLint, type_: GLenum, stride: GLsizei, pointer: *const c_void);
+    list["as glSecondaryColor3f"] glSecondaryColor3b(red: GLbyte, green: GLbyte, blue: GLbyte) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3bv(v: *const GLbyte) { |_c| Command::SecondaryColor(color(&arr::<GLbyte, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3d(red: GLdouble, green: GLdouble, blue: GLdouble) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3dv(v: *const GLdouble) { |_c| Command::SecondaryColor(color(&arr::<GLdouble, 3>(v)?)) }
+    list["stored as the current secondary colour; the colour sum is not applied yet"] glSecondaryColor3f(red: GLfloat, green: GLfloat, blue: GLfloat) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3fv(v: *const GLfloat) { |_c| Command::SecondaryColor(color(&arr::<GLfloat, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3i(red: GLint, green: GLint, blue: GLint) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3iv(v: *const GLint) { |_c| Command::SecondaryColor(color(&arr::<GLint, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3s(red: GLshort, green: GLshort, blue: GLshort) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3sv(v: *const GLshort) { |_c| Command::SecondaryColor(color(&arr::<GLshort, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3ub(red: GLubyte, green: GLubyte, blue: GLubyte) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3ubv(v: *const GLubyte) { |_c| Command::SecondaryColor(color(&arr::<GLubyte, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3ui(red: GLuint, green: GLuint, blue: GLuint) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3uiv(v: *const GLuint) { |_c| Command::SecondaryColor(color(&arr::<GLuint, 3>(v)?)) }
+    list["as glSecondaryColor3f"] glSecondaryColor3us(red: GLushort, green: GLushort, blue: GLushort) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list["as glSecondaryColor3f"] glSecondaryColor3usv(v: *const GLushort) { |_c| Command::SecondaryColor(color(&arr::<GLushort, 3>(v)?)) }
+    client["as glSecondaryColor3f"] glSecondaryColorPointer(size: GLint, type_: GLenum, stride: GLsizei, pointer: *const c_void) { |c| c.array_pointer(Array::SecondaryColor, size, type_, stride, pointer as usize) }
     list glWindowPos2d(x: GLdouble, y: GLdouble) { |_c| window_pos(&[x, y]) }
     list glWindowPos2dv(v: *const GLdouble) { |_c| window_pos(&arr::<GLdouble, 2>(v)?) }
     list glWindowPos2f(x: GLfloat, y: GLfloat) { |_c| window_pos(&[x, y]) }
@@ -619,25 +620,25 @@ super::entry_points! {
     list glWindowPos3iv(v: *const GLint) { |_c| window_pos(&arr::<GLint, 3>(v)?) }
     list glWindowPos3s(x: GLshort, y: GLshort, z: GLshort) { |_c| window_pos(&[x, y, z]) }
     list glWindowPos3sv(v: *const GLshort) { |_c| window_pos(&arr::<GLshort, 3>(v)?) }
-    todo glGenQueries(n: GLsizei, ids: *mut GLuint);
-    todo glDeleteQueries(n: GLsizei, ids: *const GLuint);
-    todo glIsQuery(id: GLuint) -> GLboolean;
-    todo glBeginQuery(target: GLenum, id: GLuint);
-    todo glEndQuery(target: GLenum);
-    todo glGetQueryiv(target: GLenum, pname: GLenum, params: *mut GLint);
-    todo glGetQueryObjectiv(id: GLuint, pname: GLenum, params: *mut GLint);
-    todo glGetQueryObjectuiv(id: GLuint, pname: GLenum, params: *mut GLuint);
-    todo glBindBuffer(target: GLenum, buffer: GLuint);
-    todo glDeleteBuffers(n: GLsizei, buffers: *const GLuint);
-    todo glGenBuffers(n: GLsizei, buffers: *mut GLuint);
-    todo glIsBuffer(buffer: GLuint) -> GLboolean;
-    todo glBufferData(target: GLenum, size: GLsizeiptr, data: *const c_void, usage: GLenum);
-    todo glBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *const c_void);
-    todo glGetBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *mut c_void);
-    todo glMapBuffer(target: GLenum, access: GLenum) -> *mut c_void;
-    todo glUnmapBuffer(target: GLenum) -> GLboolean;
-    todo glGetBufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint);
-    todo glGetBufferPointerv(target: GLenum, pname: GLenum, params: *mut *mut c_void);
+    exec glGenQueries(n: GLsizei, ids: *mut GLuint) { |c| if let Some(v) = c.gen_queries(n) { write_out(ids, &v) } }
+    exec glDeleteQueries(n: GLsizei, ids: *const GLuint) { |c| if n < 0 { c.set_error(GL_INVALID_VALUE) } else { c.delete_queries(&slice(ids, n as i64)) } }
+    exec glIsQuery(id: GLuint) -> GLboolean { |c| gl_bool(c.is_query(id)) }
+    list glBeginQuery(target: GLenum, id: GLuint) { |_c| Command::BeginQuery(target, id) }
+    list glEndQuery(target: GLenum) { |_c| Command::EndQuery(target) }
+    exec glGetQueryiv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_query(target, pname) { write_out(params, &[v as GLint]) } }
+    exec glGetQueryObjectiv(id: GLuint, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_query_object(id, pname) { write_out(params, &[v.min(i32::MAX as u64) as GLint]) } }
+    exec glGetQueryObjectuiv(id: GLuint, pname: GLenum, params: *mut GLuint) { |c| if let Some(v) = c.get_query_object(id, pname) { write_out(params, &[v.min(u32::MAX as u64) as GLuint]) } }
+    exec glBindBuffer(target: GLenum, buffer: GLuint) { |c| c.bind_buffer(target, buffer) }
+    exec glDeleteBuffers(n: GLsizei, buffers: *const GLuint) { |c| if n < 0 { c.set_error(GL_INVALID_VALUE) } else { c.delete_buffers(&slice(buffers, n as i64)) } }
+    exec glGenBuffers(n: GLsizei, buffers: *mut GLuint) { |c| if let Some(v) = c.gen_buffers(n) { write_out(buffers, &v) } }
+    exec glIsBuffer(buffer: GLuint) -> GLboolean { |c| gl_bool(c.buffers.is_buffer(buffer)) }
+    exec glBufferData(target: GLenum, size: GLsizeiptr, data: *const c_void, usage: GLenum) { |c| c.buffer_data(target, size, data as *const u8, usage) }
+    exec glBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *const c_void) { |c| c.buffer_sub_data(target, offset, size, data as *const u8) }
+    exec glGetBufferSubData(target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *mut c_void) { |c| c.get_buffer_sub_data(target, offset, size, data as *mut u8) }
+    exec glMapBuffer(target: GLenum, access: GLenum) -> *mut c_void { |c| c.map_buffer(target, access) as *mut c_void }
+    exec glUnmapBuffer(target: GLenum) -> GLboolean { |c| gl_bool(c.unmap_buffer(target)) }
+    exec glGetBufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_buffer_parameter(target, pname) { write_out(params, &[v as GLint]) } }
+    exec glGetBufferPointerv(target: GLenum, pname: GLenum, params: *mut *mut c_void) { |c| if let Some(p) = c.get_buffer_pointer(target, pname) { write_out(params, &[p as *mut c_void]) } }
 
     // ---- glu.h ----
     free gluErrorString(error: GLenum) -> *const GLubyte { glu::strings::error_string(error) }

@@ -35,6 +35,10 @@ pub struct Framebuffer {
     pub depth: Vec<u32>,
     pub stencil: Vec<u8>,
     pub accum: Vec<[i16; 4]>,
+    /// Fragments that have passed the depth test (or reached it with the
+    /// test off) since the context began: occlusion queries (gl::queries)
+    /// take differences of it. Wraps.
+    pub samples_passed: u64,
 }
 
 fn alloc<T: Copy>(n: usize, fill: T) -> Result<Vec<T>, AllocError> {
@@ -47,7 +51,7 @@ fn alloc<T: Copy>(n: usize, fill: T) -> Result<Vec<T>, AllocError> {
 impl Framebuffer {
     /// An empty (0x0) framebuffer with the given ancillary buffers.
     pub fn new(config: Config) -> Framebuffer {
-        Framebuffer { width: 0, height: 0, config, color: Vec::new(), depth: Vec::new(), stencil: Vec::new(), accum: Vec::new() }
+        Framebuffer { width: 0, height: 0, config, color: Vec::new(), depth: Vec::new(), stencil: Vec::new(), accum: Vec::new(), samples_passed: 0 }
     }
 
     /// Resizes to `width` x `height`. Contents become undefined (zero), as
@@ -65,7 +69,7 @@ impl Framebuffer {
         let depth = if self.config.depth_bits > 0 { alloc(n, 0u32)? } else { Vec::new() };
         let stencil = if self.config.stencil_bits > 0 { alloc(n, 0u8)? } else { Vec::new() };
         let accum = if self.config.accum_bits > 0 { alloc(n, [0i16; 4])? } else { Vec::new() };
-        *self = Framebuffer { width, height, config: self.config, color, depth, stencil, accum };
+        *self = Framebuffer { width, height, config: self.config, color, depth, stencil, accum, samples_passed: self.samples_passed };
         Ok(())
     }
 

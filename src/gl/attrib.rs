@@ -77,7 +77,7 @@ pub struct Saved {
 #[derive(Default)]
 pub struct AttribStacks {
     pub server: Vec<Saved>,
-    pub client: Vec<(u32, super::pixels::PixelStore)>,
+    pub client: Vec<(u32, super::pixels::PixelStore, super::arrays::ClientArrays)>,
 }
 
 impl Context {
@@ -196,15 +196,19 @@ impl Context {
         if self.attrib.client.len() >= MAX_ATTRIB_STACK_DEPTH {
             return self.set_error(GL_STACK_OVERFLOW);
         }
-        self.attrib.client.push((mask, self.pixel_store));
+        let arrays = self.client_arrays();
+        self.attrib.client.push((mask, self.pixel_store, arrays));
     }
 
     pub fn pop_client_attrib(&mut self) {
-        let Some((mask, store)) = self.attrib.client.pop() else {
+        let Some((mask, store, arrays)) = self.attrib.client.pop() else {
             return self.set_error(GL_STACK_UNDERFLOW);
         };
         if mask & GL_CLIENT_PIXEL_STORE_BIT != 0 {
             self.pixel_store = store;
+        }
+        if mask & super::arrays::GL_CLIENT_VERTEX_ARRAY_BIT != 0 {
+            self.restore_client_arrays(arrays);
         }
     }
 }

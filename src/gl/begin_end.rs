@@ -83,8 +83,9 @@ impl Context {
         let tex = self.vertex_texcoords(obj);
         let fog = match &self.derived.render.fog {
             None => 0.0,
-            // The fog coordinate (3.10): the eye-space distance, taken as
-            // |z_eye| as the spec allows.
+            // The fog coordinate (3.10): glFogCoord's value, or the
+            // eye-space distance, taken as |z_eye| as the spec allows.
+            Some(f) if self.fog.coord_src == super::fog::GL_FOG_COORD => f.vertex_value(self.current.fog_coord),
             Some(f) => f.vertex_value((self.derived.modelview * obj).z.abs()),
         };
         let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog };

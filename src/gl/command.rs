@@ -17,6 +17,11 @@ pub enum Command {
     Vertex([f32; 4]),
     Color([f32; 4]),
     Normal([f32; 3]),
+    /// glIndex: stored, no effect in RGBA mode.
+    Index(f32),
+    FogCoord(f32),
+    /// glSecondaryColor3: RGB and alpha 1.
+    SecondaryColor([f32; 4]),
     // Section 2.14: lighting. Parameters padded to 4 values.
     Light(u32, u32, [f32; 4]),
     LightModel(u32, [f32; 4]),
@@ -76,6 +81,9 @@ pub enum Command {
     /// glCallLists: names before the list base is added (added when run).
     CallLists(Vec<u32>),
     ListBase(u32),
+    // Section 4.1.6: occlusion queries (compiled into lists).
+    BeginQuery(u32, u32),
+    EndQuery(u32),
     ClipPlane(u32, [f64; 4]),
     /// glPointParameter(pname, up to 3 values).
     PointParameter(u32, [f32; 3]),
@@ -141,6 +149,9 @@ impl Command {
             Command::Vertex(_)
                 | Command::Color(_)
                 | Command::Normal(_)
+                | Command::Index(_)
+                | Command::FogCoord(_)
+                | Command::SecondaryColor(_)
                 | Command::Material(..)
                 | Command::EvalCoord(..)
                 | Command::EdgeFlag(_)
@@ -170,6 +181,9 @@ impl Context {
                 self.apply_color_material();
             }
             Normal(n) => self.current.normal = *n,
+            Index(i) => self.current.index = *i,
+            FogCoord(f) => self.current.fog_coord = *f,
+            SecondaryColor(c) => self.current.secondary_color = *c,
             Light(l, pname, v) => self.light(*l, *pname, *v),
             LightModel(pname, v) => self.light_model(*pname, *v),
             Material(face, pname, v) => self.material(*face, *pname, *v),
@@ -252,6 +266,8 @@ impl Context {
             CallList(n) => self.call_list(*n),
             CallLists(names) => self.call_lists(names),
             ListBase(b) => self.lists.base = *b,
+            BeginQuery(target, id) => self.begin_query(*target, *id),
+            EndQuery(target) => self.end_query(*target),
             ClipPlane(p, eq) => self.clip_plane(*p, *eq),
             PointParameter(pname, v) => self.point_parameter(*pname, *v),
             Fog(pname, v) => self.fog(*pname, *v),

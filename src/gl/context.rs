@@ -4,7 +4,7 @@
 use super::command::Command;
 use super::enums::*;
 use super::state::*;
-use super::{attrib, begin_end, clip_plane, enable, eval, fog, lighting, lists, matrix, pixels, select, texture, validate};
+use super::{arrays, attrib, begin_end, buffers, clip_plane, enable, eval, fog, lighting, lists, matrix, pixels, queries, select, texture, validate};
 use crate::framebuffer::{Config, Framebuffer, Present};
 
 pub struct Context {
@@ -39,6 +39,12 @@ pub struct Context {
     pub prim: Option<begin_end::Assembly>,
     pub lists: lists::Lists,
     pub pixel_store: pixels::PixelStore,
+    /// Vertex arrays (client state, GL_CLIENT_VERTEX_ARRAY_BIT).
+    pub arrays: arrays::ArrayState,
+    /// Buffer objects and their bindings.
+    pub buffers: buffers::Buffers,
+    /// Occlusion query objects.
+    pub queries: queries::Queries,
     /// Pixel transfer, maps and zoom (GL_PIXEL_MODE_BIT).
     pub pixel: super::pixel_transfer::PixelTransfer,
     /// The current raster position (section 2.13).
@@ -83,6 +89,9 @@ impl Context {
             prim: None,
             lists: Default::default(),
             pixel_store: Default::default(),
+            arrays: Default::default(),
+            buffers: Default::default(),
+            queries: Default::default(),
             pixel: Default::default(),
             raster: Default::default(),
             texture: Default::default(),

@@ -139,6 +139,9 @@ impl Context {
         if let Some(on) = self.texture_is_enabled(cap) {
             return Some(on);
         }
+        if let Some(on) = self.client_state_enabled(cap) {
+            return Some(on);
+        }
         Some(match cap {
             GL_DEPTH_TEST => self.depth.test,
             GL_SCISSOR_TEST => self.scissor.test,

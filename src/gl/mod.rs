@@ -3,9 +3,11 @@
 //! only store state and mark dirty bits; [`validate`] derives what the
 //! renderer needs at the next draw.
 
+pub mod arrays;
 pub mod accum;
 pub mod attrib;
 pub mod begin_end;
+pub mod buffers;
 pub mod clear;
 pub mod clip_plane;
 pub mod command;
@@ -23,6 +25,7 @@ pub mod matrix;
 pub mod pixel_data;
 pub mod pixel_transfer;
 pub mod pixels;
+pub mod queries;
 pub mod polygon;
 pub mod select;
 pub mod raster_pos;

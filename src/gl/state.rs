@@ -196,6 +196,12 @@ pub struct CurrentState {
     pub edge_flag: bool,
     /// Per texture unit (s, t, r, q).
     pub tex_coords: [[f32; 4]; crate::render::texture::MAX_UNITS],
+    /// Stored for the colour sum (section 3.9): RGB as given, alpha 1.
+    pub secondary_color: [f32; 4],
+    /// Stored for fog (section 3.10).
+    pub fog_coord: f32,
+    /// Colour index: accepted and stored; no effect in RGBA mode.
+    pub index: f32,
 }
 
 impl Default for CurrentState {
@@ -205,6 +211,9 @@ impl Default for CurrentState {
             normal: [0.0, 0.0, 1.0],
             edge_flag: true,
             tex_coords: [[0.0, 0.0, 0.0, 1.0]; crate::render::texture::MAX_UNITS],
+            secondary_color: [0.0, 0.0, 0.0, 1.0],
+            fog_coord: 0.0,
+            index: 1.0,
         }
     }
 }

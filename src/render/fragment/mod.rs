@@ -13,6 +13,11 @@
 //! only: no colour is interpolated. The colour stage is one of none /
 //! replace / blend / logic op ([`ColorOp`]), chosen at validation.
 //!
+//! Occlusion queries (section 4.1.6): every fragment that gets past the
+//! depth test (or reaches it with the test off) adds one to
+//! `Framebuffer::samples_passed`; a key with no active stage still runs
+//! the (empty) kernel for that count.
+//!
 //! Interplay (section 4.1.5): a fragment failing the stencil test takes the
 //! `fail` operation; passing it, `zfail` if the depth test fails and `zpass`
 //! if it passes or the depth test is disabled. Without a stencil buffer the
@@ -241,7 +246,8 @@ fn key(fs: &FragmentState) -> u8 {
 macro_rules! dispatch {
     ($k:expr, $f:ident ( $($arg:expr),* )) => {
         match $k {
-            0 => {}
+            // Nothing to test or write: only the occlusion count runs.
+            0 => $f::<false, false, false, false>($($arg),*),
             1 => $f::<true, false, false, false>($($arg),*),
             2 => $f::<false, true, false, false>($($arg),*),
             3 => $f::<true, true, false, false>($($arg),*),
@@ -331,7 +337,9 @@ fn fragment<const A: bool, const S: bool, const D: bool, const C: bool>(
             fb.depth[i] = z;
         }
     }
-    // Depth passed, or the depth test is off: the depth-pass operation.
+    // Depth passed, or the depth test is off: a sample passed (occlusion
+    // queries, gl::queries), and the depth-pass operation.
+    fb.samples_passed = fb.samples_passed.wrapping_add(1);
     if S {
         fb.stencil[i] = st.apply(st.zpass, fb.stencil[i]);
     }

@@ -1,0 +1,322 @@
+//! Buffer objects (GL 1.5 section 2.9): names, the ARRAY_BUFFER and
+//! ELEMENT_ARRAY_BUFFER bindings, data store creation and update, mapping,
+//! and the buffer queries (section 6.1.13).
+//!
+//! A buffer's data store is a `Vec<u8>` owned by the context. While a
+//! buffer is mapped its Vec is never reallocated (BufferData and deletion
+//! unmap first), so the pointer glMapBuffer returned stays valid until
+//! glUnmapBuffer. Vertex arrays and glDrawElements read buffers through
+//! [`Buffers::data`]; reads are bounds-checked against the store, so a bad
+//! offset draws defaults instead of reading outside it.
+//!
+//! Names: glGenBuffers reserves names; the object itself is created by the
+//! first glBindBuffer of a name (so glIsBuffer is false for a name that
+//! was generated but never bound), and any unused name may be bound.
+//! Deleting a bound buffer resets the bindings to it to zero, including
+//! the vertex arrays' (section 2.9.1); [`Context::delete_buffers`] does that.
+
+use super::context::Context;
+use super::enums::*;
+use std::collections::{HashMap, HashSet};
+
+pub const GL_BUFFER_SIZE: u32 = 0x8764;
+pub const GL_BUFFER_USAGE: u32 = 0x8765;
+pub const GL_ARRAY_BUFFER: u32 = 0x8892;
+pub const GL_ELEMENT_ARRAY_BUFFER: u32 = 0x8893;
+pub const GL_ARRAY_BUFFER_BINDING: u32 = 0x8894;
+pub const GL_ELEMENT_ARRAY_BUFFER_BINDING: u32 = 0x8895;
+pub const GL_READ_ONLY: u32 = 0x88B8;
+pub const GL_WRITE_ONLY: u32 = 0x88B9;
+pub const GL_READ_WRITE: u32 = 0x88BA;
+pub const GL_BUFFER_ACCESS: u32 = 0x88BB;
+pub const GL_BUFFER_MAPPED: u32 = 0x88BC;
+pub const GL_BUFFER_MAP_POINTER: u32 = 0x88BD;
+pub const GL_STREAM_DRAW: u32 = 0x88E0;
+pub const GL_STATIC_DRAW: u32 = 0x88E4;
+pub const GL_DYNAMIC_COPY: u32 = 0x88EA;
+
+/// A set of object names with a generator (glGenBuffers, glGenQueries).
+#[derive(Clone, Debug, Default)]
+pub struct Names {
+    used: HashSet<u32>,
+    next: u32,
+}
+
+impl Names {
+    /// `n` names not in use, marked used.
+    pub fn generate(&mut self, n: usize) -> Vec<u32> {
+        let mut out = Vec::with_capacity(n);
+        while out.len() < n {
+            self.next = self.next.wrapping_add(1).max(1);
+            if self.used.insert(self.next) {
+                out.push(self.next);
+            }
+        }
+        out
+    }
+
+    pub fn insert(&mut self, name: u32) {
+        self.used.insert(name);
+    }
+
+    pub fn remove(&mut self, name: u32) {
+        self.used.remove(&name);
+    }
+}
+
+/// One buffer object (table 2.6 gives its state).
+#[derive(Debug)]
+pub struct Buffer {
+    pub data: Vec<u8>,
+    pub usage: u32,
+    /// BUFFER_ACCESS: the access of the last (or current) mapping; READ_WRITE initially.
+    pub access: u32,
+    pub mapped: bool,
+}
+
+impl Buffer {
+    fn new() -> Buffer {
+        Buffer { data: Vec::new(), usage: GL_STATIC_DRAW, access: GL_READ_WRITE, mapped: false }
+    }
+}
+
+
+#[derive(Debug, Default)]
+pub struct Buffers {
+    names: Names,
+    objects: HashMap<u32, Buffer>,
+    /// ARRAY_BUFFER_BINDING: captured by the array pointer calls.
+    pub array: u32,
+    /// ELEMENT_ARRAY_BUFFER_BINDING: read by glDrawElements and friends.
+    pub element_array: u32,
+}
+
+impl Buffers {
+    pub fn get(&self, name: u32) -> Option<&Buffer> {
+        self.objects.get(&name)
+    }
+
+    /// The data store of buffer `name` (empty for 0 or an unknown name).
+    #[inline]
+    pub fn data(&self, name: u32) -> &[u8] {
+        self.objects.get(&name).map_or(&[], |b| &b.data)
+    }
+
+    pub fn is_mapped(&self, name: u32) -> bool {
+        name != 0 && self.objects.get(&name).is_some_and(|b| b.mapped)
+    }
+
+    pub fn is_buffer(&self, name: u32) -> bool {
+        name != 0 && self.objects.contains_key(&name)
+    }
+}
+
+fn valid_usage(usage: u32) -> bool {
+    (GL_STREAM_DRAW..=GL_DYNAMIC_COPY).contains(&usage) && usage & 3 != 3
+}
+
+impl Context {
+    /// The binding point of `target`, or INVALID_ENUM.
+    fn buffer_binding(&mut self, target: u32) -> Option<u32> {
+        match target {
+            GL_ARRAY_BUFFER => Some(self.buffers.array),
+            GL_ELEMENT_ARRAY_BUFFER => Some(self.buffers.element_array),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                None
+            }
+        }
+    }
+
+    /// The buffer bound to `target`: INVALID_ENUM for a bad target,
+    /// INVALID_OPERATION when zero is bound.
+    fn bound_buffer(&mut self, target: u32) -> Option<&mut Buffer> {
+        let name = self.buffer_binding(target)?;
+        if name == 0 {
+            self.set_error(GL_INVALID_OPERATION);
+            return None;
+        }
+        self.buffers.objects.get_mut(&name)
+    }
+
+    pub fn gen_buffers(&mut self, n: i32) -> Option<Vec<u32>> {
+        if n < 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        Some(self.buffers.names.generate(n as usize))
+    }
+
+    pub fn bind_buffer(&mut self, target: u32, name: u32) {
+        let slot = match target {
+            GL_ARRAY_BUFFER => &mut self.buffers.array,
+            GL_ELEMENT_ARRAY_BUFFER => &mut self.buffers.element_array,
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+        *slot = name;
+        if name != 0 {
+            self.buffers.names.insert(name);
+            self.buffers.objects.entry(name).or_insert_with(Buffer::new);
+        }
+    }
+
+    pub fn delete_buffers(&mut self, names: &[u32]) {
+        for &name in names {
+            if name == 0 {
+                continue;
+            }
+            // Deleting a mapped buffer unmaps it (section 2.9.3).
+            self.buffers.objects.remove(&name);
+            self.buffers.names.remove(name);
+            if self.buffers.array == name {
+                self.buffers.array = 0;
+            }
+            if self.buffers.element_array == name {
+                self.buffers.element_array = 0;
+            }
+            self.arrays.unbind_buffer(name);
+        }
+    }
+
+    /// glBufferData.
+    ///
+    /// # Safety
+    /// `data` is NULL or points to `size` readable bytes.
+    pub unsafe fn buffer_data(&mut self, target: u32, size: isize, data: *const u8, usage: u32) {
+        if self.buffer_binding(target).is_none() {
+            return;
+        }
+        if size < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        if !valid_usage(usage) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let Some(b) = self.bound_buffer(target) else { return };
+        let mut store = Vec::new();
+        if store.try_reserve_exact(size as usize).is_err() {
+            return self.set_error(GL_OUT_OF_MEMORY);
+        }
+        if data.is_null() {
+            store.resize(size as usize, 0);
+        } else {
+            // SAFETY: the caller passes `size` readable bytes (glBufferData).
+            store.extend_from_slice(std::slice::from_raw_parts(data, size as usize));
+        }
+        b.data = store;
+        b.usage = usage;
+        b.mapped = false;
+        b.access = GL_READ_WRITE;
+    }
+
+    /// The checked range [offset, offset + size) of the buffer bound to
+    /// `target`, for glBufferSubData and glGetBufferSubData.
+    fn buffer_range(&mut self, target: u32, offset: isize, size: isize) -> Option<(&mut Buffer, std::ops::Range<usize>)> {
+        self.buffer_binding(target)?;
+        if offset < 0 || size < 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        let (o, s) = (offset as usize, size as usize);
+        let len = match self.buffers.objects.get(&match target {
+            GL_ARRAY_BUFFER => self.buffers.array,
+            _ => self.buffers.element_array,
+        }) {
+            Some(b) => {
+                if b.mapped {
+                    self.set_error(GL_INVALID_OPERATION);
+                    return None;
+                }
+                b.data.len()
+            }
+            None => {
+                self.set_error(GL_INVALID_OPERATION);
+                return None;
+            }
+        };
+        if o.checked_add(s).is_none_or(|end| end > len) {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        let b = self.bound_buffer(target)?;
+        Some((b, o..o + s))
+    }
+
+    /// glBufferSubData.
+    ///
+    /// # Safety
+    /// `data` is NULL or points to `size` readable bytes.
+    pub unsafe fn buffer_sub_data(&mut self, target: u32, offset: isize, size: isize, data: *const u8) {
+        let Some((b, r)) = self.buffer_range(target, offset, size) else { return };
+        if !data.is_null() {
+            // SAFETY: the caller passes `size` readable bytes.
+            b.data[r.clone()].copy_from_slice(std::slice::from_raw_parts(data, r.len()));
+        }
+    }
+
+    /// glGetBufferSubData.
+    ///
+    /// # Safety
+    /// `data` is NULL or points to room for `size` bytes.
+    pub unsafe fn get_buffer_sub_data(&mut self, target: u32, offset: isize, size: isize, data: *mut u8) {
+        let Some((b, r)) = self.buffer_range(target, offset, size) else { return };
+        if !data.is_null() {
+            // SAFETY: the caller provides room for `size` bytes.
+            std::slice::from_raw_parts_mut(data, r.len()).copy_from_slice(&b.data[r]);
+        }
+    }
+
+    pub fn map_buffer(&mut self, target: u32, access: u32) -> *mut u8 {
+        if self.buffer_binding(target).is_none() {
+            return std::ptr::null_mut();
+        }
+        if !matches!(access, GL_READ_ONLY | GL_WRITE_ONLY | GL_READ_WRITE) {
+            self.set_error(GL_INVALID_ENUM);
+            return std::ptr::null_mut();
+        }
+        let Some(b) = self.bound_buffer(target) else { return std::ptr::null_mut() };
+        if b.mapped {
+            self.set_error(GL_INVALID_OPERATION);
+            return std::ptr::null_mut();
+        }
+        b.mapped = true;
+        b.access = access;
+        b.data.as_mut_ptr()
+    }
+
+    pub fn unmap_buffer(&mut self, target: u32) -> bool {
+        let Some(b) = self.bound_buffer(target) else { return false };
+        if !b.mapped {
+            self.set_error(GL_INVALID_OPERATION);
+            return false;
+        }
+        b.mapped = false;
+        // The store never becomes corrupt in memory.
+        true
+    }
+
+    pub fn get_buffer_parameter(&mut self, target: u32, pname: u32) -> Option<i64> {
+        self.buffer_binding(target)?;
+        if !matches!(pname, GL_BUFFER_SIZE | GL_BUFFER_USAGE | GL_BUFFER_ACCESS | GL_BUFFER_MAPPED) {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        }
+        let b = self.bound_buffer(target)?;
+        Some(match pname {
+            GL_BUFFER_SIZE => b.data.len() as i64,
+            GL_BUFFER_USAGE => b.usage as i64,
+            GL_BUFFER_ACCESS => b.access as i64,
+            _ => b.mapped as i64,
+        })
+    }
+
+    pub fn get_buffer_pointer(&mut self, target: u32, pname: u32) -> Option<*mut u8> {
+        self.buffer_binding(target)?;
+        if pname != GL_BUFFER_MAP_POINTER {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        }
+        let b = self.bound_buffer(target)?;
+        Some(if b.mapped { b.data.as_mut_ptr() } else { std::ptr::null_mut() })
+    }
+}
