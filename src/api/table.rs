@@ -567,7 +567,7 @@ super::entry_points! {
     list glLoadTransposeMatrixd(m: *const GLdouble) { |_c| Command::LoadMatrix(matrix(arr::<GLdouble, 16>(m)?).transpose()) }
     list glMultTransposeMatrixf(m: *const GLfloat) { |_c| Command::MultMatrix(matrix(arr::<GLfloat, 16>(m)?.map(f64::from)).transpose()) }
     list glMultTransposeMatrixd(m: *const GLdouble) { |_c| Command::MultMatrix(matrix(arr::<GLdouble, 16>(m)?).transpose()) }
-    todo glSampleCoverage(value: GLclampf, invert: GLboolean);
+    list glSampleCoverage(value: GLclampf, invert: GLboolean) { |_c| Command::SampleCoverage(value, truth(invert)) }
     exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexImage1D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, internalformat, width, border, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
     exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexImage2D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, internalformat, width, height, border, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
     exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexImage3D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, internalformat, width, height, depth, border, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
@@ -587,23 +587,23 @@ super::entry_points! {
     list glPointParameterfv(pname: GLenum, params: *const GLfloat) { |_c| Command::PointParameter(pname, point_params(params, pname)?) }
     list glPointParameteri(pname: GLenum, param: GLint) { |c| Command::PointParameter(scalar_param(c, (pname != 0x8129) as usize, pname)?, [param as f32, 0.0, 0.0]) }
     list glPointParameteriv(pname: GLenum, params: *const GLint) { |_c| Command::PointParameter(pname, point_params(params, pname)?) }
-    list["as glSecondaryColor3f"] glSecondaryColor3b(red: GLbyte, green: GLbyte, blue: GLbyte) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list["as glSecondaryColor3f"] glSecondaryColor3bv(v: *const GLbyte) { |_c| Command::SecondaryColor(color(&arr::<GLbyte, 3>(v)?)) }
-    list["as glSecondaryColor3f"] glSecondaryColor3d(red: GLdouble, green: GLdouble, blue: GLdouble) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list["as glSecondaryColor3f"] glSecondaryColor3dv(v: *const GLdouble) { |_c| Command::SecondaryColor(color(&arr::<GLdouble, 3>(v)?)) }
-    list["stored as the current secondary colour; the colour sum is not applied yet"] glSecondaryColor3f(red: GLfloat, green: GLfloat, blue: GLfloat) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list["as glSecondaryColor3f"] glSecondaryColor3fv(v: *const GLfloat) { |_c| Command::SecondaryColor(color(&arr::<GLfloat, 3>(v)?)) }
-    list["as glSecondaryColor3f"] glSecondaryColor3i(red: GLint, green: GLint, blue: GLint) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list["as glSecondaryColor3f"] glSecondaryColor3iv(v: *const GLint) { |_c| Command::SecondaryColor(color(&arr::<GLint, 3>(v)?)) }
-    list["as glSecondaryColor3f"] glSecondaryColor3s(red: GLshort, green: GLshort, blue: GLshort) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list["as glSecondaryColor3f"] glSecondaryColor3sv(v: *const GLshort) { |_c| Command::SecondaryColor(color(&arr::<GLshort, 3>(v)?)) }
-    list["as glSecondaryColor3f"] glSecondaryColor3ub(red: GLubyte, green: GLubyte, blue: GLubyte) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list["as glSecondaryColor3f"] glSecondaryColor3ubv(v: *const GLubyte) { |_c| Command::SecondaryColor(color(&arr::<GLubyte, 3>(v)?)) }
-    list["as glSecondaryColor3f"] glSecondaryColor3ui(red: GLuint, green: GLuint, blue: GLuint) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list["as glSecondaryColor3f"] glSecondaryColor3uiv(v: *const GLuint) { |_c| Command::SecondaryColor(color(&arr::<GLuint, 3>(v)?)) }
-    list["as glSecondaryColor3f"] glSecondaryColor3us(red: GLushort, green: GLushort, blue: GLushort) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
-    list["as glSecondaryColor3f"] glSecondaryColor3usv(v: *const GLushort) { |_c| Command::SecondaryColor(color(&arr::<GLushort, 3>(v)?)) }
-    client["as glSecondaryColor3f"] glSecondaryColorPointer(size: GLint, type_: GLenum, stride: GLsizei, pointer: *const c_void) { |c| c.array_pointer(Array::SecondaryColor, size, type_, stride, pointer as usize) }
+    list glSecondaryColor3b(red: GLbyte, green: GLbyte, blue: GLbyte) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list glSecondaryColor3bv(v: *const GLbyte) { |_c| Command::SecondaryColor(color(&arr::<GLbyte, 3>(v)?)) }
+    list glSecondaryColor3d(red: GLdouble, green: GLdouble, blue: GLdouble) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list glSecondaryColor3dv(v: *const GLdouble) { |_c| Command::SecondaryColor(color(&arr::<GLdouble, 3>(v)?)) }
+    list glSecondaryColor3f(red: GLfloat, green: GLfloat, blue: GLfloat) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list glSecondaryColor3fv(v: *const GLfloat) { |_c| Command::SecondaryColor(color(&arr::<GLfloat, 3>(v)?)) }
+    list glSecondaryColor3i(red: GLint, green: GLint, blue: GLint) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list glSecondaryColor3iv(v: *const GLint) { |_c| Command::SecondaryColor(color(&arr::<GLint, 3>(v)?)) }
+    list glSecondaryColor3s(red: GLshort, green: GLshort, blue: GLshort) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list glSecondaryColor3sv(v: *const GLshort) { |_c| Command::SecondaryColor(color(&arr::<GLshort, 3>(v)?)) }
+    list glSecondaryColor3ub(red: GLubyte, green: GLubyte, blue: GLubyte) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list glSecondaryColor3ubv(v: *const GLubyte) { |_c| Command::SecondaryColor(color(&arr::<GLubyte, 3>(v)?)) }
+    list glSecondaryColor3ui(red: GLuint, green: GLuint, blue: GLuint) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list glSecondaryColor3uiv(v: *const GLuint) { |_c| Command::SecondaryColor(color(&arr::<GLuint, 3>(v)?)) }
+    list glSecondaryColor3us(red: GLushort, green: GLushort, blue: GLushort) { |_c| Command::SecondaryColor(color(&[red, green, blue])) }
+    list glSecondaryColor3usv(v: *const GLushort) { |_c| Command::SecondaryColor(color(&arr::<GLushort, 3>(v)?)) }
+    client glSecondaryColorPointer(size: GLint, type_: GLenum, stride: GLsizei, pointer: *const c_void) { |c| c.array_pointer(Array::SecondaryColor, size, type_, stride, pointer as usize) }
     list glWindowPos2d(x: GLdouble, y: GLdouble) { |_c| window_pos(&[x, y]) }
     list glWindowPos2dv(v: *const GLdouble) { |_c| window_pos(&arr::<GLdouble, 2>(v)?) }
     list glWindowPos2f(x: GLfloat, y: GLfloat) { |_c| window_pos(&[x, y]) }

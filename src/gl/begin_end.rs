@@ -65,21 +65,29 @@ impl Context {
     pub fn vertex(&mut self, p: [f32; 4]) {
         let Some(mut asm) = self.prim.take() else { return };
         let obj = Vec4::from_array(p);
-        let (color, back_color) = match &self.derived.lighting {
+        // Primary and secondary colours, front and back (2.14, 3.9).
+        let sum_enabled = self.derived.render.color_sum;
+        let (color, back_color, secondary, back_secondary) = match &self.derived.lighting {
             None => {
                 let c = Vec4::from_array(self.current.color);
-                (c, c)
+                let s = if sum_enabled { Vec4::from_array(self.current.secondary_color).truncate().extend(0.0) } else { Vec4::ZERO };
+                (c, c, s, s)
             }
             Some(ls) => {
                 // Lighting (2.14.1) in eye coordinates.
                 let eye = ls.modelview * obj;
                 let n = ls.eye_normal(glam::Vec3::from_array(self.current.normal));
                 let m = &self.lighting.materials;
-                let front = ls.shade(&m[0], eye, n);
-                let back = if ls.two_side { ls.shade(&m[1], eye, -n) } else { front };
-                (front, back)
+                let front = ls.shade_split(&m[0], eye, n);
+                let back = if ls.two_side { ls.shade_split(&m[1], eye, -n) } else { front };
+                (front.0, back.0, front.1, back.1)
             }
         };
+        // Without texturing the colour sum can be made here exactly: both
+        // colours interpolate linearly and the sum is clamped per fragment.
+        let textured = self.derived.render.texture.is_some();
+        let (color, back_color, secondary) =
+            if textured { (color, back_color, secondary) } else { (color + secondary, back_color + back_secondary, Vec4::ZERO) };
         let tex = self.vertex_texcoords(obj);
         let fog = match &self.derived.render.fog {
             None => 0.0,
@@ -88,7 +96,7 @@ impl Context {
             Some(f) if self.fog.coord_src == super::fog::GL_FOG_COORD => f.vertex_value(self.current.fog_coord),
             Some(f) => f.vertex_value((self.derived.modelview * obj).z.abs()),
         };
-        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog };
+        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary };
         if asm.mode == GL_POINTS {
             asm.point_size = self.derived_point_size(obj);
         }

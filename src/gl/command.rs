@@ -85,6 +85,9 @@ pub enum Command {
     BeginQuery(u32, u32),
     EndQuery(u32),
     ClipPlane(u32, [f64; 4]),
+    /// glSampleCoverage: stored; softgl's framebuffers have no multisample
+    /// buffer, where the spec makes coverage have no effect (3.2.1).
+    SampleCoverage(f32, bool),
     /// glPointParameter(pname, up to 3 values).
     PointParameter(u32, [f32; 3]),
     /// glFog(pname, values).
@@ -269,6 +272,7 @@ impl Context {
             BeginQuery(target, id) => self.begin_query(*target, *id),
             EndQuery(target) => self.end_query(*target),
             ClipPlane(p, eq) => self.clip_plane(*p, *eq),
+            SampleCoverage(v, inv) => self.color_buffer.sample_coverage = (v.clamp(0.0, 1.0), *inv),
             PointParameter(pname, v) => self.point_parameter(*pname, *v),
             Fog(pname, v) => self.fog(*pname, *v),
             PushAttrib(mask) => self.push_attrib(*mask),

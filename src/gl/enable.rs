@@ -31,7 +31,6 @@ fn is_stored_cap(cap: u32) -> bool {
             | GL_TEXTURE_2D
             | GL_TEXTURE_3D
             | GL_TEXTURE_CUBE_MAP
-            | GL_COLOR_SUM
             | GL_MULTISAMPLE
             | GL_SAMPLE_ALPHA_TO_COVERAGE
             | GL_SAMPLE_ALPHA_TO_ONE
@@ -69,6 +68,10 @@ impl Context {
             GL_AUTO_NORMAL => self.eval.auto_normal = on,
             GL_FOG => {
                 self.fog.enabled = on;
+                self.dirty |= DIRTY_FOG;
+            }
+            GL_COLOR_SUM => {
+                self.fog.color_sum = on;
                 self.dirty |= DIRTY_FOG;
             }
             _ if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap) => {
@@ -160,6 +163,7 @@ impl Context {
             GL_LIGHTING => self.lighting.enabled,
             GL_AUTO_NORMAL => self.eval.auto_normal,
             GL_FOG => self.fog.enabled,
+            GL_COLOR_SUM => self.fog.color_sum,
             _ if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + MAX_CLIP_PLANES as u32).contains(&cap) => {
                 self.user_clip.enabled[(cap - GL_CLIP_PLANE0) as usize]
             }

@@ -29,11 +29,13 @@ pub struct FogState {
     pub color: [f32; 4],
     pub index: f32,
     pub coord_src: u32,
+    /// GL_COLOR_SUM (GL 1.4; in the fog attribute group).
+    pub color_sum: bool,
 }
 
 impl Default for FogState {
     fn default() -> Self {
-        FogState { enabled: false, mode: GL_EXP, density: 1.0, start: 0.0, end: 1.0, color: [0.0; 4], index: 0.0, coord_src: GL_FRAGMENT_DEPTH }
+        FogState { enabled: false, mode: GL_EXP, density: 1.0, start: 0.0, end: 1.0, color: [0.0; 4], index: 0.0, coord_src: GL_FRAGMENT_DEPTH, color_sum: false }
     }
 }
 

@@ -6,6 +6,8 @@ use crate::render::fragment::{BlendEquation, BlendFactor, CompareFunc, LogicOp, 
 /// GL_COLOR_BUFFER_BIT state (the parts implemented so far).
 #[derive(Clone, Debug)]
 pub struct ColorBufferState {
+    /// glSampleCoverage (value, invert).
+    pub sample_coverage: (f32, bool),
     pub clear: [f32; 4],
     pub write_mask: [bool; 4],
     pub dither: bool,
@@ -30,6 +32,7 @@ pub struct ColorBufferState {
 impl Default for ColorBufferState {
     fn default() -> Self {
         ColorBufferState {
+            sample_coverage: (1.0, false),
             clear: [0.0; 4],
             write_mask: [true; 4],
             dither: true,

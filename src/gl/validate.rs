@@ -47,6 +47,7 @@ impl Default for Derived {
                 flat: false,
                 two_side: false,
                 fog: None,
+                color_sum: false,
                 polygon_mode: [GL_FILL; 2],
                 offset_fill: None,
                 polygon_stipple: None,
@@ -105,6 +106,9 @@ impl Context {
             self.validate_texture(d & DIRTY_TEXTURE != 0);
         }
         let fragment = (d & DIRTY_FRAGMENT != 0).then(|| self.fragment_state());
+        if d & (DIRTY_FOG | DIRTY_LIGHTING) != 0 {
+            self.derived.render.color_sum = self.fog.color_sum || (self.lighting.enabled && self.lighting.separate_specular);
+        }
         if d & DIRTY_FOG != 0 {
             self.derived.render.fog = self.fog_params();
             // The vertex stage needs eye coordinates for the fog distance.

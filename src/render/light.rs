@@ -90,6 +90,15 @@ impl LightingSetup {
     /// The lit colour of a vertex at eye position `eye` with eye normal `n`
     /// (already negated for back faces), for material `m`.
     pub fn shade(&self, m: &Material, eye: Vec4, n: Vec3) -> Vec4 {
+        let (p, s) = self.shade_split(m, eye, n);
+        (p + s).clamp(Vec4::ZERO, Vec4::ONE)
+    }
+
+    /// The lit primary and secondary colours (2.14.1): with
+    /// GL_SEPARATE_SPECULAR_COLOR the specular sum is the secondary colour
+    /// (alpha 0), otherwise it is in the primary and the secondary is 0.
+    /// Both are clamped; the colour sum (3.9) adds them later.
+    pub fn shade_split(&self, m: &Material, eye: Vec4, n: Vec3) -> (Vec4, Vec4) {
         let v = if eye.w != 0.0 { eye.truncate() / eye.w } else { eye.truncate() };
         let mut primary = m.emission + m.ambient * self.model_ambient;
         let mut specular = Vec4::ZERO;
@@ -132,13 +141,11 @@ impl LightingSetup {
             primary += c * k;
         }
         let clamp = |c: Vec4| c.clamp(Vec4::ZERO, Vec4::ONE);
-        let mut out = if self.separate_specular {
-            // Colour sum (3.9) of the separately clamped colours.
-            clamp(clamp(primary) + clamp(specular))
+        let alpha = m.diffuse.w.clamp(0.0, 1.0);
+        if self.separate_specular {
+            (clamp(primary).truncate().extend(alpha), clamp(specular).truncate().extend(0.0))
         } else {
-            clamp(primary + specular)
-        };
-        out.w = m.diffuse.w.clamp(0.0, 1.0);
-        out
+            (clamp(primary + specular).truncate().extend(alpha), Vec4::ZERO)
+        }
     }
 }

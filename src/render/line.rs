@@ -238,7 +238,12 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
                 None => ((wa.color.as_dvec4() * ka + wb.color.as_dvec4() * kb) / (ka + kb)).as_vec4().clamp(Vec4::ZERO, Vec4::ONE),
             };
             let mut c = match &rs.texture {
-                Some(stage) => stage.shade(&super::texture::line_coords(stage, &wa.tex, wa.q, &wb.tex, wb.q, t, step), primary),
+                Some(stage) => {
+                    let c = stage.shade(&super::texture::line_coords(stage, &wa.tex, wa.q, &wb.tex, wb.q, t, step), primary);
+                    // The colour sum (3.9) after texturing.
+                    let sec = ((wa.secondary.as_dvec4() * ka + wb.secondary.as_dvec4() * kb) / (ka + kb)).as_vec4();
+                    (c.truncate() + sec.truncate()).extend(c.w).clamp(Vec4::ZERO, Vec4::ONE)
+                }
                 None => primary,
             };
             if let Some(f) = &rs.fog {

@@ -51,6 +51,9 @@ pub struct RenderState {
     /// Line and point state, for polygons drawn as lines or points.
     pub line: line::LineParams,
     pub point_size: f32,
+    /// The colour sum (3.9) is on: GL_COLOR_SUM, or lighting with
+    /// GL_SEPARATE_SPECULAR_COLOR.
+    pub color_sum: bool,
     /// Fog, when GL_FOG is on.
     pub fog: Option<fog::Fog>,
     /// Two-sided lighting: back-facing polygons take their back colour.

@@ -48,7 +48,11 @@ pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVer
     let primary = v.color.clamp(glam::Vec4::ZERO, glam::Vec4::ONE);
     let mut c = match &rs.texture {
         // Texturing (3.8): every fragment takes the vertex's coordinates.
-        Some(stage) => stage.shade(&super::texture::point_coords(stage, &v.tex), primary),
+        Some(stage) => {
+            let c = stage.shade(&super::texture::point_coords(stage, &v.tex), primary);
+            // The colour sum (3.9) after texturing.
+            (c.truncate() + v.secondary.truncate()).extend(c.w).clamp(glam::Vec4::ZERO, glam::Vec4::ONE)
+        }
         None => primary,
     };
     if let Some(f) = &rs.fog {

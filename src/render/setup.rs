@@ -30,6 +30,7 @@ pub struct WindowVertex {
     pub back_color: Vec4,
     pub tex: [Vec4; super::texture::MAX_UNITS],
     pub fog: f32,
+    pub secondary: Vec4,
 }
 
 #[inline]
@@ -46,6 +47,7 @@ pub fn to_window(rs: &RenderState, v: &ClipVertex) -> WindowVertex {
         back_color: v.back_color,
         tex: v.tex,
         fog: v.fog,
+        secondary: v.secondary,
     }
 }
 
@@ -78,6 +80,9 @@ pub struct TriangleSetup {
     /// Fog: the plane of the fog value (times 1/w when perspective) and
     /// the fog parameters.
     pub fog: Option<(Plane, super::fog::Fog)>,
+    /// The colour sum after texturing: planes of the secondary colour's
+    /// RGB (times 1/w when perspective).
+    pub secondary: Option<[Plane; 3]>,
 }
 
 /// Texture coordinate planes of a triangle and the stage that samples.
@@ -156,9 +161,12 @@ fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], f
         Box::new(TexPlanes { stage: stage.clone(), planes })
     });
     let fog = rs.fog.map(|f| (plane([0, 1, 2].map(|i| v[i].fog as f64 * if perspective { q[i] } else { 1.0 })), f));
+    let secondary = (rs.color_sum && tex.is_some())
+        .then(|| [0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| v[i].secondary[ch] as f64 * if perspective { q[i] } else { 1.0 }))));
     TriangleSetup {
         tex,
         fog,
+        secondary,
         x0: x[0],
         y0: y[0],
         z,

@@ -20,6 +20,10 @@ pub struct ClipVertex {
     pub tex: [Vec4; super::texture::MAX_UNITS],
     /// Fog: the fog coordinate, or f itself when fog is per vertex.
     pub fog: f32,
+    /// The secondary colour the colour sum (3.9) adds after texturing.
+    /// Without texturing the vertex stage adds it into `color` already
+    /// (the same result: both interpolate linearly) and this is 0.
+    pub secondary: Vec4,
 }
 
 impl ClipVertex {
@@ -34,6 +38,7 @@ impl ClipVertex {
             edge: a.edge,
             tex: std::array::from_fn(|u| a.tex[u] + (b.tex[u] - a.tex[u]) * t),
             fog: a.fog + (b.fog - a.fog) * t,
+            secondary: a.secondary + (b.secondary - a.secondary) * t,
         }
     }
 }

@@ -232,7 +232,16 @@ fn textured_color(t: &TriangleSetup, tp: &super::setup::TexPlanes, cx: f64, cy: 
             c.dy[k] = ((p[k].dy - s * p[3].dy) * iq) as f32;
         }
     }
-    tp.stage.shade(&coords, primary)
+    let c = tp.stage.shade(&coords, primary);
+    match &t.secondary {
+        // The colour sum (3.9): the secondary colour after texturing.
+        Some(s) => {
+            let w = if t.perspective { 1.0 / eval(&t.q, cx, cy) } else { 1.0 };
+            let sec = glam::Vec3::from_array(std::array::from_fn(|ch| (eval(&s[ch], cx, cy) * w) as f32));
+            (c.truncate() + sec).extend(c.w).clamp(Vec4::ZERO, Vec4::ONE)
+        }
+        None => c,
+    }
 }
 
 /// The stage-group key of a state: which of [`fragment`]'s const
