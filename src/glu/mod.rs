@@ -5,5 +5,7 @@
 //! ([`strings`]). Tessellator, quadrics, mipmaps and NURBS are issue 6.
 
 pub mod matrix;
+pub mod mipmap;
 pub mod quadric;
+pub mod scale;
 pub mod strings;
