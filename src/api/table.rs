@@ -614,23 +614,23 @@ super::entry_points! {
     todo gluBeginPolygon(tess: *mut GLUtesselator);
     todo gluNextContour(tess: *mut GLUtesselator, type_: GLenum);
     todo gluEndPolygon(tess: *mut GLUtesselator);
-    todo gluNewNurbsRenderer() -> *mut GLUnurbs;
-    todo gluDeleteNurbsRenderer(nurb: *mut GLUnurbs);
-    todo gluNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, value: GLfloat);
-    todo gluGetNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, data: *mut GLfloat);
-    todo gluLoadSamplingMatrices(nurb: *mut GLUnurbs, model: *const GLfloat, perspective: *const GLfloat, view: *const GLint);
-    todo gluNurbsCallback(nurb: *mut GLUnurbs, which: GLenum, CallBackFunc: GLproc);
-    todo gluNurbsCallbackData(nurb: *mut GLUnurbs, userData: *mut c_void);
-    todo gluNurbsCallbackDataEXT(nurb: *mut GLUnurbs, userData: *mut c_void);
-    todo gluBeginCurve(nurb: *mut GLUnurbs);
-    todo gluNurbsCurve(nurb: *mut GLUnurbs, knotCount: GLint, knots: *mut GLfloat, stride: GLint, control: *mut GLfloat, order: GLint, type_: GLenum);
-    todo gluEndCurve(nurb: *mut GLUnurbs);
-    todo gluBeginSurface(nurb: *mut GLUnurbs);
-    todo gluNurbsSurface(nurb: *mut GLUnurbs, sKnotCount: GLint, sKnots: *mut GLfloat, tKnotCount: GLint, tKnots: *mut GLfloat, sStride: GLint, tStride: GLint, control: *mut GLfloat, sOrder: GLint, tOrder: GLint, type_: GLenum);
-    todo gluEndSurface(nurb: *mut GLUnurbs);
-    todo gluBeginTrim(nurb: *mut GLUnurbs);
-    todo gluPwlCurve(nurb: *mut GLUnurbs, count: GLint, data: *mut GLfloat, stride: GLint, type_: GLenum);
-    todo gluEndTrim(nurb: *mut GLUnurbs);
+    free gluNewNurbsRenderer() -> *mut GLUnurbs { glu::nurbs::new_nurbs() }
+    free gluDeleteNurbsRenderer(nurb: *mut GLUnurbs) { glu::nurbs::delete_nurbs(nurb) }
+    free gluNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, value: GLfloat) { glu::nurbs::with(nurb, |n| n.set_property(property, value)) }
+    free gluGetNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, data: *mut GLfloat) { glu::nurbs::get_property(nurb, property, data) }
+    free gluLoadSamplingMatrices(nurb: *mut GLUnurbs, model: *const GLfloat, perspective: *const GLfloat, view: *const GLint) { glu::nurbs::with(nurb, |n| n.load_sampling_matrices(model, perspective, view)) }
+    free gluNurbsCallback(nurb: *mut GLUnurbs, which: GLenum, CallBackFunc: GLproc) { glu::nurbs::with(nurb, |n| n.set_callback(which, CallBackFunc)) }
+    free gluNurbsCallbackData(nurb: *mut GLUnurbs, userData: *mut c_void) { glu::nurbs::with(nurb, |n| n.set_callback_data(userData)) }
+    free gluNurbsCallbackDataEXT(nurb: *mut GLUnurbs, userData: *mut c_void) { glu::nurbs::with(nurb, |n| n.set_callback_data(userData)) }
+    free gluBeginCurve(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_curve()) }
+    free gluNurbsCurve(nurb: *mut GLUnurbs, knotCount: GLint, knots: *mut GLfloat, stride: GLint, control: *mut GLfloat, order: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.nurbs_curve(knotCount, knots, stride, control, order, type_)) }
+    free gluEndCurve(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_curve()) }
+    free gluBeginSurface(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_surface()) }
+    free gluNurbsSurface(nurb: *mut GLUnurbs, sKnotCount: GLint, sKnots: *mut GLfloat, tKnotCount: GLint, tKnots: *mut GLfloat, sStride: GLint, tStride: GLint, control: *mut GLfloat, sOrder: GLint, tOrder: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.nurbs_surface(sKnotCount, sKnots, tKnotCount, tKnots, sStride, tStride, control, sOrder, tOrder, type_)) }
+    free gluEndSurface(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_surface()) }
+    free gluBeginTrim(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_trim()) }
+    free gluPwlCurve(nurb: *mut GLUnurbs, count: GLint, data: *mut GLfloat, stride: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.pwl_curve(count, data, stride, type_)) }
+    free gluEndTrim(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_trim()) }
 
     // ---- osmesa.h ----
     free["the share-list argument is accepted but lists are not shared yet"] OSMesaCreateContext(format: GLenum, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_ext(format, 24, 8, 0, sharelist) }

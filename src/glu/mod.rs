@@ -6,6 +6,7 @@
 
 pub mod matrix;
 pub mod mipmap;
+pub mod nurbs;
 pub mod quadric;
 pub mod scale;
 pub mod strings;
