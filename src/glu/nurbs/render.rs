@@ -318,16 +318,16 @@ pub fn point_normal(s: &Surface, u: f64, v: f64) -> (P3, P3) {
     let (pt, su) = dehomogenize(p, du);
     let (_, sv) = dehomogenize(p, dv);
     let mut n = cross(su, sv);
-    let mut scale = len(su) * len(sv);
+    let mut scale = len(su).max(len(sv)).powi(2);
     let mut k = 1e-6;
-    while !(len(n) > 1e-10 * scale) && k < 0.2 {
+    while !(len(n) > 1e-5 * scale) && k < 0.2 {
         let (cu, cv) = ((ua + ub) / 2.0, (va + vb) / 2.0);
         let (uu, vv) = (u + (cu - u) * k, v + (cv - v) * k);
         let (p2, du2, dv2) = eval_surface(s, uu, vv);
         let (_, su2) = dehomogenize(p2, du2);
         let (_, sv2) = dehomogenize(p2, dv2);
         n = cross(su2, sv2);
-        scale = len(su2) * len(sv2);
+        scale = len(su2).max(len(sv2)).powi(2);
         k *= 10.0;
     }
     let l = len(n);
