@@ -3,6 +3,7 @@
 //! round trips), the pixel-store modes (queried through a stand-in for
 //! glGetIntegerv), mipmap level sizes and contents through a recording
 //! [`TexGl`], proxy fitting, and the error codes GLU returns.
+#![allow(clippy::type_complexity, clippy::too_many_arguments, clippy::useless_vec)]
 
 use softgl::gl::enums::*;
 use softgl::glu::mipmap::*;

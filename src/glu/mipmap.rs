@@ -64,6 +64,7 @@ impl PixelGl for GlTex {
     }
 }
 
+#[allow(clippy::too_many_arguments)]
 unsafe fn tex_image_n(dims: usize, target: GLenum, level: i32, internal: i32, s: [i32; 3], format: GLenum, type_: GLenum, p: *const c_void) {
     match dims {
         1 => gl::glTexImage1D(target, level, internal, s[0], 0, format, type_, p),

@@ -436,7 +436,7 @@ impl Nurbs {
                 GLU_NURBS_VERTEX_DATA..=GLU_NURBS_TEXTURE_COORD_DATA => {
                     c.floats_data[(which - GLU_NURBS_VERTEX_DATA) as usize] = f.map(|f| t::<F, FloatsDataCb>(f))
                 }
-                GLU_NURBS_END => c.end = f.map(|f| t::<F, EndCb>(f)),
+                GLU_NURBS_END => c.end = f,
                 GLU_NURBS_END_DATA => c.end_data = f.map(|f| t::<F, EndDataCb>(f)),
                 _ => self.report(GLU_INVALID_ENUM),
             }
@@ -474,6 +474,7 @@ impl Nurbs {
     }
 
     /// Reads and checks a curve; None after reporting an error.
+    #[allow(clippy::too_many_arguments)]
     unsafe fn read_curve(&mut self, knot_count: GLint, knots: *const GLfloat, stride: GLint, ctl: *const GLfloat, order: GLint, role: Role, dim: usize, rational: bool) -> Option<Curve> {
         if knot_count < 0 {
             self.nurbs_error(33);

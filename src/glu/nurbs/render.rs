@@ -250,9 +250,9 @@ impl Renderer {
                 let grid: Vec<Vec<Vertex>> = vs.iter().map(|&v| us.iter().map(|&u| ev.vertex(u, v)).collect()).collect();
                 for j in 0..vs.len() - 1 {
                     sink.begin(GL_TRIANGLE_STRIP);
-                    for i in 0..us.len() {
-                        grid[j + 1][i].emit(sink);
-                        grid[j][i].emit(sink);
+                    for (upper, lower) in grid[j + 1].iter().zip(&grid[j]) {
+                        upper.emit(sink);
+                        lower.emit(sink);
                     }
                     sink.end();
                 }
@@ -320,6 +320,8 @@ pub fn point_normal(s: &Surface, u: f64, v: f64) -> (P3, P3) {
     let mut n = cross(su, sv);
     let mut scale = len(su).max(len(sv)).powi(2);
     let mut k = 1e-6;
+    // (Written so that a NaN length also counts as degenerate.)
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     while !(len(n) > 1e-5 * scale) && k < 0.2 {
         let (cu, cv) = ((ua + ub) / 2.0, (va + vb) / 2.0);
         let (uu, vv) = (u + (cu - u) * k, v + (cv - v) * k);
