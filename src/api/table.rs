@@ -651,13 +651,13 @@ super::entry_points! {
     free gluProject(objX: GLdouble, objY: GLdouble, objZ: GLdouble, model: *const GLdouble, proj: *const GLdouble, view: *const GLint, winX: *mut GLdouble, winY: *mut GLdouble, winZ: *mut GLdouble) -> GLint { glu::matrix::project([objX, objY, objZ], model, proj, view, [winX, winY, winZ]) }
     free gluUnProject(winX: GLdouble, winY: GLdouble, winZ: GLdouble, model: *const GLdouble, proj: *const GLdouble, view: *const GLint, objX: *mut GLdouble, objY: *mut GLdouble, objZ: *mut GLdouble) -> GLint { glu::matrix::unproject([winX, winY, winZ, 1.0], model, proj, view, 0.0, 1.0, [objX, objY, objZ, std::ptr::null_mut()]) }
     free gluUnProject4(winX: GLdouble, winY: GLdouble, winZ: GLdouble, clipW: GLdouble, model: *const GLdouble, proj: *const GLdouble, view: *const GLint, nearVal: GLdouble, farVal: GLdouble, objX: *mut GLdouble, objY: *mut GLdouble, objZ: *mut GLdouble, objW: *mut GLdouble) -> GLint { glu::matrix::unproject([winX, winY, winZ, clipW], model, proj, view, nearVal, farVal, [objX, objY, objZ, objW]) }
-    todo gluScaleImage(format: GLenum, wIn: GLsizei, hIn: GLsizei, typeIn: GLenum, dataIn: *const c_void, wOut: GLsizei, hOut: GLsizei, typeOut: GLenum, dataOut: *mut c_void) -> GLint;
-    todo gluBuild1DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint;
-    todo gluBuild2DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint;
-    todo gluBuild3DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint;
-    todo gluBuild1DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint;
-    todo gluBuild2DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint;
-    todo gluBuild3DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint;
+    free gluScaleImage(format: GLenum, wIn: GLsizei, hIn: GLsizei, typeIn: GLenum, dataIn: *const c_void, wOut: GLsizei, hOut: GLsizei, typeOut: GLenum, dataOut: *mut c_void) -> GLint { glu::scale::scale_image(&mut glu::scale::GlPixels, format, wIn, hIn, typeIn, dataIn, wOut, hOut, typeOut, dataOut) }
+    free gluBuild1DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint { glu::mipmap::build_mipmaps(&mut glu::mipmap::GlTex, 1, target, internalFormat, [width, 1, 1], format, type_, data) }
+    free gluBuild2DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint { glu::mipmap::build_mipmaps(&mut glu::mipmap::GlTex, 2, target, internalFormat, [width, height, 1], format, type_, data) }
+    free gluBuild3DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint { glu::mipmap::build_mipmaps(&mut glu::mipmap::GlTex, 3, target, internalFormat, [width, height, depth], format, type_, data) }
+    free gluBuild1DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint { glu::mipmap::build_mipmap_levels(&mut glu::mipmap::GlTex, 1, target, internalFormat, [width, 1, 1], format, type_, level, base, max, data) }
+    free gluBuild2DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint { glu::mipmap::build_mipmap_levels(&mut glu::mipmap::GlTex, 2, target, internalFormat, [width, height, 1], format, type_, level, base, max, data) }
+    free gluBuild3DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint { glu::mipmap::build_mipmap_levels(&mut glu::mipmap::GlTex, 3, target, internalFormat, [width, height, depth], format, type_, level, base, max, data) }
     free gluNewQuadric() -> *mut GLUquadric { glu::quadric::new_quadric() }
     free gluDeleteQuadric(quad: *mut GLUquadric) { glu::quadric::delete_quadric(quad) }
     free gluQuadricCallback(quad: *mut GLUquadric, which: GLenum, CallBackFunc: GLproc) { glu::quadric::with(quad, |q| q.set_callback(which, CallBackFunc)) }
@@ -683,23 +683,23 @@ super::entry_points! {
     free gluBeginPolygon(tess: *mut GLUtesselator) { glu::tess::begin_polygon_11(tess) }
     free gluNextContour(tess: *mut GLUtesselator, type_: GLenum) { glu::tess::next_contour(tess, type_) }
     free gluEndPolygon(tess: *mut GLUtesselator) { glu::tess::end_polygon_11(tess) }
-    todo gluNewNurbsRenderer() -> *mut GLUnurbs;
-    todo gluDeleteNurbsRenderer(nurb: *mut GLUnurbs);
-    todo gluNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, value: GLfloat);
-    todo gluGetNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, data: *mut GLfloat);
-    todo gluLoadSamplingMatrices(nurb: *mut GLUnurbs, model: *const GLfloat, perspective: *const GLfloat, view: *const GLint);
-    todo gluNurbsCallback(nurb: *mut GLUnurbs, which: GLenum, CallBackFunc: GLproc);
-    todo gluNurbsCallbackData(nurb: *mut GLUnurbs, userData: *mut c_void);
-    todo gluNurbsCallbackDataEXT(nurb: *mut GLUnurbs, userData: *mut c_void);
-    todo gluBeginCurve(nurb: *mut GLUnurbs);
-    todo gluNurbsCurve(nurb: *mut GLUnurbs, knotCount: GLint, knots: *mut GLfloat, stride: GLint, control: *mut GLfloat, order: GLint, type_: GLenum);
-    todo gluEndCurve(nurb: *mut GLUnurbs);
-    todo gluBeginSurface(nurb: *mut GLUnurbs);
-    todo gluNurbsSurface(nurb: *mut GLUnurbs, sKnotCount: GLint, sKnots: *mut GLfloat, tKnotCount: GLint, tKnots: *mut GLfloat, sStride: GLint, tStride: GLint, control: *mut GLfloat, sOrder: GLint, tOrder: GLint, type_: GLenum);
-    todo gluEndSurface(nurb: *mut GLUnurbs);
-    todo gluBeginTrim(nurb: *mut GLUnurbs);
-    todo gluPwlCurve(nurb: *mut GLUnurbs, count: GLint, data: *mut GLfloat, stride: GLint, type_: GLenum);
-    todo gluEndTrim(nurb: *mut GLUnurbs);
+    free gluNewNurbsRenderer() -> *mut GLUnurbs { glu::nurbs::new_nurbs() }
+    free gluDeleteNurbsRenderer(nurb: *mut GLUnurbs) { glu::nurbs::delete_nurbs(nurb) }
+    free gluNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, value: GLfloat) { glu::nurbs::with(nurb, |n| n.set_property(property, value)) }
+    free gluGetNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, data: *mut GLfloat) { glu::nurbs::get_property(nurb, property, data) }
+    free gluLoadSamplingMatrices(nurb: *mut GLUnurbs, model: *const GLfloat, perspective: *const GLfloat, view: *const GLint) { glu::nurbs::with(nurb, |n| n.load_sampling_matrices(model, perspective, view)) }
+    free gluNurbsCallback(nurb: *mut GLUnurbs, which: GLenum, CallBackFunc: GLproc) { glu::nurbs::with(nurb, |n| n.set_callback(which, CallBackFunc)) }
+    free gluNurbsCallbackData(nurb: *mut GLUnurbs, userData: *mut c_void) { glu::nurbs::with(nurb, |n| n.set_callback_data(userData)) }
+    free gluNurbsCallbackDataEXT(nurb: *mut GLUnurbs, userData: *mut c_void) { glu::nurbs::with(nurb, |n| n.set_callback_data(userData)) }
+    free gluBeginCurve(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_curve()) }
+    free gluNurbsCurve(nurb: *mut GLUnurbs, knotCount: GLint, knots: *mut GLfloat, stride: GLint, control: *mut GLfloat, order: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.nurbs_curve(knotCount, knots, stride, control, order, type_)) }
+    free gluEndCurve(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_curve()) }
+    free gluBeginSurface(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_surface()) }
+    free gluNurbsSurface(nurb: *mut GLUnurbs, sKnotCount: GLint, sKnots: *mut GLfloat, tKnotCount: GLint, tKnots: *mut GLfloat, sStride: GLint, tStride: GLint, control: *mut GLfloat, sOrder: GLint, tOrder: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.nurbs_surface(sKnotCount, sKnots, tKnotCount, tKnots, sStride, tStride, control, sOrder, tOrder, type_)) }
+    free gluEndSurface(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_surface()) }
+    free gluBeginTrim(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_trim()) }
+    free gluPwlCurve(nurb: *mut GLUnurbs, count: GLint, data: *mut GLfloat, stride: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.pwl_curve(count, data, stride, type_)) }
+    free gluEndTrim(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_trim()) }
 
     // ---- osmesa.h ----
     free["the share-list argument is accepted but lists are not shared yet"] OSMesaCreateContext(format: GLenum, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_ext(format, 24, 8, 0, sharelist) }

@@ -5,6 +5,9 @@
 //! ([`strings`]) and the polygon tessellator ([`tess`]). Quadrics, mipmaps and NURBS are issue 6.
 
 pub mod matrix;
+pub mod mipmap;
+pub mod nurbs;
 pub mod quadric;
+pub mod scale;
 pub mod strings;
 pub mod tess;

@@ -25,7 +25,7 @@ pub fn error_string(e: GLenum) -> *const GLubyte {
         GLU_OUT_OF_MEMORY => b"out of memory\0",
         GLU_INVALID_OPERATION => b"invalid operation\0",
         100101..=100110 => b"tessellation error\0",
-        100151..=100187 => b"NURBS error\0",
+        100251..=100287 => b"NURBS error\0",
         _ => return std::ptr::null(),
     };
     s.as_ptr()
