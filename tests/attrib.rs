@@ -61,3 +61,33 @@ fn stack_limits() {
     c.pop_client_attrib();
     assert_eq!(c.pixel_store.unpack.alignment, 4);
 }
+
+/// glDrawBuffer / glReadBuffer: names, existence, GL_NONE (4.2.1, 4.3.2).
+#[test]
+fn draw_and_read_buffers() {
+    use softgl::gl::draw_buffer::*;
+    let mut c = context();
+    c.execute(&Command::DrawBuffer(GL_BACK));
+    assert_eq!(c.take_error(), GL_INVALID_OPERATION, "no back buffer on a single-buffered surface");
+    c.execute(&Command::DrawBuffer(GL_RIGHT));
+    assert_eq!(c.take_error(), GL_INVALID_OPERATION, "no stereo");
+    c.execute(&Command::DrawBuffer(0x1234));
+    assert_eq!(c.take_error(), GL_INVALID_ENUM);
+    c.execute(&Command::ReadBuffer(GL_FRONT_AND_BACK));
+    assert_eq!(c.take_error(), GL_INVALID_ENUM);
+    // GL_NONE: neither drawing nor clearing writes colour.
+    c.execute(&Command::DrawBuffer(GL_NONE));
+    c.execute(&Command::ClearColor([1.0; 4]));
+    c.execute(&Command::Clear(GL_COLOR_BUFFER_BIT));
+    c.execute(&Command::Color([1.0; 4]));
+    c.execute(&Command::Rect([-1.0, -1.0, 1.0, 1.0]));
+    assert!(c.fb.color.iter().all(|p| *p == [0; 4]));
+    c.execute(&Command::DrawBuffer(GL_FRONT_LEFT));
+    c.execute(&Command::Clear(GL_COLOR_BUFFER_BIT));
+    assert!(c.fb.color.iter().all(|p| *p == [255; 4]));
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    c.set_double_buffered(true);
+    assert_eq!(c.color_buffer.draw_buffer, GL_BACK);
+    c.execute(&Command::ReadBuffer(GL_BACK_LEFT));
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+}

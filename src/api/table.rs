@@ -272,7 +272,7 @@ super::entry_points! {
     client glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Normal, 3, type_, stride, ptr as usize) }
     client glColorPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Color, size, type_, stride, ptr as usize) }
     client glIndexPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::Index, 1, type_, stride, ptr as usize) }
-    client["texture coordinates reach the current values and display lists; texturing is not implemented yet"] glTexCoordPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.tex_coord_pointer(size, type_, stride, ptr as usize) }
+    client glTexCoordPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) { |c| c.tex_coord_pointer(size, type_, stride, ptr as usize) }
     client glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void) { |c| c.array_pointer(Array::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, ptr as usize) }
     client glEnableClientState(array: GLenum) { |c| c.client_state(array, true) }
     client glDisableClientState(array: GLenum) { |c| c.client_state(array, false) }
@@ -402,19 +402,19 @@ super::entry_points! {
     list glDepthFunc(func: GLenum) { |_c| Command::DepthFunc(func) }
     list glBlendFunc(sfactor: GLenum, dfactor: GLenum) { |_c| Command::BlendFunc([sfactor, dfactor, sfactor, dfactor]) }
     list glLogicOp(opcode: GLenum) { |_c| Command::LogicOp(opcode) }
-    todo glDrawBuffer(mode: GLenum);
-    todo glIndexMask(mask: GLuint);
+    list["double-buffered surfaces keep one colour buffer yet: FRONT and BACK name the same storage there"] glDrawBuffer(mode: GLenum) { |_c| Command::DrawBuffer(mode) }
+    list glIndexMask(mask: GLuint) { |_c| Command::IndexMask(mask) }
     list glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) { |_c| Command::ColorMask([truth(red), truth(green), truth(blue), truth(alpha)]) }
     list glDepthMask(flag: GLboolean) { |_c| Command::DepthMask(truth(flag)) }
     list glStencilMask(mask: GLuint) { |_c| Command::StencilMask(mask) }
     list glClear(mask: GLbitfield) { |_c| Command::Clear(mask) }
     list glClearColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) { |_c| Command::ClearColor([red, green, blue, alpha]) }
-    todo glClearIndex(c: GLfloat);
+    list glClearIndex(c: GLfloat) { |_c| Command::ClearIndex(c) }
     list glClearDepth(depth: GLclampd) { |_c| Command::ClearDepth(depth) }
     list glClearStencil(s: GLint) { |_c| Command::ClearStencil(s) }
     list glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) { |_c| Command::ClearAccum([red, green, blue, alpha]) }
     list glAccum(op: GLenum, value: GLfloat) { |_c| Command::Accum(op, value) }
-    todo glReadBuffer(mode: GLenum);
+    list["as glDrawBuffer"] glReadBuffer(mode: GLenum) { |_c| Command::ReadBuffer(mode) }
     exec["the ARB_imaging transfer stages (colour table, convolution, colour matrix, histogram) are not implemented"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
     list["texturing and fog of the fragments come with those features"] glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) { |_c| Command::CopyPixels(x, y, width, height, type_) }
     list glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) { |c| Command::Map { target, u: (u1 as f32, u2 as f32), uorder: order, v: None, points: map_points(c, read_points(target, points, stride, order, 0, 1))? } }

@@ -32,7 +32,7 @@ impl Context {
         let w = fb.width;
         if mask & GL_COLOR_BUFFER_BIT != 0 {
             let value = color_to_u8(Vec4::from_array(self.color_buffer.clear));
-            let m = self.color_buffer.write_mask;
+            let m = if self.color_buffer.draw_buffer == 0 { [false; 4] } else { self.color_buffer.write_mask };
             if m == [true; 4] {
                 rows(&mut fb.color, w, r, |row| row.fill(value));
             } else if m != [false; 4] {

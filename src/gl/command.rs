@@ -85,6 +85,11 @@ pub enum Command {
     BeginQuery(u32, u32),
     EndQuery(u32),
     ClipPlane(u32, [f64; 4]),
+    DrawBuffer(u32),
+    ReadBuffer(u32),
+    /// Colour-index mode state: stored, no effect on an RGBA surface.
+    IndexMask(u32),
+    ClearIndex(f32),
     /// glSampleCoverage: stored; softgl's framebuffers have no multisample
     /// buffer, where the spec makes coverage have no effect (3.2.1).
     SampleCoverage(f32, bool),
@@ -272,6 +277,10 @@ impl Context {
             BeginQuery(target, id) => self.begin_query(*target, *id),
             EndQuery(target) => self.end_query(*target),
             ClipPlane(p, eq) => self.clip_plane(*p, *eq),
+            DrawBuffer(m) => self.draw_buffer(*m),
+            ReadBuffer(m) => self.read_buffer(*m),
+            IndexMask(m) => self.color_buffer.index_mask = *m,
+            ClearIndex(c) => self.color_buffer.clear_index = *c,
             SampleCoverage(v, inv) => self.color_buffer.sample_coverage = (v.clamp(0.0, 1.0), *inv),
             PointParameter(pname, v) => self.point_parameter(*pname, *v),
             Fog(pname, v) => self.fog(*pname, *v),

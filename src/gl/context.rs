@@ -30,6 +30,11 @@ pub struct Context {
     /// glPushAttrib / glPushClientAttrib stacks.
     pub attrib: attrib::AttribStacks,
     pub fog: fog::FogState,
+    /// The surface keeps a back buffer (GLX/wgl double-buffered configs):
+    /// GL_BACK exists, and is the initial draw and read buffer.
+    pub double_buffered: bool,
+    /// glReadBuffer (in the pixel-mode group).
+    pub pixel_read_buffer: u32,
     pub line: LineState,
     pub point: PointState,
     /// Capabilities glEnable stores whose rendering is not implemented yet.
@@ -82,6 +87,8 @@ impl Context {
             user_clip: Default::default(),
             attrib: Default::default(),
             fog: Default::default(),
+            double_buffered: false,
+            pixel_read_buffer: GL_FRONT,
             line: Default::default(),
             point: Default::default(),
             other_caps: Default::default(),
@@ -139,6 +146,16 @@ impl Context {
         if let Some(s) = self.surface.as_mut() {
             s.present(&self.fb);
         }
+    }
+
+    /// The window system says whether the surface is double-buffered;
+    /// draw and read buffers start at BACK there (4.2.1, 4.3.2).
+    pub fn set_double_buffered(&mut self, double: bool) {
+        self.double_buffered = double;
+        let initial = if double { GL_BACK } else { GL_FRONT };
+        self.color_buffer.draw_buffer = initial;
+        self.pixel_read_buffer = initial;
+        self.dirty |= validate::DIRTY_FRAGMENT;
     }
 
     /// Called by the window system when the surface is (re)bound with a size.

@@ -12,6 +12,7 @@ pub mod clear;
 pub mod clip_plane;
 pub mod command;
 pub mod context;
+pub mod draw_buffer;
 pub mod draw_pixels;
 pub mod enable;
 pub mod enums;

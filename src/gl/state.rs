@@ -6,6 +6,11 @@ use crate::render::fragment::{BlendEquation, BlendFactor, CompareFunc, LogicOp, 
 /// GL_COLOR_BUFFER_BIT state (the parts implemented so far).
 #[derive(Clone, Debug)]
 pub struct ColorBufferState {
+    /// glDrawBuffer.
+    pub draw_buffer: u32,
+    /// glIndexMask and glClearIndex (colour-index mode; stored only).
+    pub index_mask: u32,
+    pub clear_index: f32,
     /// glSampleCoverage (value, invert).
     pub sample_coverage: (f32, bool),
     pub clear: [f32; 4],
@@ -32,6 +37,9 @@ pub struct ColorBufferState {
 impl Default for ColorBufferState {
     fn default() -> Self {
         ColorBufferState {
+            draw_buffer: super::enums::GL_FRONT,
+            index_mask: !0,
+            clear_index: 0.0,
             sample_coverage: (1.0, false),
             clear: [0.0; 4],
             write_mask: [true; 4],

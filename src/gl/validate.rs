@@ -171,7 +171,8 @@ impl Context {
             zfail: st.zfail,
             zpass: st.zpass,
         };
-        let color_mask = cb.write_mask;
+        // glDrawBuffer(GL_NONE) writes no colour (4.2.1).
+        let color_mask = if cb.draw_buffer == 0 { [false; 4] } else { cb.write_mask };
         let color = if color_mask == [false; 4] {
             ColorOp::None
         } else if cb.color_logic_op {

@@ -378,7 +378,9 @@ pub fn create_context(hdc: Hdc) -> Hglrc {
         return null_mut(); // Windows: ERROR_INVALID_PIXEL_FORMAT
     }
     let config = Config { depth_bits: DEPTH_BITS as u8, stencil_bits: 8, accum_bits: 16 };
-    let p = Box::into_raw(Box::new(WglContext { gl: Context::new(config), pixel_format: format, dc: None, bound: AtomicBool::new(false) }));
+    let mut gl = Context::new(config);
+    gl.set_double_buffered(is_double(format));
+    let p = Box::into_raw(Box::new(WglContext { gl, pixel_format: format, dc: None, bound: AtomicBool::new(false) }));
     register(&CONTEXTS, p as usize, true);
     p as Hglrc
 }

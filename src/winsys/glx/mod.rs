@@ -645,7 +645,9 @@ unsafe fn new_context(dpy: *mut Display, config: Option<&'static FbConfig>) -> *
     if dpy.is_null() {
         return null_mut();
     }
-    Box::into_raw(Box::new(GlxContext { gl: Context::new(c.framebuffer_config()), config: *c, dpy, draw: 0, read: 0, surface: None, bound: AtomicBool::new(false), destroy_pending: AtomicBool::new(false) }))
+    let mut gl = Context::new(c.framebuffer_config());
+    gl.set_double_buffered(c.double);
+    Box::into_raw(Box::new(GlxContext { gl, config: *c, dpy, draw: 0, read: 0, surface: None, bound: AtomicBool::new(false), destroy_pending: AtomicBool::new(false) }))
 }
 
 pub unsafe fn create_context(dpy: *mut Display, vis: *mut XVisualInfo, _share: *mut GlxContext, _direct: Bool) -> *mut GlxContext {

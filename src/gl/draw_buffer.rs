@@ -1,0 +1,63 @@
+//! glDrawBuffer and glReadBuffer (GL 1.5 sections 4.2.1 and 4.3.2), and the
+//! colour-index mode's glIndexMask / glClearIndex, which an RGBA context
+//! stores and otherwise ignores.
+//!
+//! A softgl surface has one colour buffer: for single-buffered surfaces it
+//! is the front (left) buffer; double-buffered surfaces do not keep a
+//! separate front buffer yet, so FRONT and BACK name the same storage
+//! there. What is validated exactly: which names exist (RIGHT needs stereo,
+//! AUXi aux buffers, BACK a double-buffered surface: INVALID_OPERATION
+//! otherwise), and GL_NONE, which disables colour writes.
+
+use super::context::Context;
+use super::enums::*;
+use super::validate::DIRTY_FRAGMENT;
+
+pub const GL_NONE: u32 = 0;
+pub const GL_FRONT_LEFT: u32 = 0x0400;
+pub const GL_FRONT_RIGHT: u32 = 0x0401;
+pub const GL_BACK_LEFT: u32 = 0x0402;
+pub const GL_BACK_RIGHT: u32 = 0x0403;
+pub const GL_LEFT: u32 = 0x0406;
+pub const GL_RIGHT: u32 = 0x0407;
+pub const GL_AUX0: u32 = 0x0409;
+
+/// Is `mode` a colour-buffer name at all (else INVALID_ENUM)?
+fn is_buffer_name(mode: u32) -> bool {
+    matches!(mode, GL_NONE | GL_FRONT_LEFT..=GL_BACK_RIGHT | GL_FRONT | GL_BACK | GL_LEFT | GL_RIGHT | GL_FRONT_AND_BACK)
+        || (GL_AUX0..GL_AUX0 + 4).contains(&mode)
+}
+
+impl Context {
+    /// Does the surface have the buffer(s) `mode` names?
+    fn buffer_exists(&self, mode: u32) -> bool {
+        match mode {
+            GL_NONE | GL_FRONT_LEFT | GL_FRONT | GL_LEFT | GL_FRONT_AND_BACK => true,
+            GL_BACK_LEFT | GL_BACK => self.double_buffered,
+            // No stereo, no aux buffers.
+            _ => false,
+        }
+    }
+
+    pub fn draw_buffer(&mut self, mode: u32) {
+        if !is_buffer_name(mode) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        if !self.buffer_exists(mode) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        self.color_buffer.draw_buffer = mode;
+        self.dirty |= DIRTY_FRAGMENT;
+    }
+
+    pub fn read_buffer(&mut self, mode: u32) {
+        // NONE and FRONT_AND_BACK name no single buffer to read.
+        if !is_buffer_name(mode) || mode == GL_NONE || mode == GL_FRONT_AND_BACK {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        if !self.buffer_exists(mode) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        self.pixel_read_buffer = mode;
+    }
+}
