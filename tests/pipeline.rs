@@ -243,3 +243,18 @@ fn errors_follow_the_spec() {
     c.execute(&Command::Clear(0x8000_0000));
     assert_eq!(c.take_error(), GL_INVALID_VALUE);
 }
+
+#[test]
+fn extension_names_resolve_to_core_functions() {
+    use softgl::api::proc_address;
+    assert_eq!(proc_address(b"glActiveTextureARB"), proc_address(b"glActiveTexture"));
+    assert!(!proc_address(b"glActiveTexture").is_null());
+    assert_eq!(proc_address(b"glBlendEquationEXT"), proc_address(b"glBlendEquation"));
+    assert!(proc_address(b"glVertexPointerEXT").is_null(), "EXT_vertex_array's signature differs");
+    assert!(proc_address(b"glNoSuchFunction").is_null());
+    // Every advertised extension name is well formed.
+    let ext = softgl::gl::get::string(GL_EXTENSIONS).unwrap();
+    let ext = std::str::from_utf8(&ext[..ext.len() - 1]).unwrap();
+    assert!(ext.split(' ').all(|e| e.starts_with("GL_") && !e.is_empty()));
+    assert!(ext.contains("GL_EXT_bgra") && ext.contains("GL_ARB_multitexture"));
+}

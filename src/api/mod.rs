@@ -74,7 +74,22 @@ pub fn proc_address(name: &[u8]) -> *const () {
     let index = INDEX.get_or_init(|| {
         ENTRY_POINTS.iter().map(|e| (e.name().as_bytes(), e.addr as usize)).collect()
     });
-    index.get(name).map_or(std::ptr::null(), |&a| a as *const ())
+    let found = |n: &[u8]| index.get(n).map(|&a| a as *const ());
+    found(name).or_else(|| promoted_alias(name).and_then(found)).unwrap_or(std::ptr::null())
+}
+
+/// The core name of an extension entry point that GL promoted unchanged:
+/// every ARB name of the extensions softgl advertises, and the EXT names
+/// of those whose EXT form has the core signature (not, say,
+/// EXT_vertex_array's glVertexPointerEXT, which takes a count).
+fn promoted_alias(name: &[u8]) -> Option<&[u8]> {
+    const EXT_PREFIXES: [&[u8]; 8] =
+        [b"glBlend", b"glFogCoord", b"glSecondaryColor", b"glMultiDraw", b"glTexImage3D", b"glTexSubImage3D", b"glCopyTexSubImage3D", b"glDrawRangeElements"];
+    if let Some(base) = name.strip_suffix(b"ARB") {
+        return Some(base);
+    }
+    let base = name.strip_suffix(b"EXT")?;
+    EXT_PREFIXES.iter().any(|p| base.starts_with(p)).then_some(base)
 }
 
 /// Reports an unimplemented entry point once per name when SOFTGL_DEBUG is set.
