@@ -24,8 +24,8 @@ pub enum Kind {
     /// Executes immediately, never compiled into a list; INVALID_OPERATION
     /// between Begin and End.
     exec,
-    /// Client state (pixel store, arrays): immediate, never compiled, and
-    /// not checked against Begin/End.
+    /// Client state (pixel store, arrays): immediate, never compiled;
+    /// INVALID_OPERATION between Begin and End, as implementations do.
     client,
     /// A vertex-array draw (glArrayElement, glDrawArrays, glDrawElements
     /// and their range and multi forms). Not a [`crate::gl::Command`]
@@ -151,7 +151,7 @@ macro_rules! entry_point {
         #[no_mangle]
         #[allow(unused_parens)]
         pub unsafe extern "system" fn $name($($arg: $ty),*) -> $ret {
-            $crate::api::dispatch::with_current(|$c: &mut $crate::gl::Context| $body)
+            $crate::api::dispatch::outside_begin_end(|$c: &mut $crate::gl::Context| $body)
         }
     };
     (draw $name:ident ( $($arg:ident : $ty:ty),* ) -> $ret:ty { |$c:ident| $body:expr }) => {

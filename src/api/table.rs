@@ -51,15 +51,15 @@ fn normal<T: Component>(n: &[T; 3]) -> [f32; 3] {
     n.map(|c| c.normalized())
 }
 
-/// The scalar forms (glLightf, glMaterialf, ...) take only one-value
-/// parameters: anything else is GL_INVALID_ENUM.
-fn scalar_param(c: &mut Context, count: usize, pname: GLenum) -> Option<GLenum> {
-    if count == 1 {
-        Some(pname)
-    } else {
-        c.set_error(GL_INVALID_ENUM);
-        None
-    }
+/// The scalar forms (glLightf, glMaterialf, glLightModelf, glFogf,
+/// glPointParameterf) given a vector parameter: the spec lists only the
+/// one-value names for them, but every implementation programs meet (Mesa,
+/// and piglit's expectations with it) takes the value as the vector's first
+/// component and zeros for the rest. softgl does the same; the caller
+/// passes [param, 0, 0, 0]. A name that is no parameter at all still raises
+/// GL_INVALID_ENUM in the setter, after the Begin/End rule.
+fn scalar_param(_c: &mut Context, _count: usize, pname: GLenum) -> Option<GLenum> {
+    Some(pname)
 }
 
 /// Stores query results (NULL: nothing).
@@ -78,9 +78,13 @@ fn ints_out(v: &[f32], color: bool) -> Vec<GLint> {
     if color { get::Value::Normalized(values).as_i32() } else { get::Value::Floats(values).as_i32() }
 }
 
-/// glMap's points, or the error its arguments give.
-fn map_points(c: &mut Context, r: Result<Vec<f32>, GLenum>) -> Option<Vec<f32>> {
-    r.map_err(|e| c.set_error(e)).ok()
+/// glMap's command, or an error command for bad arguments (raised when it
+/// executes, after the Begin/End rule).
+fn map_command(r: Result<Vec<f32>, GLenum>, build: impl FnOnce(Vec<f32>) -> Command) -> Command {
+    match r {
+        Ok(points) => build(points),
+        Err(e) => Command::Error(e),
+    }
 }
 
 /// glFog*v's values: the colour maps integers like glColor, the rest
@@ -306,11 +310,11 @@ super::entry_points! {
     list glOrtho(left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, zNear: GLdouble, zFar: GLdouble) { |_c| Command::Ortho([left, right, bottom, top, zNear, zFar]) }
     list glPushMatrix() { |_c| Command::PushMatrix }
     list glPopMatrix() { |_c| Command::PopMatrix }
-    list glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
+    list glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) { |_c| { Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
     list glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
-    list glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
+    list glTexGenf(coord: GLenum, pname: GLenum, param: GLfloat) { |_c| { Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
     list glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
-    list glTexGeni(coord: GLenum, pname: GLenum, param: GLint) { |c| { if pname != TGEN_MODE { c.set_error(GL_INVALID_ENUM); return None; } Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
+    list glTexGeni(coord: GLenum, pname: GLenum, param: GLint) { |_c| { Command::TexGen(coord, pname, [param as f64, 0.0, 0.0, 0.0]) } }
     list glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) { |_c| { let v = slice(params, if pname == TGEN_MODE { 1 } else { 4 }); Command::TexGen(coord, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| f64::from(x)))) } }
     list glClipPlane(plane: GLenum, equation: *const GLdouble) { |_c| Command::ClipPlane(plane, arr::<GLdouble, 4>(equation)?) }
     list glRasterPos2d(x: GLdouble, y: GLdouble) { |_c| Command::RasterPos(position(&[x, y])) }
@@ -377,9 +381,9 @@ super::entry_points! {
     list glTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_sub_image_command(2, target, level, [xoffset, yoffset, 0], [width, height, 1], format, type_, pixels as *const u8) }
     list glCopyTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, x: GLint, y: GLint, width: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 1, sub: true, target, level, internal_format: 0, offset: [xoffset, 0, 0], rect: [x, y, width, 1], border: 0 })) }
     list glCopyTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 2, sub: true, target, level, internal_format: 0, offset: [xoffset, yoffset, 0], rect: [x, y, width, height], border: 0 })) }
-    list glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) { |c| { if pname == TBORDER { c.set_error(GL_INVALID_ENUM); return None; } Command::TexParameter(target, pname, [param, 0.0, 0.0, 0.0]) } }
+    list glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) { |_c| { Command::TexParameter(target, pname, [param, 0.0, 0.0, 0.0]) } }
     list glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TBORDER { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexParameter(target, pname, std::array::from_fn(|i| v.get(i).copied().unwrap_or(0.0))) } }
-    list glTexParameteri(target: GLenum, pname: GLenum, param: GLint) { |c| { if pname == TBORDER { c.set_error(GL_INVALID_ENUM); return None; } Command::TexParameter(target, pname, [param as f32, 0.0, 0.0, 0.0]) } }
+    list glTexParameteri(target: GLenum, pname: GLenum, param: GLint) { |_c| { Command::TexParameter(target, pname, [param as f32, 0.0, 0.0, 0.0]) } }
     list glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| { let border = pname == TBORDER; let v = slice(params, if border { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexParameter(target, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| if border { x.normalized() } else { x as f32 }))) } }
     exec glGenTextures(n: GLsizei, textures: *mut GLuint) { |c| if let Some(v) = c.gen_textures(n) { write_out(textures, &v) } }
     exec glDeleteTextures(n: GLsizei, textures: *const GLuint) { |c| { if n < 0 { return c.set_error(GL_INVALID_VALUE); } c.delete_textures(&slice(textures, n as i64)) } }
@@ -417,10 +421,10 @@ super::entry_points! {
     list["as glDrawBuffer"] glReadBuffer(mode: GLenum) { |_c| Command::ReadBuffer(mode) }
     exec["the ARB_imaging transfer stages (colour table, convolution, colour matrix, histogram) are not implemented"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
     list["texturing and fog of the fragments come with those features"] glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) { |_c| Command::CopyPixels(x, y, width, height, type_) }
-    list glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) { |c| Command::Map { target, u: (u1 as f32, u2 as f32), uorder: order, v: None, points: map_points(c, read_points(target, points, stride, order, 0, 1))? } }
-    list glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat) { |c| Command::Map { target, u: (u1, u2), uorder: order, v: None, points: map_points(c, read_points(target, points, stride, order, 0, 1))? } }
-    list glMap2d(target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint, v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: *const GLdouble) { |c| Command::Map { target, u: (u1 as f32, u2 as f32), uorder, v: Some(((v1 as f32, v2 as f32), vorder)), points: map_points(c, read_points(target, points, ustride, uorder, vstride, vorder))? } }
-    list glMap2f(target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint, v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: *const GLfloat) { |c| Command::Map { target, u: (u1, u2), uorder, v: Some(((v1, v2), vorder)), points: map_points(c, read_points(target, points, ustride, uorder, vstride, vorder))? } }
+    list glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) { |_c| map_command(read_points(target, points, stride, order, 0, 1), |points| Command::Map { target, u: (u1 as f32, u2 as f32), uorder: order, v: None, points }) }
+    list glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat) { |_c| map_command(read_points(target, points, stride, order, 0, 1), |points| Command::Map { target, u: (u1, u2), uorder: order, v: None, points }) }
+    list glMap2d(target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint, v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: *const GLdouble) { |_c| map_command(read_points(target, points, ustride, uorder, vstride, vorder), |points| Command::Map { target, u: (u1 as f32, u2 as f32), uorder, v: Some(((v1 as f32, v2 as f32), vorder)), points }) }
+    list glMap2f(target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint, v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: *const GLfloat) { |_c| map_command(read_points(target, points, ustride, uorder, vstride, vorder), |points| Command::Map { target, u: (u1, u2), uorder, v: Some(((v1, v2), vorder)), points }) }
     list glEvalCoord1d(u: GLdouble) { |_c| Command::EvalCoord(u as f32, None) }
     list glEvalCoord1dv(u: *const GLdouble) { |_c| Command::EvalCoord(arr::<GLdouble, 1>(u)?[0] as f32, None) }
     list glEvalCoord1f(u: GLfloat) { |_c| Command::EvalCoord(u, None) }

@@ -795,6 +795,9 @@ impl Context {
     fn draw_checks(&mut self, mode: u32) -> bool {
         if self.in_begin_end() {
             self.set_error(GL_INVALID_OPERATION);
+            // GL_COMPILE_AND_EXECUTE still compiles the draw (5.4); its
+            // Begin/End pair makes calling the list raise the same error.
+            self.empty_draw(mode);
             return false;
         }
         if mode > GL_POLYGON {
@@ -802,6 +805,17 @@ impl Context {
             return false;
         }
         true
+    }
+
+    /// A draw with no vertex array enabled is still Begin(mode) ... End()
+    /// (2.8): nothing is drawn, but a display list being compiled records
+    /// the pair, so calling the list between Begin and End raises
+    /// INVALID_OPERATION as the draw would have.
+    fn empty_draw(&mut self, mode: u32) {
+        if self.lists.compile_mode().is_some() {
+            self.lists.record(Command::Begin(mode));
+            self.lists.record(Command::End);
+        }
     }
 
     /// One primitive of `n` elements, element k being array index `index(k)`.
@@ -835,7 +849,7 @@ impl Context {
         if first < 0 || count < 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let Some(f) = self.fetch() else { return };
+        let Some(f) = self.fetch() else { return self.empty_draw(mode) };
         let first = first as usize;
         self.draw(mode, &f, count as usize, |k| first + k);
     }
@@ -847,7 +861,7 @@ impl Context {
         if first.iter().chain(count).any(|&v| v < 0) {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let Some(f) = self.fetch() else { return };
+        let Some(f) = self.fetch() else { return self.empty_draw(mode) };
         for (&first, &count) in first.iter().zip(count) {
             let first = first as usize;
             self.draw(mode, &f, count as usize, |k| first + k);
@@ -884,7 +898,7 @@ impl Context {
             return;
         }
         let Some(ix) = self.indices(count, ty, indices) else { return };
-        let Some(f) = self.fetch() else { return };
+        let Some(f) = self.fetch() else { return self.empty_draw(mode) };
         self.draw(mode, &f, ix.count, |k| ix.get(k));
     }
 
