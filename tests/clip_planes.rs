@@ -127,3 +127,19 @@ fn clip_plane_errors() {
     c.execute(&Command::Enable(GL_CLIP_PLANE0 + 6));
     assert_eq!(c.take_error(), GL_INVALID_ENUM);
 }
+
+#[test]
+fn raster_position_respects_clip_planes_and_latches_texcoords() {
+    let mut c = context();
+    c.current.tex_coords[1] = [0.25, 0.5, 0.0, 1.0];
+    c.execute(&Command::RasterPos([4.0, 4.0, 0.0, 1.0]));
+    assert!(c.raster.valid);
+    assert_eq!(c.raster.tex[1], [0.25, 0.5, 0.0, 1.0]);
+    // Keep x <= 2: the raster position at x = 4 is clipped away.
+    c.execute(&Command::ClipPlane(GL_CLIP_PLANE0, [-1.0, 0.0, 0.0, 2.0]));
+    c.execute(&Command::Enable(GL_CLIP_PLANE0));
+    c.execute(&Command::RasterPos([4.0, 4.0, 0.0, 1.0]));
+    assert!(!c.raster.valid);
+    c.execute(&Command::RasterPos([1.0, 4.0, 0.0, 1.0]));
+    assert!(c.raster.valid);
+}

@@ -229,7 +229,7 @@ impl Context {
             GL_CURRENT_RASTER_COLOR => Some(Value::Normalized(self.raster.color.iter().map(|&c| c as f64).collect())),
             GL_CURRENT_RASTER_SECONDARY_COLOR => Some(Value::Normalized(self.raster.secondary_color.iter().map(|&c| c as f64).collect())),
             GL_CURRENT_RASTER_DISTANCE => Some(Value::Floats(vec![self.raster.distance as f64])),
-            GL_CURRENT_RASTER_TEXTURE_COORDS => Some(Value::Floats(self.raster.tex.iter().map(|&c| c as f64).collect())),
+            GL_CURRENT_RASTER_TEXTURE_COORDS => Some(Value::Floats(self.raster.tex[self.texture.active].iter().map(|&c| c as f64).collect())),
             GL_CURRENT_RASTER_INDEX => Some(Value::Floats(vec![self.raster.index as f64])),
             GL_ZOOM_X => Some(Value::Floats(vec![self.pixel.zoom[0] as f64])),
             GL_ZOOM_Y => Some(Value::Floats(vec![self.pixel.zoom[1] as f64])),

@@ -14,11 +14,10 @@
 //! and mapped through the depth range, w = 1, the position is always
 //! valid, the colour is the current colour (never lit), distance 0.
 //!
-//! Not yet: user clip planes (not implemented in the vertex stage either)
-//! do not invalidate the position; texture coordinates latch (0, 0, 0, 1)
-//! until texturing exists (the texture engineer fills `tex` from the current
-//! coordinates through the texture matrix here); the secondary colour is
-//! (0, 0, 0, 1); distance ignores GL_FOG_COORDINATE_SOURCE.
+//! User clip planes invalidate it like the view volume. Not yet: texture
+//! coordinates latch through the texture matrices but without
+//! texture-coordinate generation; the secondary colour is (0, 0, 0, 1);
+//! distance ignores GL_FOG_COORDINATE_SOURCE.
 
 use super::context::Context;
 use glam::{DVec4, Vec3, Vec4};
@@ -31,7 +30,8 @@ pub struct RasterPos {
     pub color: [f32; 4],
     pub secondary_color: [f32; 4],
     pub distance: f32,
-    pub tex: [f32; 4],
+    /// Texture coordinates per unit, through each unit's texture matrix.
+    pub tex: [[f32; 4]; crate::render::texture::MAX_UNITS],
     pub index: f32,
 }
 
@@ -43,7 +43,7 @@ impl Default for RasterPos {
             color: [1.0; 4],
             secondary_color: [0.0, 0.0, 0.0, 1.0],
             distance: 0.0,
-            tex: [0.0, 0.0, 0.0, 1.0],
+            tex: [[0.0, 0.0, 0.0, 1.0]; crate::render::texture::MAX_UNITS],
             index: 1.0,
         }
     }
@@ -57,7 +57,10 @@ impl Context {
         let eye = *self.transform.modelview.top() * obj;
         let clip = *self.transform.projection.top() * eye;
         let w = clip.w;
-        let inside = w > 0.0 && clip.is_finite() && [clip.x, clip.y, clip.z].iter().all(|&c| -w <= c && c <= w);
+        let user_planes_keep = (0..crate::gl::clip_plane::MAX_CLIP_PLANES)
+            .filter(|&i| self.user_clip.enabled[i])
+            .all(|i| self.user_clip.planes[i].dot(eye) >= 0.0);
+        let inside = w > 0.0 && clip.is_finite() && [clip.x, clip.y, clip.z].iter().all(|&c| -w <= c && c <= w) && user_planes_keep;
         if !inside {
             self.raster.valid = false;
             return;
@@ -78,7 +81,7 @@ impl Context {
             color: color.map(|c| c.clamp(0.0, 1.0)),
             secondary_color: [0.0, 0.0, 0.0, 1.0],
             distance: eye.truncate().length() as f32,
-            tex: [0.0, 0.0, 0.0, 1.0],
+            tex: self.raster_tex_coords(),
             index: self.raster.index,
         };
     }
@@ -93,9 +96,19 @@ impl Context {
             color: self.current.color.map(|c| c.clamp(0.0, 1.0)),
             secondary_color: [0.0, 0.0, 0.0, 1.0],
             distance: 0.0,
-            tex: [0.0, 0.0, 0.0, 1.0],
+            tex: self.current.tex_coords,
             index: self.raster.index,
         };
+    }
+
+    /// The current texture coordinates through each unit's texture matrix
+    /// (2.13; texture-coordinate generation is not applied to the raster
+    /// position yet).
+    fn raster_tex_coords(&self) -> [[f32; 4]; crate::render::texture::MAX_UNITS] {
+        std::array::from_fn(|u| match self.transform.textures.get(u) {
+            Some(stack) => (stack.top().as_mat4() * glam::Vec4::from_array(self.current.tex_coords[u])).to_array(),
+            None => self.current.tex_coords[u],
+        })
     }
 
     /// The latched colour as the fragment stage takes it.
