@@ -170,3 +170,31 @@ fn polygon_errors() {
     assert_eq!(c.take_error(), GL_NO_ERROR, "edge flags are legal inside Begin/End");
     c.execute(&Command::End);
 }
+
+#[test]
+fn polygon_offset_applies_to_line_mode_when_enabled() {
+    let run = |enable_line_offset: bool| {
+        let mut c = context();
+        c.execute(&Command::Clear(GL_DEPTH_BUFFER_BIT));
+        c.execute(&Command::Enable(GL_DEPTH_TEST));
+        quad(&mut c, [true; 4], true); // white, filled, depth written
+        c.execute(&Command::PolygonMode(GL_FRONT_AND_BACK, GL_LINE));
+        if enable_line_offset {
+            c.execute(&Command::Enable(GL_POLYGON_OFFSET_LINE));
+            c.execute(&Command::PolygonOffset(0.0, -4.0));
+        }
+        c.execute(&Command::Color([1.0, 0.0, 0.0, 1.0]));
+        c.execute(&Command::Begin(GL_QUADS));
+        for p in [[4.5f32, 4.5], [11.5, 4.5], [11.5, 11.5], [4.5, 11.5]] {
+            c.execute(&Command::Vertex([p[0], p[1], 0.0, 1.0]));
+        }
+        c.execute(&Command::End);
+        c.fb.color.iter().filter(|p| **p == [255, 0, 0, 255]).count()
+    };
+    // Without the offset, outline pixels inside the filled quad lose the
+    // GL_LESS test against its equal depth; only those the fill did not
+    // cover (its top and right edges, by the top-left rule) show.
+    let (without, with) = (run(false), run(true));
+    assert!(without <= 16, "{without}");
+    assert!(with >= 26, "offset lines win everywhere: {with}");
+}

@@ -362,7 +362,7 @@ super::entry_points! {
     list glFrontFace(mode: GLenum) { |_c| Command::FrontFace(mode) }
     list glPolygonStipple(mask: *const GLubyte) { |c| { if mask.is_null() { return None; } Command::PolygonStipple(Box::new(unpack_stipple(&c.pixel_store.unpack, mask))) } }
     list glPolygonMode(face: GLenum, mode: GLenum) { |_c| Command::PolygonMode(face, mode) }
-    list["applies to filled polygons; GL_POLYGON_OFFSET_LINE and _POINT are stored but not applied yet"] glPolygonOffset(factor: GLfloat, units: GLfloat) { |_c| Command::PolygonOffset(factor, units) }
+    list glPolygonOffset(factor: GLfloat, units: GLfloat) { |_c| Command::PolygonOffset(factor, units) }
     client glPixelStoref(pname: GLenum, param: GLfloat) { |c| c.pixel_store(pname, param as f64) }
     client glPixelStorei(pname: GLenum, param: GLint) { |c| c.pixel_store(pname, param as f64) }
     list glPixelTransferf(pname: GLenum, param: GLfloat) { |_c| Command::PixelTransfer(pname, param as f64) }

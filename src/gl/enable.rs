@@ -124,8 +124,14 @@ impl Context {
                 self.polygon.offset_fill = on;
                 self.dirty |= DIRTY_RASTER;
             }
-            GL_POLYGON_OFFSET_LINE => self.polygon.offset_line = on,
-            GL_POLYGON_OFFSET_POINT => self.polygon.offset_point = on,
+            GL_POLYGON_OFFSET_LINE => {
+                self.polygon.offset_line = on;
+                self.dirty |= DIRTY_RASTER;
+            }
+            GL_POLYGON_OFFSET_POINT => {
+                self.polygon.offset_point = on;
+                self.dirty |= DIRTY_RASTER;
+            }
             _ if is_stored_cap(cap) => {
                 if on {
                     self.other_caps.0.insert(cap);

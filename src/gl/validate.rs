@@ -50,6 +50,8 @@ impl Default for Derived {
                 color_sum: false,
                 polygon_mode: [GL_FILL; 2],
                 offset_fill: None,
+                offset_line: None,
+                offset_point: None,
                 polygon_stipple: None,
                 line: crate::render::line::LineParams { width: 1.0, stipple: None },
                 point_size: 1.0,
@@ -138,6 +140,8 @@ impl Context {
             let p = &self.polygon;
             rs.polygon_mode = p.mode;
             rs.offset_fill = p.offset_fill.then_some((p.offset_factor, p.offset_units));
+            rs.offset_line = p.offset_line.then_some((p.offset_factor, p.offset_units));
+            rs.offset_point = p.offset_point.then_some((p.offset_factor, p.offset_units));
             rs.polygon_stipple = p.stipple.then(|| Box::new(p.stipple_pattern));
             let l = &self.line;
             rs.line = crate::render::line::LineParams {

@@ -46,6 +46,10 @@ pub struct RenderState {
     pub polygon_mode: [u32; 2],
     /// glPolygonOffset (factor, units) when enabled for filled polygons.
     pub offset_fill: Option<(f32, f32)>,
+    /// The same for polygons drawn as lines and as points
+    /// (GL_POLYGON_OFFSET_LINE / _POINT).
+    pub offset_line: Option<(f32, f32)>,
+    pub offset_point: Option<(f32, f32)>,
     /// glPolygonStipple's pattern (bit x of row y) when enabled.
     pub polygon_stipple: Option<Box<[u32; 32]>>,
     /// Line and point state, for polygons drawn as lines or points.

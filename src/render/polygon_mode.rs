@@ -16,6 +16,24 @@ use crate::gl::enums::{GL_FILL, GL_LINE};
 use super::vertex::ClipVertex;
 use glam::Vec4;
 
+/// m * factor + r * units for a polygon in window coordinates: m is the
+/// largest depth slope of its plane (from its first three vertices, as
+/// setup does for filled triangles).
+fn polygon_offset(win: &[setup::WindowVertex], factor: f32, units: f32) -> f64 {
+    let (a, b, c) = (&win[0], &win[1], &win[2]);
+    let (dx1, dy1, dz1) = (b.x - a.x, b.y - a.y, b.z - a.z);
+    let (dx2, dy2, dz2) = (c.x - a.x, c.y - a.y, c.z - a.z);
+    let det = dx1 * dy2 - dx2 * dy1;
+    let m = if det != 0.0 {
+        let dzdx = (dz1 * dy2 - dz2 * dy1) / det;
+        let dzdy = (dz2 * dx1 - dz1 * dx2) / det;
+        dzdx.abs().max(dzdy.abs())
+    } else {
+        0.0
+    };
+    m * factor as f64 + units as f64 / crate::framebuffer::DEPTH_MAX as f64
+}
+
 pub fn draw(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3], flat_color: [Vec4; 2], edges: [bool; 3]) {
     let mut tri = [*v[0], *v[1], *v[2]];
     for (t, e) in tri.iter_mut().zip(edges) {
@@ -62,6 +80,20 @@ pub fn draw(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3], flat_co
         })
         .collect();
     let n = coloured.len();
+    // Polygon offset (3.5.5) for the LINE and POINT modes: the polygon's
+    // own depth slope, applied to its vertices' depth.
+    let offset = if mode == GL_LINE { rs.offset_line } else { rs.offset_point };
+    let mut coloured = coloured;
+    if let Some((factor, units)) = offset {
+        let o = polygon_offset(&win, factor, units);
+        let sz = rs.viewport_scale[2];
+        if sz != 0.0 {
+            for c in coloured.iter_mut() {
+                // Window z = oz + sz * z / w: shift z by o / sz * w.
+                c.pos.z += (o / sz) as f32 * c.pos.w;
+            }
+        }
+    }
     if mode == GL_LINE {
         let mut stipple = 0;
         for i in 0..n {
