@@ -11,3 +11,4 @@ pub mod quadric;
 pub mod scale;
 pub mod strings;
 pub mod tess;
+pub mod vec3;

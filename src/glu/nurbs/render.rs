@@ -33,15 +33,7 @@ use super::*;
 
 type P3 = [f64; 3];
 
-fn sub(a: P3, b: P3) -> P3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn cross(a: P3, b: P3) -> P3 {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
-fn len(a: P3) -> f64 {
-    (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt()
-}
+use super::super::vec3::{cross, norm, sub};
 
 const MAX_SEGMENTS: usize = 1024;
 
@@ -85,14 +77,14 @@ impl Renderer {
             let Some(q) = q else { return 64 };
             match self.method {
                 GLU_PATH_LENGTH | GLU_OBJECT_PATH_LENGTH => {
-                    let l: f64 = q.windows(2).map(|w| len(sub(w[1], w[0]))).sum();
+                    let l: f64 = q.windows(2).map(|w| norm(sub(w[1], w[0]))).sum();
                     (l / self.tolerance).ceil()
                 }
                 _ => {
                     if degree < 2 {
                         1.0
                     } else {
-                        let d = q.windows(3).map(|w| len([0, 1, 2].map(|k| w[2][k] - 2.0 * w[1][k] + w[0][k]))).fold(0.0, f64::max);
+                        let d = q.windows(3).map(|w| norm([0, 1, 2].map(|k| w[2][k] - 2.0 * w[1][k] + w[0][k]))).fold(0.0, f64::max);
                         (degree as f64 * (degree - 1) as f64 * d / (8.0 * self.tolerance)).sqrt().ceil()
                     }
                 }
@@ -318,21 +310,21 @@ pub fn point_normal(s: &Surface, u: f64, v: f64) -> (P3, P3) {
     let (pt, su) = dehomogenize(p, du);
     let (_, sv) = dehomogenize(p, dv);
     let mut n = cross(su, sv);
-    let mut scale = len(su).max(len(sv)).powi(2);
+    let mut scale = norm(su).max(norm(sv)).powi(2);
     let mut k = 1e-6;
     // (Written so that a NaN length also counts as degenerate.)
     #[allow(clippy::neg_cmp_op_on_partial_ord)]
-    while !(len(n) > 1e-5 * scale) && k < 0.2 {
+    while !(norm(n) > 1e-5 * scale) && k < 0.2 {
         let (cu, cv) = ((ua + ub) / 2.0, (va + vb) / 2.0);
         let (uu, vv) = (u + (cu - u) * k, v + (cv - v) * k);
         let (p2, du2, dv2) = eval_surface(s, uu, vv);
         let (_, su2) = dehomogenize(p2, du2);
         let (_, sv2) = dehomogenize(p2, dv2);
         n = cross(su2, sv2);
-        scale = len(su2).max(len(sv2)).powi(2);
+        scale = norm(su2).max(norm(sv2)).powi(2);
         k *= 10.0;
     }
-    let l = len(n);
+    let l = norm(n);
     let n = if l > 0.0 && l.is_finite() { n.map(|c| c / l) } else { [0.0, 0.0, 1.0] };
     (pt, n)
 }
