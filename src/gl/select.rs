@@ -14,6 +14,8 @@
 use super::context::Context;
 use super::enums::*;
 use crate::render::clip::Plane;
+use crate::render::setup::to_window;
+use crate::render::signed_area;
 use crate::render::ClipVertex;
 use glam::Vec4;
 
@@ -263,19 +265,6 @@ impl Context {
         self.select.names.len()
     }
 
-    /// Window coordinates of a clip-space vertex.
-    fn window(&self, v: &ClipVertex) -> [f64; 4] {
-        let rs = &self.derived.render;
-        let w = v.pos.w as f64;
-        let (x, y, z) = (v.pos.x as f64 / w, v.pos.y as f64 / w, v.pos.z as f64 / w);
-        [
-            rs.viewport_offset[0] + rs.viewport_scale[0] * x,
-            rs.viewport_offset[1] + rs.viewport_scale[1] * y,
-            rs.viewport_offset[2] + rs.viewport_scale[2] * z,
-            w,
-        ]
-    }
-
     /// A primitive in selection or feedback mode: `kind` is the feedback
     /// token; `reset` marks the first segment of a line (LINE_RESET_TOKEN).
     pub fn select_primitive(&mut self, verts: &[&ClipVertex], kind: f32, reset: bool) {
@@ -284,28 +273,14 @@ impl Context {
         if clipped.is_empty() || (verts.len() >= 3 && clipped.len() < 3) {
             return;
         }
-        let win: Vec<[f64; 4]> = clipped.iter().map(|v| self.window(v)).collect();
-        if verts.len() >= 3 {
-            // Face culling (3.5.1) applies: culled polygons are no hits.
-            let mut area = 0.0;
-            for i in 0..win.len() {
-                let (a, b) = (win[i], win[(i + 1) % win.len()]);
-                area += a[0] * b[1] - b[0] * a[1];
-            }
-            let front = (area > 0.0) == (self.polygon.front_face == GL_CCW);
-            if self.polygon.cull {
-                let culled = match self.polygon.cull_mode {
-                    GL_FRONT => front,
-                    GL_BACK => !front,
-                    _ => true,
-                };
-                if culled {
-                    return;
-                }
-            }
+        let rs = &self.derived.render;
+        let win: Vec<_> = clipped.iter().map(|v| to_window(rs, v)).collect();
+        // Face culling (3.5.1) applies: culled polygons are no hits.
+        if verts.len() >= 3 && rs.facing(signed_area(&win) > 0.0).is_none() {
+            return;
         }
         if self.select.mode == GL_SELECT {
-            let (lo, hi) = win.iter().fold((f64::MAX, f64::MIN), |(lo, hi), w| (lo.min(w[2]), hi.max(w[2])));
+            let (lo, hi) = win.iter().fold((f64::MAX, f64::MIN), |(lo, hi), w| (lo.min(w.z), hi.max(w.z)));
             let p = self.select.pending.get_or_insert((lo, hi));
             p.0 = p.0.min(lo);
             p.1 = p.1.max(hi);
@@ -319,13 +294,13 @@ impl Context {
         let ty = self.select.feedback_type;
         for (v, w) in clipped.iter().zip(&win) {
             let s = &mut self.select;
-            s.put_feedback(w[0] as f32);
-            s.put_feedback(w[1] as f32);
+            s.put_feedback(w.x as f32);
+            s.put_feedback(w.y as f32);
             if ty != GL_2D {
-                s.put_feedback(w[2] as f32);
+                s.put_feedback(w.z as f32);
             }
             if ty == GL_4D_COLOR_TEXTURE {
-                s.put_feedback(w[3] as f32);
+                s.put_feedback(v.pos.w);
             }
             if matches!(ty, GL_3D_COLOR | GL_3D_COLOR_TEXTURE | GL_4D_COLOR_TEXTURE) {
                 for c in v.color.to_array() {

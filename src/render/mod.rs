@@ -68,6 +68,33 @@ pub struct RenderState {
     pub texture: Option<std::sync::Arc<texture::TextureStage>>,
 }
 
+impl RenderState {
+    /// Facing and culling (3.5.1) of a polygon whose window-space
+    /// orientation is counter-clockwise or not: Some(front facing), or
+    /// None when glCullFace discards it.
+    #[inline]
+    pub fn facing(&self, ccw: bool) -> Option<bool> {
+        let front = ccw == self.front_ccw;
+        match self.cull {
+            Cull::Front if front => None,
+            Cull::Back if !front => None,
+            Cull::All => None,
+            _ => Some(front),
+        }
+    }
+}
+
+/// Twice the signed window-space area of a polygon (positive
+/// counter-clockwise).
+pub fn signed_area(win: &[setup::WindowVertex]) -> f64 {
+    (0..win.len())
+        .map(|i| {
+            let (a, b) = (&win[i], &win[(i + 1) % win.len()]);
+            a.x * b.y - b.x * a.y
+        })
+        .sum()
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Cull {
     None,

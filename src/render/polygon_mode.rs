@@ -10,7 +10,7 @@
 
 use super::clip;
 use super::setup;
-use super::{line, point, Cull, RenderState};
+use super::{line, point, RenderState};
 use crate::framebuffer::Framebuffer;
 use crate::gl::enums::{GL_FILL, GL_LINE};
 use super::vertex::ClipVertex;
@@ -46,21 +46,11 @@ pub fn draw(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3], flat_co
         clip::Outcome::Clipped => poly.verts.clone(),
     };
     let win: Vec<_> = verts.iter().map(|cv| setup::to_window(rs, cv)).collect();
-    let mut area = 0.0;
-    for i in 0..win.len() {
-        let (a, b) = (&win[i], &win[(i + 1) % win.len()]);
-        area += a.x * b.y - b.x * a.y;
-    }
+    let area = super::signed_area(&win);
     if area == 0.0 || !area.is_finite() {
         return;
     }
-    let front = (area > 0.0) == rs.front_ccw;
-    match rs.cull {
-        Cull::Front if front => return,
-        Cull::Back if !front => return,
-        Cull::All => return,
-        _ => {}
-    }
+    let Some(front) = rs.facing(area > 0.0) else { return };
     let mode = rs.polygon_mode[if front { 0 } else { 1 }];
     if mode == GL_FILL {
         for i in 1..win.len() - 1 {

@@ -11,7 +11,7 @@
 
 use super::raster;
 use super::vertex::ClipVertex;
-use super::{Cull, RenderState};
+use super::RenderState;
 use glam::Vec4;
 
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -104,13 +104,7 @@ pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &
     }
     // Window y points up, so counter-clockwise is positive area.
     let ccw = area > 0;
-    let front_facing = ccw == rs.front_ccw;
-    match rs.cull {
-        Cull::Front if front_facing => return,
-        Cull::Back if !front_facing => return,
-        Cull::All => return,
-        _ => {}
-    }
+    let Some(front_facing) = rs.facing(ccw) else { return };
     // Rasterize with positive orientation.
     let order = if ccw { [0, 1, 2] } else { [0, 2, 1] };
     let ex = order.map(|i| fx[i]);
