@@ -113,52 +113,38 @@ impl SelectState {
     }
 }
 
-/// The six frustum planes.
-const FRUSTUM: [Plane; 6] = [
+/// The view volume exactly (no guard band: a hit means the primitive
+/// meets the clip volume), plus w > 0 so window coordinates stay finite.
+const VIEW_VOLUME: [Plane; 7] = [
     Plane { n: Vec4::new(1.0, 0.0, 0.0, 1.0), d: 0.0 },
     Plane { n: Vec4::new(-1.0, 0.0, 0.0, 1.0), d: 0.0 },
     Plane { n: Vec4::new(0.0, 1.0, 0.0, 1.0), d: 0.0 },
     Plane { n: Vec4::new(0.0, -1.0, 0.0, 1.0), d: 0.0 },
     Plane { n: Vec4::new(0.0, 0.0, 1.0, 1.0), d: 0.0 },
     Plane { n: Vec4::new(0.0, 0.0, -1.0, 1.0), d: 0.0 },
+    crate::render::clip::FIXED_PLANES[2],
 ];
 
-/// Clips a convex polygon (or a segment, or a point) to the view volume
-/// and the user clip planes.
-fn clip_to_frustum(mut poly: Vec<ClipVertex>, user: &[Plane]) -> Vec<ClipVertex> {
-    if poly.iter().any(|v| !v.pos.is_finite()) {
-        return Vec::new();
+/// Clips a triangle, a segment or a point to the view volume and the user
+/// clip planes with the renderer's own clippers.
+fn clip_to_view_volume(verts: &[&ClipVertex], user: &[Plane]) -> Vec<ClipVertex> {
+    let planes: Vec<Plane> = VIEW_VOLUME.iter().chain(user).copied().collect();
+    match verts {
+        [p] => {
+            let keep = p.pos.is_finite() && planes.iter().all(|pl| pl.dist(&p.pos) >= 0.0);
+            if keep { vec![**p] } else { Vec::new() }
+        }
+        [a, b] => crate::render::line::clip_segment(&planes, a, b).map_or(Vec::new(), |(a, b)| vec![a, b]),
+        [a, b, c] => {
+            let mut poly = crate::render::clip::Polygon::new();
+            match crate::render::clip::clip_triangle(&planes, [a, b, c], &mut poly) {
+                crate::render::clip::Outcome::Rejected => Vec::new(),
+                crate::render::clip::Outcome::Inside => vec![**a, **b, **c],
+                crate::render::clip::Outcome::Clipped => poly.verts,
+            }
+        }
+        _ => Vec::new(),
     }
-    for plane in FRUSTUM.iter().chain(user) {
-        if poly.is_empty() {
-            break;
-        }
-        let n = poly.len();
-        if n == 1 {
-            if plane.dist(&poly[0].pos) < 0.0 {
-                poly.clear();
-            }
-            continue;
-        }
-        let mut out = Vec::with_capacity(n + 1);
-        let edges = if n == 2 { 1 } else { n };
-        for i in 0..edges {
-            let (a, b) = (&poly[i], &poly[(i + 1) % n]);
-            let (da, db) = (plane.dist(&a.pos), plane.dist(&b.pos));
-            if da >= 0.0 {
-                out.push(*a);
-            }
-            if (da >= 0.0) != (db >= 0.0) {
-                let (inside, outside, di, dout) = if da >= 0.0 { (a, b, da, db) } else { (b, a, db, da) };
-                out.push(ClipVertex::lerp(inside, outside, di / (di - dout)));
-            }
-        }
-        if n == 2 && plane.dist(&poly[1].pos) >= 0.0 {
-            out.push(poly[1]);
-        }
-        poly = out;
-    }
-    poly
 }
 
 impl Context {
@@ -269,7 +255,7 @@ impl Context {
     /// token; `reset` marks the first segment of a line (LINE_RESET_TOKEN).
     pub fn select_primitive(&mut self, verts: &[&ClipVertex], kind: f32, reset: bool) {
         let user = &self.derived.render.clip_planes[crate::render::clip::FIXED_PLANES.len()..];
-        let clipped = clip_to_frustum(verts.iter().map(|v| **v).collect(), user);
+        let clipped = clip_to_view_volume(verts, user);
         if clipped.is_empty() || (verts.len() >= 3 && clipped.len() < 3) {
             return;
         }
