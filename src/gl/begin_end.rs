@@ -113,7 +113,7 @@ impl Context {
         let size = if [a, b, c] == [1.0, 0.0, 0.0] {
             p.size
         } else {
-            let d = (self.transform.modelview.top().as_mat4() * obj).truncate().length();
+            let d = (self.derived.modelview * obj).truncate().length();
             let k = a + b * d + c * d * d;
             if k > 0.0 { p.size * (1.0 / k).sqrt() } else { p.size }
         };

@@ -164,6 +164,17 @@ impl Context {
         if pname == GL_SHININESS && !(0.0..=128.0).contains(&v[0]) {
             return self.set_error(GL_INVALID_VALUE);
         }
+        if !self.set_material(fs, pname, v) {
+            self.set_error(GL_INVALID_ENUM);
+        }
+    }
+
+    /// Stores a material property for the given faces; false (and nothing
+    /// stored) for an unknown name.
+    fn set_material(&mut self, fs: &[usize], pname: u32, v: [f32; 4]) -> bool {
+        if !matches!(pname, GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_SHININESS | GL_AMBIENT_AND_DIFFUSE | GL_COLOR_INDEXES) {
+            return false;
+        }
         let c = Vec4::from_array(v);
         for &f in fs {
             let m = &mut self.lighting.materials[f];
@@ -177,10 +188,10 @@ impl Context {
                     m.ambient = c;
                     m.diffuse = c;
                 }
-                GL_COLOR_INDEXES => {} // colour-index lighting: no effect in RGBA
-                _ => return self.set_error(GL_INVALID_ENUM),
+                _ => {} // GL_COLOR_INDEXES: colour-index lighting, no effect in RGBA
             }
         }
+        true
     }
 
     pub fn color_material(&mut self, face: u32, mode: u32) {
@@ -199,13 +210,9 @@ impl Context {
             return;
         }
         let (face, mode) = (self.lighting.color_material_face, self.lighting.color_material_mode);
-        let c = self.current.color;
-        // Cannot fail: face and mode were validated.
-        let prev = self.take_error();
-        self.material(face, mode, c);
-        let _ = self.take_error();
-        if prev != GL_NO_ERROR {
-            self.set_error(prev);
+        // Face and mode were validated by glColorMaterial.
+        if let Some(fs) = faces(face) {
+            self.set_material(fs, mode, self.current.color);
         }
     }
 
