@@ -12,6 +12,7 @@ procedure Expect(Cond: Boolean; const Msg: string);
 procedure ExpectPixel(X, Y: Integer; R, G, B, Tol: Integer; const Msg: string);
 function PixelAt(X, Y: Integer; out R, G, B: Integer): Boolean;
 function CountPixels(R, G, B, Tol: Integer): Integer;
+function CountNonBlack(X0, Y0, X1, Y1: Integer): Integer;
 procedure Done(const Name: string);
 
 var
@@ -63,6 +64,20 @@ begin
   for i := 0 to w * h - 1 do
     if (Abs(p[i*4] - R) <= Tol) and (Abs(p[i*4+1] - G) <= Tol) and (Abs(p[i*4+2] - B) <= Tol) then
       Inc(Result);
+end;
+
+{ pixels other than black in the rectangle [X0,X1) x [Y0,Y1) }
+function CountNonBlack(X0, Y0, X1, Y1: Integer): Integer;
+var p: PByte; w, h, x, y: Integer;
+begin
+  Result := 0;
+  p := Application.FrontImage(w, h);
+  if p = nil then Exit;
+  for y := Y0 to Y1 - 1 do
+    for x := X0 to X1 - 1 do
+      if (x >= 0) and (y >= 0) and (x < w) and (y < h) then
+        if (p[(y * w + x) * 4] or p[(y * w + x) * 4 + 1] or p[(y * w + x) * 4 + 2]) <> 0 then
+          Inc(Result);
 end;
 
 procedure Done(const Name: string);

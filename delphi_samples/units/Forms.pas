@@ -34,6 +34,11 @@ type
   TCloseAction = (caNone, caHide, caFree, caMinimize);
   TCloseEvent = procedure(Sender: TObject; var Action: TCloseAction) of object;
   TIdleEvent = procedure(Sender: TObject; var Done: Boolean) of object;
+  TMouseButton = (mbLeft, mbRight, mbMiddle);
+  TShiftState = set of (ssShift, ssAlt, ssCtrl, ssLeft, ssRight, ssMiddle, ssDouble);
+  TMouseEvent = procedure(Sender: TObject; Button: TMouseButton;
+    Shift: TShiftState; X, Y: Integer) of object;
+  TMouseMoveEvent = procedure(Sender: TObject; Shift: TShiftState; X, Y: Integer) of object;
 
   TForm = class(TComponent)
   private
@@ -47,6 +52,8 @@ type
     OnCreate, OnDestroy, OnPaint, OnResize: TNotifyEvent;
     OnKeyPress: TKeyPressEvent;
     OnClose: TCloseEvent;
+    OnMouseDown, OnMouseUp: TMouseEvent;
+    OnMouseMove: TMouseMoveEvent;
     property Handle: HWND read GetHandle;
     property Width: Integer read GetWidth;
     property Height: Integer read GetHeight;
@@ -65,6 +72,7 @@ type
     procedure Paint;
     procedure KeyPress(Key: Char);
     procedure Idle;
+    procedure Drag(X0, Y0, X1, Y1: Integer);
     procedure Terminate;
     function Snapshot(const Name: string): Boolean;
     function FrontImage(out W, H: Integer): PByte;
@@ -143,6 +151,16 @@ var done: Boolean;
 begin
   done := True;
   if Assigned(OnIdle) then OnIdle(Self, done);
+  Paint;
+end;
+
+{ a left-button drag from (X0,Y0) to (X1,Y1), client coordinates (y down),
+  in one move; each mouse event repaints as the programs ask }
+procedure TApplication.Drag(X0, Y0, X1, Y1: Integer);
+begin
+  if Assigned(MainForm.OnMouseDown) then MainForm.OnMouseDown(MainForm, mbLeft, [ssLeft], X0, Y0);
+  if Assigned(MainForm.OnMouseMove) then MainForm.OnMouseMove(MainForm, [ssLeft], X1, Y1);
+  if Assigned(MainForm.OnMouseUp) then MainForm.OnMouseUp(MainForm, mbLeft, [], X1, Y1);
   Paint;
 end;
 

@@ -15,6 +15,8 @@
   The correct values are declared as GLU_TESS_WINDING_RULE_GLU etc. for
   the programs that need to set a rule for real.
 
+  Its initialization masks floating-point exceptions, as Borland's does.
+
   On Linux opengl32 and glu32 are softgl (libGL.so, libGLU.so under
   build/lib); stdcall is the platform's C convention on x86-64. }
 unit OpenGL;
@@ -178,4 +180,12 @@ procedure gluDisk(qobj: GLUquadricObj; innerRadius, outerRadius: GLdouble; slice
 
 implementation
 
+uses Math;
+
+initialization
+  { Borland's unit does the same (Set8087CW($133F)): GL implementations
+    compute with infinities and NaNs (w = 0 vertices, degenerate normals),
+    which must not trap in the program. }
+  SetExceptionMask([exInvalidOp, exDenormalized, exZeroDivide, exOverflow,
+    exUnderflow, exPrecision]);
 end.
