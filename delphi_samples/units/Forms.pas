@@ -54,6 +54,8 @@ type
     OnClose: TCloseEvent;
     OnMouseDown, OnMouseUp: TMouseEvent;
     OnMouseMove: TMouseMoveEvent;
+    { WM_PAINT without a message handler of the form's own: OnPaint }
+    procedure DefaultHandler(var Message); override;
     property Handle: HWND read GetHandle;
     property Width: Integer read GetWidth;
     property Height: Integer read GetHeight;
@@ -85,7 +87,7 @@ function OutDir: string;
 
 implementation
 
-uses SysUtils, PngFile;
+uses SysUtils, Messages, PngFile;
 
 function softglGetDCImage(dc: Pointer; w, h: PLongInt): PByte; stdcall; external 'GL';
 
@@ -98,6 +100,11 @@ function TForm.GetHandle: HWND;
 begin
   if FHandle = 0 then FHandle := RegisterWindow(ClientWidth, ClientHeight);
   Result := FHandle;
+end;
+
+procedure TForm.DefaultHandler(var Message);
+begin
+  if (TMessage(Message).Msg = WM_PAINT) and Assigned(OnPaint) then OnPaint(Self);
 end;
 
 function TForm.GetWidth: Integer;
@@ -136,8 +143,11 @@ begin
 end;
 
 procedure TApplication.Paint;
+var m: TWMPaint;
 begin
-  if Assigned(MainForm.OnPaint) then MainForm.OnPaint(MainForm);
+  FillChar(m, SizeOf(m), 0);
+  m.Msg := WM_PAINT;
+  MainForm.Dispatch(m);    { a `message WM_PAINT` method, else OnPaint }
 end;
 
 procedure TApplication.KeyPress(Key: Char);

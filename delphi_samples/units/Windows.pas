@@ -74,6 +74,16 @@ const
 
   MB_OK = 0;
 
+type
+  TRect = record Left, Top, Right, Bottom: LongInt; end;
+  TPaintStruct = record
+    hdc: HDC;
+    fErase: BOOL;
+    rcPaint: TRect;
+    fRestore, fIncUpdate: BOOL;
+    rgbReserved: array[0..31] of Byte;
+  end;
+
 { user32 }
 function GetDC(Wnd: HWND): HDC;
 function ReleaseDC(Wnd: HWND; aDC: HDC): Integer;
@@ -81,6 +91,8 @@ function DeleteDC(aDC: HDC): BOOL;
 function InvalidateRect(Wnd: HWND; lpRect: Pointer; bErase: BOOL): BOOL;
 function MessageBox(Wnd: HWND; lpText, lpCaption: PAnsiChar; uType: UINT): Integer;
 function GetTickCount: DWORD;
+function BeginPaint(Wnd: HWND; var lpPaint: TPaintStruct): HDC;
+function EndPaint(Wnd: HWND; const lpPaint: TPaintStruct): BOOL;
 
 { gdi32 }
 function ChoosePixelFormat(DC: HDC; p2: PPixelFormatDescriptor): Integer;
@@ -206,6 +218,18 @@ begin
   Inc(MessageBoxCount);
   WriteLn('MessageBox [', lpCaption, ']: ', lpText);
   Result := 1;
+end;
+
+function BeginPaint(Wnd: HWND; var lpPaint: TPaintStruct): HDC;
+begin
+  FillChar(lpPaint, SizeOf(lpPaint), 0);
+  lpPaint.hdc := WindowDC(Wnd);
+  Result := lpPaint.hdc;
+end;
+
+function EndPaint(Wnd: HWND; const lpPaint: TPaintStruct): BOOL;
+begin
+  Result := True;
 end;
 
 function GetTickCount: DWORD;
