@@ -12,7 +12,7 @@ CC ?= cc
 LIB := build/lib
 SO := target/release/libsoftgl.so
 
-.PHONY: piglit bench all lib test rust-test c-test exports-test demo coverage coverage-check deps clean
+.PHONY: piglit bench all lib test rust-test c-test exports-test delphi-test demo coverage coverage-check deps clean
 
 all: lib
 
@@ -34,7 +34,7 @@ lib:
 deps:
 	@sh tools/install_deps.sh
 
-test: deps lib rust-test exports-test coverage-check c-test
+test: deps lib rust-test exports-test coverage-check c-test delphi-test
 
 rust-test:
 	$(CARGO) test --release --workspace
@@ -45,8 +45,14 @@ exports-test: lib
 c-test: lib
 	bash c_tests/run.sh
 
+# The Free Pascal (Delphi mode) book programs, their images checked
+# (delphi_samples/run.sh; installs fp-compiler when root, fails without it).
+delphi-test: lib
+	bash delphi_samples/run.sh
+
 demo: lib
 	sh demo/run.sh
+	DELPHI_OUT=out/demo/delphi bash delphi_samples/run.sh
 
 # piglit's GL 1.x group on Xvfb against softgl: out/piglit.summary.txt.
 piglit: lib

@@ -17,7 +17,8 @@
 #
 # Variables: DELPHI_OUT (images, default out/delphi), DELPHI_BLESS=1 (write
 # the goldens instead of comparing: then look at every one of them),
-# SOFTGL_IMGCMP (default target/release/imgcmp), TOL (2), MAX_BAD (40),
+# SOFTGL_IMGCMP (default target/release/imgcmp), FPC (the compiler, fpc),
+# TOL (2), MAX_BAD (40),
 # TEST_TIMEOUT (60 s).  Ends with "N passed, N failed".
 set -u
 cd "$(dirname "$0")/.." || exit 2
@@ -32,6 +33,7 @@ TOL=${TOL:-2}
 MAX_BAD=${MAX_BAD:-40}
 TEST_TIMEOUT=${TEST_TIMEOUT:-60}
 IMGCMP=${SOFTGL_IMGCMP:-target/release/imgcmp}
+FPC=${FPC:-fpc}
 case $IMGCMP in /*) ;; *) IMGCMP=$ROOT/$IMGCMP ;; esac
 
 # name | program (under delphi_samples) | arguments | working directory
@@ -65,7 +67,7 @@ passed=0 failed=0
 failed_names=()
 fail() { echo "FAIL $1${2:+ ($2)}"; failed=$((failed + 1)); failed_names+=("$1"); }
 
-if ! command -v fpc >/dev/null 2>&1; then
+if ! command -v "$FPC" >/dev/null 2>&1; then
     if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
         echo "installing Free Pascal (fp-compiler fp-units-gfx)..."
         export DEBIAN_FRONTEND=noninteractive
@@ -73,7 +75,7 @@ if ! command -v fpc >/dev/null 2>&1; then
         apt-get install -y -qq --no-install-recommends fp-compiler fp-units-gfx >/dev/null
     fi
 fi
-if ! command -v fpc >/dev/null 2>&1; then
+if ! command -v "$FPC" >/dev/null 2>&1; then
     n=0
     while IFS='|' read -r name _; do
         [ -z "$name" ] && continue
@@ -101,7 +103,7 @@ build() { # program.dpr -> 0 when built
     local src=$1 log
     [ -n "${built[$src]:-}" ] && return "${built[$src]}"
     log=$BUILD/$(basename "$src" .dpr).build.log
-    fpc -Mdelphi -O1 -vew -Fudelphi_samples/units -Fu"delphi_samples/$(dirname "$src")" \
+    "$FPC" -Mdelphi -O1 -vew -Fudelphi_samples/units -Fu"delphi_samples/$(dirname "$src")" \
         -k-L"$LIB" -k-rpath="$LIB" -FU"$BUILD" -FE"$BUILD" "delphi_samples/$src" >"$log" 2>&1
     built[$src]=$?
     [ "${built[$src]}" = 0 ] || cat "$log"

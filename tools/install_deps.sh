@@ -3,7 +3,7 @@
 # and they are missing: a C compiler, pkg-config, and Mesa's OSMesa and GLU
 # (the LD_PRELOAD test builds a program against Mesa and runs it on softgl),
 # and for the GLX test Xvfb, the Xlib headers, x11-utils and mesa-utils
-# (glxgears).
+# (glxgears), and Free Pascal with its gl/glu units for delphi_samples/.
 set -eu
 need=""
 command -v cc >/dev/null 2>&1 || need="$need gcc libc6-dev"
@@ -14,6 +14,7 @@ command -v Xvfb >/dev/null 2>&1 || need="$need xvfb"
 [ -f /usr/include/X11/Xlib.h ] || need="$need libx11-dev"
 command -v xdpyinfo >/dev/null 2>&1 || need="$need x11-utils"
 command -v glxgears >/dev/null 2>&1 || need="$need mesa-utils"
+command -v fpc >/dev/null 2>&1 || need="$need fp-compiler fp-units-gfx"
 [ -z "$need" ] && exit 0
 if [ "$(id -u)" != 0 ] || ! command -v apt-get >/dev/null 2>&1; then
   echo "install_deps: missing$need (not root or no apt-get: tests that need them will be skipped)"
