@@ -382,6 +382,15 @@ fn pow2_inv(x: f64) -> f64 {
     2f64.powi(-e.clamp(-1000, 1000))
 }
 
+/// Three doubles laid out as a Delphi / Free Pascal dynamic array: the
+/// header (reference count, high bound) sits right before the elements.
+#[repr(C)]
+struct PascalArray3 {
+    refcount: isize,
+    high: isize,
+    coords: [f64; 3],
+}
+
 struct Comb<'a> {
     job: &'a Job,
     p3: &'a mut Vec<[f64; 3]>,
@@ -398,15 +407,22 @@ impl Combiner for Comb<'_> {
         let q1 = lerp(self.p3[e[0]], self.p3[e[1]], t);
         let q2 = lerp(self.p3[e[2]], self.p3[e[3]], s);
         let coords = [0.5 * q1[0] + 0.5 * q2[0], 0.5 * q1[1] + 0.5 * q2[1], 0.5 * q1[2] + 0.5 * q2[2]];
+        // Delphi programs declare `coords` as a dynamic array (the Persian
+        // book's tesswind does): the compiled callback then adds and drops
+        // a reference in the array header just before the pointer. Give it
+        // a header of our own that says "constant array" (reference count
+        // -1, high bound 2), so that touches only this struct and never
+        // frees anything.
+        let pascal = PascalArray3 { refcount: -1, high: 2, coords };
         let vd = [self.data[e[0]], self.data[e[1]], self.data[e[2]], self.data[e[3]]];
         let w = [(0.5 * (1.0 - t)) as f32, (0.5 * t) as f32, (0.5 * (1.0 - s)) as f32, (0.5 * s) as f32];
         let mut out: *mut c_void = std::ptr::null_mut();
         let cb = &self.job.cb.0;
         unsafe {
             if let Some(f) = cb[(GLU_TESS_COMBINE_DATA - GLU_TESS_BEGIN) as usize] {
-                std::mem::transmute::<unsafe extern "system" fn(), FnCombineData>(f)(coords.as_ptr(), vd.as_ptr(), w.as_ptr(), &mut out, self.job.pdata);
+                std::mem::transmute::<unsafe extern "system" fn(), FnCombineData>(f)(pascal.coords.as_ptr(), vd.as_ptr(), w.as_ptr(), &mut out, self.job.pdata);
             } else if let Some(f) = cb[(GLU_TESS_COMBINE - GLU_TESS_BEGIN) as usize] {
-                std::mem::transmute::<unsafe extern "system" fn(), FnCombine>(f)(coords.as_ptr(), vd.as_ptr(), w.as_ptr(), &mut out);
+                std::mem::transmute::<unsafe extern "system" fn(), FnCombine>(f)(pascal.coords.as_ptr(), vd.as_ptr(), w.as_ptr(), &mut out);
             }
         }
         if out.is_null() {
