@@ -13,11 +13,12 @@
   - keyboard() as five plain `if`s: each key press runs through every rule
     and ends on ODD again (the C original uses `else if`);
   - the viewport from the outer Width/Height of the form.
+  - the combine callback's dynamic-array parameters (`coords: my_arr`,
+    `var dataOut: my_arr`), which make the compiled code count references
+    in a header before GLU's coordinates.
   Changed: the error callback is registered (the book comments it out) so
   the INVALID_ENUM is seen; the combine callback allocates three doubles
-  (the book's SetLength(vertex, 2) writes past the end) and takes its
-  arguments as pointers (the book's dynamic-array parameters reach into
-  the memory before GLU's arrays).
+  (the book's SetLength(vertex, 2) writes past the end).
 
   For the other rules the driver can switch to GLU's real property value
   (WindingProperty) and to the C original's `else if` keyboard
@@ -61,6 +62,7 @@ var
   TessErrors: Integer = 0;
   LastTessError: GLenum = 0;
   CombineCount: Integer = 0;
+  CombineHigh: Integer = -99;
 
 implementation
 
@@ -86,8 +88,7 @@ var
     (200, 50, 0), (250, 300, 0), (150, 300, 0));
 
 type
-  TVertex3d = array[0..2] of GLdouble;
-  PVertex3d = ^TVertex3d;
+  my_arr = array of GLdouble;
 
 constructor TForm1.Create(AOwner: TComponent);
 begin
@@ -134,18 +135,22 @@ begin
   glVertex3dv(data);
 end;
 
-{ A new vertex where edges cross: its position is all the program needs
-  (the colour is constant).  The vertices are never freed, as in the book. }
-procedure combineCallback(coords: PVertex3d; vertexData: Pointer;
-  weight: PGLfloat; var dataOut: Pointer); stdcall;
+{ A new vertex where edges cross.  As in the book, coords and dataOut are
+  Pascal dynamic arrays: the compiled callback adds a reference to coords'
+  header and assigning dataOut drops one from the old value, so GLU must
+  hand over coords behind a valid-looking header and dataOut as nil.  The
+  vertices are never freed, as in the book. }
+procedure combineCallback(coords: my_arr; var vdata: Pointer;
+  weight: Pointer; var dataOut: my_arr); stdcall;
 var
-  vertex: PVertex3d;
+  vertex: my_arr;
 begin
   Inc(CombineCount);
-  New(vertex);
-  vertex^[0] := coords^[0];
-  vertex^[1] := coords^[1];
-  vertex^[2] := coords^[2];
+  CombineHigh := High(coords);
+  SetLength(vertex, 3);      { the book allocates 2 and writes 3 }
+  vertex[0] := coords[0];
+  vertex[1] := coords[1];
+  vertex[2] := coords[2];
   dataOut := vertex;
 end;
 

@@ -239,6 +239,7 @@ begin
     Expect(TessErrors = 0, Format('%d tessellator errors', [TessErrors]));
   end;
   Expect(CombineCount > 0, 'the spiral and the overlapping shapes need COMBINE');
+  Expect(CombineHigh = 2, Format('High(coords) in the combine callback is %d: GLU should pass a 3-element array header', [CombineHigh]));
   Expect(glGetError = 0, 'glGetError');
   Application.Terminate;
   Done('tesswind ' + mode);
