@@ -97,6 +97,8 @@ if [ ! -x "$IMGCMP" ]; then
 fi
 
 mkdir -p "$BUILD" "$OUT"
+# a full run starts from no images, so a golden no run produced shows up
+[ -n "$FILTER" ] || rm -f "$OUT"/*.png
 declare -A built=()
 
 build() { # program.dpr -> 0 when built
