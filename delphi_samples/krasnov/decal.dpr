@@ -1,8 +1,8 @@
 { decal.dpr -- drives frmMain (Krasnov's stencil decals) headless: keys
-  1..6 for each stage in the colour view (decal_stage1..6), then at
-  stage 6 the stencil view (decal_stencil), the depth view (decal_depth)
-  and the colour view with the stencil decals turned off
-  (decal_nostencil).  Pixel checks come from the lighting equation and the
+  1..6 for each stage in the colour view (decal_stage1..6), the stencil
+  view (decal_stencil_stage1..6) and the depth view
+  (decal_depth_stage1..6), then the colour view of stage 6 with the
+  stencil decals turned off (decal_nostencil).  Pixel checks come from the lighting equation and the
   stencil rules: with the light straight down and GL_NORMALIZE, a colour c
   on a (0,1,0) normal shows as min(1, 0.2 c + c) (global ambient 0.2 +
   diffuse).  The ground's normal comes from glNormal3i(0,1,0), and GL 1.5
@@ -32,7 +32,11 @@ end;
 
 const
   GroundNdotL = 3 / Sqrt(11);
+  Palette: array[0..6, 0..2] of Integer = ((255, 0, 0), (255, 218, 0), (72, 255, 0),
+    (0, 255, 145), (0, 145, 255), (72, 0, 255), (255, 0, 218));
 var
+  count: array[0..6] of Integer;
+  v: Integer;
   i, brown, asphalt, yellow, shadowGround, shadowAsphalt, n: Integer;
 begin
   Application.Initialize;
@@ -59,32 +63,52 @@ begin
     end;
   end;
 
+  { the stencil view after each stage.  Palette: 0 red (bare ground),
+    1 yellow (asphalt), 2 yellowish green (stripes), 3 bluish cyan
+    (shadow), 4 cyanish blue (ground behind the airplane), 5 purplish blue
+    (cleared, and the airplane off the ground), 6 never }
   frmGL.miStencilClick(nil);
-  Application.Paint;
-  Application.Snapshot('decal_stencil');
-  { palette: 0 red (bare ground), 1 yellow (asphalt), 2 yellowish green
-    (stripes), 3 bluish cyan (shadow), 4 cyanish blue (ground behind the
-    airplane), 5 purplish blue (cleared, and the airplane off the ground) }
-  Expect(CountPixels(255, 0, 0, 0) > 20000, 'stencil 0: visible ground');
-  Expect(CountPixels(255, 218, 0, 0) > 15000, 'stencil 1: asphalt');
-  Expect(CountPixels(72, 255, 0, 0) > 3000, 'stencil 2: stripes');
-  Expect(CountPixels(0, 255, 145, 0) > 300, 'stencil 3: shadow');
-  Expect(CountPixels(0, 145, 255, 0) > 500, 'stencil 4: ground hidden by the airplane');
-  Expect(CountPixels(72, 0, 255, 0) > 5000, 'stencil 5: background');
-  n := CountPixels(255, 0, 218, 0);
-  Expect(n = 0, Format('%d pixels of stencil 6: no such value', [n]));
-  ExpectPixel(2, 397, 72, 0, 255, 0, 'top left corner: cleared to 5');
+  for i := 1 to 6 do
+  begin
+    Application.KeyPress(Chr(Ord('0') + i));
+    Application.Snapshot('decal_stencil_stage' + IntToStr(i));
+    for v := 0 to 6 do count[v] := CountPixels(Palette[v, 0], Palette[v, 1], Palette[v, 2], 0);
+    WriteLn(Format('stencil view, stage %d: values 0..6: %d %d %d %d %d %d %d',
+      [i, count[0], count[1], count[2], count[3], count[4], count[5], count[6]]));
+    Expect(count[0] + count[1] + count[2] + count[3] + count[4] + count[5] = winWidth * winHeight,
+      'every pixel shows a stencil value 0..5');
+    Expect(count[6] = 0, 'no stencil value 6');
+    { the values a stage can have written: the ground (stage 3) 0 and 4,
+      then decal k (stage k + 1) the value k }
+    Expect((count[0] > 0) = (i >= 3), Format('stage %d: value 0 (visible ground)', [i]));
+    Expect((count[4] > 0) = (i >= 3), Format('stage %d: value 4 (ground behind the airplane)', [i]));
+    Expect((count[1] > 0) = (i >= 4), Format('stage %d: value 1 (asphalt)', [i]));
+    Expect((count[2] > 0) = (i >= 5), Format('stage %d: value 2 (stripes)', [i]));
+    Expect((count[3] > 0) = (i >= 6), Format('stage %d: value 3 (shadow)', [i]));
+    ExpectPixel(2, 397, 72, 0, 255, 0, 'top left corner: cleared to 5');
+  end;
+  Expect(count[1] > 15000, 'stencil 1: asphalt');
+  Expect(count[2] > 3000, 'stencil 2: stripes');
+  Expect(count[3] > 300, 'stencil 3: shadow');
+  Expect(count[4] > 500, 'stencil 4: ground hidden by the airplane');
 
+  { the depth view after each stage: inverted, normalised, background black }
   frmGL.miDepthClick(nil);
-  Application.Paint;
-  Application.Snapshot('decal_depth');
-  ExpectPixel(2, 397, 0, 0, 0, 0, 'depth view: the background is black');
-  n := CountPixels(255, 255, 255, 0);
-  Expect(n >= 1, 'depth view: the nearest point is white');
+  for i := 1 to 6 do
+  begin
+    Application.KeyPress(Chr(Ord('0') + i));
+    Application.Snapshot('decal_depth_stage' + IntToStr(i));
+    ExpectPixel(2, 397, 0, 0, 0, 0, 'depth view: the background is black');
+    n := CountPixels(255, 255, 255, 0);
+    if i = 1 then
+      Expect(CountNonBlack(0, 0, winWidth, winHeight) = 0, 'depth view, stage 1: nothing drawn, all black')
+    else
+      Expect(n >= 1, Format('depth view, stage %d: the nearest point is white', [i]));
+  end;
 
   frmGL.miColorClick(nil);
   frmGL.miStencilDecalsClick(nil);
-  Application.Paint;
+  Application.KeyPress('6');
   Application.Snapshot('decal_nostencil');
   { the decals are depth-tested against the coplanar ground (GL_LESS): they
     fail where their depth equals the ground's, so most of them vanish }
