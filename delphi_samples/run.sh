@@ -61,6 +61,7 @@ stencil|textbook/stencil.dpr||.
 accum|textbook/accum.dpr||.
 clipplanes|textbook/clipplanes.dpr||.
 unproject|textbook/unproject.dpr||.
+pixels|textbook/pixels.dpr||.
 "
 
 passed=0 failed=0

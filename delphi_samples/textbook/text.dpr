@@ -7,7 +7,9 @@
      colour current then: the first frame draws white, the second yellow.
   2. CreateFont('Courier', 36, FW_BOLD, ANSI_CHARSET, ...), lists from
      glGenLists(224) for codes 32..255, glListBase(base - 32) inside
-     glPushAttrib(GL_LIST_BIT): bold 36 px text at (20, 60). }
+     glPushAttrib(GL_LIST_BIT): bold 36 px text at (20, 60).
+  3. the same under gluPerspective: the raster positions are invalid
+     (F19 quirk f) and nothing is drawn. }
 program text;
 
 {$mode delphi}
@@ -27,6 +29,8 @@ type
 var
   Form1: TForm1;
   base: GLuint;
+  Perspective: Boolean = False;
+  RasterValid: GLboolean;
 
 const
   { 'Привет OpenGL !!!' in code page 1251 }
@@ -68,11 +72,23 @@ end;
 
 procedure TForm1.Draw;
 begin
+  if Perspective then
+  begin
+    { (f): a perspective projection and an identity modelview put
+      (20, 10, 0) on the eye's plane: w = 0, the raster position is
+      invalid and neither glBitmap list draws }
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity;
+    gluPerspective(45, ClientWidth / ClientHeight, 0.1, 100);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity;
+  end;
   glClear(GL_COLOR_BUFFER_BIT);
   glRasterPos2i(20, 10);
   glColor3f(1, 1, 0);
   glCallLists(17, GL_UNSIGNED_BYTE, PAnsiChar(Hello));
   glRasterPos2i(20, 60);
+  glGetBooleanv(GL_CURRENT_RASTER_POSITION_VALID, @RasterValid);
   glPrintText(base, PAnsiChar(Hello));
 end;
 
@@ -94,6 +110,11 @@ begin
   Application.Snapshot('text_frame2');
   Expect(CountPixels(255, 255, 255, 0) = 0, 'frame 2: no white left: both lines yellow');
   Expect(CountPixels(255, 255, 0, 0) = white + yellow, 'frame 2: the same pixels, yellow');
+  Perspective := True;
+  Application.Paint;
+  Application.Snapshot('text_perspective');
+  Expect(RasterValid = GL_FALSE, 'raster position on the eye plane is invalid');
+  Expect(CountNonBlack(0, 0, 400, 120) = 0, 'an invalid raster position draws no text');
   Expect(glGetError = GL_NO_ERROR, 'glGetError');
   Application.Terminate;
   Done('text');
