@@ -153,6 +153,19 @@ if [ -z "$FILTER" ] && [ "${DELPHI_BLESS:-}" != 1 ]; then
     done
 fi
 
+# a page for the images: delphi_samples/gallery.tsv gives each one's book,
+# program and what it exercises
+if [ -z "$FILTER" ]; then
+    awk -F'\t' 'function esc(s) { gsub(/&/, "\\&amp;", s); gsub(/</, "\\&lt;", s); gsub(/>/, "\\&gt;", s); return s }
+        BEGIN { print "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>softgl: the Delphi programs</title></head><body>";
+                print "<h1>The books&apos; Delphi programs under Free Pascal, on softgl</h1>";
+                print "<p>Built and checked by <code>delphi_samples/run.sh</code>; see <code>docs/delphi.md</code>.</p>";
+                print "<table border=\"1\" cellpadding=\"4\"><tr><th>image</th><th>book</th><th>program</th><th>what it shows</th></tr>" }
+        /^#/ { next }
+        { printf "<tr><td><img src=\"%s.png\" alt=\"%s\"><br>%s</td><td>%s</td><td>%s</td><td>%s</td></tr>\n", $1, $1, $1, esc($2), esc($3), esc($4) }
+        END { print "</table></body></html>" }' delphi_samples/gallery.tsv >"$OUT/index.html"
+fi
+
 if [ $failed -gt 0 ]; then echo "failed: ${failed_names[*]}"; fi
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]
