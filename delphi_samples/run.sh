@@ -150,6 +150,7 @@ if [ -z "$FILTER" ] && [ "${DELPHI_BLESS:-}" != 1 ]; then
     for g in "$GOLDEN"/*.png; do
         case $g in *.actual.png) continue ;; esac
         [ -f "$OUT/$(basename "$g")" ] || fail "$(basename "$g" .png)" "golden with no image from this run"
+        grep -q "^$(basename "$g" .png)	" delphi_samples/gallery.tsv || fail "$(basename "$g" .png)" "not described in delphi_samples/gallery.tsv"
     done
 fi
 
