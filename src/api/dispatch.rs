@@ -1,7 +1,9 @@
 //! How an entry point reaches the GL state machine: find the current
 //! context, never let a panic cross the C ABI, and apply the Begin/End rule
-//! for commands that are not allowed between glBegin and glEnd.
+//! for commands that are not allowed between glBegin and glEnd. Every
+//! entry point also runs with floating-point exceptions masked (`fpenv`).
 
+use super::fpenv::FpGuard;
 use super::ret::Zero;
 use crate::gl::{enums::GL_INVALID_OPERATION, Context};
 use crate::winsys::current::current;
@@ -13,6 +15,7 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 /// command returns zero.
 #[inline]
 pub fn with_current<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
+    let _fp = FpGuard::enter();
     let p = current();
     if p.is_null() {
         return R::zero();
@@ -48,5 +51,6 @@ pub fn outside_begin_end<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
 /// the panic guard.
 #[inline]
 pub fn guarded<R: Zero>(f: impl FnOnce() -> R) -> R {
+    let _fp = FpGuard::enter();
     catch_unwind(AssertUnwindSafe(f)).unwrap_or_else(|_| R::zero())
 }

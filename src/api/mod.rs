@@ -7,6 +7,7 @@
 
 pub mod args;
 pub mod dispatch;
+pub mod fpenv;
 pub mod ret;
 pub mod table;
 pub mod types;
