@@ -2,7 +2,7 @@
  * Grantham's decal.c), seeds-inventory §3.4.
  *
  * BOOK: S2, Russian "OpenGL in Delphi" (M. V. Krasnov, "OpenGL. Grafika v proektakh Delphi"), stencil patterns on a plane, Ex72 (S2:19-178)
- * SHOWS: stages 1-6 (clear, airplane, ground, runway asphalt, yellow stripes, a 50% black shadow) drawn coplanar without z-fighting; the stencil view (palette: 0 red, 1 yellow, 2 yellow-green, 3 blue-cyan, 4 cyan-blue, 5 purple-blue background); the inverted normalised depth view; the decals without stencil
+ * SHOWS: stages 1-6 (clear, airplane, ground, runway asphalt, yellow stripes, a 50% black shadow) drawn coplanar without z-fighting, each in the colour, stencil and depth views; the stencil view (palette: 0 red, 1 yellow, 2 yellow-green, 3 blue-cyan, 4 cyan-blue, 5 purple-blue background); the inverted normalised depth view; the decals without stencil
  * FEATURES: stencil decals (ALWAYS/KEEP,REPLACE,ZERO then GREATER/KEEP,KEEP,REPLACE), glDepthMask, glReadPixels of GL_STENCIL_INDEX and GL_DEPTH_COMPONENT/GL_FLOAT, glDrawPixels GL_RGB and GL_LUMINANCE/GL_FLOAT, glGetIntegerv(GL_DRAW_BUFFER), glDrawBuffer(GL_BACK), GLU quadrics under non-uniform scale, GL_NORMALIZE rescuing glNormal3i, projected shadow with glScalef(1,0,1), blending
  *
  * The window code is Krasnov's: a zero-filled PIXELFORMATDESCRIPTOR with
@@ -379,6 +379,29 @@ int main(void)
         int k = book_count(0, 0, W, H, colors[i][0], colors[i][1], colors[i][2], 0);
         h_expect(k == n[i], "stencil view: %d pixels of colour %d, %d stencil values %d", k, i, n[i], i);
     }
+
+    /* Stencil and depth views of every stage: the stencil holds only the
+     * values of the layers drawn so far (5 = cleared; the airplane is
+     * drawn with the stencil test off and writes nothing). */
+    for (stage = 1; stage <= 6; stage++) {
+        static const int allowed[7] = {0, 1 << 5, 1 << 5, 0x31, 0x33, 0x37, 0x3f};
+        int seen = 0;
+        dataChoice = STENCIL;
+        WMPaint();
+        for (i = 0; i < W * H; i++)
+            seen |= 1 << (stencilSave[i] & 31);
+        h_expect(seen == allowed[stage], "stage %d: stencil values seen 0x%x, expected 0x%x", stage, seen,
+                 allowed[stage]);
+        snprintf(name, sizeof name, "s2_decal-stage%d_stencil", stage);
+        book_shot(name, 0, 0);
+        dataChoice = DEPTH;
+        WMPaint();
+        snprintf(name, sizeof name, "s2_decal-stage%d_depth", stage);
+        book_shot(name, 2, 60);
+        if (stage == 1)
+            h_expect(book_count(0, 0, W, H, 0, 0, 0, 0) == W * H, "stage 1 depth view is not black");
+    }
+    stage = 6;
 
     /* Depth view. */
     dataChoice = DEPTH;
