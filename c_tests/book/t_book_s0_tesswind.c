@@ -2,7 +2,7 @@
  * book (seeds-inventory §3.1), in C, as the Red Book program it ports.
  *
  * BOOK: S0, Persian "3D programming with OpenGL in Delphi", ch. 21 "Reflection and Tessellation", first program (unit ch21_01, S0:715-1104)
- * SHOWS: four tessellated shapes (nested squares, the same with two contours reversed, a self-crossing spiral, two quads and a triangle), one image per winding rule; and the Delphi program's own output, which is always the ODD image
+ * SHOWS: four tessellated shapes (nested squares, the same with two contours reversed, a self-crossing spiral, two quads and a triangle), one image per winding rule; the Delphi program's own output, which is always the ODD image, and that image with the Delphi viewport sized from the form's outer size (scaled up, cut at the top and right)
  * FEATURES: GLU tessellator (gluTessBeginPolygon/Contour/Vertex, BEGIN/VERTEX/END/COMBINE/ERROR callbacks, all five GLU_TESS_WINDING_* rules, an invalid property), display lists compiled while the tessellator calls back, gluOrtho2D, flat shading
  *
  * Checks: every pixel whose centre lies more than a pixel away from an edge
@@ -20,7 +20,7 @@
 
 #define W 400
 #define H 400
-#define SCALE 0.4 /* gluOrtho2D(0,1000,...) on 400 pixels */
+static double sx = 0.4, sy = 0.4; /* pixels per unit: gluOrtho2D(0,1000,...) on 400 pixels */
 
 static GLdouble rects[12][3] = {
     {50, 50, 0}, {300, 50, 0}, {300, 300, 0}, {50, 300, 0},
@@ -202,7 +202,7 @@ static int check_picture(GLdouble rule, const char *name)
     int x, y, bad = 0, checked = 0;
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
-            double p[2] = {(x + 0.5) / SCALE, (y + 0.5) / SCALE}, dmin = 1e9;
+            double p[2] = {(x + 0.5) / sx, (y + 0.5) / sy}, dmin = 1e9;
             int col = p[0] >= 500, row = p[1] >= 500, wind = 0, k, want;
             const unsigned char *px = book_at(x, y);
             double area = 0;
@@ -219,7 +219,7 @@ static int check_picture(GLdouble rule, const char *name)
              * the lone clockwise spiral has windings +1..+4, not -1..-4. */
             if (area < 0)
                 wind = -wind;
-            if (dmin < 1.0 / SCALE)
+            if (dmin < 1.0 / (sx < sy ? sx : sy))
                 continue; /* within a pixel of an edge: left to the rasterizer */
             checked++;
             want = rule_accepts(rule, wind) ? 255 : 0;
@@ -257,6 +257,13 @@ int main(void)
     GLdouble current, got = 0;
     int i;
 
+#ifdef BOOK_HAVE_WGL
+    /* VCL may call FormResize before FormCreate: wglMakeCurrent(0, 0) and
+     * GL calls with no context at all must do nothing, harmlessly. */
+    h_expect(wglMakeCurrent(NULL, NULL) == TRUE, "wglMakeCurrent(0, 0) before any context");
+    reshape(W, H);
+    h_expect(glGetError() == GL_NO_ERROR, "glGetError with no context");
+#endif
     book_open(W, H);
     /* initGL */
     glClearColor(0, 0, 0, 0);
@@ -305,6 +312,18 @@ int main(void)
     h_expect(memcmp(book_px, odd, sizeof odd) == 0,
              "the Delphi program's picture (Borland constant) differs from the ODD picture");
     check_picture(GLU_TESS_WINDING_ODD, "s0_tesswind-delphi");
+
+    /* The Delphi program sizes the viewport from the form's outer Width and
+     * Height (416 x 439 for a 400 x 400 client area), not the client area:
+     * the viewport is larger than the drawable, the picture is scaled up
+     * and its top and right are cut off (§3.1 quirk 5) -- cleanly. */
+    reshape(416, 439);
+    display();
+    book_shot("s0_tesswind-delphi_outer_size", 0, 0);
+    sx = 416 / 1000.0;
+    sy = 439 / (1000.0 * 439 / 416);
+    check_picture(GLU_TESS_WINDING_ODD, "s0_tesswind-delphi_outer_size");
+    reshape(W, H);
 
     gluDeleteTess(tobj);
     book_close();
