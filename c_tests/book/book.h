@@ -160,6 +160,19 @@ BOOK_FN int book_count(int x0, int y0, int x1, int y1, int r, int g, int b, int 
     return n;
 }
 
+/* Compare with goldens?  Not with BOOK_NO_GOLDEN set (make demo), nor when
+ * built against another GL (Mesa): the goldens are softgl's renders and GL
+ * leaves edge ties to the implementation, so there only the pixel checks
+ * apply (c_tests/book/crosscheck.sh reports the RMSE). */
+BOOK_FN int book_compare_goldens(void)
+{
+#ifdef BOOK_HAVE_WGL
+    return getenv("BOOK_NO_GOLDEN") == NULL;
+#else
+    return 0;
+#endif
+}
+
 /* mkdir -p */
 BOOK_FN void book_mkdirs(const char *path)
 {
@@ -179,7 +192,8 @@ BOOK_FN void book_mkdirs(const char *path)
 
 /* Write the current image as $SOFTGL_TEST_OUT/book/NAME.pam and compare it
  * with c_tests/golden/book/NAME.png (SOFTGL_BLESS=1 writes the golden;
- * look at it before committing).  Then SwapBuffers, as the book does at
+ * look at it before committing; skipped when built without softgl's wgl
+ * header, i.e. against Mesa).  Then SwapBuffers, as the book does at
  * the end of its paint handler; with wgl the presented frame must be the
  * image just read. */
 BOOK_FN void book_shot(const char *name, int tol, int max_bad)
@@ -208,13 +222,16 @@ BOOK_FN void book_shot(const char *name, int tol, int max_bad)
     fclose(f);
     snprintf(golden, sizeof golden, "c_tests/golden/book/%s.png", name);
     if (bless && strcmp(bless, "1") == 0) {
+#ifndef BOOK_HAVE_WGL
+        return; /* the book goldens are softgl's (book_compare_goldens) */
+#endif
         mkdir("c_tests/golden/book", 0777);
         snprintf(cmd, sizeof cmd, "'%s' --to-png '%s' '%s'", imgcmp, pam, golden);
         rc = system(cmd);
         h_expect(rc == 0, "blessing %s failed", golden);
         if (rc == 0)
             printf("  blessed %s (look at it before committing)\n", golden);
-    } else if (!getenv("BOOK_NO_GOLDEN")) {
+    } else if (book_compare_goldens()) {
         snprintf(cmd, sizeof cmd, "'%s' '%s' '%s' --tol %d --max-bad %d", imgcmp, pam,
                  golden, tol, max_bad);
         fflush(stdout);
