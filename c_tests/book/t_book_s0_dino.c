@@ -2,14 +2,15 @@
  * §3.2), Kilgard's "Leapin' Lizards" as the book's Delphi unit ch21 has it.
  *
  * BOOK: S0, Persian "3D programming with OpenGL in Delphi", ch. 21 "Reflection and Tessellation", second program (unit ch21, S0:1105-1610)
- * SHOWS: a green extruded dinosaur hopping over a translucent dark-red floor with its mirror image seen through the floor; from below, the blue floor bottom, and without stencil the "bogus" reflection that the stencil buffer removes; wireframe shows the tessellation
+ * SHOWS: a green extruded dinosaur hopping over a translucent dark-red floor with its mirror image seen through the floor; from below, the blue floor bottom, and without stencil the "bogus" reflection that the stencil buffer removes; wireframe shows the tessellation; last, the C original (walls with their own normals, both lights)
  * FEATURES: GLU tessellator into display lists (caps wound like the contour), glFrontFace in lists, glScalef(1,-1,1) reflection with lights re-specified, GL_NORMALIZE, glCullFace(GL_FRONT), stencil (ALWAYS/REPLACE then EQUAL), glColorMask, blending SRC_ALPHA/ONE_MINUS_SRC_ALPHA, two lights with attenuation and local viewer, glPolygonMode GL_LINE
  *
  * Ported as the book has it, quirks included (§3.2): the walls have no
  * normals of their own, the walls skip the last outline vertex (i mod
  * count), GL_LIGHT1 is never enabled, and initGL calls redraw before the
  * lists exist (undefined lists are no-ops).  The animation time is frozen:
- * jump = 3.
+ * jump = 3.  The last image is Kilgard's C original the port derives from
+ * (a unit normal per wall, all outline vertices, GL_LIGHT1 enabled).
  *
  * Checks: with stencil on, the stencil buffer read back is 1 exactly
  * inside the floor's projected outline and 0 outside; stencil on and off
@@ -30,6 +31,10 @@ static GLfloat angle = 20, angle2 = 30;
 static int useStencil = 0;
 static GLdouble bodyWidth = 3.0;
 static GLfloat jump = 3.0f;
+/* 0: the Delphi port as printed; 1: Kilgard's C original, which the port
+ * derives from: a normal per wall, every outline vertex in the walls, and
+ * both lights on. */
+static int original = 0;
 
 static GLfloat body[22][3] = {{0, 3, 0}, {1, 1, 0}, {5, 1, 0}, {8, 4, 0}, {10, 4, 0}, {11, 5, 0},
     {11, 11.5, 0}, {13, 12, 0}, {13, 13, 0}, {10, 13.5, 0}, {13, 14, 0}, {13, 15, 0}, {11, 16, 0},
@@ -80,9 +85,24 @@ static void extrudeSolidFromPolygon(GLfloat data[][3], int dataSize, GLdouble th
     glNewList(edge, GL_COMPILE);
     glShadeModel(GL_FLAT);
     glBegin(GL_QUAD_STRIP);
-    for (i = 0; i <= count; i++) { /* the book's i mod count skips data[count] */
-        glVertex3f(data[i % count][0], data[i % count][1], 0);
-        glVertex3f(data[i % count][0], data[i % count][1], (GLfloat)thickness);
+    if (!original) {
+        for (i = 0; i <= count; i++) { /* the book's i mod count skips data[count] */
+            glVertex3f(data[i % count][0], data[i % count][1], 0);
+            glVertex3f(data[i % count][0], data[i % count][1], (GLfloat)thickness);
+        }
+    } else {
+        int n = count + 1; /* the original counts every vertex */
+        for (i = 0; i <= n; i++) {
+            /* flat shading takes a quad's colour from its last vertex pair,
+             * so the normal of wall i..i+1 follows vertex i's pair */
+            GLfloat dx = data[(i + 1) % n][1] - data[i % n][1];
+            GLfloat dy = data[i % n][0] - data[(i + 1) % n][0];
+            GLfloat len = (GLfloat)sqrt(dx * dx + dy * dy);
+            glVertex3f(data[i % n][0], data[i % n][1], 0);
+            glVertex3f(data[i % n][0], data[i % n][1], (GLfloat)thickness);
+            if (len > 0)
+                glNormal3f(dx / len, dy / len, 0);
+        }
     }
     glEnd();
     glEndList();
@@ -326,6 +346,29 @@ int main(void)
              "wireframe lights %d pixels, filled %d", lit_wire, lit_fill);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     h_expect_no_error("after drawing");
+
+    /* The C original: walls with their own normals, both lights. */
+    {
+        static unsigned char port[W * H * 4];
+        int changed = 0;
+        useStencil = 1;
+        redraw();
+        glFinish();
+        book_read();
+        memcpy(port, book_px, sizeof port);
+        original = 1;
+        makeDinosaur();
+        glEnable(GL_LIGHT1);
+        redraw();
+        book_shot("s0_dino-c_original", 2, 40);
+        for (y = 0; y < H; y++)
+            for (x = 0; x < W; x++)
+                changed += memcmp(port + 4 * (y * W + x), book_at(x, y), 3) != 0;
+        printf("  the C original differs from the Delphi port in %d pixels\n", changed);
+        h_expect(changed > 1000, "the original's wall normals and second light change only %d pixels",
+                 changed);
+        h_expect_no_error("the C original");
+    }
     book_close();
     return h_finish();
 }
