@@ -21,7 +21,7 @@ static void squares(int col)
     for (i = 0; i < 5; i++) {
         /* a square of half-size scaled with distance, centred on a ray so
          * that it appears in slot i of column col */
-        double d = dist[i], sx = (-0.8 + 0.4 * i) * d * 0.15, sy = (0.55 - 0.55 * col) * d * 0.15, h = 0.025 * d;
+        double d = dist[i], sx = (-0.32 + 0.16 * i) * d, sy = (0.09 - 0.09 * col) * d, h = 0.04 * d;
         glBegin(GL_QUADS);
         glVertex3d(sx - h, sy - h, -d); glVertex3d(sx + h, sy - h, -d);
         glVertex3d(sx + h, sy + h, -d); glVertex3d(sx - h, sy + h, -d);
@@ -70,7 +70,7 @@ int main(void)
         for (i = 0; i < 5; i++) {
             double d = dist[i], x, y, f = fog_f((int)modes[m], d);
             char what[80];
-            book_project((-0.8 + 0.4 * i) * d * 0.15, (0.55 - 0.55 * m) * d * 0.15, -d, &x, &y);
+            book_project((-0.32 + 0.16 * i) * d, (0.09 - 0.09 * m) * d, -d, &x, &y);
             snprintf(what, sizeof what, "fog mode %d at distance %g: f = %.3f", m, d, f);
             book_expect_rgb((int)x, (int)y, (int)(255 * (f + (1 - f) * 0.6) + 0.5),
                             (int)(255 * (1 - f) * 0.6 + 0.5), (int)(255 * (1 - f) * 0.6 + 0.5), 3, what);
