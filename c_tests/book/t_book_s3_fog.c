@@ -7,6 +7,10 @@
  *
  * Checks: the centre of each square is f*red + (1-f)*grey with f from the
  * spec's formula for its mode, at the eye-space depth of that square.
+ * The spec's fog distance is the eye distance, which it lets an
+ * implementation approximate by |z_e|; softgl (like Mesa) uses |z_e|,
+ * which is what the checks assume (a radial distance would be up to 6%
+ * larger for the outer squares).
  */
 #include "book.h"
 
