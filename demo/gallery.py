@@ -56,7 +56,7 @@ def main():
     rows.append("<p>C ports of every program and fragment of <code>seeds-inventory.md</code> §3, rendered "
                 "through softgl (the book's wgl window code over <code>softglCreateDC</code>). Each program "
                 "checks its pixels (and stencil, depth, GL errors) and compares its images with the goldens in "
-                "<code>c_tests/golden/book/</code>; see <a href="../docs/book-gallery.md">docs/book-gallery.md</a>.</p>")
+                "<code>c_tests/golden/book/</code>; see <a href='../docs/book-gallery.md'>docs/book-gallery.md</a>.</p>")
     progs = sorted(glob.glob("c_tests/book/t_book_*.c"))
     counts = {"PASS": 0, "FAIL": 0, "SKIP": 0, "?": 0}
     for prefix, title in SECTIONS:
