@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Build and run softgl's C tests: every c_tests/t_*.c (compiled against
-# harness.c) and every c_tests/t_*.sh, from the repo root.
+# Build and run softgl's C tests: every c_tests/t_*.c and c_tests/book/t_*.c
+# (the book ports; compiled against harness.c) and every c_tests/t_*.sh,
+# from the repo root.
 #
 #   c_tests/run.sh [FILTER]      run the tests whose name contains FILTER
 #
@@ -78,7 +79,7 @@ run_one() { # name command...
 }
 
 shopt -s nullglob
-for src in c_tests/t_*.c c_tests/t_*.sh; do
+for src in c_tests/t_*.c c_tests/t_*.sh c_tests/book/t_*.c; do
     file=${src##*/}
     name=${file%.*}
     if [ -n "$FILTER" ] && [[ $name != *"$FILTER"* ]]; then
