@@ -50,9 +50,9 @@ c-test: lib
 delphi-test: lib
 	bash delphi_samples/run.sh
 
+# The Delphi samples run first so that demo/run.sh's gallery shows them.
 demo: lib
-	sh demo/run.sh
-	DELPHI_OUT=out/demo/delphi bash delphi_samples/run.sh
+	DELPHI_OUT=out/demo/delphi bash delphi_samples/run.sh; st=$$?; sh demo/run.sh && exit $$st
 
 # piglit's GL 1.x group on Xvfb against softgl: out/piglit.summary.txt.
 piglit: lib

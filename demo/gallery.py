@@ -7,7 +7,9 @@ For every c_tests/book/t_book_*.c it reads the "BOOK:", "SHOWS:" and
 "FEATURES:" lines of the header comment, finds its images
 OUT_DIR/book/<program>-*.png (program = file name without "t_book_"),
 and takes PASS/FAIL/SKIP from RUN_LOG (the output of c_tests/run.sh).
-The demo scenes OUT_DIR/demo/*.png follow.  Standard library only.
+Then the Free Pascal (Delphi mode) samples, described by
+delphi_samples/gallery.tsv, with their images in OUT_DIR/demo/delphi/, and
+the demo scenes OUT_DIR/demo/*.png.  Standard library only.
 """
 import glob
 import html
@@ -40,6 +42,28 @@ def statuses(log_path):
             if m:
                 result[m.group(2)] = m.group(1)
     return result
+
+
+def delphi_rows(rows, out_dir):
+    """The Delphi-mode samples: one figure per image of gallery.tsv."""
+    tsv = "delphi_samples/gallery.tsv"
+    if not os.path.exists(tsv):
+        return
+    e = html.escape
+    rows.append("<h2>Free Pascal, Delphi mode (delphi_samples/, see docs/delphi.md)</h2>")
+    for line in open(tsv, encoding="utf-8"):
+        if line.startswith("#") or not line.strip():
+            continue
+        name, book, prog, shows = (line.rstrip("\n").split("\t") + ["", "", ""])[:4]
+        img = os.path.join(out_dir, "demo", "delphi", name + ".png")
+        rows.append("<div class='prog'><h3>%s</h3><p><b>Book:</b> %s<br><b>Program:</b> delphi_samples/%s<br>"
+                    "<b>Shows:</b> %s</p>" % (e(name), e(book), e(prog), e(shows)))
+        if os.path.exists(img):
+            rel = os.path.relpath(img, out_dir)
+            rows.append("<figure><img src='%s'></figure>" % e(rel))
+        else:
+            rows.append("<p class='FAIL'>no image (run make demo)</p>")
+        rows.append("</div>")
 
 
 def main():
@@ -79,6 +103,7 @@ def main():
                 rows.append("<figure><a href='%s'><img src='%s' alt='%s'></a><figcaption>%s</figcaption></figure>"
                             % (e(rel), e(rel), e(view), e(view)))
             rows.append("</div>")
+    delphi_rows(rows, out_dir)
     demo = sorted(glob.glob(os.path.join(out_dir, "demo", "*.png")))
     if demo:
         rows.append("<h2>Demo scenes (demo/scenes.c)</h2><div class='prog'>")
