@@ -836,10 +836,18 @@ impl Context {
         if !self.in_begin_end() {
             return;
         }
+        // The current values a draw's arrays set are indeterminate after
+        // it (2.8); softgl leaves them as they were before the draw, as
+        // Mesa does and programs (piglit's draw-vertices) expect.
+        let saved = self.current;
         for k in 0..n {
             self.apply_element(f, index(k));
         }
         self.end();
+        self.current = saved;
+        if f.color.is_some() && self.lighting.color_material {
+            self.apply_color_material();
+        }
     }
 
     pub fn draw_arrays(&mut self, mode: u32, first: i32, count: i32) {
