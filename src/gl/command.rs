@@ -32,8 +32,10 @@ pub enum Command {
     // Section 2.11: coordinate transformations.
     MatrixMode(u32),
     LoadIdentity,
-    LoadMatrix(DMat4),
-    MultMatrix(DMat4),
+    /// Boxed: a matrix is the largest payload, and every command (each
+    /// glVertex) would otherwise be as large as it.
+    LoadMatrix(Box<DMat4>),
+    MultMatrix(Box<DMat4>),
     Ortho([f64; 6]),
     Frustum([f64; 6]),
     Translate([f64; 3]),
@@ -173,6 +175,16 @@ impl Command {
 }
 
 impl Context {
+    /// glColor: the current colour, and the material properties colour
+    /// material tracks (2.14.3).
+    #[inline]
+    pub fn set_color(&mut self, c: [f32; 4]) {
+        self.current.color = c;
+        if self.lighting.color_material {
+            self.apply_color_material();
+        }
+    }
+
     /// Executes one command against the context.
     pub fn execute(&mut self, cmd: &Command) {
         if self.in_begin_end() && !cmd.allowed_in_begin_end() {
@@ -184,10 +196,7 @@ impl Context {
             Begin(mode) => self.begin(*mode),
             End => self.end(),
             Vertex(v) => self.vertex(*v),
-            Color(c) => {
-                self.current.color = *c;
-                self.apply_color_material();
-            }
+            Color(c) => self.set_color(*c),
             Normal(n) => self.current.normal = *n,
             Index(i) => self.current.index = *i,
             FogCoord(f) => self.current.fog_coord = *f,
@@ -205,8 +214,8 @@ impl Context {
             }
             MatrixMode(m) => self.matrix_mode(*m),
             LoadIdentity => self.load_matrix(DMat4::IDENTITY),
-            LoadMatrix(m) => self.load_matrix(*m),
-            MultMatrix(m) => self.mult_matrix(*m),
+            LoadMatrix(m) => self.load_matrix(**m),
+            MultMatrix(m) => self.mult_matrix(**m),
             Ortho(p) => self.ortho(*p),
             Frustum(p) => self.frustum(*p),
             Translate(t) => self.mult_matrix(DMat4::from_translation((*t).into())),
