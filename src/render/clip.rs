@@ -59,8 +59,10 @@ pub struct Polygon {
 }
 
 impl Polygon {
+    /// Empty, with nothing allocated: most triangles are trivially inside
+    /// or outside and never use it (no allocation per primitive).
     pub fn new() -> Polygon {
-        Polygon { verts: Vec::with_capacity(10), scratch: Vec::with_capacity(10) }
+        Polygon { verts: Vec::new(), scratch: Vec::new() }
     }
 }
 
