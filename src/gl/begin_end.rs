@@ -88,7 +88,10 @@ impl Context {
         let textured = self.derived.render.texture.is_some();
         let (color, back_color, secondary) =
             if textured { (color, back_color, secondary) } else { (color + secondary, back_color + back_secondary, Vec4::ZERO) };
-        let tex = self.vertex_texcoords(obj);
+        let mut tex = self.vertex_texcoords(obj);
+        if self.select.mode == select::GL_FEEDBACK && !self.texture.vertex.units.iter().any(|u| u.unit == 0) {
+            tex[0] = self.feedback_texcoord(obj);
+        }
         let fog = match &self.derived.render.fog {
             None => 0.0,
             // The fog coordinate (3.10): glFogCoord's value, or the

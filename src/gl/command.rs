@@ -312,6 +312,25 @@ impl Context {
             PixelTransfer(pname, v) => self.pixel_transfer(*pname, *v),
             PixelMap(map, v) => self.pixel_map(*map, v),
             PixelZoom(x, y) => self.pixel_zoom(*x, *y),
+            // Feedback and selection (5.2, 5.3): pixel rectangles draw
+            // nothing; feedback records the raster position.
+            Bitmap(b) if self.select.mode != super::select::GL_RENDER => {
+                if self.raster.valid {
+                    self.pixel_primitive(super::select::GL_BITMAP_TOKEN);
+                    self.raster.pos[0] += b.step[0];
+                    self.raster.pos[1] += b.step[1];
+                }
+            }
+            DrawPixels(_) if self.select.mode != super::select::GL_RENDER => self.pixel_primitive(super::select::GL_DRAW_PIXEL_TOKEN),
+            CopyPixels(_, _, w, h, ty) if self.select.mode != super::select::GL_RENDER => {
+                if *w < 0 || *h < 0 {
+                    self.set_error(GL_INVALID_VALUE)
+                } else if !matches!(*ty, GL_COLOR | GL_DEPTH | GL_STENCIL) {
+                    self.set_error(GL_INVALID_ENUM)
+                } else {
+                    self.pixel_primitive(super::select::GL_COPY_PIXEL_TOKEN)
+                }
+            }
             Bitmap(b) => self.bitmap(b),
             DrawPixels(r) => self.draw_pixels(r),
             CopyPixels(x, y, w, h, ty) => self.copy_pixels(*x, *y, *w, *h, *ty),
