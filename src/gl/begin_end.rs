@@ -86,8 +86,11 @@ impl Context {
         // Without texturing the colour sum can be made here exactly: both
         // colours interpolate linearly and the sum is clamped per fragment.
         let textured = self.derived.render.texture.is_some();
-        let (color, back_color, secondary) =
-            if textured { (color, back_color, secondary) } else { (color + secondary, back_color + back_secondary, Vec4::ZERO) };
+        let (color, back_color, secondary, back_secondary) = if textured {
+            (color, back_color, secondary, back_secondary)
+        } else {
+            (color + secondary, back_color + back_secondary, Vec4::ZERO, Vec4::ZERO)
+        };
         let mut tex = self.vertex_texcoords(obj);
         if self.select.mode == select::GL_FEEDBACK && !self.texture.vertex.units.iter().any(|u| u.unit == 0) {
             tex[0] = self.feedback_texcoord(obj);
@@ -99,7 +102,7 @@ impl Context {
             Some(f) if self.fog.coord_src == super::fog::GL_FOG_COORD => f.vertex_value(self.current.fog_coord),
             Some(f) => f.vertex_value((self.derived.modelview * obj).z.abs()),
         };
-        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary };
+        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary, back_secondary };
         if asm.mode == GL_POINTS {
             asm.point_size = self.derived_point_size(obj);
         }
