@@ -187,6 +187,17 @@ impl Context {
 
     /// Executes one command against the context.
     pub fn execute(&mut self, cmd: &Command) {
+        // The per-vertex commands first: legal anywhere, so no Begin/End
+        // check (immediate mode's hot path).
+        match cmd {
+            Command::Vertex(v) => return self.vertex(*v),
+            Command::Color(c) => return self.set_color(*c),
+            Command::Normal(n) => {
+                self.current.normal = *n;
+                return;
+            }
+            _ => {}
+        }
         if self.in_begin_end() && !cmd.allowed_in_begin_end() {
             self.set_error(GL_INVALID_OPERATION);
             return;
