@@ -161,3 +161,18 @@ fn texture_group_restores_units_bindings_and_bound_parameters() {
     assert_eq!(c.get_tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER).unwrap().as_f64(), vec![GL_NEAREST_MIPMAP_LINEAR as f64]);
     assert_eq!(c.take_error(), GL_NO_ERROR);
 }
+
+#[test]
+fn multisample_group_comes_back() {
+    let mut c = context();
+    c.execute(&Command::Enable(GL_MULTISAMPLE));
+    c.execute(&Command::PushAttrib(GL_MULTISAMPLE_BIT));
+    c.execute(&Command::Disable(GL_MULTISAMPLE));
+    c.execute(&Command::Enable(GL_SAMPLE_COVERAGE));
+    c.execute(&Command::SampleCoverage(0.25, true));
+    c.execute(&Command::PopAttrib);
+    assert_eq!(c.is_enabled(GL_MULTISAMPLE), Some(true));
+    assert_eq!(c.is_enabled(GL_SAMPLE_COVERAGE), Some(false));
+    assert_eq!(getf(&mut c, 0x80AA), vec![1.0]);
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+}

@@ -40,6 +40,7 @@ pub const GL_EVAL_BIT: u32 = 0x10000;
 pub const GL_LIST_BIT: u32 = 0x20000;
 pub const GL_TEXTURE_BIT: u32 = 0x40000;
 pub const GL_SCISSOR_BIT: u32 = 0x80000;
+pub const GL_MULTISAMPLE_BIT: u32 = 0x2000_0000;
 pub const GL_CLIENT_PIXEL_STORE_BIT: u32 = 0x1;
 
 /// Every capability of GL 1.5 (glIsEnabled answers for those it knows).
@@ -85,6 +86,8 @@ pub struct Saved {
     fog: Option<super::fog::FogState>,
     pixel_mode: Option<(super::pixel_transfer::PixelTransfer, u32)>,
     texture: Option<SavedTexture>,
+    /// GL_MULTISAMPLE_BIT: its four enables and the sample coverage.
+    multisample: Option<([(u32, bool); 4], (f32, bool))>,
 }
 
 /// GL_TEXTURE_BIT's copy.
@@ -144,6 +147,10 @@ impl Context {
             fog: has(GL_FOG_BIT).then(|| self.fog.clone()),
             pixel_mode: has(GL_PIXEL_MODE_BIT).then(|| (self.pixel.clone(), self.pixel_read_buffer)),
             texture: has(GL_TEXTURE_BIT).then(|| self.save_texture()),
+            multisample: has(GL_MULTISAMPLE_BIT).then(|| {
+                let caps = [GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE];
+                (caps.map(|c| (c, self.is_enabled(c) == Some(true))), self.color_buffer.sample_coverage)
+            }),
         }
     }
 
@@ -252,6 +259,12 @@ impl Context {
         }
         if let Some(v) = s.texture {
             self.restore_texture(v);
+        }
+        if let Some((caps, coverage)) = s.multisample {
+            for (cap, on) in caps {
+                self.set_enabled(cap, on);
+            }
+            self.color_buffer.sample_coverage = coverage;
         }
         if let Some(list) = s.enables {
             for (cap, on) in list {
