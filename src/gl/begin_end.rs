@@ -16,6 +16,13 @@ use super::select;
 use crate::render::{self, ClipVertex};
 use glam::Vec4;
 
+thread_local! {
+    /// The vertex buffer of the last primitive, kept for the next glBegin:
+    /// programs that wrap each triangle in glBegin/glEnd then allocate
+    /// nothing per primitive.
+    static SPARE_VERTS: std::cell::Cell<Vec<ClipVertex>> = const { std::cell::Cell::new(Vec::new()) };
+}
+
 /// Assembly state between glBegin and glEnd.
 pub struct Assembly {
     pub mode: u32,
@@ -37,7 +44,12 @@ impl Context {
         }
         // Begin inside Begin is caught by the Begin/End rule (execute).
         self.validate();
-        self.prim = Some(Assembly { mode, verts: Vec::with_capacity(4), count: 0, stipple: 0, point_size: 1.0 });
+        let mut verts = SPARE_VERTS.with(|s| s.take());
+        verts.clear();
+        if verts.capacity() < 4 {
+            verts.reserve(4);
+        }
+        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0 });
     }
 
     pub fn end(&mut self) {
@@ -58,6 +70,7 @@ impl Context {
                 self.triangle([&v[0], &v[i], &v[i + 1]], 0, edges);
             }
         }
+        SPARE_VERTS.with(|s| s.set(std::mem::take(&mut asm.verts)));
     }
 
     /// glVertex: the vertex takes the current colour (section 2.7).
