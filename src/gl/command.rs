@@ -1,7 +1,8 @@
 //! The display-listable commands, as values. An entry point converts its C
 //! arguments into one of these (so glColor3ub and glColor4fv both become
 //! `Color`), then [`Context::submit`] records it in a display list,
-//! executes it, or both. Display lists are vectors of these.
+//! executes it, or both. Display lists keep the per-vertex ones packed
+//! and the rest as these values (gl::lists).
 
 use super::context::Context;
 use super::enums::*;
