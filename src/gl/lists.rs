@@ -102,11 +102,39 @@ impl List {
     }
 }
 
+/// The list names in use and their contents: the part of display-list
+/// state that contexts sharing lists (glXCreateContext's share_list,
+/// wglShareLists) would share. Everything else reaches it through these
+/// four methods.
 #[derive(Default)]
-pub struct Lists {
+pub struct ListStore {
     /// Defined lists (possibly empty). Rc: a list keeps running even if it
     /// deletes or redefines itself.
     lists: HashMap<u32, Rc<List>>,
+}
+
+impl ListStore {
+    pub fn contains(&self, n: u32) -> bool {
+        self.lists.contains_key(&n)
+    }
+
+    pub fn get(&self, n: u32) -> Option<Rc<List>> {
+        self.lists.get(&n).cloned()
+    }
+
+    /// Defines (or redefines) list `n`.
+    pub fn define(&mut self, n: u32, list: List) {
+        self.lists.insert(n, Rc::new(list));
+    }
+
+    pub fn remove(&mut self, n: u32) {
+        self.lists.remove(&n);
+    }
+}
+
+#[derive(Default)]
+pub struct Lists {
+    pub store: ListStore,
     compiling: Option<Compiling>,
     pub base: u32,
     depth: u32,
@@ -159,12 +187,12 @@ impl Lists {
     }
 
     pub fn is_list(&self, n: u32) -> bool {
-        self.lists.contains_key(&n)
+        self.store.contains(n)
     }
 
     /// The list named `n`, for measurements and tests.
     pub fn get(&self, n: u32) -> Option<Rc<List>> {
-        self.lists.get(&n).cloned()
+        self.store.get(n)
     }
 }
 
@@ -222,13 +250,13 @@ impl Context {
                 return 0;
             };
             for n in start..=end {
-                if self.lists.lists.contains_key(&n) {
+                if self.lists.store.contains(n) {
                     start = n + 1;
                     continue 'search;
                 }
             }
             for n in start..=end {
-                self.lists.lists.insert(n, Rc::new(List::default()));
+                self.lists.store.define(n, List::default());
             }
             return start;
         }
@@ -252,7 +280,7 @@ impl Context {
             Some(Compiling { name, mut list, .. }) => {
                 list.words.shrink_to_fit();
                 list.cmds.shrink_to_fit();
-                self.lists.lists.insert(name, Rc::new(list));
+                self.lists.store.define(name, list);
             }
             None => self.set_error(GL_INVALID_OPERATION),
         }
@@ -265,7 +293,7 @@ impl Context {
         for i in 0..range as u32 {
             match first.checked_add(i) {
                 Some(n) => {
-                    self.lists.lists.remove(&n);
+                    self.lists.store.remove(n);
                 }
                 None => break,
             }
@@ -276,7 +304,7 @@ impl Context {
         if self.lists.depth >= MAX_LIST_NESTING {
             return;
         }
-        let Some(list) = self.lists.lists.get(&n).cloned() else { return };
+        let Some(list) = self.lists.store.get(n) else { return };
         self.lists.depth += 1;
         self.replay(&list);
         self.lists.depth -= 1;
