@@ -159,3 +159,20 @@ fn feedback_of_pixel_rectangles_reports_the_raster_position() {
     // Nothing was drawn.
     assert!(c.fb.color.iter().all(|p| *p == [0; 4]));
 }
+
+#[test]
+fn valid_raster_positions_are_selection_hits() {
+    let mut c = context();
+    let mut buf = [0u32; 16];
+    c.select_buffer(16, buf.as_mut_ptr());
+    c.render_mode(GL_SELECT);
+    c.execute(&Command::NameStack(NameOp::Init));
+    c.execute(&Command::NameStack(NameOp::Push(3)));
+    c.execute(&Command::RasterPos([40.0, 2.0, 0.0, 1.0])); // outside: invalid, no hit
+    c.execute(&Command::NameStack(NameOp::Load(4)));
+    c.execute(&Command::RasterPos([2.0, 2.0, 0.5, 1.0])); // eye z 0.5 -> window depth 0.25
+    let hits = c.render_mode(GL_RENDER);
+    assert_eq!(hits, 1);
+    let z = (0.25f64 * 4294967295.0).round() as u32;
+    assert_eq!(&buf[..4], &[1, z, z, 4]);
+}

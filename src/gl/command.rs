@@ -319,8 +319,14 @@ impl Context {
             EvalMesh1(mode, i1, i2) => self.eval_mesh1(*mode, *i1, *i2),
             EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(*mode, *i1, *i2, *j1, *j2),
             PassThrough(t) => self.pass_through(*t),
-            RasterPos(p) => self.raster_pos(*p),
-            WindowPos(p) => self.window_pos(*p),
+            RasterPos(p) => {
+                self.raster_pos(*p);
+                self.raster_hit();
+            }
+            WindowPos(p) => {
+                self.window_pos(*p);
+                self.raster_hit();
+            }
             PixelTransfer(pname, v) => self.pixel_transfer(*pname, *v),
             PixelMap(map, v) => self.pixel_map(*map, v),
             PixelZoom(x, y) => self.pixel_zoom(*x, *y),

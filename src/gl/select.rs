@@ -310,6 +310,17 @@ impl Context {
         }
     }
 
+    /// glRasterPos and glWindowPos in selection mode: a valid raster
+    /// position is a hit at its depth (5.2).
+    pub fn raster_hit(&mut self) {
+        if self.select.mode == GL_SELECT && self.raster.valid {
+            let z = self.raster.pos[2] as f64;
+            let p = self.select.pending.get_or_insert((z, z));
+            p.0 = p.0.min(z);
+            p.1 = p.1.max(z);
+        }
+    }
+
     /// glBitmap, glDrawPixels, glCopyPixels in feedback or selection mode
     /// (`token` says which): the feedback record of the raster position.
     pub fn pixel_primitive(&mut self, token: f32) {
