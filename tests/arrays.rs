@@ -490,6 +490,9 @@ fn interleaved_arrays_all_formats() {
             }
             let c = if color.is_some() { [200, 100, 50, 255] } else { [10, 20, 30, 255] };
             expect_rect([4, 6, 25, 19], c, &format!("interleaved {format:#x} extra {extra}"));
+            // A draw leaves the current values alone; glArrayElement sets
+            // them from the last element.
+            unsafe { glArrayElement(3) };
             if tsize > 0 {
                 let mut want = [0.75, 0.5, 0.0, 1.0];
                 if tsize == 4 {
@@ -1011,8 +1014,13 @@ fn draw_errors() {
         // Client-state enums.
         glEnableClientState(GL_LIGHTING);
         assert_eq!(error(), GL_INVALID_ENUM);
+        // glEnable of an array capability is glEnableClientState (EXT_vertex_array's legacy).
+        let was = glIsEnabled(GL_VERTEX_ARRAY);
         glEnable(GL_VERTEX_ARRAY);
-        assert_eq!(error(), GL_INVALID_ENUM);
+        assert_eq!((error(), glIsEnabled(GL_VERTEX_ARRAY)), (GL_NO_ERROR, 1));
+        if was == 0 {
+            glDisable(GL_VERTEX_ARRAY);
+        }
         glClientActiveTexture(GL_TEXTURE0 + 32);
         assert_eq!(error(), GL_INVALID_ENUM);
         glGetPointerv(0x1234, &mut p);
@@ -1211,4 +1219,155 @@ fn array_element_matches_immediate_mode() {
         assert!(a == b, "DrawArrays differs from immediate mode");
         assert!(a.chunks(4).filter(|p| p[3] != 0).count() > 300);
     }
+}
+
+/// glEnable(GL_VERTEX_ARRAY) and the other array capabilities act as
+/// glEnableClientState (EXT_vertex_array's legacy, which programs use);
+/// a draw leaves the current values as they were before it.
+#[test]
+fn enable_of_array_caps_and_draws_keep_current_values() {
+    let _c = setup();
+    unsafe {
+        let v = rect(4, 4, 12, 12);
+        let red = [[255u8, 0, 0, 255]; 4];
+        glVertexPointer(2, GL_INT, 0, v.as_ptr() as *const c_void);
+        glColorPointer(4, GL_UNSIGNED_BYTE, 0, red.as_ptr() as *const c_void);
+        glEnable(GL_VERTEX_ARRAY);
+        glEnable(GL_COLOR_ARRAY);
+        assert_eq!(error(), GL_NO_ERROR);
+        assert_eq!(glIsEnabled(GL_VERTEX_ARRAY), 1);
+        glColor4f(0.0, 1.0, 0.0, 1.0);
+        glDrawArrays(GL_QUADS, 0, 4);
+        assert_eq!(pixel(8, 8), [255, 0, 0, 255]);
+        assert_eq!(get_f::<4>(GL_CURRENT_COLOR), [0.0, 1.0, 0.0, 1.0]);
+        glDisable(GL_COLOR_ARRAY);
+        glDisable(GL_VERTEX_ARRAY);
+        assert_eq!(glIsEnabled(GL_VERTEX_ARRAY), 0);
+        assert_eq!(glIsEnabled(GL_COLOR_ARRAY), 0);
+        // glArrayElement does set the current values (it is glColor + glVertex).
+        glEnableClientState(GL_COLOR_ARRAY);
+        glArrayElement(0);
+        assert_eq!(get_f::<4>(GL_CURRENT_COLOR), [1.0, 0.0, 0.0, 1.0]);
+        glDisableClientState(GL_COLOR_ARRAY);
+    }
+    assert_eq!(error(), GL_NO_ERROR);
+}
+
+/// A draw compiled into a list is illegal as a whole when the list is
+/// called between Begin and End (2.6.3): INVALID_OPERATION and nothing of
+/// it drawn, while the list's own vertices still join the open primitive.
+#[test]
+fn compiled_draw_inside_begin_end_is_skipped() {
+    let _c = setup();
+    unsafe {
+        let v = rect(16, 16, 30, 30);
+        glVertexPointer(2, GL_INT, 0, v.as_ptr() as *const c_void);
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glNewList(5, GL_COMPILE);
+        glColor4f(0.0, 1.0, 0.0, 1.0);
+        glVertex2f(2.0, 2.0);
+        glVertex2f(10.0, 2.0);
+        glVertex2f(10.0, 10.0);
+        glVertex2f(2.0, 10.0);
+        glColor4f(1.0, 0.0, 0.0, 1.0);
+        glDrawArrays(GL_QUADS, 0, 4);
+        glEndList();
+        glDisableClientState(GL_VERTEX_ARRAY);
+        assert_eq!(error(), GL_NO_ERROR);
+        glBegin(GL_QUADS);
+        glCallList(5);
+        glEnd();
+        assert_eq!(error(), GL_INVALID_OPERATION);
+        assert_eq!(pixel(6, 6), [0, 255, 0, 255], "the list's own quad is drawn");
+        assert_eq!(pixel(20, 20), [0, 0, 0, 0], "the draw is not");
+        assert_eq!(error(), GL_NO_ERROR);
+        // Called outside Begin/End the draw happens.
+        glCallList(5);
+        assert_eq!(pixel(20, 20), [255, 0, 0, 255]);
+    }
+    assert_eq!(error(), GL_NO_ERROR);
+}
+
+/// A list replays every compact command form exactly: the current values
+/// after calling it equal those after the same calls made directly.
+#[test]
+fn compact_list_forms_replay_exactly() {
+    let _c = setup();
+    let calls = || unsafe {
+        glBegin(GL_POINTS);
+        glColor4f(0.25, 0.5, 0.75, 0.125);
+        glVertex2f(1.5, 2.5);
+        glColor3f(0.5, 0.25, 1.0);
+        glNormal3f(0.0, -1.0, 0.5);
+        glTexCoord4f(1.0, 2.0, 3.0, 4.0);
+        glMultiTexCoord4f(GL_TEXTURE0 + 2, 0.5, -0.5, 0.0, 1.0);
+        glSecondaryColor3f(0.1, 0.2, 0.3);
+        glFogCoordf(3.5);
+        glEdgeFlag(0);
+        glVertex3f(1.0, 2.0, -0.0);
+        glVertex4f(1.0, 2.0, 3.0, 2.0);
+        glEnd();
+    };
+    calls();
+    let direct = current().current;
+    unsafe {
+        glColor4f(1.0, 1.0, 1.0, 1.0);
+        glNormal3f(0.0, 0.0, 1.0);
+        glTexCoord4f(0.0, 0.0, 0.0, 1.0);
+        glMultiTexCoord4f(GL_TEXTURE0 + 2, 0.0, 0.0, 0.0, 1.0);
+        glEdgeFlag(1);
+        glNewList(6, GL_COMPILE);
+    }
+    calls();
+    unsafe {
+        glEndList();
+        glCallList(6);
+    }
+    let replayed = current().current;
+    assert_eq!(format!("{direct:?}"), format!("{replayed:?}"));
+    assert_eq!(replayed.tex_coords[2], [0.5, -0.5, 0.0, 1.0]);
+    assert_eq!(error(), GL_NO_ERROR);
+}
+
+/// Compiled vertex commands take a few words each (issue 9): 100,000
+/// glColor3f + glVertex3f pairs in well under 40 bytes a pair.
+#[test]
+fn compiled_vertices_are_compact() {
+    let _c = setup();
+    unsafe {
+        glNewList(7, GL_COMPILE);
+        glBegin(GL_TRIANGLES);
+        for i in 0..100_000 {
+            glColor3f((i % 7) as f32 / 7.0, 0.5, 0.25);
+            glVertex3f(i as f32, 1.0, 2.0);
+        }
+        glEnd();
+        glEndList();
+    }
+    let bytes = current().lists.get(7).unwrap().bytes();
+    // Colour: 4 words; vertex: 4 words.
+    assert!(bytes <= 100_000 * 32 + 64, "{bytes} bytes");
+    assert_eq!(error(), GL_NO_ERROR);
+}
+
+/// glMaterial of a property GL_COLOR_MATERIAL tracks is overridden by the
+/// current colour at once (piglit dlist-color-material).
+#[test]
+fn tracked_material_follows_the_current_colour() {
+    let _c = setup();
+    unsafe {
+        glColorMaterial(GL_FRONT_AND_BACK, GL_DIFFUSE);
+        glEnable(GL_COLOR_MATERIAL);
+        glColor4f(0.0, 1.0, 0.0, 1.0);
+        let red = [1.0f32, 0.0, 0.0, 1.0];
+        glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, red.as_ptr());
+        glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, red.as_ptr());
+        let mut m = [0f32; 4];
+        glGetMaterialfv(GL_FRONT, GL_DIFFUSE, m.as_mut_ptr());
+        assert_eq!(m, [0.0, 1.0, 0.0, 1.0]);
+        glGetMaterialfv(GL_BACK, GL_SPECULAR, m.as_mut_ptr());
+        assert_eq!(m, red, "untracked properties take glMaterial");
+        glDisable(GL_COLOR_MATERIAL);
+    }
+    assert_eq!(error(), GL_NO_ERROR);
 }

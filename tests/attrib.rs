@@ -91,3 +91,88 @@ fn draw_and_read_buffers() {
     c.execute(&Command::ReadBuffer(GL_BACK_LEFT));
     assert_eq!(c.take_error(), GL_NO_ERROR);
 }
+
+fn getf(c: &mut Context, pname: u32) -> Vec<f64> {
+    c.get(pname).expect("a known name").as_f64()
+}
+
+#[test]
+fn fog_group_comes_back_with_its_enable() {
+    use softgl::gl::fog::*;
+    let mut c = context();
+    c.execute(&Command::Fog(GL_FOG_DENSITY, [0.25, 0.0, 0.0, 0.0]));
+    c.execute(&Command::PushAttrib(GL_FOG_BIT));
+    c.execute(&Command::Enable(GL_FOG));
+    c.execute(&Command::Fog(GL_FOG_DENSITY, [0.75, 0.0, 0.0, 0.0]));
+    c.execute(&Command::Fog(GL_FOG_MODE, [0x2601 as f32, 0.0, 0.0, 0.0])); // GL_LINEAR
+    c.execute(&Command::Fog(GL_FOG_COLOR, [1.0, 0.5, 0.25, 1.0]));
+    c.execute(&Command::PopAttrib);
+    assert_eq!(c.is_enabled(GL_FOG), Some(false));
+    assert_eq!(getf(&mut c, GL_FOG_DENSITY), vec![0.25]);
+    assert_eq!(getf(&mut c, GL_FOG_MODE), vec![0x0800 as f64] /* GL_EXP */);
+    assert_eq!(getf(&mut c, GL_FOG_COLOR), vec![0.0; 4]);
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+}
+
+#[test]
+fn pixel_mode_group_comes_back() {
+    let mut c = context();
+    c.execute(&Command::PushAttrib(GL_PIXEL_MODE_BIT));
+    c.execute(&Command::PixelTransfer(GL_RED_SCALE, 2.0));
+    c.execute(&Command::PixelMap(GL_PIXEL_MAP_I_TO_R, vec![0.0, 0.5, 1.0, 0.25]));
+    c.execute(&Command::PixelZoom(2.0, 3.0));
+    c.execute(&Command::PopAttrib);
+    assert_eq!(getf(&mut c, GL_RED_SCALE), vec![1.0]);
+    assert_eq!(c.pixel.zoom, [1.0, 1.0]);
+    assert_eq!(c.pixel, softgl::gl::pixel_transfer::PixelTransfer::default());
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+}
+
+#[test]
+fn texture_group_restores_units_bindings_and_bound_parameters() {
+    use softgl::gl::texture::enums::*;
+    let mut c = context();
+    c.execute(&Command::BindTexture(GL_TEXTURE_2D, 7));
+    c.execute(&Command::TexParameter(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, [GL_NEAREST as f32, 0.0, 0.0, 0.0]));
+    c.execute(&Command::PushAttrib(GL_TEXTURE_BIT));
+    // Everything the group holds changes...
+    c.execute(&Command::TexParameter(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, [0x2601 as f32, 0.0, 0.0, 0.0])); // GL_LINEAR
+    c.execute(&Command::Enable(GL_TEXTURE_2D));
+    c.execute(&Command::TexEnv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, [GL_DECAL as f32, 0.0, 0.0, 0.0]));
+    c.execute(&Command::TexGen(GL_S, GL_TEXTURE_GEN_MODE, [GL_OBJECT_LINEAR as f64, 0.0, 0.0, 0.0]));
+    c.execute(&Command::Enable(GL_TEXTURE_GEN_S));
+    c.execute(&Command::ActiveTexture(GL_TEXTURE0 + 2));
+    c.execute(&Command::BindTexture(GL_TEXTURE_2D, 9));
+    c.execute(&Command::Enable(GL_TEXTURE_2D));
+    c.execute(&Command::PopAttrib);
+    // ...and comes back.
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    assert_eq!(getf(&mut c, GL_ACTIVE_TEXTURE), vec![GL_TEXTURE0 as f64]);
+    assert_eq!(c.is_enabled(GL_TEXTURE_2D), Some(false));
+    assert_eq!(c.is_enabled(GL_TEXTURE_GEN_S), Some(false));
+    assert_eq!(getf(&mut c, GL_TEXTURE_BINDING_2D), vec![7.0]);
+    assert_eq!(c.get_tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER).unwrap().as_f64(), vec![GL_NEAREST as f64]);
+    assert_eq!(c.get_tex_env(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE).unwrap().as_f64(), vec![GL_MODULATE as f64]);
+    c.execute(&Command::ActiveTexture(GL_TEXTURE0 + 2));
+    assert_eq!(getf(&mut c, GL_TEXTURE_BINDING_2D), vec![0.0]);
+    assert_eq!(c.is_enabled(GL_TEXTURE_2D), Some(false));
+    // Object 9 keeps its own (initial) parameters.
+    c.execute(&Command::BindTexture(GL_TEXTURE_2D, 9));
+    assert_eq!(c.get_tex_parameter(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER).unwrap().as_f64(), vec![GL_NEAREST_MIPMAP_LINEAR as f64]);
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+}
+
+#[test]
+fn multisample_group_comes_back() {
+    let mut c = context();
+    c.execute(&Command::Enable(GL_MULTISAMPLE));
+    c.execute(&Command::PushAttrib(GL_MULTISAMPLE_BIT));
+    c.execute(&Command::Disable(GL_MULTISAMPLE));
+    c.execute(&Command::Enable(GL_SAMPLE_COVERAGE));
+    c.execute(&Command::SampleCoverage(0.25, true));
+    c.execute(&Command::PopAttrib);
+    assert_eq!(c.is_enabled(GL_MULTISAMPLE), Some(true));
+    assert_eq!(c.is_enabled(GL_SAMPLE_COVERAGE), Some(false));
+    assert_eq!(getf(&mut c, 0x80AA), vec![1.0]);
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+}

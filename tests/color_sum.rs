@@ -46,3 +46,36 @@ fn the_sum_comes_after_texturing() {
     c.execute(&Command::Disable(GL_COLOR_SUM));
     assert_eq!(quad(&mut c), [32, 0, 0, 255], "modulated primary only");
 }
+
+#[test]
+fn back_faces_take_the_back_specular_under_two_sided_lighting() {
+    let mut c = context();
+    let texel = [255u8, 255, 255, 255];
+    let cmd = unsafe { c.tex_image_command(2, t::GL_TEXTURE_2D, 0, t::GL_RGBA8 as i32, [1, 1, 1], 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE, texel.as_ptr()) };
+    c.submit(cmd.unwrap());
+    c.execute(&Command::TexParameter(t::GL_TEXTURE_2D, t::GL_TEXTURE_MIN_FILTER, [t::GL_NEAREST as f32, 0.0, 0.0, 0.0]));
+    c.execute(&Command::Enable(t::GL_TEXTURE_2D));
+    c.execute(&Command::Enable(GL_LIGHTING));
+    c.execute(&Command::Enable(GL_LIGHT0));
+    c.execute(&Command::LightModel(GL_LIGHT_MODEL_TWO_SIDE, [1.0, 0.0, 0.0, 0.0]));
+    c.execute(&Command::LightModel(GL_LIGHT_MODEL_COLOR_CONTROL, [GL_SEPARATE_SPECULAR_COLOR as f32, 0.0, 0.0, 0.0]));
+    c.execute(&Command::LightModel(GL_LIGHT_MODEL_AMBIENT, [0.0, 0.0, 0.0, 1.0]));
+    let black = [0.0, 0.0, 0.0, 1.0];
+    c.execute(&Command::Material(GL_FRONT_AND_BACK, GL_DIFFUSE, black));
+    c.execute(&Command::Material(GL_FRONT_AND_BACK, GL_AMBIENT, black));
+    c.execute(&Command::Material(GL_FRONT, GL_SPECULAR, [0.0, 0.0, 1.0, 1.0]));
+    c.execute(&Command::Material(GL_BACK, GL_SPECULAR, [1.0, 0.0, 0.0, 1.0]));
+    // The light (0, 0, 1) shines on the back side of a normal (0, 0, -1),
+    // whose back face the lighting sees as (0, 0, 1): full specular.
+    c.execute(&Command::Normal([0.0, 0.0, -1.0]));
+    c.execute(&Command::FrontFace(GL_CW));
+    c.execute(&Command::TexCoord(t::GL_TEXTURE0, [0.5, 0.5, 0.0, 1.0]));
+    c.execute(&Command::Rect([-1.0, -1.0, 1.0, 1.0]));
+    // Primary 0 times the white texture, plus the back specular: red.
+    assert_eq!(c.fb.color[c.fb.index(2, 2)], [255, 0, 0, 255]);
+    // The front face (normal towards the light) takes the front specular.
+    c.execute(&Command::Normal([0.0, 0.0, 1.0]));
+    c.execute(&Command::FrontFace(GL_CCW));
+    c.execute(&Command::Rect([-1.0, -1.0, 1.0, 1.0]));
+    assert_eq!(c.fb.color[c.fb.index(2, 2)], [0, 0, 255, 255]);
+}

@@ -134,3 +134,32 @@ fn map_errors_and_queries() {
     assert_eq!(c.get_map(MAP1_VERTEX_3, GL_COEFF), Some(vec![1.0, 2.0, 3.0, 4.0, 5.0, 6.0]));
     assert_eq!(c.get_map(MAP2_VERTEX_3, GL_ORDER), Some(vec![1.0, 1.0]));
 }
+
+#[test]
+fn texture_coordinate_maps_feed_unit_0_and_the_widest_wins() {
+    let mut c = context();
+    // A line of two control points, with s from 0 to 1 (TEXTURE_COORD_1)
+    // and (s, t) from (0, 1) to (1, 0) (TEXTURE_COORD_2).
+    c.map(MAP1_VERTEX_3, (0.0, 1.0), 2, None, vec![10.0, 10.0, 0.0, 30.0, 10.0, 0.0]);
+    c.map(GL_MAP1_COLOR_4 + 3, (0.0, 1.0), 2, None, vec![0.0, 1.0]);
+    c.map(GL_MAP1_COLOR_4 + 4, (0.0, 1.0), 2, None, vec![0.0, 1.0, 1.0, 0.0]);
+    c.execute(&Command::Enable(MAP1_VERTEX_3));
+    c.execute(&Command::Enable(GL_MAP1_COLOR_4 + 3));
+    c.execute(&Command::TexCoord(0x84C0, [0.5, 0.5, 0.5, 0.5]));
+    let fb = feedback(&mut c, GL_3D_COLOR_TEXTURE, |c| {
+        c.execute(&Command::Begin(GL_POINTS));
+        c.execute(&Command::EvalCoord(0.25, None));
+        c.execute(&Command::End);
+        c.execute(&Command::Enable(GL_MAP1_COLOR_4 + 4));
+        c.execute(&Command::Begin(GL_POINTS));
+        c.execute(&Command::EvalCoord(0.25, None));
+        c.execute(&Command::End);
+    });
+    // Token, x y z, colour, s t r q.
+    assert_eq!(fb.len(), 24);
+    assert_eq!(&fb[8..12], &[0.25, 0.0, 0.0, 1.0]);
+    assert_eq!(&fb[20..24], &[0.25, 0.75, 0.0, 1.0]);
+    assert!((fb[1] - 15.0).abs() < 1e-4);
+    // The current texture coordinates did not change.
+    assert_eq!(c.current.tex_coords[0], [0.5, 0.5, 0.5, 0.5]);
+}

@@ -118,3 +118,61 @@ fn feedback_overflow_and_culling() {
     c.feedback_buffer(4, 0x1234, buf.as_mut_ptr());
     assert_eq!(c.take_error(), GL_INVALID_ENUM);
 }
+
+#[test]
+fn feedback_reports_texture_coordinates_after_the_texture_matrix() {
+    let mut c = context();
+    let mut buf = [0f32; 64];
+    c.feedback_buffer(64, GL_3D_COLOR_TEXTURE, buf.as_mut_ptr());
+    c.render_mode(GL_FEEDBACK);
+    c.execute(&Command::MatrixMode(GL_TEXTURE));
+    c.execute(&Command::Scale([2.0, 3.0, 1.0]));
+    c.execute(&Command::MatrixMode(GL_MODELVIEW));
+    c.execute(&Command::TexCoord(0x84C0, [0.25, 0.5, 0.0, 1.0]));
+    c.execute(&Command::Begin(GL_POINTS));
+    c.execute(&Command::Vertex([3.0, 4.0, 0.0, 1.0]));
+    c.execute(&Command::End);
+    let n = c.render_mode(GL_RENDER);
+    // POINT_TOKEN, x y z, r g b a, s t r q (texture unit 0, scaled).
+    let want = [0x0701 as f32, 3.0, 4.0, 0.5, 1.0, 1.0, 1.0, 1.0, 0.5, 1.5, 0.0, 1.0];
+    assert_eq!(&buf[..n as usize], &want);
+}
+
+#[test]
+fn feedback_of_pixel_rectangles_reports_the_raster_position() {
+    use softgl::gl::draw_pixels::Bitmap;
+    let mut c = context();
+    let mut buf = [0f32; 64];
+    c.feedback_buffer(64, GL_3D, buf.as_mut_ptr());
+    c.render_mode(GL_FEEDBACK);
+    c.execute(&Command::RasterPos([2.0, 3.0, 0.0, 1.0]));
+    let b = Bitmap { width: 8, height: 1, orig: [0.0, 0.0], step: [5.0, 1.0], bits: vec![0xFF] };
+    c.execute(&Command::Bitmap(std::rc::Rc::new(b)));
+    c.execute(&Command::CopyPixels(0, 0, 4, 4, GL_COLOR));
+    c.execute(&Command::CopyPixels(0, 0, -1, 4, GL_COLOR));
+    assert_eq!(c.take_error(), GL_INVALID_VALUE);
+    c.execute(&Command::RasterPos([100.0, 3.0, 0.0, 1.0])); // invalid: no record
+    c.execute(&Command::CopyPixels(0, 0, 4, 4, GL_COLOR));
+    let n = c.render_mode(GL_RENDER);
+    let want = [0x0704 as f32, 2.0, 3.0, 0.5, 0x0706 as f32, 7.0, 4.0, 0.5];
+    assert_eq!(&buf[..n as usize], &want);
+    // Nothing was drawn.
+    assert!(c.fb.color.iter().all(|p| *p == [0; 4]));
+}
+
+#[test]
+fn valid_raster_positions_are_selection_hits() {
+    let mut c = context();
+    let mut buf = [0u32; 16];
+    c.select_buffer(16, buf.as_mut_ptr());
+    c.render_mode(GL_SELECT);
+    c.execute(&Command::NameStack(NameOp::Init));
+    c.execute(&Command::NameStack(NameOp::Push(3)));
+    c.execute(&Command::RasterPos([40.0, 2.0, 0.0, 1.0])); // outside: invalid, no hit
+    c.execute(&Command::NameStack(NameOp::Load(4)));
+    c.execute(&Command::RasterPos([2.0, 2.0, 0.5, 1.0])); // eye z 0.5 -> window depth 0.25
+    let hits = c.render_mode(GL_RENDER);
+    assert_eq!(hits, 1);
+    let z = (0.25f64 * 4294967295.0).round() as u32;
+    assert_eq!(&buf[..4], &[1, z, z, 4]);
+}

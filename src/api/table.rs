@@ -295,10 +295,10 @@ super::entry_points! {
     list glDepthRange(zNear: GLclampd, zFar: GLclampd) { |_c| Command::DepthRange(zNear, zFar) }
     list glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::Viewport(x, y, width, height) }
     list glMatrixMode(mode: GLenum) { |_c| Command::MatrixMode(mode) }
-    list glLoadMatrixd(m: *const GLdouble) { |_c| Command::LoadMatrix(matrix(arr::<GLdouble, 16>(m)?)) }
-    list glLoadMatrixf(m: *const GLfloat) { |_c| Command::LoadMatrix(matrix(arr::<GLfloat, 16>(m)?.map(f64::from))) }
-    list glMultMatrixd(m: *const GLdouble) { |_c| Command::MultMatrix(matrix(arr::<GLdouble, 16>(m)?)) }
-    list glMultMatrixf(m: *const GLfloat) { |_c| Command::MultMatrix(matrix(arr::<GLfloat, 16>(m)?.map(f64::from))) }
+    list glLoadMatrixd(m: *const GLdouble) { |_c| Command::LoadMatrix(Box::new(matrix(arr::<GLdouble, 16>(m)?))) }
+    list glLoadMatrixf(m: *const GLfloat) { |_c| Command::LoadMatrix(Box::new(matrix(arr::<GLfloat, 16>(m)?.map(f64::from)))) }
+    list glMultMatrixd(m: *const GLdouble) { |_c| Command::MultMatrix(Box::new(matrix(arr::<GLdouble, 16>(m)?))) }
+    list glMultMatrixf(m: *const GLfloat) { |_c| Command::MultMatrix(Box::new(matrix(arr::<GLfloat, 16>(m)?.map(f64::from)))) }
     list glLoadIdentity() { |_c| Command::LoadIdentity }
     list glRotated(angle: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble) { |_c| Command::Rotate(angle as f64, [x as f64, y as f64, z as f64]) }
     list glRotatef(angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) { |_c| Command::Rotate(angle as f64, [x as f64, y as f64, z as f64]) }
@@ -567,10 +567,10 @@ super::entry_points! {
     list glMultiTexCoord4iv(target: GLenum, v: *const GLint) { |_c| Command::TexCoord(target, texcoord(&arr::<GLint, 4>(v)?)) }
     list glMultiTexCoord4s(target: GLenum, s: GLshort, t: GLshort, r: GLshort, q: GLshort) { |_c| Command::TexCoord(target, texcoord(&[s, t, r, q])) }
     list glMultiTexCoord4sv(target: GLenum, v: *const GLshort) { |_c| Command::TexCoord(target, texcoord(&arr::<GLshort, 4>(v)?)) }
-    list glLoadTransposeMatrixf(m: *const GLfloat) { |_c| Command::LoadMatrix(matrix(arr::<GLfloat, 16>(m)?.map(f64::from)).transpose()) }
-    list glLoadTransposeMatrixd(m: *const GLdouble) { |_c| Command::LoadMatrix(matrix(arr::<GLdouble, 16>(m)?).transpose()) }
-    list glMultTransposeMatrixf(m: *const GLfloat) { |_c| Command::MultMatrix(matrix(arr::<GLfloat, 16>(m)?.map(f64::from)).transpose()) }
-    list glMultTransposeMatrixd(m: *const GLdouble) { |_c| Command::MultMatrix(matrix(arr::<GLdouble, 16>(m)?).transpose()) }
+    list glLoadTransposeMatrixf(m: *const GLfloat) { |_c| Command::LoadMatrix(Box::new(matrix(arr::<GLfloat, 16>(m)?.map(f64::from)).transpose())) }
+    list glLoadTransposeMatrixd(m: *const GLdouble) { |_c| Command::LoadMatrix(Box::new(matrix(arr::<GLdouble, 16>(m)?).transpose())) }
+    list glMultTransposeMatrixf(m: *const GLfloat) { |_c| Command::MultMatrix(Box::new(matrix(arr::<GLfloat, 16>(m)?.map(f64::from)).transpose())) }
+    list glMultTransposeMatrixd(m: *const GLdouble) { |_c| Command::MultMatrix(Box::new(matrix(arr::<GLdouble, 16>(m)?).transpose())) }
     list glSampleCoverage(value: GLclampf, invert: GLboolean) { |_c| Command::SampleCoverage(value, truth(invert)) }
     exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexImage1D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, internalformat, width, border, imageSize, data); c.set_error(GL_INVALID_ENUM) } }
     exec["no compressed formats are supported: GL_INVALID_ENUM"] glCompressedTexImage2D(target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, imageSize: GLsizei, data: *const c_void) { |c| { let _ = (target, level, internalformat, width, height, border, imageSize, data); c.set_error(GL_INVALID_ENUM) } }

@@ -15,8 +15,9 @@
 //! with no allocation and no [`Command`] per vertex.
 //!
 //! Compiling (section 5.4): the array data are read at compile time, and a
-//! draw is recorded as the commands it generates: `Begin(mode)`, then for
-//! each element its attribute commands (`EdgeFlag`, `MultiTexCoord`,
+//! draw is recorded as the commands it generates, in one draw block
+//! (gl::lists' `begin_draw`: Begin(mode), illegal as a whole when the list
+//! is called between Begin and End), then for each element its attribute commands (`EdgeFlag`, `MultiTexCoord`,
 //! `Color`, `SecondaryColor`, `FogCoord`, `Index`, `Normal`) and `Vertex`,
 //! then `End`; glArrayElement records its element alone. Later changes to
 //! the arrays or buffers do not change the list. In GL_COMPILE_AND_EXECUTE
@@ -813,8 +814,8 @@ impl Context {
     /// INVALID_OPERATION as the draw would have.
     fn empty_draw(&mut self, mode: u32) {
         if self.lists.compile_mode().is_some() {
-            self.lists.record(Command::Begin(mode));
-            self.lists.record(Command::End);
+            self.lists.begin_draw(mode);
+            self.lists.end_draw();
         }
     }
 
@@ -822,12 +823,12 @@ impl Context {
     fn draw(&mut self, mode: u32, f: &Fetch, n: usize, index: impl Fn(usize) -> usize) {
         let list_mode = self.lists.compile_mode();
         if list_mode.is_some() {
-            self.lists.record(Command::Begin(mode));
+            self.lists.begin_draw(mode);
             for k in 0..n {
                 let e = f.element(index(k));
                 self.record_element(&e);
             }
-            self.lists.record(Command::End);
+            self.lists.end_draw();
             if list_mode == Some(GL_COMPILE) {
                 return;
             }
@@ -836,10 +837,18 @@ impl Context {
         if !self.in_begin_end() {
             return;
         }
+        // The current values a draw's arrays set are indeterminate after
+        // it (2.8); softgl leaves them as they were before the draw, as
+        // Mesa does and programs (piglit's draw-vertices) expect.
+        let saved = self.current;
         for k in 0..n {
             self.apply_element(f, index(k));
         }
         self.end();
+        self.current = saved;
+        if f.color.is_some() && self.lighting.color_material {
+            self.apply_color_material();
+        }
     }
 
     pub fn draw_arrays(&mut self, mode: u32, first: i32, count: i32) {

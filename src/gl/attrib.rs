@@ -6,13 +6,20 @@
 //! capability glIsEnabled knows, and restored through glEnable/glDisable,
 //! so it covers state that lives in several groups.
 //!
-//! Groups whose state does not exist yet in softgl (fog, textures, pixel
-//! transfer, vertex arrays) are added here as they land.
+//! GL_TEXTURE_BIT saves the active unit, every unit's enables, bindings,
+//! environment and texture-coordinate generation, and the parameters of
+//! the objects bound at the push; the pop rebinds those objects (a name
+//! deleted since then binds the default object, as deletion left it) and
+//! puts their parameters back. GL_PIXEL_MODE_BIT is the pixel transfer
+//! modes, the pixel maps, the zoom and the read buffer (there are no colour
+//! tables, convolution or histogram state yet).
 
 use super::context::Context;
 use super::enums::*;
 use super::state::*;
+use super::texture::TexUnit;
 use super::validate::DIRTY_ALL;
+use crate::render::texture::{Params, MAX_UNITS};
 
 /// GL_MAX_ATTRIB_STACK_DEPTH and GL_MAX_CLIENT_ATTRIB_STACK_DEPTH.
 pub const MAX_ATTRIB_STACK_DEPTH: usize = 16;
@@ -22,14 +29,18 @@ pub const GL_POINT_BIT: u32 = 0x2;
 pub const GL_LINE_BIT: u32 = 0x4;
 pub const GL_POLYGON_BIT: u32 = 0x8;
 pub const GL_POLYGON_STIPPLE_BIT: u32 = 0x10;
+pub const GL_PIXEL_MODE_BIT: u32 = 0x20;
 pub const GL_LIGHTING_BIT: u32 = 0x40;
+pub const GL_FOG_BIT: u32 = 0x80;
 pub const GL_VIEWPORT_BIT: u32 = 0x800;
 pub const GL_TRANSFORM_BIT: u32 = 0x1000;
 pub const GL_ENABLE_BIT: u32 = 0x2000;
 pub const GL_HINT_BIT: u32 = 0x8000;
 pub const GL_EVAL_BIT: u32 = 0x10000;
 pub const GL_LIST_BIT: u32 = 0x20000;
+pub const GL_TEXTURE_BIT: u32 = 0x40000;
 pub const GL_SCISSOR_BIT: u32 = 0x80000;
+pub const GL_MULTISAMPLE_BIT: u32 = 0x2000_0000;
 pub const GL_CLIENT_PIXEL_STORE_BIT: u32 = 0x1;
 
 /// Every capability of GL 1.5 (glIsEnabled answers for those it knows).
@@ -72,6 +83,20 @@ pub struct Saved {
     eval: Option<super::eval::EvalState>,
     list_base: Option<u32>,
     scissor: Option<ScissorState>,
+    fog: Option<super::fog::FogState>,
+    pixel_mode: Option<(super::pixel_transfer::PixelTransfer, u32)>,
+    texture: Option<SavedTexture>,
+    /// GL_MULTISAMPLE_BIT: its four enables and the sample coverage.
+    multisample: Option<([(u32, bool); 4], (f32, bool))>,
+}
+
+/// GL_TEXTURE_BIT's copy.
+struct SavedTexture {
+    active: usize,
+    units: [TexUnit; MAX_UNITS],
+    /// The bound objects' state per unit and target: name, parameters,
+    /// priority, GENERATE_MIPMAP.
+    objects: Vec<(u32, usize, Params, f32, bool)>,
 }
 
 #[derive(Default)]
@@ -119,6 +144,48 @@ impl Context {
             eval: has(GL_EVAL_BIT).then(|| self.eval.clone()),
             list_base: has(GL_LIST_BIT).then_some(self.lists.base),
             scissor: has(GL_SCISSOR_BIT).then(|| self.scissor.clone()),
+            fog: has(GL_FOG_BIT).then(|| self.fog.clone()),
+            pixel_mode: has(GL_PIXEL_MODE_BIT).then(|| (self.pixel.clone(), self.pixel_read_buffer)),
+            texture: has(GL_TEXTURE_BIT).then(|| self.save_texture()),
+            multisample: has(GL_MULTISAMPLE_BIT).then(|| {
+                let caps = [GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE];
+                (caps.map(|c| (c, self.is_enabled(c) == Some(true))), self.color_buffer.sample_coverage)
+            }),
+        }
+    }
+
+    fn save_texture(&self) -> SavedTexture {
+        let t = &self.texture;
+        let mut objects = Vec::new();
+        for unit in &t.units {
+            for (target, &name) in unit.bound.iter().enumerate() {
+                let o = if name == 0 { Some(&t.defaults[target]) } else { t.objects.get(&name) };
+                if let Some(o) = o {
+                    objects.push((name, target, o.params.clone(), o.priority, o.generate_mipmap));
+                }
+            }
+        }
+        SavedTexture { active: t.active, units: t.units.clone(), objects }
+    }
+
+    fn restore_texture(&mut self, s: SavedTexture) {
+        let t = &mut self.texture;
+        t.active = s.active;
+        t.units = s.units;
+        for unit in t.units.iter_mut() {
+            for name in unit.bound.iter_mut() {
+                if *name != 0 && !t.objects.contains_key(name) {
+                    *name = 0;
+                }
+            }
+        }
+        for (name, target, params, priority, generate_mipmap) in s.objects {
+            let o = if name == 0 { Some(&mut t.defaults[target]) } else { t.objects.get_mut(&name) };
+            if let Some(o) = o {
+                o.params = params;
+                o.priority = priority;
+                o.generate_mipmap = generate_mipmap;
+            }
         }
     }
 
@@ -182,6 +249,22 @@ impl Context {
         }
         if let Some(v) = s.scissor {
             self.scissor = v;
+        }
+        if let Some(v) = s.fog {
+            self.fog = v;
+        }
+        if let Some((v, read_buffer)) = s.pixel_mode {
+            self.pixel = v;
+            self.pixel_read_buffer = read_buffer;
+        }
+        if let Some(v) = s.texture {
+            self.restore_texture(v);
+        }
+        if let Some((caps, coverage)) = s.multisample {
+            for (cap, on) in caps {
+                self.set_enabled(cap, on);
+            }
+            self.color_buffer.sample_coverage = coverage;
         }
         if let Some(list) = s.enables {
             for (cap, on) in list {

@@ -16,6 +16,13 @@ use super::select;
 use crate::render::{self, ClipVertex};
 use glam::Vec4;
 
+thread_local! {
+    /// The vertex buffer of the last primitive, kept for the next glBegin:
+    /// programs that wrap each triangle in glBegin/glEnd then allocate
+    /// nothing per primitive.
+    static SPARE_VERTS: std::cell::Cell<Vec<ClipVertex>> = const { std::cell::Cell::new(Vec::new()) };
+}
+
 /// Assembly state between glBegin and glEnd.
 pub struct Assembly {
     pub mode: u32,
@@ -37,7 +44,12 @@ impl Context {
         }
         // Begin inside Begin is caught by the Begin/End rule (execute).
         self.validate();
-        self.prim = Some(Assembly { mode, verts: Vec::with_capacity(4), count: 0, stipple: 0, point_size: 1.0 });
+        let mut verts = SPARE_VERTS.with(|s| s.take());
+        verts.clear();
+        if verts.capacity() < 4 {
+            verts.reserve(4);
+        }
+        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0 });
     }
 
     pub fn end(&mut self) {
@@ -58,6 +70,7 @@ impl Context {
                 self.triangle([&v[0], &v[i], &v[i + 1]], 0, edges);
             }
         }
+        SPARE_VERTS.with(|s| s.set(std::mem::take(&mut asm.verts)));
     }
 
     /// glVertex: the vertex takes the current colour (section 2.7).
@@ -86,9 +99,15 @@ impl Context {
         // Without texturing the colour sum can be made here exactly: both
         // colours interpolate linearly and the sum is clamped per fragment.
         let textured = self.derived.render.texture.is_some();
-        let (color, back_color, secondary) =
-            if textured { (color, back_color, secondary) } else { (color + secondary, back_color + back_secondary, Vec4::ZERO) };
-        let tex = self.vertex_texcoords(obj);
+        let (color, back_color, secondary, back_secondary) = if textured {
+            (color, back_color, secondary, back_secondary)
+        } else {
+            (color + secondary, back_color + back_secondary, Vec4::ZERO, Vec4::ZERO)
+        };
+        let mut tex = self.vertex_texcoords(obj);
+        if self.select.mode == select::GL_FEEDBACK && !self.texture.vertex.units.iter().any(|u| u.unit == 0) {
+            tex[0] = self.feedback_texcoord(obj);
+        }
         let fog = match &self.derived.render.fog {
             None => 0.0,
             // The fog coordinate (3.10): glFogCoord's value, or the
@@ -96,7 +115,7 @@ impl Context {
             Some(f) if self.fog.coord_src == super::fog::GL_FOG_COORD => f.vertex_value(self.current.fog_coord),
             Some(f) => f.vertex_value((self.derived.modelview * obj).z.abs()),
         };
-        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary };
+        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary, back_secondary };
         if asm.mode == GL_POINTS {
             asm.point_size = self.derived_point_size(obj);
         }

@@ -1,7 +1,8 @@
 //! The display-listable commands, as values. An entry point converts its C
 //! arguments into one of these (so glColor3ub and glColor4fv both become
 //! `Color`), then [`Context::submit`] records it in a display list,
-//! executes it, or both. Display lists are vectors of these.
+//! executes it, or both. Display lists keep the per-vertex ones packed
+//! and the rest as these values (gl::lists).
 
 use super::context::Context;
 use super::enums::*;
@@ -32,8 +33,10 @@ pub enum Command {
     // Section 2.11: coordinate transformations.
     MatrixMode(u32),
     LoadIdentity,
-    LoadMatrix(DMat4),
-    MultMatrix(DMat4),
+    /// Boxed: a matrix is the largest payload, and every command (each
+    /// glVertex) would otherwise be as large as it.
+    LoadMatrix(Box<DMat4>),
+    MultMatrix(Box<DMat4>),
     Ortho([f64; 6]),
     Frustum([f64; 6]),
     Translate([f64; 3]),
@@ -173,8 +176,29 @@ impl Command {
 }
 
 impl Context {
+    /// glColor: the current colour, and the material properties colour
+    /// material tracks (2.14.3).
+    #[inline]
+    pub fn set_color(&mut self, c: [f32; 4]) {
+        self.current.color = c;
+        if self.lighting.color_material {
+            self.apply_color_material();
+        }
+    }
+
     /// Executes one command against the context.
     pub fn execute(&mut self, cmd: &Command) {
+        // The per-vertex commands first: legal anywhere, so no Begin/End
+        // check (immediate mode's hot path).
+        match cmd {
+            Command::Vertex(v) => return self.vertex(*v),
+            Command::Color(c) => return self.set_color(*c),
+            Command::Normal(n) => {
+                self.current.normal = *n;
+                return;
+            }
+            _ => {}
+        }
         if self.in_begin_end() && !cmd.allowed_in_begin_end() {
             self.set_error(GL_INVALID_OPERATION);
             return;
@@ -184,10 +208,7 @@ impl Context {
             Begin(mode) => self.begin(*mode),
             End => self.end(),
             Vertex(v) => self.vertex(*v),
-            Color(c) => {
-                self.current.color = *c;
-                self.apply_color_material();
-            }
+            Color(c) => self.set_color(*c),
             Normal(n) => self.current.normal = *n,
             Index(i) => self.current.index = *i,
             FogCoord(f) => self.current.fog_coord = *f,
@@ -205,8 +226,8 @@ impl Context {
             }
             MatrixMode(m) => self.matrix_mode(*m),
             LoadIdentity => self.load_matrix(DMat4::IDENTITY),
-            LoadMatrix(m) => self.load_matrix(*m),
-            MultMatrix(m) => self.mult_matrix(*m),
+            LoadMatrix(m) => self.load_matrix(**m),
+            MultMatrix(m) => self.mult_matrix(**m),
             Ortho(p) => self.ortho(*p),
             Frustum(p) => self.frustum(*p),
             Translate(t) => self.mult_matrix(DMat4::from_translation((*t).into())),
@@ -298,11 +319,36 @@ impl Context {
             EvalMesh1(mode, i1, i2) => self.eval_mesh1(*mode, *i1, *i2),
             EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(*mode, *i1, *i2, *j1, *j2),
             PassThrough(t) => self.pass_through(*t),
-            RasterPos(p) => self.raster_pos(*p),
-            WindowPos(p) => self.window_pos(*p),
+            RasterPos(p) => {
+                self.raster_pos(*p);
+                self.raster_hit();
+            }
+            WindowPos(p) => {
+                self.window_pos(*p);
+                self.raster_hit();
+            }
             PixelTransfer(pname, v) => self.pixel_transfer(*pname, *v),
             PixelMap(map, v) => self.pixel_map(*map, v),
             PixelZoom(x, y) => self.pixel_zoom(*x, *y),
+            // Feedback and selection (5.2, 5.3): pixel rectangles draw
+            // nothing; feedback records the raster position.
+            Bitmap(b) if self.select.mode != super::select::GL_RENDER => {
+                if self.raster.valid {
+                    self.pixel_primitive(super::select::GL_BITMAP_TOKEN);
+                    self.raster.pos[0] += b.step[0];
+                    self.raster.pos[1] += b.step[1];
+                }
+            }
+            DrawPixels(_) if self.select.mode != super::select::GL_RENDER => self.pixel_primitive(super::select::GL_DRAW_PIXEL_TOKEN),
+            CopyPixels(_, _, w, h, ty) if self.select.mode != super::select::GL_RENDER => {
+                if *w < 0 || *h < 0 {
+                    self.set_error(GL_INVALID_VALUE)
+                } else if !matches!(*ty, GL_COLOR | GL_DEPTH | GL_STENCIL) {
+                    self.set_error(GL_INVALID_ENUM)
+                } else {
+                    self.pixel_primitive(super::select::GL_COPY_PIXEL_TOKEN)
+                }
+            }
             Bitmap(b) => self.bitmap(b),
             DrawPixels(r) => self.draw_pixels(r),
             CopyPixels(x, y, w, h, ty) => self.copy_pixels(*x, *y, *w, *h, *ty),

@@ -51,6 +51,12 @@ impl Context {
         if self.set_texture_enabled(cap, on) {
             return;
         }
+        // glEnable(GL_VERTEX_ARRAY) and the other array capabilities: not in
+        // the GL 1.5 tables, but EXT_vertex_array allowed them and programs
+        // (and piglit) still use them; they act as glEnableClientState.
+        if super::arrays::ArrayState::from_cap(cap, self.texture.client_active).is_some() {
+            return self.client_state(cap, on);
+        }
         match cap {
             GL_DEPTH_TEST => {
                 self.depth.test = on;

@@ -4,8 +4,9 @@
 //!
 //! Maps are evaluated with de Casteljau's algorithm in f64. Evaluated
 //! colours and normals feed the generated vertex without changing the
-//! current values (5.1). Texture-coordinate maps are stored and queryable
-//! but feed no texture coordinates until texturing lands.
+//! current values (5.1). Texture-coordinate maps give the
+//! texture coordinates of unit 0 (glTexCoord's unit); with several enabled,
+//! the one with the most components wins (5.1).
 
 use super::context::Context;
 use super::enums::*;
@@ -173,6 +174,15 @@ impl Context {
         };
         let color = enabled[COLOR].then(|| at(COLOR).0);
         let mut normal = enabled[NORMAL].then(|| at(NORMAL).0);
+        // TEXTURE_COORD_4 down to TEXTURE_COORD_1: the first enabled.
+        let tex = (3..=6).rev().find(|&i| enabled[i]).map(|i| {
+            let t = at(i).0;
+            let mut strq = [0.0, 0.0, 0.0, 1.0];
+            for (o, v) in strq.iter_mut().zip(&t) {
+                *o = *v as f32;
+            }
+            strq
+        });
         let vertex = if enabled[VERTEX_4] {
             let (p, du, dv) = at(VERTEX_4);
             if two && self.eval.auto_normal {
@@ -194,7 +204,10 @@ impl Context {
         };
         let Some(vertex) = vertex else { return };
         // Evaluated values are used for this vertex only (5.1).
-        let saved = (self.current.color, self.current.normal);
+        let saved = (self.current.color, self.current.normal, self.current.tex_coords[0]);
+        if let Some(t) = tex {
+            self.current.tex_coords[0] = t;
+        }
         if let Some(c) = color {
             self.current.color = [c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32];
         }
@@ -202,7 +215,7 @@ impl Context {
             self.current.normal = [n[0] as f32, n[1] as f32, n[2] as f32];
         }
         self.vertex(vertex);
-        (self.current.color, self.current.normal) = saved;
+        (self.current.color, self.current.normal, self.current.tex_coords[0]) = saved;
     }
 
     pub fn map_grid(&mut self, un: i32, u: (f32, f32), v: Option<(i32, (f32, f32))>) {

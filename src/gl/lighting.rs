@@ -165,8 +165,12 @@ impl Context {
             return self.set_error(GL_INVALID_VALUE);
         }
         if !self.set_material(fs, pname, v) {
-            self.set_error(GL_INVALID_ENUM);
+            return self.set_error(GL_INVALID_ENUM);
         }
+        // Properties GL_COLOR_MATERIAL tracks keep following the current
+        // colour (2.14.3): a glMaterial of one of them is overridden at
+        // once, as implementations (and piglit's dlist-color-material) do.
+        self.apply_color_material();
     }
 
     /// Stores a material property for the given faces; false (and nothing

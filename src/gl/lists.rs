@@ -1,5 +1,23 @@
 //! Display lists (GL 1.5 section 5.4): names, compilation, execution with
 //! the nesting limit, glListBase and glCallLists' name types.
+//!
+//! Storage: a list is a packed stream of 32-bit words, not a vector of
+//! [`Command`] values. The commands programs put in lists by the million
+//! (glVertex, glColor, glNormal, glTexCoord, ...) take a header word and
+//! their floats (a 2D or 3D vertex: 3 or 4 words, 12 or 16 bytes, where a
+//! `Command` value is 64); everything else is kept as a `Command` in a side
+//! table and the stream holds its index. A vertex-array draw compiled into
+//! a list is one block (`OP_DRAW`), so that calling the list between Begin
+//! and End raises INVALID_OPERATION for the draw and skips it as a whole,
+//! as executing the draw there would (section 2.6.3), while the list's
+//! other vertex commands still go to the open primitive.
+//!
+//! Header word: bits 0-7 the opcode, bits 8-31 an argument (a primitive
+//! mode, a texture unit, an edge flag).
+//!
+//! The store is reached through [`Lists`]' methods only (define, get,
+//! delete, name allocation), so that it can later be shared between
+//! contexts without touching the rest of `gl`.
 
 use super::command::Command;
 use super::context::Context;
@@ -10,36 +28,171 @@ use std::rc::Rc;
 /// GL_MAX_LIST_NESTING.
 pub const MAX_LIST_NESTING: u32 = 64;
 
+// Opcodes of the word stream. The floats follow the header as f32 bits.
+const OP_CMD: u32 = 0; // [index into List::cmds]
+const OP_VERTEX2: u32 = 1; // [x y] (z 0, w 1)
+const OP_VERTEX3: u32 = 2; // [x y z] (w 1)
+const OP_VERTEX4: u32 = 3; // [x y z w]
+const OP_COLOR3: u32 = 4; // [r g b] (alpha 1)
+const OP_COLOR4: u32 = 5; // [r g b a]
+const OP_NORMAL: u32 = 6; // [x y z]
+const OP_TEXCOORD2: u32 = 7; // arg: unit; [s t] (r 0, q 1)
+const OP_TEXCOORD4: u32 = 8; // arg: unit; [s t r q]
+const OP_SECONDARY: u32 = 9; // [r g b a]
+const OP_FOGCOORD: u32 = 10; // [f]
+const OP_INDEX: u32 = 11; // [i]
+const OP_EDGEFLAG: u32 = 12; // arg: flag
+const OP_BEGIN: u32 = 13; // arg: mode
+const OP_END: u32 = 14;
+const OP_DRAW: u32 = 15; // arg: mode; [n], then n words: the elements and OP_END
+
+/// One compiled list.
+#[derive(Default, Debug)]
+pub struct List {
+    words: Vec<u32>,
+    /// The commands with no compact form, referenced by OP_CMD.
+    cmds: Vec<Command>,
+}
+
+impl List {
+    #[inline]
+    fn op(&mut self, op: u32, arg: u32, data: &[f32]) {
+        self.words.push(op | (arg << 8));
+        self.words.extend(data.iter().map(|f| f.to_bits()));
+    }
+
+    /// Appends one command in its compact form when it has one.
+    fn push(&mut self, cmd: Command) {
+        let is = |x: f32, v: f32| x.to_bits() == v.to_bits();
+        match cmd {
+            Command::Vertex([x, y, z, w]) if is(w, 1.0) && is(z, 0.0) => self.op(OP_VERTEX2, 0, &[x, y]),
+            Command::Vertex([x, y, z, w]) if is(w, 1.0) => self.op(OP_VERTEX3, 0, &[x, y, z]),
+            Command::Vertex(v) => self.op(OP_VERTEX4, 0, &v),
+            Command::Color([r, g, b, a]) if is(a, 1.0) => self.op(OP_COLOR3, 0, &[r, g, b]),
+            Command::Color(c) => self.op(OP_COLOR4, 0, &c),
+            Command::Normal(n) => self.op(OP_NORMAL, 0, &n),
+            // Units beyond the header's range are kept as commands (they
+            // raise INVALID_ENUM when run).
+            Command::TexCoord(unit, [s, t, r, q]) if unit.wrapping_sub(super::arrays::GL_TEXTURE0) < 256 => {
+                let u = unit - super::arrays::GL_TEXTURE0;
+                if is(r, 0.0) && is(q, 1.0) {
+                    self.op(OP_TEXCOORD2, u, &[s, t])
+                } else {
+                    self.op(OP_TEXCOORD4, u, &[s, t, r, q])
+                }
+            }
+            Command::SecondaryColor(c) => self.op(OP_SECONDARY, 0, &c),
+            Command::FogCoord(f) => self.op(OP_FOGCOORD, 0, &[f]),
+            Command::Index(i) => self.op(OP_INDEX, 0, &[i]),
+            Command::EdgeFlag(f) => self.op(OP_EDGEFLAG, f as u32, &[]),
+            Command::Begin(mode) if mode <= 0xFF_FFFF => self.op(OP_BEGIN, mode, &[]),
+            Command::End => self.op(OP_END, 0, &[]),
+            cmd => {
+                let i = self.cmds.len() as u32;
+                self.cmds.push(cmd);
+                self.words.push(OP_CMD);
+                self.words.push(i);
+            }
+        }
+    }
+
+    /// Bytes the list holds (for tests and measurements).
+    pub fn bytes(&self) -> usize {
+        self.words.capacity() * 4 + self.cmds.capacity() * std::mem::size_of::<Command>()
+    }
+}
+
+/// The list names in use and their contents: the part of display-list
+/// state that contexts sharing lists (glXCreateContext's share_list,
+/// wglShareLists) would share. Everything else reaches it through these
+/// four methods.
 #[derive(Default)]
-pub struct Lists {
+pub struct ListStore {
     /// Defined lists (possibly empty). Rc: a list keeps running even if it
     /// deletes or redefines itself.
-    lists: HashMap<u32, Rc<[Command]>>,
-    compiling: Option<(u32, u32, Vec<Command>)>,
+    lists: HashMap<u32, Rc<List>>,
+}
+
+impl ListStore {
+    pub fn contains(&self, n: u32) -> bool {
+        self.lists.contains_key(&n)
+    }
+
+    pub fn get(&self, n: u32) -> Option<Rc<List>> {
+        self.lists.get(&n).cloned()
+    }
+
+    /// Defines (or redefines) list `n`.
+    pub fn define(&mut self, n: u32, list: List) {
+        self.lists.insert(n, Rc::new(list));
+    }
+
+    pub fn remove(&mut self, n: u32) {
+        self.lists.remove(&n);
+    }
+}
+
+#[derive(Default)]
+pub struct Lists {
+    pub store: ListStore,
+    compiling: Option<Compiling>,
     pub base: u32,
     depth: u32,
+}
+
+struct Compiling {
+    name: u32,
+    mode: u32,
+    list: List,
+    /// Where the open OP_DRAW block's length word is.
+    draw: Option<usize>,
 }
 
 impl Lists {
     /// GL_COMPILE or GL_COMPILE_AND_EXECUTE while a list is open.
     #[inline]
     pub fn compile_mode(&self) -> Option<u32> {
-        self.compiling.as_ref().map(|c| c.1)
+        self.compiling.as_ref().map(|c| c.mode)
     }
 
+    #[inline]
     pub fn record(&mut self, cmd: Command) {
-        if let Some((_, _, cmds)) = &mut self.compiling {
-            cmds.push(cmd);
+        if let Some(c) = &mut self.compiling {
+            c.list.push(cmd);
+        }
+    }
+
+    /// Opens the block of a vertex-array draw being compiled: Begin(mode),
+    /// the elements recorded next, and the End of [`Lists::end_draw`].
+    pub fn begin_draw(&mut self, mode: u32) {
+        if let Some(c) = &mut self.compiling {
+            c.list.words.push(OP_DRAW | (mode << 8));
+            c.draw = Some(c.list.words.len());
+            c.list.words.push(0);
+        }
+    }
+
+    pub fn end_draw(&mut self) {
+        if let Some(c) = &mut self.compiling {
+            c.list.words.push(OP_END);
+            if let Some(at) = c.draw.take() {
+                c.list.words[at] = (c.list.words.len() - at - 1) as u32;
+            }
         }
     }
 
     /// GL_LIST_INDEX: the list being compiled, or 0.
     pub fn index(&self) -> u32 {
-        self.compiling.as_ref().map_or(0, |c| c.0)
+        self.compiling.as_ref().map_or(0, |c| c.name)
     }
 
     pub fn is_list(&self, n: u32) -> bool {
-        self.lists.contains_key(&n)
+        self.store.contains(n)
+    }
+
+    /// The list named `n`, for measurements and tests.
+    pub fn get(&self, n: u32) -> Option<Rc<List>> {
+        self.store.get(n)
     }
 }
 
@@ -97,13 +250,13 @@ impl Context {
                 return 0;
             };
             for n in start..=end {
-                if self.lists.lists.contains_key(&n) {
+                if self.lists.store.contains(n) {
                     start = n + 1;
                     continue 'search;
                 }
             }
             for n in start..=end {
-                self.lists.lists.insert(n, Rc::from(Vec::new()));
+                self.lists.store.define(n, List::default());
             }
             return start;
         }
@@ -119,13 +272,15 @@ impl Context {
         if self.lists.compiling.is_some() {
             return self.set_error(GL_INVALID_OPERATION);
         }
-        self.lists.compiling = Some((n, mode, Vec::new()));
+        self.lists.compiling = Some(Compiling { name: n, mode, list: List::default(), draw: None });
     }
 
     pub fn end_list(&mut self) {
         match self.lists.compiling.take() {
-            Some((n, _, cmds)) => {
-                self.lists.lists.insert(n, Rc::from(cmds));
+            Some(Compiling { name, mut list, .. }) => {
+                list.words.shrink_to_fit();
+                list.cmds.shrink_to_fit();
+                self.lists.store.define(name, list);
             }
             None => self.set_error(GL_INVALID_OPERATION),
         }
@@ -138,7 +293,7 @@ impl Context {
         for i in 0..range as u32 {
             match first.checked_add(i) {
                 Some(n) => {
-                    self.lists.lists.remove(&n);
+                    self.lists.store.remove(n);
                 }
                 None => break,
             }
@@ -149,11 +304,9 @@ impl Context {
         if self.lists.depth >= MAX_LIST_NESTING {
             return;
         }
-        let Some(list) = self.lists.lists.get(&n).cloned() else { return };
+        let Some(list) = self.lists.store.get(n) else { return };
         self.lists.depth += 1;
-        for cmd in list.iter() {
-            self.execute(cmd);
-        }
+        self.replay(&list);
         self.lists.depth -= 1;
     }
 
@@ -162,5 +315,116 @@ impl Context {
         for &n in names {
             self.call_list(base.wrapping_add(n));
         }
+    }
+
+    /// Executes a list's word stream.
+    fn replay(&mut self, list: &List) {
+        let w = &list.words[..];
+        let f = |i: usize| f32::from_bits(w[i]);
+        let mut i = 0;
+        while i < w.len() {
+            let (op, arg) = (w[i] & 0xFF, w[i] >> 8);
+            i += 1;
+            match op {
+                OP_VERTEX2 => {
+                    self.vertex([f(i), f(i + 1), 0.0, 1.0]);
+                    i += 2;
+                }
+                OP_VERTEX3 => {
+                    self.vertex([f(i), f(i + 1), f(i + 2), 1.0]);
+                    i += 3;
+                }
+                OP_VERTEX4 => {
+                    self.vertex([f(i), f(i + 1), f(i + 2), f(i + 3)]);
+                    i += 4;
+                }
+                OP_COLOR3 => {
+                    self.set_color([f(i), f(i + 1), f(i + 2), 1.0]);
+                    i += 3;
+                }
+                OP_COLOR4 => {
+                    self.set_color([f(i), f(i + 1), f(i + 2), f(i + 3)]);
+                    i += 4;
+                }
+                OP_NORMAL => {
+                    self.current.normal = [f(i), f(i + 1), f(i + 2)];
+                    i += 3;
+                }
+                OP_TEXCOORD2 => {
+                    self.tex_coord(super::arrays::GL_TEXTURE0 + arg, [f(i), f(i + 1), 0.0, 1.0]);
+                    i += 2;
+                }
+                OP_TEXCOORD4 => {
+                    self.tex_coord(super::arrays::GL_TEXTURE0 + arg, [f(i), f(i + 1), f(i + 2), f(i + 3)]);
+                    i += 4;
+                }
+                OP_SECONDARY => {
+                    self.current.secondary_color = [f(i), f(i + 1), f(i + 2), f(i + 3)];
+                    i += 4;
+                }
+                OP_FOGCOORD => {
+                    self.current.fog_coord = f(i);
+                    i += 1;
+                }
+                OP_INDEX => {
+                    self.current.index = f(i);
+                    i += 1;
+                }
+                OP_EDGEFLAG => self.current.edge_flag = arg != 0,
+                OP_BEGIN => self.execute(&Command::Begin(arg)),
+                OP_END => self.execute(&Command::End),
+                OP_DRAW => {
+                    let n = w[i] as usize;
+                    i += 1;
+                    if self.in_begin_end() {
+                        // The draw as a whole is illegal here; skip it.
+                        self.set_error(GL_INVALID_OPERATION);
+                        i += n;
+                    } else {
+                        self.begin(arg);
+                    }
+                }
+                _ => {
+                    let cmd = &list.cmds[w[i] as usize];
+                    i += 1;
+                    self.execute(cmd);
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn replayed(cmds: Vec<Command>) -> (Vec<u32>, Vec<Command>) {
+        let mut l = List::default();
+        for c in cmds {
+            l.push(c);
+        }
+        (l.words, l.cmds)
+    }
+
+    #[test]
+    fn vertex_commands_are_compact() {
+        let (w, cmds) = replayed(vec![
+            Command::Vertex([1.0, 2.0, 0.0, 1.0]),
+            Command::Vertex([1.0, 2.0, 3.0, 1.0]),
+            Command::Vertex([1.0, 2.0, -0.0, 1.0]),
+            Command::Color([0.5, 0.25, 0.0, 1.0]),
+            Command::Normal([0.0, 0.0, 1.0]),
+            Command::TexCoord(0x84C1, [0.5, 0.5, 0.0, 1.0]),
+            Command::ShadeModel(GL_FLAT),
+        ]);
+        // 3 + 4 + 4 (-0.0 is kept, so a 3D vertex) + 4 + 4 + 3 + 2 words.
+        assert_eq!(w.len(), 24);
+        assert_eq!(w[0], OP_VERTEX2);
+        assert_eq!(w[3], OP_VERTEX3);
+        assert_eq!(w[7], OP_VERTEX3);
+        assert_eq!(f32::from_bits(w[10]).to_bits(), (-0.0f32).to_bits());
+        assert_eq!(w[11], OP_COLOR3);
+        assert_eq!(w[19], OP_TEXCOORD2 | (1 << 8));
+        assert_eq!(cmds, vec![Command::ShadeModel(GL_FLAT)]);
     }
 }

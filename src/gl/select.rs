@@ -8,6 +8,12 @@
 //! primitive assembly makes of them, so feedback reports each as a
 //! GL_POLYGON_TOKEN with 3 vertices (as Mesa does).
 //!
+//! Feedback vertices carry texture unit 0's coordinates (after texgen and
+//! the texture matrix). glBitmap, glDrawPixels and glCopyPixels draw
+//! nothing in either mode; in feedback they report their token and the
+//! current raster position as a vertex when it is valid (5.3), and glBitmap
+//! still moves the raster position.
+//!
 //! The client's buffers are written as results arrive; the context keeps
 //! only their pointers and sizes, as GL does.
 
@@ -31,6 +37,9 @@ pub const GL_PASS_THROUGH_TOKEN: f32 = 0x0700 as f32;
 pub const GL_POINT_TOKEN: f32 = 0x0701 as f32;
 pub const GL_LINE_TOKEN: f32 = 0x0702 as f32;
 pub const GL_POLYGON_TOKEN: f32 = 0x0703 as f32;
+pub const GL_BITMAP_TOKEN: f32 = 0x0704 as f32;
+pub const GL_DRAW_PIXEL_TOKEN: f32 = 0x0705 as f32;
+pub const GL_COPY_PIXEL_TOKEN: f32 = 0x0706 as f32;
 pub const GL_LINE_RESET_TOKEN: f32 = 0x0707 as f32;
 /// GL_MAX_NAME_STACK_DEPTH.
 pub const MAX_NAME_STACK_DEPTH: usize = 64;
@@ -294,12 +303,70 @@ impl Context {
                 }
             }
             if matches!(ty, GL_3D_COLOR_TEXTURE | GL_4D_COLOR_TEXTURE) {
-                // Texture coordinates: (0, 0, 0, 1) until texturing lands.
-                for t in [0.0, 0.0, 0.0, 1.0] {
+                for t in v.tex[0].to_array() {
                     s.put_feedback(t);
                 }
             }
         }
+    }
+
+    /// glRasterPos and glWindowPos in selection mode: a valid raster
+    /// position is a hit at its depth (5.2).
+    pub fn raster_hit(&mut self) {
+        if self.select.mode == GL_SELECT && self.raster.valid {
+            let z = self.raster.pos[2] as f64;
+            let p = self.select.pending.get_or_insert((z, z));
+            p.0 = p.0.min(z);
+            p.1 = p.1.max(z);
+        }
+    }
+
+    /// glBitmap, glDrawPixels, glCopyPixels in feedback or selection mode
+    /// (`token` says which): the feedback record of the raster position.
+    pub fn pixel_primitive(&mut self, token: f32) {
+        if self.select.mode != GL_FEEDBACK || !self.raster.valid {
+            return;
+        }
+        let r = &self.raster;
+        let ty = self.select.feedback_type;
+        let mut vals = vec![token, r.pos[0], r.pos[1]];
+        if ty != GL_2D {
+            vals.push(r.pos[2]);
+        }
+        if ty == GL_4D_COLOR_TEXTURE {
+            vals.push(r.pos[3]);
+        }
+        if matches!(ty, GL_3D_COLOR | GL_3D_COLOR_TEXTURE | GL_4D_COLOR_TEXTURE) {
+            vals.extend(r.color);
+        }
+        if matches!(ty, GL_3D_COLOR_TEXTURE | GL_4D_COLOR_TEXTURE) {
+            vals.extend(r.tex[0]);
+        }
+        for v in vals {
+            self.select.put_feedback(v);
+        }
+    }
+
+    /// Texture unit 0's coordinates for a feedback vertex when the vertex
+    /// stage did not make them (unit 0 not texturing): the current ones
+    /// with linear texgen and the texture matrix applied.
+    pub fn feedback_texcoord(&self, obj: Vec4) -> Vec4 {
+        let unit = &self.texture.units[0];
+        let mut t = Vec4::from_array(self.current.tex_coords[0]);
+        let dot = |p: [f64; 4], v: Vec4| (p[0] * v.x as f64 + p[1] * v.y as f64 + p[2] * v.z as f64 + p[3] * v.w as f64) as f32;
+        for (k, g) in unit.gen.iter().enumerate() {
+            if !g.enabled {
+                continue;
+            }
+            match g.mode {
+                super::texture::enums::GL_OBJECT_LINEAR => t[k] = dot(g.object_plane, obj),
+                super::texture::enums::GL_EYE_LINEAR => t[k] = dot(g.eye_plane, self.derived.modelview * obj),
+                // Sphere, normal and reflection maps need the vertex
+                // stage's normal work: left as the current value here.
+                _ => {}
+            }
+        }
+        self.transform.textures[0].top().as_mat4() * t
     }
 }
 

@@ -200,7 +200,7 @@ impl Default for HintState {
 }
 
 /// Current values (GL_CURRENT_BIT): what the next vertex takes.
-#[derive(Clone, Debug)]
+#[derive(Clone, Copy, Debug)]
 pub struct CurrentState {
     pub color: [f32; 4],
     pub normal: [f32; 3],

@@ -59,8 +59,10 @@ pub struct Polygon {
 }
 
 impl Polygon {
+    /// Empty, with nothing allocated: most triangles are trivially inside
+    /// or outside and never use it (no allocation per primitive).
     pub fn new() -> Polygon {
-        Polygon { verts: Vec::with_capacity(10), scratch: Vec::with_capacity(10) }
+        Polygon { verts: Vec::new(), scratch: Vec::new() }
     }
 }
 
@@ -154,7 +156,7 @@ mod tests {
     use super::*;
 
     fn v(p: [f32; 4]) -> ClipVertex {
-        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE, edge: true, tex: Default::default(), fog: 0.0, secondary: Vec4::ZERO }
+        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE, edge: true, tex: Default::default(), fog: 0.0, secondary: Vec4::ZERO, back_secondary: Vec4::ZERO }
     }
 
     /// Two triangles sharing the edge (a, b), traversed in opposite

@@ -66,6 +66,9 @@ pub fn draw(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3], flat_co
         .map(|cv| {
             let mut c = *cv;
             c.color = if rs.flat { flat } else if back { cv.back_color } else { cv.color };
+            if back {
+                c.secondary = cv.back_secondary;
+            }
             c
         })
         .collect();

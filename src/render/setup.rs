@@ -31,6 +31,7 @@ pub struct WindowVertex {
     pub tex: [Vec4; super::texture::MAX_UNITS],
     pub fog: f32,
     pub secondary: Vec4,
+    pub back_secondary: Vec4,
 }
 
 #[inline]
@@ -48,6 +49,7 @@ pub fn to_window(rs: &RenderState, v: &ClipVertex) -> WindowVertex {
         tex: v.tex,
         fog: v.fog,
         secondary: v.secondary,
+        back_secondary: v.back_secondary,
     }
 }
 
@@ -156,7 +158,7 @@ fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], f
     });
     let fog = rs.fog.map(|f| (plane([0, 1, 2].map(|i| v[i].fog as f64 * if perspective { q[i] } else { 1.0 })), f));
     let secondary = (rs.color_sum && tex.is_some())
-        .then(|| [0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| v[i].secondary[ch] as f64 * if perspective { q[i] } else { 1.0 }))));
+        .then(|| [0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| if back { v[i].back_secondary } else { v[i].secondary }[ch] as f64 * if perspective { q[i] } else { 1.0 }))));
     TriangleSetup {
         tex,
         fog,

@@ -24,6 +24,9 @@ pub struct ClipVertex {
     /// Without texturing the vertex stage adds it into `color` already
     /// (the same result: both interpolate linearly) and this is 0.
     pub secondary: Vec4,
+    /// The back face's secondary colour under two-sided lighting with
+    /// texturing (else the same as `secondary`).
+    pub back_secondary: Vec4,
 }
 
 impl ClipVertex {
@@ -39,6 +42,7 @@ impl ClipVertex {
             tex: std::array::from_fn(|u| a.tex[u] + (b.tex[u] - a.tex[u]) * t),
             fog: a.fog + (b.fog - a.fog) * t,
             secondary: a.secondary + (b.secondary - a.secondary) * t,
+            back_secondary: a.back_secondary + (b.back_secondary - a.back_secondary) * t,
         }
     }
 }
