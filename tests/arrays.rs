@@ -42,6 +42,10 @@ const GL_CURRENT_INDEX: u32 = 0x0B01;
 const GL_EDGE_FLAG: u32 = 0x0B43;
 const GL_CURRENT_FOG_COORD: u32 = 0x8453;
 const GL_CURRENT_SECONDARY_COLOR: u32 = 0x8459;
+const GL_VERTEX_ARRAY_POINTER: u32 = 0x808E;
+const GL_FEEDBACK_BUFFER_POINTER: u32 = 0x0DF0;
+const GL_SELECTION_BUFFER_POINTER: u32 = 0x0DF3;
+const GL_3D: u32 = 0x0601;
 
 const W: i32 = 32;
 const H: i32 = 32;
@@ -1370,4 +1374,54 @@ fn tracked_material_follows_the_current_colour() {
         glDisable(GL_COLOR_MATERIAL);
     }
     assert_eq!(error(), GL_NO_ERROR);
+}
+
+/// GL_EXT_vertex_array: the pointer calls with their element count set the
+/// same arrays as the core calls (a negative count is INVALID_VALUE and
+/// changes nothing), glDrawArraysEXT draws, glGetPointervEXT reads back.
+#[test]
+fn ext_vertex_array_entry_points() {
+    let _c = setup();
+    let verts: [f32; 8] = [4.0, 4.0, 12.0, 4.0, 12.0, 12.0, 4.0, 12.0];
+    let colors: [u8; 16] = [0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255];
+    let ext = unsafe { std::str::from_utf8(std::ffi::CStr::from_ptr(glGetString(GL_EXTENSIONS) as *const _).to_bytes()).unwrap().to_owned() };
+    assert!(ext.split(' ').any(|e| e == "GL_EXT_vertex_array"));
+    unsafe {
+        glVertexPointerEXT(2, GL_FLOAT, 0, -1, verts.as_ptr() as *const c_void);
+        assert_eq!(error(), GL_INVALID_VALUE);
+        let mut p: *mut c_void = std::ptr::null_mut();
+        glGetPointervEXT(GL_VERTEX_ARRAY_POINTER, &mut p);
+        assert!(p.is_null(), "a negative count changes nothing");
+        glVertexPointerEXT(2, GL_FLOAT, 0, 4, verts.as_ptr() as *const c_void);
+        glColorPointerEXT(4, GL_UNSIGNED_BYTE, 0, 4, colors.as_ptr() as *const c_void);
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glGetPointervEXT(GL_VERTEX_ARRAY_POINTER, &mut p);
+        assert_eq!(p as *const f32, verts.as_ptr());
+        glDrawArraysEXT(GL_QUADS, 0, 4);
+        assert_eq!(error(), GL_NO_ERROR);
+    }
+    assert_eq!(pixel(8, 8), [0, 255, 0, 255]);
+    assert_eq!(pixel(2, 2), [0, 0, 0, 0]);
+}
+
+/// GL_SELECTION_BUFFER_POINTER and GL_FEEDBACK_BUFFER_POINTER return the
+/// buffers given to glSelectBuffer and glFeedbackBuffer.
+#[test]
+fn selection_and_feedback_buffer_pointers() {
+    let _c = setup();
+    let mut sel = [0u32; 16];
+    let mut fb = [0f32; 16];
+    unsafe {
+        let mut p: *mut c_void = 1 as *mut c_void;
+        glGetPointerv(GL_SELECTION_BUFFER_POINTER, &mut p);
+        assert!(p.is_null());
+        glSelectBuffer(16, sel.as_mut_ptr());
+        glFeedbackBuffer(16, GL_3D, fb.as_mut_ptr());
+        glGetPointerv(GL_SELECTION_BUFFER_POINTER, &mut p);
+        assert_eq!(p as *mut u32, sel.as_mut_ptr());
+        glGetPointerv(GL_FEEDBACK_BUFFER_POINTER, &mut p);
+        assert_eq!(p as *mut f32, fb.as_mut_ptr());
+        assert_eq!(error(), GL_NO_ERROR);
+    }
 }

@@ -807,6 +807,20 @@ GLAPI void APIENTRY glEdgeFlagPointer (GLsizei stride, const GLvoid *ptr);
 GLAPI void APIENTRY glEnableClientState (GLenum array);
 GLAPI void APIENTRY glDisableClientState (GLenum array);
 GLAPI void APIENTRY glArrayElement (GLint i);
+
+/* GL_EXT_vertex_array */
+#ifndef GL_EXT_vertex_array
+#define GL_EXT_vertex_array 1
+GLAPI void APIENTRY glVertexPointerEXT (GLint size, GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
+GLAPI void APIENTRY glNormalPointerEXT (GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
+GLAPI void APIENTRY glColorPointerEXT (GLint size, GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
+GLAPI void APIENTRY glIndexPointerEXT (GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
+GLAPI void APIENTRY glTexCoordPointerEXT (GLint size, GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
+GLAPI void APIENTRY glEdgeFlagPointerEXT (GLsizei stride, GLsizei count, const GLboolean *ptr);
+GLAPI void APIENTRY glGetPointervEXT (GLenum pname, GLvoid **params);
+GLAPI void APIENTRY glArrayElementEXT (GLint i);
+GLAPI void APIENTRY glDrawArraysEXT (GLenum mode, GLint first, GLsizei count);
+#endif
 GLAPI void APIENTRY glDrawArrays (GLenum mode, GLint first, GLsizei count);
 GLAPI void APIENTRY glDrawElements (GLenum mode, GLsizei count, GLenum type, const GLvoid *indices);
 GLAPI void APIENTRY glInterleavedArrays (GLenum format, GLsizei stride, const GLvoid *pointer);

@@ -281,6 +281,18 @@ super::entry_points! {
     client glEnableClientState(array: GLenum) { |c| c.client_state(array, true) }
     client glDisableClientState(array: GLenum) { |c| c.client_state(array, false) }
     draw glArrayElement(i: GLint) { |c| c.array_element(i) }
+    // GL_EXT_vertex_array, GL 1.1's arrays before promotion: the pointer
+    // calls also take the number of elements, which GL 1.1 dropped (a
+    // negative count is GL_INVALID_VALUE); the rest are the core calls.
+    client glVertexPointerEXT(size: GLint, type_: GLenum, stride: GLsizei, count: GLsizei, ptr: *const c_void) { |c| if c.ext_array_count(count) { c.array_pointer(Array::Vertex, size, type_, stride, ptr as usize) } }
+    client glNormalPointerEXT(type_: GLenum, stride: GLsizei, count: GLsizei, ptr: *const c_void) { |c| if c.ext_array_count(count) { c.array_pointer(Array::Normal, 3, type_, stride, ptr as usize) } }
+    client glColorPointerEXT(size: GLint, type_: GLenum, stride: GLsizei, count: GLsizei, ptr: *const c_void) { |c| if c.ext_array_count(count) { c.array_pointer(Array::Color, size, type_, stride, ptr as usize) } }
+    client glIndexPointerEXT(type_: GLenum, stride: GLsizei, count: GLsizei, ptr: *const c_void) { |c| if c.ext_array_count(count) { c.array_pointer(Array::Index, 1, type_, stride, ptr as usize) } }
+    client glTexCoordPointerEXT(size: GLint, type_: GLenum, stride: GLsizei, count: GLsizei, ptr: *const c_void) { |c| if c.ext_array_count(count) { c.tex_coord_pointer(size, type_, stride, ptr as usize) } }
+    client glEdgeFlagPointerEXT(stride: GLsizei, count: GLsizei, ptr: *const GLboolean) { |c| if c.ext_array_count(count) { c.array_pointer(Array::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, ptr as usize) } }
+    client glGetPointervEXT(pname: GLenum, params: *mut *mut c_void) { |c| if let Some(p) = c.get_pointer(pname) { write_out(params, &[p as *mut c_void]) } }
+    draw glArrayElementEXT(i: GLint) { |c| c.array_element(i) }
+    draw glDrawArraysEXT(mode: GLenum, first: GLint, count: GLsizei) { |c| c.draw_arrays(mode, first, count) }
     draw glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) { |c| c.draw_arrays(mode, first, count) }
     draw glDrawElements(mode: GLenum, count: GLsizei, type_: GLenum, indices: *const c_void) { |c| c.draw_elements(mode, count, type_, indices as usize) }
     client glInterleavedArrays(format: GLenum, stride: GLsizei, pointer: *const c_void) { |c| c.interleaved_arrays(format, stride, pointer as usize) }
@@ -467,7 +479,7 @@ super::entry_points! {
     exec["answers the state implemented so far; other names give GL_INVALID_ENUM"] glGetIntegerv(pname: GLenum, params: *mut GLint) { |c| c.get_into(pname, params, get::Value::as_i32) }
     exec["as glGetIntegerv"] glGetFloatv(pname: GLenum, params: *mut GLfloat) { |c| c.get_into(pname, params, |v| v.as_f64().into_iter().map(|x| x as f32).collect()) }
     exec["as glGetIntegerv"] glGetDoublev(pname: GLenum, params: *mut GLdouble) { |c| c.get_into(pname, params, get::Value::as_f64) }
-    client["GL_FEEDBACK_BUFFER_POINTER and GL_SELECTION_BUFFER_POINTER are NULL until feedback and selection exist"] glGetPointerv(pname: GLenum, params: *mut *mut c_void) { |c| if let Some(p) = c.get_pointer(pname) { write_out(params, &[p as *mut c_void]) } }
+    client glGetPointerv(pname: GLenum, params: *mut *mut c_void) { |c| if let Some(p) = c.get_pointer(pname) { write_out(params, &[p as *mut c_void]) } }
     exec glGetClipPlane(plane: GLenum, equation: *mut GLdouble) { |c| match c.get_clip_plane(plane) { Some(p) => write_out(equation, &p), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &v), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetLightiv(light: GLenum, pname: GLenum, params: *mut GLint) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &ints_out(&v, is_color_param(pname))), None => c.set_error(GL_INVALID_ENUM) } }

@@ -526,6 +526,16 @@ impl Context {
         self.buffers.element_array = saved.element_array_buffer;
     }
 
+    /// GL_EXT_vertex_array's element count, which GL 1.1 dropped: only a
+    /// negative one is an error (GL_INVALID_VALUE, and the pointer call does
+    /// nothing). Returns whether the call goes on.
+    pub fn ext_array_count(&mut self, count: i32) -> bool {
+        if count < 0 {
+            self.set_error(GL_INVALID_VALUE);
+        }
+        count >= 0
+    }
+
     /// The gl*Pointer calls. The pointer is an offset when a buffer is
     /// bound to ARRAY_BUFFER.
     pub fn array_pointer(&mut self, a: Array, size: i32, ty: u32, stride: i32, pointer: usize) {
@@ -602,9 +612,8 @@ impl Context {
             0x8093 => Array::EdgeFlag,
             0x8456 => Array::FogCoord,
             0x845D => Array::SecondaryColor,
-            // Feedback and selection are not implemented yet: their
-            // buffers are the initial NULL.
-            GL_FEEDBACK_BUFFER_POINTER | GL_SELECTION_BUFFER_POINTER => return Some(0),
+            GL_SELECTION_BUFFER_POINTER => return Some(self.select.buffer_pointers().0),
+            GL_FEEDBACK_BUFFER_POINTER => return Some(self.select.buffer_pointers().1),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;

@@ -61,6 +61,14 @@ pub struct SelectState {
     feedback_overflow: bool,
 }
 
+impl SelectState {
+    /// GL_SELECTION_BUFFER_POINTER and GL_FEEDBACK_BUFFER_POINTER: the
+    /// client's buffers as last given (NULL initially).
+    pub fn buffer_pointers(&self) -> (usize, usize) {
+        (self.select_buf as usize, self.feedback_buf as usize)
+    }
+}
+
 impl Default for SelectState {
     fn default() -> Self {
         SelectState {
