@@ -2,7 +2,8 @@
 //! format, type and the pixel storage modes (GL 1.5 sections 3.6.4
 //! "Unpacking" and "Conversion to floating-point", 4.3.2 "Final conversion"
 //! and "Placement in client memory"). Shared by glDrawPixels, glBitmap,
-//! glReadPixels and (later) the texture image commands.
+//! glReadPixels and the texture image commands (glTexImage, glTexSubImage,
+//! glGetTexImage).
 //!
 //! What comes out of unpacking, per pixel, before any pixel transfer:
 //! - colour formats: RGBA in f32, components converted by table 2.9
@@ -382,8 +383,17 @@ impl<'a> Dest<'a> {
     /// # Safety
     /// `ptr` must point to writable memory for the image as laid out.
     pub unsafe fn new(modes: &PixelModes, width: usize, height: usize, format: u32, ty: u32, ptr: *mut u8) -> Dest<'a> {
+        Self::with_depth(modes, width, height, 1, format, ty, ptr)
+    }
+
+    /// A 3D image's memory (glGetTexImage of 3D textures: IMAGE_HEIGHT and
+    /// SKIP_IMAGES apply).
+    ///
+    /// # Safety
+    /// As [`Dest::new`], for `depth` images.
+    pub unsafe fn with_depth(modes: &PixelModes, width: usize, height: usize, depth: usize, format: u32, ty: u32, ptr: *mut u8) -> Dest<'a> {
         let layout = Layout::new(modes, width, height, format, ty);
-        let len = layout.extent(width, height, 1);
+        let len = layout.extent(width, height, depth);
         let data = if len == 0 || ptr.is_null() { &mut [][..] } else { std::slice::from_raw_parts_mut(ptr, len) };
         Dest { data, layout, format, ty }
     }
@@ -391,9 +401,14 @@ impl<'a> Dest<'a> {
     /// Packs one RGBA pixel (already through final conversion: clamped)
     /// at (i, j): luminance is R + G + B, clamped (section 4.3.2).
     pub fn put_color(&mut self, i: usize, j: usize, c: [f32; 4]) {
+        self.put_color_at(i, j, 0, c)
+    }
+
+    /// [`Dest::put_color`] in image k of a 3D image.
+    pub fn put_color_at(&mut self, i: usize, j: usize, k: usize, c: [f32; 4]) {
         let comps = format_info(self.format).map_or(&[0usize][..], |f| f.1);
         let l = self.layout;
-        let o = l.offset(i, j, 0);
+        let o = l.offset(i, j, k);
         let out = &mut self.data[o..o + l.group];
         let comp = |k: usize| -> f64 {
             if k == 4 {
@@ -435,8 +450,13 @@ impl<'a> Dest<'a> {
 
     /// Packs a normalized value (depth) at (i, j).
     pub fn put_normalized(&mut self, i: usize, j: usize, v: f64) {
+        self.put_normalized_at(i, j, 0, v)
+    }
+
+    /// [`Dest::put_normalized`] in image k of a 3D image.
+    pub fn put_normalized_at(&mut self, i: usize, j: usize, k: usize, v: f64) {
         let l = self.layout;
-        let o = l.offset(i, j, 0);
+        let o = l.offset(i, j, k);
         let e = &mut self.data[o..o + l.elem];
         put_normalized(e, self.ty, v);
         if l.swap {
