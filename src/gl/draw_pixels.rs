@@ -16,9 +16,11 @@
 //! stencil write mask (only ownership and the scissor test apply).
 //! Bitmap fragments take the raster colour and z.
 //!
-//! Texturing and fog of these fragments come with those features: they
-//! belong where `fragment_color` is computed below (texture with the raster
-//! texture coordinates, fog with the raster distance).
+//! Texturing, the colour sum and fog (sections 3.8 to 3.10) apply to the
+//! colour of every fragment these commands produce, with the raster
+//! position's texture coordinates (the same for every fragment: no
+//! derivatives, so textures magnify), secondary colour and fog distance
+//! ([`PixelShading`]).
 //!
 //! glCopyPixels reads the whole source rectangle first, so overlapping
 //! source and destination behave as if every source pixel were read before
@@ -29,9 +31,38 @@ use super::context::Context;
 use super::enums::*;
 use super::pixel_data::{check_format_type, Kind, Source};
 use crate::render::fragment::{color_to_u8, depth_to_fixed, process_fragment};
+use crate::render::fog::Fog;
 use crate::render::pixels;
+use crate::render::texture::{point_coords, Coord, TextureStage, MAX_UNITS};
 use glam::Vec4;
 use std::rc::Rc;
+use std::sync::Arc;
+
+/// Texturing, colour sum and fog of pixel-rectangle and bitmap fragments
+/// (section 3.6.4, "Conversion to fragments": they are then treated like
+/// a point's fragments at the raster position).
+struct PixelShading {
+    texture: Option<(Arc<TextureStage>, [Coord; MAX_UNITS])>,
+    secondary: Option<glam::Vec3>,
+    fog: Option<(Fog, f32)>,
+}
+
+impl PixelShading {
+    /// The fragment colour after these stages, in the framebuffer's bytes.
+    fn apply(&self, c: [f32; 4]) -> [u8; 4] {
+        let mut c = Vec4::from_array(c).clamp(Vec4::ZERO, Vec4::ONE);
+        if let Some((stage, coords)) = &self.texture {
+            c = stage.shade(coords, c);
+        }
+        if let Some(s) = self.secondary {
+            c = (c.truncate() + s).extend(c.w).clamp(Vec4::ZERO, Vec4::ONE);
+        }
+        if let Some((fog, d)) = &self.fog {
+            c = fog.apply(c, *d);
+        }
+        color_to_u8(c)
+    }
+}
 
 /// Unpacked groups of a pixel rectangle, before pixel transfer.
 #[derive(Clone, Debug, PartialEq)]
@@ -125,10 +156,27 @@ impl Context {
         Command::Bitmap(Rc::new(Bitmap { width: w, height: h, orig, step, bits }))
     }
 
+    /// The stages after rasterization that change a pixel fragment's
+    /// colour, or None when none is on (derived state: validate first).
+    fn pixel_shading(&self) -> Option<PixelShading> {
+        let rs = &self.derived.render;
+        let texture = rs.texture.as_ref().map(|stage| {
+            let tex = self.raster.tex.map(Vec4::from_array);
+            (stage.clone(), point_coords(stage, &tex))
+        });
+        let secondary = rs.color_sum.then(|| Vec4::from_array(self.raster.secondary_color).truncate());
+        // The raster distance is the fog coordinate: evaluate f exactly.
+        let fog = rs.fog.map(|f| (Fog { per_fragment: true, ..f }, self.raster.distance));
+        (texture.is_some() || secondary.is_some() || fog.is_some()).then_some(PixelShading { texture, secondary, fog })
+    }
+
     /// The colour of pixel-rectangle and bitmap fragments that take the
-    /// raster colour. (Texturing and fog would apply here.)
+    /// raster colour (depth rectangles, bitmaps), textured and fogged.
     fn fragment_color(&self) -> [u8; 4] {
-        color_to_u8(Vec4::from_array(self.raster.color))
+        match self.pixel_shading() {
+            Some(sh) => sh.apply(self.raster.color),
+            None => color_to_u8(Vec4::from_array(self.raster.color)),
+        }
     }
 
     /// glDrawPixels, executed.
@@ -144,14 +192,20 @@ impl Context {
         if !self.raster.valid {
             return;
         }
+        self.validate();
+        let shading = self.pixel_shading();
+        let finish = |p: [f32; 4]| match &shading {
+            Some(sh) => sh.apply(p),
+            None => color_to_u8(Vec4::from_array(p)),
+        };
         let t = &self.pixel;
         let groups = match &r.data {
             PixelData::Color(c) => {
                 let mut c = c.clone();
                 t.color(&mut c);
-                Groups::Color(c.iter().map(|&p| Some(color_to_u8(Vec4::from_array(p)))).collect())
+                Groups::Color(c.iter().map(|&p| Some(finish(p))).collect())
             }
-            PixelData::ColorIndex(ix) => Groups::Color(ix.iter().map(|&i| Some(color_to_u8(Vec4::from_array(t.index_to_rgba(i))))).collect()),
+            PixelData::ColorIndex(ix) => Groups::Color(ix.iter().map(|&i| Some(finish(t.index_to_rgba(i)))).collect()),
             PixelData::Depth(d) => Groups::Depth(d.iter().map(|&z| Some(depth_to_fixed(t.depth(z)))).collect()),
             PixelData::Stencil(s) => Groups::Stencil(s.iter().map(|&i| Some(t.stencil(i))).collect()),
         };
@@ -218,6 +272,8 @@ impl Context {
             return;
         }
         let (w, h) = (w as usize, h as usize);
+        self.validate();
+        let shading = self.pixel_shading();
         let fb = &self.fb;
         // Read everything first: overlapping copies see the old pixels.
         let at = |i: usize, j: usize| -> Option<usize> {
@@ -234,12 +290,15 @@ impl Context {
                         .map(|o| {
                             o.map(|k| {
                                 let c = fb.color[k];
-                                if identity {
+                                if identity && shading.is_none() {
                                     c
                                 } else {
                                     let mut f = [c.map(|v| v as f32 / 255.0)];
                                     t.color(&mut f);
-                                    color_to_u8(Vec4::from_array(f[0]))
+                                    match &shading {
+                                        Some(sh) => sh.apply(f[0]),
+                                        None => color_to_u8(Vec4::from_array(f[0])),
+                                    }
                                 }
                             })
                         })
