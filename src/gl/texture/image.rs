@@ -233,8 +233,7 @@ pub fn texel_to_rgba(base: Base, t: [f32; 4]) -> [f32; 4] {
 
 /// glGetTexImage's packing (section 6.1.4): the image's texels as RGBA
 /// (table 6.1), through pixel transfer and final conversion as for
-/// glReadPixels, packed by `pixel_data` (LUMINANCE packs R, since G and B
-/// are zero).
+/// glReadPixels, packed by `pixel_data`; LUMINANCE packs R.
 ///
 /// # Safety
 /// `ptr` must have room for the image as the pack modes lay it out.
@@ -243,6 +242,7 @@ pub unsafe fn pack(modes: &PixelModes, img: &Image, format: u32, ty: u32, t: &Pi
     let (w, h, d) = (img.width as usize, img.height as usize, img.depth as usize);
     let mut dest = Dest::with_depth(modes, w, h, d, format, ty, ptr);
     let depth = format == GL_DEPTH_COMPONENT;
+    let lum = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);
     for k in 0..d {
         for j in 0..h {
             for i in 0..w {
@@ -252,6 +252,12 @@ pub unsafe fn pack(modes: &PixelModes, img: &Image, format: u32, ty: u32, t: &Pi
                 } else {
                     let mut c = [texel_to_rgba(img.base, tx)];
                     t.color(&mut c);
+                    if lum {
+                        // glGetTexImage's luminance is R (not R + G + B as
+                        // for glReadPixels).
+                        c[0][1] = 0.0;
+                        c[0][2] = 0.0;
+                    }
                     dest.put_color_at(i, j, k, c[0]);
                 }
             }
