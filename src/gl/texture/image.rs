@@ -21,6 +21,7 @@ use crate::gl::pixel_data::{self, Dest, Kind, Source};
 use crate::gl::pixel_transfer::PixelTransfer;
 use crate::gl::pixels::PixelModes;
 use crate::render::texture::{to_unorm8, Base, Image, Texels, UNORM8};
+use std::sync::Arc;
 
 /// An internal format: base format and bits per component (R, G, B, A,
 /// L, I, depth).
@@ -97,7 +98,7 @@ impl InternalFormat {
 pub enum Pixels {
     /// RGBA or BGRA UNSIGNED_BYTE groups, as R, G, B, A bytes: uploads of
     /// 8-bit images into 8-bit formats copy them without conversion.
-    Rgba8(Vec<[u8; 4]>),
+    Rgba8(Arc<Vec<[u8; 4]>>),
     /// Other colour formats, RGBA by table 2.9 and "Final expansion".
     Color(Vec<[f32; 4]>),
     /// COLOR_INDEX groups (converted by the I_TO_* maps).
@@ -154,7 +155,7 @@ pub unsafe fn unpack(modes: &PixelModes, w: usize, h: usize, d: usize, format: u
                 }
             }
         }
-        return Pixels::Rgba8(out);
+        return Pixels::Rgba8(Arc::new(out));
     }
     match pixel_data::format_info(format).map(|f| f.0) {
         Some(Kind::Depth) => Pixels::Depth(src.values(w, h, d, true)),
@@ -171,9 +172,10 @@ pub unsafe fn unpack(modes: &PixelModes, w: usize, h: usize, d: usize, format: u
 pub fn texels(f: &InternalFormat, p: &Pixels, t: &PixelTransfer) -> Texels {
     let compact = f.compact();
     if let (Pixels::Rgba8(v), true, true) = (p, compact, t.color_is_identity()) {
-        // Table 3.23 on bytes: no conversion at all for RGBA.
+        // Table 3.23 on bytes: no conversion at all for RGBA (the texture
+        // shares the command's buffer).
         let out: Vec<[u8; 4]> = match f.base {
-            Base::Rgba => v.clone(),
+            Base::Rgba => return Texels::Rgba8(v.clone()),
             Base::Rgb => v.iter().map(|&[r, g, b, _]| [r, g, b, 255]).collect(),
             Base::Alpha => v.iter().map(|&[_, _, _, a]| [0, 0, 0, a]).collect(),
             Base::Luminance => v.iter().map(|&[r, _, _, _]| [r, r, r, 255]).collect(),
@@ -181,7 +183,7 @@ pub fn texels(f: &InternalFormat, p: &Pixels, t: &PixelTransfer) -> Texels {
             Base::Intensity => v.iter().map(|&[r, _, _, _]| [r, r, r, r]).collect(),
             Base::Depth => vec![[0, 0, 0, 255]; v.len()],
         };
-        return Texels::Rgba8(out);
+        return Texels::Rgba8(Arc::new(out));
     }
     let rgba: Vec<[f32; 4]> = match p {
         Pixels::Rgba8(v) => {
@@ -212,7 +214,7 @@ pub fn store(f: &InternalFormat, rgba: Vec<[f32; 4]>) -> Texels {
 pub fn zero_texels(f: &InternalFormat, n: usize) -> Texels {
     let t = f.base.expand([0.0; 4]);
     if f.compact() {
-        Texels::Rgba8(vec![t.map(to_unorm8); n])
+        Texels::Rgba8(Arc::new(vec![t.map(to_unorm8); n]))
     } else {
         Texels::Float(vec![t; n])
     }

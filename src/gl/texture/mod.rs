@@ -737,7 +737,7 @@ impl Context {
                     out.push(at(i, j).map_or([0; 4], |k| fb.color[k]));
                 }
             }
-            image::Pixels::Rgba8(out)
+            image::Pixels::Rgba8(Arc::new(out))
         }
     }
 

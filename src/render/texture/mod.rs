@@ -114,8 +114,9 @@ pub fn to_unorm8(v: f32) -> u8 {
 /// row first, slices after each other.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Texels {
-    /// Internal formats of at most 8 bits per component.
-    Rgba8(Vec<[u8; 4]>),
+    /// Internal formats of at most 8 bits per component (shared with the
+    /// command that uploaded them when no conversion was needed).
+    Rgba8(Arc<Vec<[u8; 4]>>),
     /// Wider formats and depth.
     Float(Vec<[f32; 4]>),
 }
@@ -131,7 +132,7 @@ impl Texels {
     /// compactly (rounded to 8 bits) when `compact`.
     pub fn from_float(v: Vec<[f32; 4]>, compact: bool) -> Texels {
         if compact {
-            Texels::Rgba8(v.iter().map(|t| t.map(to_unorm8)).collect())
+            Texels::Rgba8(Arc::new(v.iter().map(|t| t.map(to_unorm8)).collect()))
         } else {
             Texels::Float(v)
         }
@@ -180,9 +181,10 @@ impl Texels {
                 let s0 = (k * h + j) * w;
                 let d0 = ((offset[2] + k) * full_h + offset[1] + j) * full_w + offset[0];
                 match (&mut *self, src) {
-                    (Texels::Rgba8(dst), Texels::Rgba8(s)) => dst[d0..d0 + w].copy_from_slice(&s[s0..s0 + w]),
+                    (Texels::Rgba8(dst), Texels::Rgba8(s)) => Arc::make_mut(dst)[d0..d0 + w].copy_from_slice(&s[s0..s0 + w]),
                     (Texels::Float(dst), Texels::Float(s)) => dst[d0..d0 + w].copy_from_slice(&s[s0..s0 + w]),
                     (Texels::Rgba8(dst), s) => {
+                        let dst = Arc::make_mut(dst);
                         for i in 0..w {
                             dst[d0 + i] = s.get(s0 + i).map(to_unorm8);
                         }
@@ -729,7 +731,7 @@ mod tests {
         };
         for (w, h) in [(4, 4), (8, 2), (5, 3), (1, 7)] {
             let texels: Vec<[u8; 4]> = (0..w * h).map(|_| rnd().to_ne_bytes()).collect();
-            let image = Arc::new(Image { width: w, height: h, depth: 1, border: 0, internal_format: 0x8058, base: Base::Rgba, texels: Texels::Rgba8(texels) });
+            let image = Arc::new(Image { width: w, height: h, depth: 1, border: 0, internal_format: 0x8058, base: Base::Rgba, texels: Texels::Rgba8(Arc::new(texels)) });
             for filter in [Filter::Nearest, Filter::Linear] {
                 for wrap in [[Wrap::Repeat, Wrap::Repeat], [Wrap::ClampToEdge, Wrap::Repeat], [Wrap::Repeat, Wrap::ClampToEdge]] {
                     let params = Params { min_filter: filter, mag_filter: filter, wrap: [wrap[0], wrap[1], Wrap::Repeat], ..Default::default() };
@@ -752,7 +754,7 @@ mod tests {
         let p = Params { min_filter: Filter::Nearest, mag_filter: Filter::Nearest, ..Default::default() };
         // f32 storage, mipmapped filters, different filters, CLAMP: general.
         assert_eq!(sampler(vec![image.clone()], p.clone()).fast, Fast::General);
-        let compact = Arc::new(Image { texels: Texels::Rgba8(vec![[1, 2, 3, 4]; 16]), ..(*image).clone() });
+        let compact = Arc::new(Image { texels: Texels::Rgba8(Arc::new(vec![[1, 2, 3, 4]; 16])), ..(*image).clone() });
         assert_eq!(sampler(vec![compact.clone()], p.clone()).fast, Fast::Nearest2D { repeat: [true, true] });
         let mixed = Params { mag_filter: Filter::Linear, ..p.clone() };
         assert_eq!(sampler(vec![compact.clone()], mixed).fast, Fast::General);
