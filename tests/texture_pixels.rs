@@ -242,3 +242,53 @@ fn draw_pixels_are_textured() {
     draw(&mut c);
     assert_eq!(px(&c, 0, 0), [128, 255, 255, 255]);
 }
+
+/// EXT_packed_depth_stencil: DEPTH_STENCIL / UNSIGNED_INT_24_8 words
+/// (depth << 8 | stencil) through ReadPixels, DrawPixels, CopyPixels and
+/// depth textures; its format/type errors.
+#[test]
+fn packed_depth_stencil() {
+    use softgl::gl::pixel_data::{GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8};
+    let mut c = context(4, 4);
+    let i = c.fb.index(1, 2);
+    c.fb.depth[i] = 0x123456;
+    c.fb.stencil[i] = 0x9A;
+    let mut word = [0u32; 1];
+    unsafe { c.read_pixels(1, 2, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, word.as_mut_ptr() as *mut u8) };
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    assert_eq!(word[0], 0x123456 << 8 | 0x9A);
+    // Errors: the format takes only its type, the type only its format.
+    unsafe { c.read_pixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_FLOAT, word.as_mut_ptr() as *mut u8) };
+    assert_eq!(c.take_error(), GL_INVALID_ENUM);
+    unsafe { c.read_pixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_24_8, word.as_mut_ptr() as *mut u8) };
+    assert_eq!(c.take_error(), GL_INVALID_OPERATION);
+    // DrawPixels writes both (depth through the depth test, here off).
+    c.execute(&Command::RasterPos([-1.0, -1.0, 0.0, 1.0]));
+    let words: [u32; 2] = [0x800000 << 8 | 0x11, 0xFFFFFF << 8 | 0x22];
+    let cmd = unsafe { c.build_draw_pixels(2, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, words.as_ptr() as *const u8) }.unwrap();
+    c.execute(&Command::Enable(GL_DEPTH_TEST));
+    c.execute(&Command::DepthFunc(GL_ALWAYS));
+    c.execute(&cmd);
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    let (a, b) = (c.fb.index(0, 0), c.fb.index(1, 0));
+    assert_eq!((c.fb.depth[a], c.fb.stencil[a]), (0x800000, 0x11));
+    assert_eq!((c.fb.depth[b], c.fb.stencil[b]), (0xFFFFFF, 0x22));
+    // CopyPixels(DEPTH_STENCIL) copies both to the raster position.
+    c.execute(&Command::RasterPos([0.0, 0.0, 0.0, 1.0]));
+    c.copy_pixels(0, 0, 2, 1, GL_DEPTH_STENCIL);
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    let (a2, b2) = (c.fb.index(2, 2), c.fb.index(3, 2));
+    assert_eq!((c.fb.depth[a2], c.fb.stencil[a2]), (0x800000, 0x11));
+    assert_eq!((c.fb.depth[b2], c.fb.stencil[b2]), (0xFFFFFF, 0x22));
+    // A DEPTH24_STENCIL8 texture from DEPTH_STENCIL data keeps the depth.
+    tex_image(&mut c, t::GL_DEPTH24_STENCIL8, 2, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &[words[0].to_ne_bytes(), words[1].to_ne_bytes()].concat());
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    let q = |c: &mut Context, p: u32| c.get_tex_level_parameter(t::GL_TEXTURE_2D, 0, p).unwrap().as_i32()[0];
+    assert_eq!((q(&mut c, t::GL_TEXTURE_DEPTH_SIZE), q(&mut c, t::GL_TEXTURE_STENCIL_SIZE)), (24, 8));
+    let got = get_image(&mut c, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 8);
+    let got: Vec<u32> = got.chunks(4).map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]])).collect();
+    assert_eq!(got, [0x800000 << 8, 0xFFFFFF << 8]);
+    // Colour formats do not take depth/stencil data.
+    tex_image(&mut c, t::GL_RGBA8, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &[0; 4]);
+    assert_eq!(c.take_error(), GL_INVALID_OPERATION);
+}

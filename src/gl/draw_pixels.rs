@@ -22,6 +22,9 @@
 //! derivatives, so textures magnify), secondary colour and fog distance
 //! ([`PixelShading`]).
 //!
+//! DEPTH_STENCIL (EXT_packed_depth_stencil) rectangles, drawn or copied,
+//! are a depth rectangle followed by a stencil rectangle of the same groups.
+//!
 //! glCopyPixels reads the whole source rectangle first, so overlapping
 //! source and destination behave as if every source pixel were read before
 //! any is written; source pixels outside the window produce no fragments.
@@ -29,7 +32,7 @@
 use super::command::Command;
 use super::context::Context;
 use super::enums::*;
-use super::pixel_data::{check_format_type, Kind, Source};
+use super::pixel_data::{check_format_type, Kind, Source, GL_DEPTH_STENCIL};
 use crate::render::fragment::{color_to_u8, depth_to_fixed, process_fragment};
 use crate::render::fog::Fog;
 use crate::render::pixels;
@@ -71,6 +74,8 @@ pub enum PixelData {
     ColorIndex(Vec<f64>),
     Depth(Vec<f64>),
     Stencil(Vec<f64>),
+    /// DEPTH_STENCIL groups: (depth, stencil index).
+    DepthStencil(Vec<(f64, f64)>),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -128,6 +133,7 @@ impl Context {
             Kind::Depth => PixelData::Depth(src.values(w, h, 1, true)),
             Kind::ColorIndex => PixelData::ColorIndex(src.values(w, h, 1, false)),
             Kind::Stencil => PixelData::Stencil(src.values(w, h, 1, false)),
+            Kind::DepthStencil => PixelData::DepthStencil(src.depth_stencil(w, h, 1)),
         };
         Some(Command::DrawPixels(Rc::new(PixelRect { width: w, height: h, data })))
     }
@@ -184,6 +190,7 @@ impl Context {
         let missing = match r.data {
             PixelData::Depth(_) => !self.fb.has_depth(),
             PixelData::Stencil(_) => !self.fb.has_stencil(),
+            PixelData::DepthStencil(_) => !self.fb.has_depth() || !self.fb.has_stencil(),
             _ => false,
         };
         if missing {
@@ -208,6 +215,13 @@ impl Context {
             PixelData::ColorIndex(ix) => Groups::Color(ix.iter().map(|&i| Some(finish(t.index_to_rgba(i)))).collect()),
             PixelData::Depth(d) => Groups::Depth(d.iter().map(|&z| Some(depth_to_fixed(t.depth(z)))).collect()),
             PixelData::Stencil(s) => Groups::Stencil(s.iter().map(|&i| Some(t.stencil(i))).collect()),
+            PixelData::DepthStencil(ds) => {
+                // A depth rectangle, then a stencil rectangle of the same groups.
+                let stencil = Groups::Stencil(ds.iter().map(|&(_, i)| Some(t.stencil(i))).collect());
+                let depth = Groups::Depth(ds.iter().map(|&(z, _)| Some(depth_to_fixed(t.depth(z)))).collect());
+                self.draw_groups(r.width, r.height, depth);
+                stencil
+            }
         };
         self.draw_groups(r.width, r.height, groups);
     }
@@ -263,6 +277,7 @@ impl Context {
             GL_COLOR => false,
             GL_DEPTH => !self.fb.has_depth(),
             GL_STENCIL => !self.fb.has_stencil(),
+            GL_DEPTH_STENCIL => !self.fb.has_depth() || !self.fb.has_stencil(),
             _ => return self.set_error(GL_INVALID_ENUM),
         };
         if missing {
@@ -309,6 +324,14 @@ impl Context {
                 let max = crate::framebuffer::DEPTH_MAX as f64;
                 let identity = t.depth_is_identity();
                 Groups::Depth(idx.iter().map(|o| o.map(|k| if identity { fb.depth[k] } else { depth_to_fixed(t.depth(fb.depth[k] as f64 / max)) })).collect())
+            }
+            GL_DEPTH_STENCIL => {
+                // Both read before either is written; depth first.
+                let max = crate::framebuffer::DEPTH_MAX as f64;
+                let depth = Groups::Depth(idx.iter().map(|o| o.map(|k| depth_to_fixed(t.depth(fb.depth[k] as f64 / max)))).collect());
+                let stencil = Groups::Stencil(idx.iter().map(|o| o.map(|k| t.stencil(fb.stencil[k] as f64))).collect());
+                self.draw_groups(w, h, depth);
+                stencil
             }
             _ => Groups::Stencil(idx.iter().map(|o| o.map(|k| t.stencil(fb.stencil[k] as f64))).collect()),
         };

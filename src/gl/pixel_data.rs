@@ -19,6 +19,10 @@
 //! (table 4.6). Pixels the caller marks as not available (outside the
 //! window) are left untouched in client memory.
 //!
+//! DEPTH_STENCIL with UNSIGNED_INT_24_8 (EXT/NV_packed_depth_stencil): one
+//! 32-bit word per group, depth in the upper 24 bits (normalized by
+//! 2^24 - 1), the stencil index in the lower 8.
+//!
 //! Addressing (section 3.6.4, figure 3.8): row length l = ROW_LENGTH or
 //! the width; a row holds l groups and is padded to the alignment when the
 //! element size is smaller than it; SKIP_ROWS / SKIP_PIXELS / SKIP_IMAGES
@@ -29,6 +33,10 @@
 use super::enums::*;
 use super::pixels::PixelModes;
 
+/// EXT_packed_depth_stencil's format and type.
+pub const GL_DEPTH_STENCIL: u32 = 0x84F9;
+pub const GL_UNSIGNED_INT_24_8: u32 = 0x84FA;
+
 /// What a format's groups are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
@@ -36,6 +44,8 @@ pub enum Kind {
     Depth,
     Stencil,
     ColorIndex,
+    /// DEPTH_STENCIL: (depth, stencil) pairs.
+    DepthStencil,
 }
 
 /// A format's kind and its components in client order, as indices into
@@ -45,6 +55,7 @@ pub fn format_info(format: u32) -> Option<(Kind, &'static [usize])> {
         GL_COLOR_INDEX => (Kind::ColorIndex, &[0]),
         GL_STENCIL_INDEX => (Kind::Stencil, &[0]),
         GL_DEPTH_COMPONENT => (Kind::Depth, &[0]),
+        GL_DEPTH_STENCIL => (Kind::DepthStencil, &[0]),
         GL_RED => (Kind::Color, &[0]),
         GL_GREEN => (Kind::Color, &[1]),
         GL_BLUE => (Kind::Color, &[2]),
@@ -86,6 +97,7 @@ pub fn packed_fields(ty: u32) -> Option<(usize, &'static [(u32, u32)])> {
         GL_UNSIGNED_INT_8_8_8_8_REV => (4, &[(0, 8), (8, 8), (16, 8), (24, 8)]),
         GL_UNSIGNED_INT_10_10_10_2 => (4, &[(22, 10), (12, 10), (2, 10), (0, 2)]),
         GL_UNSIGNED_INT_2_10_10_10_REV => (4, &[(0, 10), (10, 10), (20, 10), (30, 2)]),
+        GL_UNSIGNED_INT_24_8 => (4, &[(8, 24), (0, 8)]),
         _ => return None,
     })
 }
@@ -96,6 +108,14 @@ pub fn packed_fields(ty: u32) -> Option<(usize, &'static [(u32, u32)])> {
 /// types need RGB, 4-component ones RGBA or BGRA) is INVALID_OPERATION.
 pub fn check_format_type(format: u32, ty: u32) -> Result<Kind, u32> {
     let (kind, _) = format_info(format).ok_or(GL_INVALID_ENUM)?;
+    // DEPTH_STENCIL takes only its packed type, which no other format takes.
+    if kind == Kind::DepthStencil || ty == GL_UNSIGNED_INT_24_8 {
+        return match (kind == Kind::DepthStencil, ty == GL_UNSIGNED_INT_24_8) {
+            (true, true) => Ok(kind),
+            (true, false) => Err(GL_INVALID_ENUM),
+            _ => Err(GL_INVALID_OPERATION),
+        };
+    }
     if ty == GL_BITMAP {
         return if matches!(kind, Kind::ColorIndex | Kind::Stencil) { Ok(kind) } else { Err(GL_INVALID_ENUM) };
     }
@@ -318,6 +338,23 @@ impl<'a> Source<'a> {
         out
     }
 
+    /// Unpacks a DEPTH_STENCIL / UNSIGNED_INT_24_8 image: (depth, stencil)
+    /// per group.
+    pub fn depth_stencil(&self, width: usize, height: usize, depth: usize) -> Vec<(f64, f64)> {
+        let l = &self.layout;
+        let mut out = Vec::with_capacity(width * height * depth);
+        for k in 0..depth {
+            for j in 0..height {
+                for i in 0..width {
+                    let o = l.offset(i, j, k);
+                    let v = read_packed(&self.data[o..o + 4], 4, l.swap);
+                    out.push(((v >> 8) as f64 / 16777215.0, (v & 0xFF) as f64));
+                }
+            }
+        }
+        out
+    }
+
     /// Unpacks a one-component image: depth values (normalized) or indices
     /// (plain numbers; GL_BITMAP gives 0 or 1).
     pub fn values(&self, width: usize, height: usize, depth: usize, normalized: bool) -> Vec<f64> {
@@ -462,6 +499,18 @@ impl<'a> Dest<'a> {
         if l.swap {
             e.reverse();
         }
+    }
+
+    /// Packs a depth/stencil pair at (i, j) as UNSIGNED_INT_24_8.
+    pub fn put_depth_stencil(&mut self, i: usize, j: usize, depth: f64, stencil: i64) {
+        let l = self.layout;
+        let o = l.offset(i, j, 0);
+        let d = (depth.clamp(0.0, 1.0) * 16777215.0).round() as u32;
+        let mut b = ((d << 8) | (stencil as u32 & 0xFF)).to_ne_bytes();
+        if l.swap {
+            b.reverse();
+        }
+        self.data[o..o + 4].copy_from_slice(&b);
     }
 
     /// Packs an index (stencil) at (i, j); GL_BITMAP writes its low bit.

@@ -210,3 +210,7 @@ pub const GL_ALWAYS: u32 = 0x0207;
 pub const GL_LEQUAL: u32 = 0x0203;
 pub const GL_NONE: u32 = 0;
 pub const GL_TEXTURE: u32 = 0x1702;
+pub const GL_DEPTH_STENCIL: u32 = 0x84F9;
+pub const GL_UNSIGNED_INT_24_8: u32 = 0x84FA;
+pub const GL_DEPTH24_STENCIL8: u32 = 0x88F0;
+pub const GL_TEXTURE_STENCIL_SIZE: u32 = 0x88F1;

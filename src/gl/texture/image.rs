@@ -72,6 +72,8 @@ pub fn internal_format(f: u32) -> Option<InternalFormat> {
         GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => (Depth, [0, 0, 0, 0, 0, 0, 24]),
         GL_DEPTH_COMPONENT16 => (Depth, [0, 0, 0, 0, 0, 0, 16]),
         GL_DEPTH_COMPONENT32 => (Depth, [0, 0, 0, 0, 0, 0, 32]),
+        // EXT_packed_depth_stencil: sampled as depth (the stencil is not kept).
+        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => (Depth, [0, 0, 0, 0, 0, 0, 24]),
         _ => return None,
     };
     Some(InternalFormat { base, bits })
@@ -159,6 +161,8 @@ pub unsafe fn unpack(modes: &PixelModes, w: usize, h: usize, d: usize, format: u
     }
     match pixel_data::format_info(format).map(|f| f.0) {
         Some(Kind::Depth) => Pixels::Depth(src.values(w, h, d, true)),
+        // The stencil half of DEPTH_STENCIL data is not kept by textures.
+        Some(Kind::DepthStencil) => Pixels::Depth(src.depth_stencil(w, h, d).into_iter().map(|(z, _)| z).collect()),
         Some(Kind::ColorIndex) => Pixels::Index(src.values(w, h, d, false)),
         _ => Pixels::Color(src.colors(w, h, d)),
     }
@@ -244,12 +248,16 @@ pub unsafe fn pack(modes: &PixelModes, img: &Image, format: u32, ty: u32, t: &Pi
     let (w, h, d) = (img.width as usize, img.height as usize, img.depth as usize);
     let mut dest = Dest::with_depth(modes, w, h, d, format, ty, ptr);
     let depth = format == GL_DEPTH_COMPONENT;
+    let depth_stencil = format == GL_DEPTH_STENCIL;
     let lum = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);
     for k in 0..d {
         for j in 0..h {
             for i in 0..w {
                 let tx = img.texels.get((k * h + j) * w + i);
-                if depth {
+                if depth_stencil {
+                    // Depth textures are 1D, 2D or cube maps: k is 0.
+                    dest.put_depth_stencil(i, j, t.depth(tx[0] as f64), 0);
+                } else if depth {
                     dest.put_normalized_at(i, j, k, t.depth(tx[0] as f64));
                 } else {
                     let mut c = [texel_to_rgba(img.base, tx)];

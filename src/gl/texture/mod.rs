@@ -573,8 +573,8 @@ impl Context {
         };
         // Depth data for a colour format or the reverse: INVALID_OPERATION,
         // before STENCIL_INDEX's INVALID_ENUM (it is not depth data either).
-        let depth_data = cmd.format == GL_DEPTH_COMPONENT;
-        if depth_data != (f.base == Base::Depth) && (pixel_data::format_info(cmd.format).is_some() || depth_data) {
+        let depth_data = matches!(cmd.format, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL);
+        if depth_data != (f.base == Base::Depth) && pixel_data::format_info(cmd.format).is_some() {
             return self.set_error(GL_INVALID_OPERATION);
         }
         if let Err(e) = image::check_format_type(cmd.format, cmd.ty) {
@@ -614,7 +614,7 @@ impl Context {
         let Some(img) = self.texture.object(u, t).image(face, cmd.level as usize).cloned() else {
             return self.set_error(GL_INVALID_OPERATION);
         };
-        let depth_data = cmd.format == GL_DEPTH_COMPONENT;
+        let depth_data = matches!(cmd.format, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL);
         if depth_data != (img.base == Base::Depth) && pixel_data::format_info(cmd.format).is_some() {
             return self.set_error(GL_INVALID_OPERATION);
         }
@@ -948,6 +948,7 @@ impl Context {
             GL_TEXTURE_LUMINANCE_SIZE => v(bits[4] as i64),
             GL_TEXTURE_INTENSITY_SIZE => v(bits[5] as i64),
             GL_TEXTURE_DEPTH_SIZE => v(bits[6] as i64),
+            GL_TEXTURE_STENCIL_SIZE => v(img.map_or(0, |i| if matches!(i.internal_format, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8) { 8 } else { 0 })),
             GL_TEXTURE_COMPRESSED => Some(Value::Bools(vec![false])),
             GL_TEXTURE_COMPRESSED_IMAGE_SIZE => {
                 self.set_error(GL_INVALID_OPERATION);
@@ -976,7 +977,7 @@ impl Context {
             Ok(_) => {}
         }
         let Some(img) = self.texture.object(self.texture.active, t).image(face, level as usize) else { return };
-        if (format == GL_DEPTH_COMPONENT) != (img.base == Base::Depth) {
+        if matches!(format, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL) != (img.base == Base::Depth) {
             return self.set_error(GL_INVALID_OPERATION);
         }
         if out.is_null() || img.texels.is_empty() {
