@@ -292,3 +292,28 @@ fn packed_depth_stencil() {
     tex_image(&mut c, t::GL_RGBA8, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &[0; 4]);
     assert_eq!(c.take_error(), GL_INVALID_OPERATION);
 }
+
+/// ARB_texture_rg: RED and RG internal formats keep R (and G), the other
+/// colour components read as 0; GL_RG is a pixel format.
+#[test]
+fn red_and_rg() {
+    let mut c = context(4, 4);
+    for (ifmt, expected) in [(t::GL_R8, [10u8, 0, 0, 255]), (t::GL_RG8, [10, 20, 0, 255]), (t::GL_RED, [10, 0, 0, 255]), (t::GL_RG16, [10, 20, 0, 255])] {
+        tex_image(&mut c, ifmt, 1, 1, t::GL_RGBA, t::GL_UNSIGNED_BYTE, &[10, 20, 30, 40]);
+        assert_eq!(c.take_error(), GL_NO_ERROR);
+        assert_eq!(get_image(&mut c, t::GL_RGBA, t::GL_UNSIGNED_BYTE, 4), expected, "{ifmt:#x}");
+    }
+    let q = |c: &mut Context, p: u32| c.get_tex_level_parameter(t::GL_TEXTURE_2D, 0, p).unwrap().as_i32()[0];
+    tex_image(&mut c, t::GL_RG8, 1, 1, t::GL_RGBA, t::GL_UNSIGNED_BYTE, &[10, 20, 30, 40]);
+    assert_eq!([q(&mut c, t::GL_TEXTURE_RED_SIZE), q(&mut c, t::GL_TEXTURE_GREEN_SIZE), q(&mut c, t::GL_TEXTURE_BLUE_SIZE)], [8, 8, 0]);
+    // GL_RG pixels: R and G, B = 0, A = 1; packed types do not fit it.
+    c.execute(&Command::RasterPos([-1.0, -1.0, 0.0, 1.0]));
+    let rg: [f32; 2] = [0.5, 0.25];
+    let cmd = unsafe { c.build_draw_pixels(1, 1, t::GL_RG, t::GL_FLOAT, rg.as_ptr() as *const u8) }.unwrap();
+    c.execute(&cmd);
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    assert_eq!(px(&c, 0, 0), [128, 64, 0, 255]);
+    let cmd = unsafe { c.build_draw_pixels(1, 1, t::GL_RG, t::GL_UNSIGNED_BYTE_3_3_2, rg.as_ptr() as *const u8) }.unwrap();
+    c.execute(&cmd);
+    assert_eq!(c.take_error(), GL_INVALID_OPERATION);
+}

@@ -36,6 +36,8 @@ use super::pixels::PixelModes;
 /// EXT_packed_depth_stencil's format and type.
 pub const GL_DEPTH_STENCIL: u32 = 0x84F9;
 pub const GL_UNSIGNED_INT_24_8: u32 = 0x84FA;
+/// ARB_texture_rg's two-component format.
+pub const GL_RG: u32 = 0x8227;
 
 /// What a format's groups are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -60,6 +62,7 @@ pub fn format_info(format: u32) -> Option<(Kind, &'static [usize])> {
         GL_GREEN => (Kind::Color, &[1]),
         GL_BLUE => (Kind::Color, &[2]),
         GL_ALPHA => (Kind::Color, &[3]),
+        GL_RG => (Kind::Color, &[0, 1]),
         GL_RGB => (Kind::Color, &[0, 1, 2]),
         GL_RGBA => (Kind::Color, &[0, 1, 2, 3]),
         GL_BGR => (Kind::Color, &[2, 1, 0]),

@@ -56,6 +56,11 @@ pub fn internal_format(f: u32) -> Option<InternalFormat> {
         GL_INTENSITY12 => (Intensity, [0, 0, 0, 0, 0, 12, 0]),
         GL_INTENSITY16 => (Intensity, [0, 0, 0, 0, 0, 16, 0]),
         3 | GL_RGB | GL_RGB8 | GL_COMPRESSED_RGB => (Rgb, [8, 8, 8, 0, 0, 0, 0]),
+        // ARB_texture_rg: RGB textures whose missing components are 0.
+        GL_RED | GL_R8 | GL_COMPRESSED_RED => (Rgb, [8, 0, 0, 0, 0, 0, 0]),
+        GL_R16 => (Rgb, [16, 0, 0, 0, 0, 0, 0]),
+        GL_RG | GL_RG8 | GL_COMPRESSED_RG => (Rgb, [8, 8, 0, 0, 0, 0, 0]),
+        GL_RG16 => (Rgb, [16, 16, 0, 0, 0, 0, 0]),
         GL_R3_G3_B2 => (Rgb, [3, 3, 2, 0, 0, 0, 0]),
         GL_RGB4 => (Rgb, [4, 4, 4, 0, 0, 0, 0]),
         GL_RGB5 => (Rgb, [5, 5, 5, 0, 0, 0, 0]),
@@ -85,6 +90,16 @@ impl InternalFormat {
     pub fn stored_bits(&self) -> [u8; 7] {
         let wide = self.bits.iter().any(|&b| b > 8);
         self.bits.map(|b| if b == 0 { 0 } else if wide || self.base == Base::Depth { b.max(8) } else { 8 })
+    }
+
+    /// Which of R, G, B an RGB-based format keeps (RED and RG keep fewer:
+    /// the others read as 0).
+    pub fn rgb_mask(&self) -> [bool; 3] {
+        if matches!(self.base, Base::Rgb | Base::Rgba) {
+            [self.bits[0] > 0, self.bits[1] > 0, self.bits[2] > 0]
+        } else {
+            [true; 3]
+        }
     }
 
     /// Stored as 8-bit RGBA ([`Texels::Rgba8`]): every component of at
@@ -180,7 +195,10 @@ pub fn texels(f: &InternalFormat, p: &Pixels, t: &PixelTransfer) -> Texels {
         // shares the command's buffer).
         let out: Vec<[u8; 4]> = match f.base {
             Base::Rgba => return Texels::Rgba8(v.clone()),
-            Base::Rgb => v.iter().map(|&[r, g, b, _]| [r, g, b, 255]).collect(),
+            Base::Rgb => {
+                let m = f.rgb_mask().map(|keep| if keep { 0xFF } else { 0 });
+                v.iter().map(|&[r, g, b, _]| [r & m[0], g & m[1], b & m[2], 255]).collect()
+            }
             Base::Alpha => v.iter().map(|&[_, _, _, a]| [0, 0, 0, a]).collect(),
             Base::Luminance => v.iter().map(|&[r, _, _, _]| [r, r, r, 255]).collect(),
             Base::LuminanceAlpha => v.iter().map(|&[r, _, _, a]| [r, r, r, a]).collect(),
@@ -210,7 +228,19 @@ pub fn texels(f: &InternalFormat, p: &Pixels, t: &PixelTransfer) -> Texels {
 /// the base format, rounded to 8 bits for compact formats.
 pub fn store(f: &InternalFormat, rgba: Vec<[f32; 4]>) -> Texels {
     let base = f.base;
-    let expanded: Vec<[f32; 4]> = rgba.into_iter().map(|p| base.expand(p.map(|v| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) }))).collect();
+    let m = f.rgb_mask();
+    let expanded: Vec<[f32; 4]> = rgba
+        .into_iter()
+        .map(|p| {
+            let mut c = p.map(|v| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) });
+            for k in 0..3 {
+                if !m[k] {
+                    c[k] = 0.0;
+                }
+            }
+            base.expand(c)
+        })
+        .collect();
     Texels::from_float(expanded, f.compact())
 }
 
