@@ -108,4 +108,13 @@ fn main() {
         let dt = (cpu_time() - t0) / reps as f64;
         println!("upload 1024x1024 {name}: {:.2} ms ({:.0} Mtexels/s)", dt * 1e3, (n * n) as f64 / dt / 1e6);
     }
+    // GENERATE_MIPMAP: the same upload building the 10 smaller levels.
+    c.execute(&Command::TexParameter(t::GL_TEXTURE_2D, t::GL_GENERATE_MIPMAP, [1.0, 0.0, 0.0, 0.0]));
+    let reps = 5;
+    let t0 = cpu_time();
+    for _ in 0..reps {
+        upload(&mut c, t::GL_RGBA8, t::GL_RGBA, n as i32, n as i32, &data);
+    }
+    let dt = (cpu_time() - t0) / reps as f64;
+    println!("upload 1024x1024 RGBA -> RGBA8 with GENERATE_MIPMAP: {:.2} ms", dt * 1e3);
 }

@@ -332,3 +332,61 @@ pub fn downsample(src: &[[f32; 4]], w: usize, h: usize, d: usize) -> (Vec<[f32; 
     }
     (out, nw, nh, nd)
 }
+
+/// [`downsample`] on 8-bit texels: the exact mean of the covered texels,
+/// rounded to nearest (halves up).
+pub fn downsample_rgba8(src: &[[u8; 4]], w: usize, h: usize, d: usize) -> (Vec<[u8; 4]>, usize, usize, usize) {
+    let (nw, nh, nd) = ((w / 2).max(1), (h / 2).max(1), (d / 2).max(1));
+    let (sx, sy, sz) = (if w > 1 { 2 } else { 1 }, if h > 1 { 2 } else { 1 }, if d > 1 { 2 } else { 1 });
+    let n = (sx * sy * sz) as u32;
+    let mut out = Vec::with_capacity(nw * nh * nd);
+    for k in 0..nd {
+        for j in 0..nh {
+            for i in 0..nw {
+                let mut acc = [0u32; 4];
+                for dz in 0..sz {
+                    for dy in 0..sy {
+                        let row = ((k * sz + dz) * h + j * sy + dy) * w + i * sx;
+                        for t in &src[row..row + sx] {
+                            for c in 0..4 {
+                                acc[c] += t[c] as u32;
+                            }
+                        }
+                    }
+                }
+                out.push(acc.map(|v| ((v + n / 2) / n) as u8));
+            }
+        }
+    }
+    (out, nw, nh, nd)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The byte box filter is the f32 one rounded: compare on every 2x2
+    /// block of a pseudo-random image, and on odd and 1-wide sizes.
+    #[test]
+    fn byte_box_filter_matches_the_mean() {
+        let mut seed = 7u32;
+        for (w, h, d) in [(8, 8, 1), (5, 3, 1), (1, 6, 1), (4, 4, 4), (7, 1, 1)] {
+            let src: Vec<[u8; 4]> = (0..w * h * d)
+                .map(|_| {
+                    seed = seed.wrapping_mul(1103515245).wrapping_add(12345);
+                    (seed >> 3).to_ne_bytes()
+                })
+                .collect();
+            let f: Vec<[f32; 4]> = src.iter().map(|p| p.map(|c| c as f32)).collect();
+            let (bytes, bw, bh, bd) = downsample_rgba8(&src, w, h, d);
+            let (mean, fw, fh, fd) = downsample(&f, w, h, d);
+            assert_eq!((bw, bh, bd), (fw, fh, fd));
+            for (b, m) in bytes.iter().zip(&mean) {
+                for c in 0..4 {
+                    // Halves round up; the f32 mean of integers is exact here.
+                    assert_eq!(b[c] as f32, (m[c] + 0.5).floor(), "{w}x{h}x{d}");
+                }
+            }
+        }
+    }
+}

@@ -1136,17 +1136,36 @@ fn generate_mipmaps(obj: &mut TexObject, t: Target, face: usize, f: &InternalFor
     let dims = dims_of(t) as usize;
     let n = b.inner(dims);
     let bw = b.border;
-    // Strip the border.
-    let mut cur: Vec<[f32; 4]> = Vec::with_capacity((n[0] * n[1] * n[2]) as usize);
-    for k in 0..n[2] {
-        for j in 0..n[1] {
-            for i in 0..n[0] {
-                cur.push(b.texel_at(dims, i, j, k));
-            }
-        }
-    }
     let (mut w, mut h, mut d) = (n[0] as usize, n[1] as usize, n[2] as usize);
     let q = (base as i32 + log2_floor(n[..dims].iter().copied().max().unwrap_or(1))).min(obj.params.max_level).min(MAX_LEVELS as i32 - 1);
+    if let (0, Texels::Rgba8(src)) = (bw, &b.texels) {
+        // 8-bit storage without border: the box filter on bytes, each level
+        // from the previous stored one (exact mean, rounded).
+        let mut cur = src.clone();
+        for level in base + 1..=q.max(base as i32) as usize {
+            let (next, nw, nh, nd) = image::downsample_rgba8(&cur, w, h, d);
+            let next = Arc::new(next);
+            let img = Image { width: nw as i32, height: nh as i32, depth: nd as i32, border: 0, internal_format: b.internal_format, base: f.base, texels: Texels::Rgba8(next.clone()) };
+            obj.images[face * MAX_LEVELS + level] = Some(Arc::new(img));
+            cur = next;
+            (w, h, d) = (nw, nh, nd);
+        }
+        return;
+    }
+    // Strip the border.
+    let mut cur: Vec<[f32; 4]> = if bw == 0 {
+        b.texels.to_float()
+    } else {
+        let mut v = Vec::with_capacity((n[0] * n[1] * n[2]) as usize);
+        for k in 0..n[2] {
+            for j in 0..n[1] {
+                for i in 0..n[0] {
+                    v.push(b.texel_at(dims, i, j, k));
+                }
+            }
+        }
+        v
+    };
     for level in base + 1..=q.max(base as i32) as usize {
         let (next, nw, nh, nd) = image::downsample(&cur, w, h, d);
         // Derived levels have the base's border width, filled from the edge.

@@ -337,6 +337,11 @@ pub struct UnitSampler {
     /// The specialized sampling function for this texture and its
     /// parameters ([`Fast::General`] when none applies).
     pub fast: Fast,
+    /// For the general path's per-level filtering: Some(repeat) when a 2D
+    /// colour texture wraps S and T by REPEAT or CLAMP_TO_EDGE, so 8-bit
+    /// levels without border take the specialized fetches (mipmapped
+    /// filters then pay only for the LOD and the blend of two levels).
+    pub fast_wrap: Option<[bool; 2]>,
 }
 
 /// Specialized samplers (see the module documentation). `repeat[k]`: the
@@ -486,7 +491,9 @@ impl UnitSampler {
     /// A sampler for a complete texture; picks its fast path.
     pub fn new(target: Target, faces: Vec<Vec<Arc<Image>>>, params: Params, unit_bias: f32, base: Base) -> UnitSampler {
         let fast = Fast::choose(target, &faces, &params);
-        UnitSampler { target, faces, params, unit_bias, base, fast }
+        let wraps_ok = params.wrap[..2].iter().all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge));
+        let fast_wrap = (target == Target::T2D && base != Base::Depth && wraps_ok).then_some([params.wrap[0] == Wrap::Repeat, params.wrap[1] == Wrap::Repeat]);
+        UnitSampler { target, faces, params, unit_bias, base, fast, fast_wrap }
     }
 
     /// Nearest sampling of a 2D 8-bit RGBA image without border.
@@ -590,6 +597,10 @@ impl UnitSampler {
     /// Nearest or linear filtering within one image, with depth comparison
     /// per texel (before filtering).
     fn filter(&self, img: &Image, str: [f32; 3], linear: bool) -> [f32; 4] {
+        if let (Some(repeat), Texels::Rgba8(tex), 0) = (self.fast_wrap, &img.texels, img.border) {
+            let v = if linear { Self::linear_2d(img, tex, str[0], str[1], repeat) } else { Self::nearest_2d(img, tex, str[0], str[1], repeat) };
+            return v.to_array();
+        }
         let dims = self.dims();
         let n = img.inner(dims);
         let p = &self.params;
@@ -737,13 +748,44 @@ mod tests {
                     let params = Params { min_filter: filter, mag_filter: filter, wrap: [wrap[0], wrap[1], Wrap::Repeat], ..Default::default() };
                     let s = sampler(vec![image.clone()], params);
                     assert_ne!(s.fast, Fast::General, "{filter:?} {wrap:?}");
+                    let reference = UnitSampler { fast: Fast::General, fast_wrap: None, ..s.clone() };
                     for _ in 0..2000 {
                         let u = (rnd() % 20000) as f32 / 1000.0 - 10.0;
                         let v = (rnd() % 20000) as f32 / 1000.0 - 10.0;
                         let c = Coord { str: [u, v, 0.0], dx: [0.01, 0.0, 0.0], dy: [0.0, 0.3, 0.0] };
-                        assert_eq!(s.sample(&c), s.sample_general(&c), "{w}x{h} {filter:?} {wrap:?} at {u} {v}");
+                        assert_eq!(s.sample(&c), reference.sample(&c), "{w}x{h} {filter:?} {wrap:?} at {u} {v}");
                     }
                 }
+            }
+        }
+    }
+
+    /// Mipmapped filters on 8-bit levels (the per-level fast fetches)
+    /// against the reference path, across magnification and minification.
+    #[test]
+    fn mipmapped_fast_fetches_match_the_reference() {
+        let mut seed = 99u32;
+        let mut level = |n: i32| {
+            let texels: Vec<[u8; 4]> = (0..n * n)
+                .map(|_| {
+                    seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+                    seed.to_ne_bytes()
+                })
+                .collect();
+            Arc::new(Image { width: n, height: n, depth: 1, border: 0, internal_format: 0x8058, base: Base::Rgba, texels: Texels::Rgba8(Arc::new(texels)) })
+        };
+        let levels = vec![level(8), level(4), level(2), level(1)];
+        for filter in [Filter::NearestMipmapNearest, Filter::LinearMipmapNearest, Filter::NearestMipmapLinear, Filter::LinearMipmapLinear] {
+            let params = Params { min_filter: filter, mag_filter: Filter::Linear, ..Default::default() };
+            let s = sampler(levels.clone(), params);
+            assert_eq!(s.fast, Fast::General);
+            assert!(s.fast_wrap.is_some());
+            let reference = UnitSampler { fast_wrap: None, ..s.clone() };
+            for k in 0..3000 {
+                let (u, v) = ((k % 97) as f32 / 31.0 - 1.0, (k % 89) as f32 / 29.0 - 1.0);
+                let d = 0.01 * (k % 50) as f32;
+                let c = Coord { str: [u, v, 0.0], dx: [d, 0.0, 0.0], dy: [0.0, d * 0.7, 0.0] };
+                assert_eq!(s.sample(&c), reference.sample(&c), "{filter:?} at {u} {v} d {d}");
             }
         }
     }
