@@ -277,6 +277,21 @@ pub fn texel_to_rgba(base: Base, t: [f32; 4]) -> [f32; 4] {
 pub unsafe fn pack(modes: &PixelModes, img: &Image, format: u32, ty: u32, t: &PixelTransfer, ptr: *mut u8) {
     let (w, h, d) = (img.width as usize, img.height as usize, img.depth as usize);
     let mut dest = Dest::with_depth(modes, w, h, d, format, ty, ptr);
+    // RGBA bytes of an 8-bit RGBA texture with no transfer: a copy per row.
+    if let (Texels::Rgba8(tex), Base::Rgba, GL_RGBA, GL_UNSIGNED_BYTE, true) = (&img.texels, img.base, format, ty, t.color_is_identity()) {
+        if !dest.data.is_empty() {
+            for k in 0..d {
+                for j in 0..h {
+                    let o = dest.layout.offset(0, j, k);
+                    let row = &tex[(k * h + j) * w..][..w];
+                    for (out, p) in dest.data[o..o + 4 * w].chunks_exact_mut(4).zip(row) {
+                        out.copy_from_slice(p);
+                    }
+                }
+            }
+        }
+        return;
+    }
     let depth = format == GL_DEPTH_COMPONENT;
     let depth_stencil = format == GL_DEPTH_STENCIL;
     let lum = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);

@@ -24,7 +24,8 @@
 //! bilinear fetch specialized for that case: no LOD (both filters give the
 //! same answer at every λ), no border colour, no depth comparison, no
 //! per-texel storage dispatch. They compute exactly what the general path
-//! computes (the unit tests compare them on random coordinates).
+//! computes (the unit tests compare them on random coordinates);
+//! `SOFTGL_REFERENCE=1` turns them off.
 //!
 //! Addressing (3.8.7): for nearest filtering i = floor(u) after the wrap
 //! mode's treatment of s; for linear filtering i0 = floor(u - 1/2),
@@ -371,6 +372,12 @@ impl Fast {
     }
 }
 
+/// `SOFTGL_REFERENCE=1` (DESIGN.md): every sampler takes the general path.
+fn reference_path() -> bool {
+    static REFERENCE: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *REFERENCE.get_or_init(|| std::env::var("SOFTGL_REFERENCE").is_ok_and(|v| v == "1"))
+}
+
 /// REPEAT or CLAMP_TO_EDGE of an index into [0, n).
 #[inline(always)]
 fn wrap_fast(i: i32, n: i32, repeat: bool) -> i32 {
@@ -490,6 +497,9 @@ impl UnitSampler {
 
     /// A sampler for a complete texture; picks its fast path.
     pub fn new(target: Target, faces: Vec<Vec<Arc<Image>>>, params: Params, unit_bias: f32, base: Base) -> UnitSampler {
+        if reference_path() {
+            return UnitSampler { target, faces, params, unit_bias, base, fast: Fast::General, fast_wrap: None };
+        }
         let fast = Fast::choose(target, &faces, &params);
         let wraps_ok = params.wrap[..2].iter().all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge));
         let fast_wrap = (target == Target::T2D && base != Base::Depth && wraps_ok).then_some([params.wrap[0] == Wrap::Repeat, params.wrap[1] == Wrap::Repeat]);
