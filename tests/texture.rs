@@ -224,13 +224,20 @@ fn tex_image_errors() {
     };
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 4, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR);
     assert_eq!(e(&mut c, t::GL_TEXTURE_1D, 0, 4, 4, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_ENUM);
-    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 3, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "non-power-of-two");
+    // ARB_texture_non_power_of_two: any size.
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 3, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR, "non-power-of-two");
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, -1, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE);
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, -1, 4, 4, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "negative level");
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 20, 4, 4, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "level too big");
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 4, 4, 2, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "border 2");
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 6, 6, 1, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR, "4 + 2 border");
-    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 5, 5, 1, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "5 with border 1");
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 5, 5, 1, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR, "5 with border 1");
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 1, 1, 1, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "1 with border 1");
+    // Level k holds at most MAX_TEXTURE_SIZE >> k (section 3.8.1).
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 2048, 1, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR, "max x 1");
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 1, 4, 2048, 1, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "max at level 1");
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 2, 4, 1, 1024, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "max/2 at level 2");
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 4096, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "too wide");
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 5, 4, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "internal format 5");
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 4, 4, 0, 0x1234, t::GL_UNSIGNED_BYTE), GL_INVALID_ENUM, "format");
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 4, 4, 0, t::GL_RGBA, 0x1234), GL_INVALID_ENUM, "type");
@@ -241,6 +248,17 @@ fn tex_image_errors() {
     assert_eq!(e(&mut c, t::GL_PROXY_TEXTURE_2D, 0, 4, 64, 64, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR);
     let w = c.get_tex_level_parameter(t::GL_PROXY_TEXTURE_2D, 0, t::GL_TEXTURE_WIDTH).unwrap().as_i32();
     assert_eq!(w, vec![64]);
+    // Errors leave the proxy alone; a size softgl cannot hold zeroes it.
+    assert_eq!(e(&mut c, t::GL_PROXY_TEXTURE_2D, 0, 4, 64, 64, 2, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE);
+    assert_eq!(c.get_tex_level_parameter(t::GL_PROXY_TEXTURE_2D, 0, t::GL_TEXTURE_WIDTH).unwrap().as_i32(), vec![64]);
+    assert_eq!(e(&mut c, t::GL_PROXY_TEXTURE_2D, 0, 4, 4096, 4096, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR);
+    for pname in [t::GL_TEXTURE_WIDTH, t::GL_TEXTURE_HEIGHT] {
+        assert_eq!(c.get_tex_level_parameter(t::GL_PROXY_TEXTURE_2D, 0, pname).unwrap().as_i32(), vec![0]);
+    }
+    assert_eq!(e(&mut c, t::GL_PROXY_TEXTURE_3D, 0, 4, 512, 512, 512, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_ENUM, "3D proxy via 2D call");
+    // Depth internal format with stencil or colour data: INVALID_OPERATION.
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, t::GL_DEPTH_COMPONENT16 as i32, 4, 4, 0, t::GL_STENCIL_INDEX, t::GL_INT), GL_INVALID_OPERATION);
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 4, 4, 0, t::GL_STENCIL_INDEX, t::GL_INT), GL_INVALID_ENUM);
     // Sub-image outside the image, and of an undefined level.
     let sub = |c: &mut Context, level: i32, x: i32, w: i32| {
         let cmd = unsafe { c.tex_sub_image_command(2, t::GL_TEXTURE_2D, level, [x, 0, 0], [w, 1, 1], t::GL_RGBA, t::GL_UNSIGNED_BYTE, std::ptr::null()) };

@@ -16,9 +16,14 @@
 //! stencil write mask (only ownership and the scissor test apply).
 //! Bitmap fragments take the raster colour and z.
 //!
-//! Texturing and fog of these fragments come with those features: they
-//! belong where `fragment_color` is computed below (texture with the raster
-//! texture coordinates, fog with the raster distance).
+//! Texturing, the colour sum and fog (sections 3.8 to 3.10) apply to the
+//! colour of every fragment these commands produce, with the raster
+//! position's texture coordinates (the same for every fragment: no
+//! derivatives, so textures magnify), secondary colour and fog distance
+//! ([`PixelShading`]).
+//!
+//! DEPTH_STENCIL (EXT_packed_depth_stencil) rectangles, drawn or copied,
+//! are a depth rectangle followed by a stencil rectangle of the same groups.
 //!
 //! glCopyPixels reads the whole source rectangle first, so overlapping
 //! source and destination behave as if every source pixel were read before
@@ -27,11 +32,40 @@
 use super::command::Command;
 use super::context::Context;
 use super::enums::*;
-use super::pixel_data::{check_format_type, Kind, Source};
+use super::pixel_data::{check_format_type, Kind, Source, GL_DEPTH_STENCIL};
 use crate::render::fragment::{color_to_u8, depth_to_fixed, process_fragment};
+use crate::render::fog::Fog;
 use crate::render::pixels;
+use crate::render::texture::{point_coords, Coord, TextureStage, MAX_UNITS};
 use glam::Vec4;
 use std::rc::Rc;
+use std::sync::Arc;
+
+/// Texturing, colour sum and fog of pixel-rectangle and bitmap fragments
+/// (section 3.6.4, "Conversion to fragments": they are then treated like
+/// a point's fragments at the raster position).
+struct PixelShading {
+    texture: Option<(Arc<TextureStage>, [Coord; MAX_UNITS])>,
+    secondary: Option<glam::Vec3>,
+    fog: Option<(Fog, f32)>,
+}
+
+impl PixelShading {
+    /// The fragment colour after these stages, in the framebuffer's bytes.
+    fn apply(&self, c: [f32; 4]) -> [u8; 4] {
+        let mut c = Vec4::from_array(c).clamp(Vec4::ZERO, Vec4::ONE);
+        if let Some((stage, coords)) = &self.texture {
+            c = stage.shade(coords, c);
+        }
+        if let Some(s) = self.secondary {
+            c = (c.truncate() + s).extend(c.w).clamp(Vec4::ZERO, Vec4::ONE);
+        }
+        if let Some((fog, d)) = &self.fog {
+            c = fog.apply(c, *d);
+        }
+        color_to_u8(c)
+    }
+}
 
 /// Unpacked groups of a pixel rectangle, before pixel transfer.
 #[derive(Clone, Debug, PartialEq)]
@@ -40,6 +74,8 @@ pub enum PixelData {
     ColorIndex(Vec<f64>),
     Depth(Vec<f64>),
     Stencil(Vec<f64>),
+    /// DEPTH_STENCIL groups: (depth, stencil index).
+    DepthStencil(Vec<(f64, f64)>),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -97,6 +133,7 @@ impl Context {
             Kind::Depth => PixelData::Depth(src.values(w, h, 1, true)),
             Kind::ColorIndex => PixelData::ColorIndex(src.values(w, h, 1, false)),
             Kind::Stencil => PixelData::Stencil(src.values(w, h, 1, false)),
+            Kind::DepthStencil => PixelData::DepthStencil(src.depth_stencil(w, h, 1)),
         };
         Some(Command::DrawPixels(Rc::new(PixelRect { width: w, height: h, data })))
     }
@@ -125,10 +162,27 @@ impl Context {
         Command::Bitmap(Rc::new(Bitmap { width: w, height: h, orig, step, bits }))
     }
 
+    /// The stages after rasterization that change a pixel fragment's
+    /// colour, or None when none is on (derived state: validate first).
+    fn pixel_shading(&self) -> Option<PixelShading> {
+        let rs = &self.derived.render;
+        let texture = rs.texture.as_ref().map(|stage| {
+            let tex = self.raster.tex.map(Vec4::from_array);
+            (stage.clone(), point_coords(stage, &tex))
+        });
+        let secondary = rs.color_sum.then(|| Vec4::from_array(self.raster.secondary_color).truncate());
+        // The raster distance is the fog coordinate: evaluate f exactly.
+        let fog = rs.fog.map(|f| (Fog { per_fragment: true, ..f }, self.raster.distance));
+        (texture.is_some() || secondary.is_some() || fog.is_some()).then_some(PixelShading { texture, secondary, fog })
+    }
+
     /// The colour of pixel-rectangle and bitmap fragments that take the
-    /// raster colour. (Texturing and fog would apply here.)
+    /// raster colour (depth rectangles, bitmaps), textured and fogged.
     fn fragment_color(&self) -> [u8; 4] {
-        color_to_u8(Vec4::from_array(self.raster.color))
+        match self.pixel_shading() {
+            Some(sh) => sh.apply(self.raster.color),
+            None => color_to_u8(Vec4::from_array(self.raster.color)),
+        }
     }
 
     /// glDrawPixels, executed.
@@ -136,6 +190,7 @@ impl Context {
         let missing = match r.data {
             PixelData::Depth(_) => !self.fb.has_depth(),
             PixelData::Stencil(_) => !self.fb.has_stencil(),
+            PixelData::DepthStencil(_) => !self.fb.has_depth() || !self.fb.has_stencil(),
             _ => false,
         };
         if missing {
@@ -144,16 +199,29 @@ impl Context {
         if !self.raster.valid {
             return;
         }
+        self.validate();
+        let shading = self.pixel_shading();
+        let finish = |p: [f32; 4]| match &shading {
+            Some(sh) => sh.apply(p),
+            None => color_to_u8(Vec4::from_array(p)),
+        };
         let t = &self.pixel;
         let groups = match &r.data {
             PixelData::Color(c) => {
                 let mut c = c.clone();
                 t.color(&mut c);
-                Groups::Color(c.iter().map(|&p| Some(color_to_u8(Vec4::from_array(p)))).collect())
+                Groups::Color(c.iter().map(|&p| Some(finish(p))).collect())
             }
-            PixelData::ColorIndex(ix) => Groups::Color(ix.iter().map(|&i| Some(color_to_u8(Vec4::from_array(t.index_to_rgba(i))))).collect()),
+            PixelData::ColorIndex(ix) => Groups::Color(ix.iter().map(|&i| Some(finish(t.index_to_rgba(i)))).collect()),
             PixelData::Depth(d) => Groups::Depth(d.iter().map(|&z| Some(depth_to_fixed(t.depth(z)))).collect()),
             PixelData::Stencil(s) => Groups::Stencil(s.iter().map(|&i| Some(t.stencil(i))).collect()),
+            PixelData::DepthStencil(ds) => {
+                // A depth rectangle, then a stencil rectangle of the same groups.
+                let stencil = Groups::Stencil(ds.iter().map(|&(_, i)| Some(t.stencil(i))).collect());
+                let depth = Groups::Depth(ds.iter().map(|&(z, _)| Some(depth_to_fixed(t.depth(z)))).collect());
+                self.draw_groups(r.width, r.height, depth);
+                stencil
+            }
         };
         self.draw_groups(r.width, r.height, groups);
     }
@@ -209,6 +277,7 @@ impl Context {
             GL_COLOR => false,
             GL_DEPTH => !self.fb.has_depth(),
             GL_STENCIL => !self.fb.has_stencil(),
+            GL_DEPTH_STENCIL => !self.fb.has_depth() || !self.fb.has_stencil(),
             _ => return self.set_error(GL_INVALID_ENUM),
         };
         if missing {
@@ -218,6 +287,8 @@ impl Context {
             return;
         }
         let (w, h) = (w as usize, h as usize);
+        self.validate();
+        let shading = self.pixel_shading();
         let fb = &self.fb;
         // Read everything first: overlapping copies see the old pixels.
         let at = |i: usize, j: usize| -> Option<usize> {
@@ -234,12 +305,15 @@ impl Context {
                         .map(|o| {
                             o.map(|k| {
                                 let c = fb.color[k];
-                                if identity {
+                                if identity && shading.is_none() {
                                     c
                                 } else {
                                     let mut f = [c.map(|v| v as f32 / 255.0)];
                                     t.color(&mut f);
-                                    color_to_u8(Vec4::from_array(f[0]))
+                                    match &shading {
+                                        Some(sh) => sh.apply(f[0]),
+                                        None => color_to_u8(Vec4::from_array(f[0])),
+                                    }
                                 }
                             })
                         })
@@ -250,6 +324,14 @@ impl Context {
                 let max = crate::framebuffer::DEPTH_MAX as f64;
                 let identity = t.depth_is_identity();
                 Groups::Depth(idx.iter().map(|o| o.map(|k| if identity { fb.depth[k] } else { depth_to_fixed(t.depth(fb.depth[k] as f64 / max)) })).collect())
+            }
+            GL_DEPTH_STENCIL => {
+                // Both read before either is written; depth first.
+                let max = crate::framebuffer::DEPTH_MAX as f64;
+                let depth = Groups::Depth(idx.iter().map(|o| o.map(|k| depth_to_fixed(t.depth(fb.depth[k] as f64 / max)))).collect());
+                let stencil = Groups::Stencil(idx.iter().map(|o| o.map(|k| t.stencil(fb.stencil[k] as f64))).collect());
+                self.draw_groups(w, h, depth);
+                stencil
             }
             _ => Groups::Stencil(idx.iter().map(|o| o.map(|k| t.stencil(fb.stencil[k] as f64))).collect()),
         };

@@ -2,7 +2,8 @@
 //! format, type and the pixel storage modes (GL 1.5 sections 3.6.4
 //! "Unpacking" and "Conversion to floating-point", 4.3.2 "Final conversion"
 //! and "Placement in client memory"). Shared by glDrawPixels, glBitmap,
-//! glReadPixels and (later) the texture image commands.
+//! glReadPixels and the texture image commands (glTexImage, glTexSubImage,
+//! glGetTexImage).
 //!
 //! What comes out of unpacking, per pixel, before any pixel transfer:
 //! - colour formats: RGBA in f32, components converted by table 2.9
@@ -18,6 +19,10 @@
 //! (table 4.6). Pixels the caller marks as not available (outside the
 //! window) are left untouched in client memory.
 //!
+//! DEPTH_STENCIL with UNSIGNED_INT_24_8 (EXT/NV_packed_depth_stencil): one
+//! 32-bit word per group, depth in the upper 24 bits (normalized by
+//! 2^24 - 1), the stencil index in the lower 8.
+//!
 //! Addressing (section 3.6.4, figure 3.8): row length l = ROW_LENGTH or
 //! the width; a row holds l groups and is padded to the alignment when the
 //! element size is smaller than it; SKIP_ROWS / SKIP_PIXELS / SKIP_IMAGES
@@ -28,6 +33,12 @@
 use super::enums::*;
 use super::pixels::PixelModes;
 
+/// EXT_packed_depth_stencil's format and type.
+pub const GL_DEPTH_STENCIL: u32 = 0x84F9;
+pub const GL_UNSIGNED_INT_24_8: u32 = 0x84FA;
+/// ARB_texture_rg's two-component format.
+pub const GL_RG: u32 = 0x8227;
+
 /// What a format's groups are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
@@ -35,6 +46,8 @@ pub enum Kind {
     Depth,
     Stencil,
     ColorIndex,
+    /// DEPTH_STENCIL: (depth, stencil) pairs.
+    DepthStencil,
 }
 
 /// A format's kind and its components in client order, as indices into
@@ -44,10 +57,12 @@ pub fn format_info(format: u32) -> Option<(Kind, &'static [usize])> {
         GL_COLOR_INDEX => (Kind::ColorIndex, &[0]),
         GL_STENCIL_INDEX => (Kind::Stencil, &[0]),
         GL_DEPTH_COMPONENT => (Kind::Depth, &[0]),
+        GL_DEPTH_STENCIL => (Kind::DepthStencil, &[0]),
         GL_RED => (Kind::Color, &[0]),
         GL_GREEN => (Kind::Color, &[1]),
         GL_BLUE => (Kind::Color, &[2]),
         GL_ALPHA => (Kind::Color, &[3]),
+        GL_RG => (Kind::Color, &[0, 1]),
         GL_RGB => (Kind::Color, &[0, 1, 2]),
         GL_RGBA => (Kind::Color, &[0, 1, 2, 3]),
         GL_BGR => (Kind::Color, &[2, 1, 0]),
@@ -85,6 +100,7 @@ pub fn packed_fields(ty: u32) -> Option<(usize, &'static [(u32, u32)])> {
         GL_UNSIGNED_INT_8_8_8_8_REV => (4, &[(0, 8), (8, 8), (16, 8), (24, 8)]),
         GL_UNSIGNED_INT_10_10_10_2 => (4, &[(22, 10), (12, 10), (2, 10), (0, 2)]),
         GL_UNSIGNED_INT_2_10_10_10_REV => (4, &[(0, 10), (10, 10), (20, 10), (30, 2)]),
+        GL_UNSIGNED_INT_24_8 => (4, &[(8, 24), (0, 8)]),
         _ => return None,
     })
 }
@@ -95,6 +111,14 @@ pub fn packed_fields(ty: u32) -> Option<(usize, &'static [(u32, u32)])> {
 /// types need RGB, 4-component ones RGBA or BGRA) is INVALID_OPERATION.
 pub fn check_format_type(format: u32, ty: u32) -> Result<Kind, u32> {
     let (kind, _) = format_info(format).ok_or(GL_INVALID_ENUM)?;
+    // DEPTH_STENCIL takes only its packed type, which no other format takes.
+    if kind == Kind::DepthStencil || ty == GL_UNSIGNED_INT_24_8 {
+        return match (kind == Kind::DepthStencil, ty == GL_UNSIGNED_INT_24_8) {
+            (true, true) => Ok(kind),
+            (true, false) => Err(GL_INVALID_ENUM),
+            _ => Err(GL_INVALID_OPERATION),
+        };
+    }
     if ty == GL_BITMAP {
         return if matches!(kind, Kind::ColorIndex | Kind::Stencil) { Ok(kind) } else { Err(GL_INVALID_ENUM) };
     }
@@ -317,6 +341,23 @@ impl<'a> Source<'a> {
         out
     }
 
+    /// Unpacks a DEPTH_STENCIL / UNSIGNED_INT_24_8 image: (depth, stencil)
+    /// per group.
+    pub fn depth_stencil(&self, width: usize, height: usize, depth: usize) -> Vec<(f64, f64)> {
+        let l = &self.layout;
+        let mut out = Vec::with_capacity(width * height * depth);
+        for k in 0..depth {
+            for j in 0..height {
+                for i in 0..width {
+                    let o = l.offset(i, j, k);
+                    let v = read_packed(&self.data[o..o + 4], 4, l.swap);
+                    out.push(((v >> 8) as f64 / 16777215.0, (v & 0xFF) as f64));
+                }
+            }
+        }
+        out
+    }
+
     /// Unpacks a one-component image: depth values (normalized) or indices
     /// (plain numbers; GL_BITMAP gives 0 or 1).
     pub fn values(&self, width: usize, height: usize, depth: usize, normalized: bool) -> Vec<f64> {
@@ -382,8 +423,17 @@ impl<'a> Dest<'a> {
     /// # Safety
     /// `ptr` must point to writable memory for the image as laid out.
     pub unsafe fn new(modes: &PixelModes, width: usize, height: usize, format: u32, ty: u32, ptr: *mut u8) -> Dest<'a> {
+        Self::with_depth(modes, width, height, 1, format, ty, ptr)
+    }
+
+    /// A 3D image's memory (glGetTexImage of 3D textures: IMAGE_HEIGHT and
+    /// SKIP_IMAGES apply).
+    ///
+    /// # Safety
+    /// As [`Dest::new`], for `depth` images.
+    pub unsafe fn with_depth(modes: &PixelModes, width: usize, height: usize, depth: usize, format: u32, ty: u32, ptr: *mut u8) -> Dest<'a> {
         let layout = Layout::new(modes, width, height, format, ty);
-        let len = layout.extent(width, height, 1);
+        let len = layout.extent(width, height, depth);
         let data = if len == 0 || ptr.is_null() { &mut [][..] } else { std::slice::from_raw_parts_mut(ptr, len) };
         Dest { data, layout, format, ty }
     }
@@ -391,9 +441,14 @@ impl<'a> Dest<'a> {
     /// Packs one RGBA pixel (already through final conversion: clamped)
     /// at (i, j): luminance is R + G + B, clamped (section 4.3.2).
     pub fn put_color(&mut self, i: usize, j: usize, c: [f32; 4]) {
+        self.put_color_at(i, j, 0, c)
+    }
+
+    /// [`Dest::put_color`] in image k of a 3D image.
+    pub fn put_color_at(&mut self, i: usize, j: usize, k: usize, c: [f32; 4]) {
         let comps = format_info(self.format).map_or(&[0usize][..], |f| f.1);
         let l = self.layout;
-        let o = l.offset(i, j, 0);
+        let o = l.offset(i, j, k);
         let out = &mut self.data[o..o + l.group];
         let comp = |k: usize| -> f64 {
             if k == 4 {
@@ -435,13 +490,30 @@ impl<'a> Dest<'a> {
 
     /// Packs a normalized value (depth) at (i, j).
     pub fn put_normalized(&mut self, i: usize, j: usize, v: f64) {
+        self.put_normalized_at(i, j, 0, v)
+    }
+
+    /// [`Dest::put_normalized`] in image k of a 3D image.
+    pub fn put_normalized_at(&mut self, i: usize, j: usize, k: usize, v: f64) {
         let l = self.layout;
-        let o = l.offset(i, j, 0);
+        let o = l.offset(i, j, k);
         let e = &mut self.data[o..o + l.elem];
         put_normalized(e, self.ty, v);
         if l.swap {
             e.reverse();
         }
+    }
+
+    /// Packs a depth/stencil pair at (i, j) as UNSIGNED_INT_24_8.
+    pub fn put_depth_stencil(&mut self, i: usize, j: usize, depth: f64, stencil: i64) {
+        let l = self.layout;
+        let o = l.offset(i, j, 0);
+        let d = (depth.clamp(0.0, 1.0) * 16777215.0).round() as u32;
+        let mut b = ((d << 8) | (stencil as u32 & 0xFF)).to_ne_bytes();
+        if l.swap {
+            b.reverse();
+        }
+        self.data[o..o + 4].copy_from_slice(&b);
     }
 
     /// Packs an index (stencil) at (i, j); GL_BITMAP writes its low bit.

@@ -3,7 +3,8 @@
 //! memory by format, type and the pack modes.
 //!
 //! Every format except COLOR_INDEX (an RGBA context has no indices:
-//! INVALID_OPERATION) with every type (GL_BITMAP for STENCIL_INDEX), through
+//! INVALID_OPERATION) with every type (GL_BITMAP for STENCIL_INDEX;
+//! DEPTH_STENCIL as UNSIGNED_INT_24_8), through
 //! pixel transfer (scale and bias, MAP_COLOR, index shift and offset,
 //! MAP_STENCIL: `pixel_transfer`) and packing (`pixel_data`). Pixels outside
 //! the window are undefined: their client memory is left untouched.
@@ -85,6 +86,7 @@ impl Context {
         let missing = match kind {
             Kind::Depth => !self.fb.has_depth(),
             Kind::Stencil => !self.fb.has_stencil(),
+            Kind::DepthStencil => !self.fb.has_depth() || !self.fb.has_stencil(),
             // An RGBA context has no colour indices.
             Kind::ColorIndex => true,
             Kind::Color => false,
@@ -133,6 +135,7 @@ impl Context {
                         dest.put_color(i, j, c[0]);
                     }
                     Kind::Depth => dest.put_normalized(i, j, t.depth(fb.depth[idx] as f64 / max)),
+                    Kind::DepthStencil => dest.put_depth_stencil(i, j, t.depth(fb.depth[idx] as f64 / max), t.stencil(fb.stencil[idx] as f64)),
                     _ => dest.put_index(i, j, t.stencil(fb.stencil[idx] as f64) as f64),
                 }
             }

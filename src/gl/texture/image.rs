@@ -1,24 +1,27 @@
-//! Texture image formats and pixel conversion (GL 1.5 sections 3.6.4 and
-//! 3.8.1, table 3.15; section 6.1.4 for glGetTexImage): internal formats and
-//! their base formats, unpacking client memory through the unpack modes
-//! into RGBA (or depth) floats, conversion to stored texels, packing texels
-//! back for glGetTexImage, and the box filter of GENERATE_MIPMAP.
+//! Texture images (GL 1.5 section 3.8.1, tables 3.15, 3.16 and 3.23;
+//! section 6.1.4 for glGetTexImage): internal formats and their base
+//! formats, the conversion of client images to stored texels, glGetTexImage's
+//! packing, and the box filter of GENERATE_MIPMAP.
 //!
-//! Formats: RED, GREEN, BLUE, ALPHA, RGB, RGBA, BGR, BGRA, LUMINANCE,
-//! LUMINANCE_ALPHA, DEPTH_COMPONENT. Types: UNSIGNED_BYTE, BYTE,
-//! UNSIGNED_SHORT, SHORT, UNSIGNED_INT, INT, FLOAT and the twelve GL 1.2
-//! packed types. Signed integers convert by (2c + 1) / (2^b - 1) (table
-//! 2.9), unsigned by c / (2^b - 1). Pixel transfer (scale, bias, maps) is
-//! not applied yet. COLOR_INDEX and BITMAP are not accepted.
+//! Client memory is read and written by `pixel_data`, the one per-format,
+//! per-type converter (every format of the pixel commands but
+//! STENCIL_INDEX, every type); TexImage goes through the same unpacking and
+//! pixel transfer as glDrawPixels (`pixel_transfer`), then the final
+//! conversion to texture components, as section 3.8.1 says.
 //!
-//! Storage: texels keep the table 3.23 expansion as f32. Internal formats
-//! of at most 8 bits per component are rounded to 8 bits (the RGBA8 values
-//! every GL stores for them, at least their nominal precision); wider ones
-//! (12, 16 bits, depth) keep f32, more than their nominal precision.
+//! Storage: texels keep the table 3.23 expansion. Internal formats of at
+//! most 8 bits per component are stored as 8-bit RGBA (the values every GL
+//! stores for them, at least their nominal precision); wider ones (12, 16
+//! bits, depth) keep f32, more than their nominal precision. RGBA or BGRA
+//! bytes into an 8-bit format with no pixel transfer are copied without
+//! per-pixel conversion (`texels`).
 
 use super::enums::*;
+use crate::gl::pixel_data::{self, Dest, Kind, Source};
+use crate::gl::pixel_transfer::PixelTransfer;
 use crate::gl::pixels::PixelModes;
-use crate::render::texture::Base;
+use crate::render::texture::{to_unorm8, Base, Image, Texels, UNORM8};
+use std::sync::Arc;
 
 /// An internal format: base format and bits per component (R, G, B, A,
 /// L, I, depth).
@@ -53,6 +56,11 @@ pub fn internal_format(f: u32) -> Option<InternalFormat> {
         GL_INTENSITY12 => (Intensity, [0, 0, 0, 0, 0, 12, 0]),
         GL_INTENSITY16 => (Intensity, [0, 0, 0, 0, 0, 16, 0]),
         3 | GL_RGB | GL_RGB8 | GL_COMPRESSED_RGB => (Rgb, [8, 8, 8, 0, 0, 0, 0]),
+        // ARB_texture_rg: RGB textures whose missing components are 0.
+        GL_RED | GL_R8 | GL_COMPRESSED_RED => (Rgb, [8, 0, 0, 0, 0, 0, 0]),
+        GL_R16 => (Rgb, [16, 0, 0, 0, 0, 0, 0]),
+        GL_RG | GL_RG8 | GL_COMPRESSED_RG => (Rgb, [8, 8, 0, 0, 0, 0, 0]),
+        GL_RG16 => (Rgb, [16, 16, 0, 0, 0, 0, 0]),
         GL_R3_G3_B2 => (Rgb, [3, 3, 2, 0, 0, 0, 0]),
         GL_RGB4 => (Rgb, [4, 4, 4, 0, 0, 0, 0]),
         GL_RGB5 => (Rgb, [5, 5, 5, 0, 0, 0, 0]),
@@ -69,6 +77,8 @@ pub fn internal_format(f: u32) -> Option<InternalFormat> {
         GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => (Depth, [0, 0, 0, 0, 0, 0, 24]),
         GL_DEPTH_COMPONENT16 => (Depth, [0, 0, 0, 0, 0, 0, 16]),
         GL_DEPTH_COMPONENT32 => (Depth, [0, 0, 0, 0, 0, 0, 32]),
+        // EXT_packed_depth_stencil: sampled as depth (the stencil is not kept).
+        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => (Depth, [0, 0, 0, 0, 0, 0, 24]),
         _ => return None,
     };
     Some(InternalFormat { base, bits })
@@ -82,178 +92,165 @@ impl InternalFormat {
         self.bits.map(|b| if b == 0 { 0 } else if wide || self.base == Base::Depth { b.max(8) } else { 8 })
     }
 
-    fn quantize_8(&self) -> bool {
+    /// Which of R, G, B an RGB-based format keeps (RED and RG keep fewer:
+    /// the others read as 0).
+    pub fn rgb_mask(&self) -> [bool; 3] {
+        if matches!(self.base, Base::Rgb | Base::Rgba) {
+            [self.bits[0] > 0, self.bits[1] > 0, self.bits[2] > 0]
+        } else {
+            [true; 3]
+        }
+    }
+
+    /// Stored as 8-bit RGBA ([`Texels::Rgba8`]): every component of at
+    /// most 8 bits, and not depth.
+    pub fn compact(&self) -> bool {
         self.base != Base::Depth && self.bits.iter().all(|&b| b <= 8)
     }
 }
 
-/// Components of a client pixel format, as indices into RGBA (4 = L:
-/// copied into R, G and B; 5 = depth).
-pub fn format_components(format: u32) -> Option<&'static [usize]> {
-    Some(match format {
-        GL_RED => &[0],
-        GL_GREEN => &[1],
-        GL_BLUE => &[2],
-        GL_ALPHA => &[3],
-        GL_RGB => &[0, 1, 2],
-        GL_RGBA => &[0, 1, 2, 3],
-        GL_BGR => &[2, 1, 0],
-        GL_BGRA => &[2, 1, 0, 3],
-        GL_LUMINANCE => &[4],
-        GL_LUMINANCE_ALPHA => &[4, 3],
-        GL_DEPTH_COMPONENT => &[5],
-        _ => return None,
-    })
+/// Unpacked client pixels of a texture image command, before pixel
+/// transfer (display lists keep them in this form, section 5.4).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Pixels {
+    /// RGBA or BGRA UNSIGNED_BYTE groups, as R, G, B, A bytes: uploads of
+    /// 8-bit images into 8-bit formats copy them without conversion.
+    Rgba8(Arc<Vec<[u8; 4]>>),
+    /// Other colour formats, RGBA by table 2.9 and "Final expansion".
+    Color(Vec<[f32; 4]>),
+    /// COLOR_INDEX groups (converted by the I_TO_* maps).
+    Index(Vec<f64>),
+    /// DEPTH_COMPONENT groups, normalized.
+    Depth(Vec<f64>),
 }
 
-/// A packed type: bytes per pixel, bit widths from the most significant
-/// field down (non-REV) or from the least significant up (REV), and the
-/// component count it requires.
-fn packed(ty: u32) -> Option<(usize, &'static [u32], bool, usize)> {
-    Some(match ty {
-        GL_UNSIGNED_BYTE_3_3_2 => (1, &[3, 3, 2], false, 3),
-        GL_UNSIGNED_BYTE_2_3_3_REV => (1, &[3, 3, 2], true, 3),
-        GL_UNSIGNED_SHORT_5_6_5 => (2, &[5, 6, 5], false, 3),
-        GL_UNSIGNED_SHORT_5_6_5_REV => (2, &[5, 6, 5], true, 3),
-        GL_UNSIGNED_SHORT_4_4_4_4 => (2, &[4, 4, 4, 4], false, 4),
-        GL_UNSIGNED_SHORT_4_4_4_4_REV => (2, &[4, 4, 4, 4], true, 4),
-        GL_UNSIGNED_SHORT_5_5_5_1 => (2, &[5, 5, 5, 1], false, 4),
-        GL_UNSIGNED_SHORT_1_5_5_5_REV => (2, &[5, 5, 5, 1], true, 4),
-        GL_UNSIGNED_INT_8_8_8_8 => (4, &[8, 8, 8, 8], false, 4),
-        GL_UNSIGNED_INT_8_8_8_8_REV => (4, &[8, 8, 8, 8], true, 4),
-        GL_UNSIGNED_INT_10_10_10_2 => (4, &[10, 10, 10, 2], false, 4),
-        GL_UNSIGNED_INT_2_10_10_10_REV => (4, &[10, 10, 10, 2], true, 4),
-        _ => return None,
-    })
-}
-
-fn elem_size(ty: u32) -> Option<usize> {
-    Some(match ty {
-        GL_UNSIGNED_BYTE | GL_BYTE => 1,
-        GL_UNSIGNED_SHORT | GL_SHORT => 2,
-        GL_UNSIGNED_INT | GL_INT | GL_FLOAT => 4,
-        _ => return None,
-    })
-}
-
-/// Checks a format/type pair for an image call: INVALID_ENUM for unknown
-/// enums, INVALID_OPERATION for a packed type the format does not fit.
-pub fn check_format_type(format: u32, ty: u32) -> Result<(), u32> {
-    let Some(comps) = format_components(format) else { return Err(crate::gl::enums::GL_INVALID_ENUM) };
-    if elem_size(ty).is_some() {
-        return Ok(());
+impl Pixels {
+    pub fn len(&self) -> usize {
+        match self {
+            Pixels::Rgba8(v) => v.len(),
+            Pixels::Color(v) => v.len(),
+            Pixels::Index(v) | Pixels::Depth(v) => v.len(),
+        }
     }
-    match packed(ty) {
-        None => Err(crate::gl::enums::GL_INVALID_ENUM),
-        Some((_, _, _, n)) if n == comps.len() && matches!(format, GL_RGB | GL_BGR | GL_RGBA | GL_BGRA) => Ok(()),
-        Some(_) => Err(crate::gl::enums::GL_INVALID_OPERATION),
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
     }
 }
 
-/// Unpacked client pixels: RGBA floats per pixel (depth in [0]).
-pub type Pixels = Vec<[f32; 4]>;
-
-#[inline]
-fn read_elem(p: &[u8], ty: u32, swap: bool) -> f32 {
-    let mut b = [0u8; 4];
-    let n = elem_size(ty).unwrap_or(1);
-    b[..n].copy_from_slice(&p[..n]);
-    if swap {
-        b[..n].reverse();
-    }
-    match ty {
-        GL_UNSIGNED_BYTE => b[0] as f32 / 255.0,
-        GL_BYTE => ((2.0 * (b[0] as i8) as f64 + 1.0) / 255.0) as f32,
-        GL_UNSIGNED_SHORT => u16::from_ne_bytes([b[0], b[1]]) as f32 / 65535.0,
-        GL_SHORT => ((2.0 * i16::from_ne_bytes([b[0], b[1]]) as f64 + 1.0) / 65535.0) as f32,
-        GL_UNSIGNED_INT => (u32::from_ne_bytes(b) as f64 / 4294967295.0) as f32,
-        GL_INT => ((2.0 * i32::from_ne_bytes(b) as f64 + 1.0) / 4294967295.0) as f32,
-        _ => f32::from_ne_bytes(b),
+/// Checks a format/type pair for a texture image call (the pixel
+/// commands' rules, `pixel_data::check_format_type`); STENCIL_INDEX is
+/// not a texture format (INVALID_ENUM; the caller reports the depth
+/// mismatch first).
+pub fn check_format_type(format: u32, ty: u32) -> Result<Kind, u32> {
+    match pixel_data::check_format_type(format, ty)? {
+        Kind::Stencil => Err(crate::gl::enums::GL_INVALID_ENUM),
+        k => Ok(k),
     }
 }
 
-/// Unpacks a w x h x d image of `format`/`ty` from client memory at `ptr`
-/// through the unpack modes (section 3.6.4; 3D images use IMAGE_HEIGHT and
-/// SKIP_IMAGES, section 3.8.1). The caller has checked format and type.
+/// Unpacks a w x h x d image of `format`/`ty` from client memory through
+/// the unpack modes (section 3.6.4, by `pixel_data`; 3D images use
+/// IMAGE_HEIGHT and SKIP_IMAGES, section 3.8.1). RGBA and BGRA bytes are
+/// copied a row at a time. The caller has checked format and type.
 ///
 /// # Safety
 /// `ptr` must point to the whole image as the modes lay it out.
 pub unsafe fn unpack(modes: &PixelModes, w: usize, h: usize, d: usize, format: u32, ty: u32, ptr: *const u8) -> Pixels {
-    let comps = format_components(format).unwrap_or(&[0]);
-    let (n_elems, esize, pk) = match packed(ty) {
-        Some(p) => (1, p.0, Some(p)),
-        None => (comps.len(), elem_size(ty).unwrap_or(1), None),
-    };
-    // Addressing by the shared pixel-store layout (3.6.4).
-    let layout = crate::gl::pixel_data::Layout::new(modes, w, h, format, ty);
-    let (start, image_stride) = (layout.start, layout.image_stride);
-    debug_assert_eq!(layout.group, n_elems * esize);
-    let mut out = Vec::with_capacity(w * h * d);
-    for k in 0..d {
-        for j in 0..h {
-            let row = ptr.add(start + k * image_stride + j * layout.row_stride);
-            let bytes = std::slice::from_raw_parts(row, w * layout.group);
-            for i in 0..w {
-                let px = &bytes[i * layout.group..(i + 1) * layout.group];
-                let mut v = [0.0f32; 6];
-                if let Some((size, widths, rev, _)) = pk {
-                    let mut b = [0u8; 4];
-                    b[..size].copy_from_slice(px);
-                    if modes.swap_bytes {
-                        b[..size].reverse();
-                    }
-                    let word = match size {
-                        1 => b[0] as u32,
-                        2 => u16::from_ne_bytes([b[0], b[1]]) as u32,
-                        _ => u32::from_ne_bytes(b),
-                    };
-                    let total: u32 = widths.iter().sum();
-                    let mut shift = if rev { 0 } else { total };
-                    for (c, &bits) in widths.iter().enumerate() {
-                        let sh = if rev {
-                            let s = shift;
-                            shift += bits;
-                            s
-                        } else {
-                            shift -= bits;
-                            shift
-                        };
-                        let field = (word >> sh) & ((1 << bits) - 1);
-                        v[comps[c]] = field as f32 / ((1u32 << bits) - 1) as f32;
-                    }
+    let src = Source::new(modes, w, h, d, format, ty, ptr);
+    if ty == GL_UNSIGNED_BYTE && matches!(format, GL_RGBA | GL_BGRA) {
+        let mut out = Vec::with_capacity(w * h * d);
+        let bgra = format == GL_BGRA;
+        for k in 0..d {
+            for j in 0..h {
+                let o = src.layout.offset(0, j, k);
+                let row = &src.data[o..o + 4 * w];
+                if bgra {
+                    out.extend(row.chunks_exact(4).map(|p| [p[2], p[1], p[0], p[3]]));
                 } else {
-                    for (c, &slot) in comps.iter().enumerate() {
-                        v[slot] = read_elem(&px[c * esize..], ty, modes.swap_bytes && esize > 1);
-                    }
+                    out.extend(row.chunks_exact(4).map(|p| [p[0], p[1], p[2], p[3]]));
                 }
-                let mut rgba = [v[0], v[1], v[2], 1.0];
-                if comps.contains(&3) {
-                    rgba[3] = v[3];
-                }
-                if comps.contains(&4) {
-                    rgba[0] = v[4];
-                    rgba[1] = v[4];
-                    rgba[2] = v[4];
-                }
-                if comps.contains(&5) {
-                    rgba = [v[5], 0.0, 0.0, 1.0];
-                }
-                out.push(rgba);
             }
         }
+        return Pixels::Rgba8(Arc::new(out));
     }
-    out
+    match pixel_data::format_info(format).map(|f| f.0) {
+        Some(Kind::Depth) => Pixels::Depth(src.values(w, h, d, true)),
+        // The stencil half of DEPTH_STENCIL data is not kept by textures.
+        Some(Kind::DepthStencil) => Pixels::Depth(src.depth_stencil(w, h, d).into_iter().map(|(z, _)| z).collect()),
+        Some(Kind::ColorIndex) => Pixels::Index(src.values(w, h, d, false)),
+        _ => Pixels::Color(src.colors(w, h, d)),
+    }
 }
 
-/// Converts unpacked RGBA to stored texels of `ifmt` (table 3.15 picks
-/// the components; table 3.23 expands them; colours clamp to [0, 1]).
-pub fn to_texel(ifmt: &InternalFormat, p: [f32; 4]) -> [f32; 4] {
-    let c = p.map(|v| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) });
-    let q = |v: f32| if ifmt.quantize_8() { (v * 255.0).round() / 255.0 } else { v };
-    match ifmt.base {
-        // Depth keeps its full precision.
-        Base::Depth => ifmt.base.expand(c),
-        base => base.expand(c.map(q)),
+/// Converts unpacked groups to stored texels of `f` (section 3.8.1): pixel
+/// transfer as for glDrawPixels (scale, bias and MAP_COLOR for RGBA, the
+/// I_TO_* maps for indices, depth scale and bias), the final clamp, then
+/// table 3.15's choice of components and table 3.23's expansion. 8-bit
+/// groups into an 8-bit format with no transfer are stored as they are.
+pub fn texels(f: &InternalFormat, p: &Pixels, t: &PixelTransfer) -> Texels {
+    let compact = f.compact();
+    if let (Pixels::Rgba8(v), true, true) = (p, compact, t.color_is_identity()) {
+        // Table 3.23 on bytes: no conversion at all for RGBA (the texture
+        // shares the command's buffer).
+        let out: Vec<[u8; 4]> = match f.base {
+            Base::Rgba => return Texels::Rgba8(v.clone()),
+            Base::Rgb => {
+                let m = f.rgb_mask().map(|keep| if keep { 0xFF } else { 0 });
+                v.iter().map(|&[r, g, b, _]| [r & m[0], g & m[1], b & m[2], 255]).collect()
+            }
+            Base::Alpha => v.iter().map(|&[_, _, _, a]| [0, 0, 0, a]).collect(),
+            Base::Luminance => v.iter().map(|&[r, _, _, _]| [r, r, r, 255]).collect(),
+            Base::LuminanceAlpha => v.iter().map(|&[r, _, _, a]| [r, r, r, a]).collect(),
+            Base::Intensity => v.iter().map(|&[r, _, _, _]| [r, r, r, r]).collect(),
+            Base::Depth => vec![[0, 0, 0, 255]; v.len()],
+        };
+        return Texels::Rgba8(Arc::new(out));
+    }
+    let rgba: Vec<[f32; 4]> = match p {
+        Pixels::Rgba8(v) => {
+            let mut c: Vec<[f32; 4]> = v.iter().map(|p| p.map(|x| UNORM8[x as usize])).collect();
+            t.color(&mut c);
+            c
+        }
+        Pixels::Color(v) => {
+            let mut c = v.clone();
+            t.color(&mut c);
+            c
+        }
+        Pixels::Index(v) => v.iter().map(|&i| t.index_to_rgba(i)).collect(),
+        Pixels::Depth(v) => v.iter().map(|&z| [t.depth(z) as f32, 0.0, 0.0, 1.0]).collect(),
+    };
+    store(f, rgba)
+}
+
+/// Stores RGBA values (depth in R) as texels of `f`: clamped, expanded by
+/// the base format, rounded to 8 bits for compact formats.
+pub fn store(f: &InternalFormat, rgba: Vec<[f32; 4]>) -> Texels {
+    let base = f.base;
+    let m = f.rgb_mask();
+    let expanded: Vec<[f32; 4]> = rgba
+        .into_iter()
+        .map(|p| {
+            let mut c = p.map(|v| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) });
+            for k in 0..3 {
+                if !m[k] {
+                    c[k] = 0.0;
+                }
+            }
+            base.expand(c)
+        })
+        .collect();
+    Texels::from_float(expanded, f.compact())
+}
+
+/// The texels of an image of `f` that has no client data: zero.
+pub fn zero_texels(f: &InternalFormat, n: usize) -> Texels {
+    let t = f.base.expand([0.0; 4]);
+    if f.compact() {
+        Texels::Rgba8(Arc::new(vec![t.map(to_unorm8); n]))
+    } else {
+        Texels::Float(vec![t; n])
     }
 }
 
@@ -270,90 +267,53 @@ pub fn texel_to_rgba(base: Base, t: [f32; 4]) -> [f32; 4] {
     }
 }
 
-fn put_elem(out: &mut [u8], ty: u32, v: f32, swap: bool) {
-    let v = v as f64;
-    let signed = matches!(ty, GL_BYTE | GL_SHORT | GL_INT);
-    let c = if ty == GL_FLOAT { v } else { v.clamp(if signed { -1.0 } else { 0.0 }, 1.0) };
-    let n = elem_size(ty).unwrap_or(1);
-    let b: [u8; 4] = match ty {
-        GL_UNSIGNED_BYTE => [(c * 255.0).round() as u8, 0, 0, 0],
-        GL_BYTE => [((c * 255.0 - 1.0) / 2.0).round() as i8 as u8, 0, 0, 0],
-        GL_UNSIGNED_SHORT => {
-            let x = ((c * 65535.0).round() as u16).to_ne_bytes();
-            [x[0], x[1], 0, 0]
-        }
-        GL_SHORT => {
-            let x = (((c * 65535.0 - 1.0) / 2.0).round() as i16).to_ne_bytes();
-            [x[0], x[1], 0, 0]
-        }
-        GL_UNSIGNED_INT => ((c * 4294967295.0).round() as u32).to_ne_bytes(),
-        GL_INT => (((c * 4294967295.0 - 1.0) / 2.0).round() as i32).to_ne_bytes(),
-        _ => (c as f32).to_ne_bytes(),
-    };
-    out[..n].copy_from_slice(&b[..n]);
-    if swap {
-        out[..n].reverse();
-    }
-}
-
-/// Packs RGBA pixels (depth in [0] for DEPTH_COMPONENT) into client memory
-/// as `format`/`ty` through the pack modes. LUMINANCE packs R.
+/// glGetTexImage's packing (section 6.1.4): the image's texels as RGBA
+/// (table 6.1), through pixel transfer and final conversion as for
+/// glReadPixels, packed by `pixel_data`; LUMINANCE packs R.
 ///
 /// # Safety
-/// `ptr` must have room for the image as the modes lay it out.
+/// `ptr` must have room for the image as the pack modes lay it out.
 #[allow(clippy::too_many_arguments)]
-pub unsafe fn pack(modes: &PixelModes, w: usize, h: usize, d: usize, format: u32, ty: u32, pixels: &[[f32; 4]], ptr: *mut u8) {
-    let comps = format_components(format).unwrap_or(&[0]);
-    let (n_elems, esize, pk) = match packed(ty) {
-        Some(p) => (1, p.0, Some(p)),
-        None => (comps.len(), elem_size(ty).unwrap_or(1), None),
-    };
-    // Addressing by the shared pixel-store layout (3.6.4).
-    let layout = crate::gl::pixel_data::Layout::new(modes, w, h, format, ty);
-    let (start, image_stride) = (layout.start, layout.image_stride);
-    debug_assert_eq!(layout.group, n_elems * esize);
+pub unsafe fn pack(modes: &PixelModes, img: &Image, format: u32, ty: u32, t: &PixelTransfer, ptr: *mut u8) {
+    let (w, h, d) = (img.width as usize, img.height as usize, img.depth as usize);
+    let mut dest = Dest::with_depth(modes, w, h, d, format, ty, ptr);
+    // RGBA bytes of an 8-bit RGBA texture with no transfer: a copy per row.
+    if let (Texels::Rgba8(tex), Base::Rgba, GL_RGBA, GL_UNSIGNED_BYTE, true) = (&img.texels, img.base, format, ty, t.color_is_identity()) {
+        if !dest.data.is_empty() {
+            for k in 0..d {
+                for j in 0..h {
+                    let o = dest.layout.offset(0, j, k);
+                    let row = &tex[(k * h + j) * w..][..w];
+                    for (out, p) in dest.data[o..o + 4 * w].chunks_exact_mut(4).zip(row) {
+                        out.copy_from_slice(p);
+                    }
+                }
+            }
+        }
+        return;
+    }
+    let depth = format == GL_DEPTH_COMPONENT;
+    let depth_stencil = format == GL_DEPTH_STENCIL;
+    let lum = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);
     for k in 0..d {
         for j in 0..h {
-            let row = ptr.add(start + k * image_stride + j * layout.row_stride);
-            let bytes = std::slice::from_raw_parts_mut(row, w * layout.group);
             for i in 0..w {
-                let p = pixels[(k * h + j) * w + i];
-                let px = &mut bytes[i * layout.group..(i + 1) * layout.group];
-                let value = |slot: usize| match slot {
-                    4 | 5 => p[0],
-                    s => p[s],
-                };
-                if let Some((size, widths, rev, _)) = pk {
-                    let total: u32 = widths.iter().sum();
-                    let mut word = 0u32;
-                    let mut shift = if rev { 0 } else { total };
-                    for (c, &bits) in widths.iter().enumerate() {
-                        let sh = if rev {
-                            let s = shift;
-                            shift += bits;
-                            s
-                        } else {
-                            shift -= bits;
-                            shift
-                        };
-                        let max = ((1u32 << bits) - 1) as f32;
-                        word |= ((value(comps[c]).clamp(0.0, 1.0) * max).round() as u32) << sh;
-                    }
-                    let mut b = word.to_ne_bytes();
-                    if size == 2 {
-                        let s = (word as u16).to_ne_bytes();
-                        b = [s[0], s[1], 0, 0];
-                    } else if size == 1 {
-                        b = [word as u8, 0, 0, 0];
-                    }
-                    if modes.swap_bytes {
-                        b[..size].reverse();
-                    }
-                    px.copy_from_slice(&b[..size]);
+                let tx = img.texels.get((k * h + j) * w + i);
+                if depth_stencil {
+                    // Depth textures are 1D, 2D or cube maps: k is 0.
+                    dest.put_depth_stencil(i, j, t.depth(tx[0] as f64), 0);
+                } else if depth {
+                    dest.put_normalized_at(i, j, k, t.depth(tx[0] as f64));
                 } else {
-                    for (c, &slot) in comps.iter().enumerate() {
-                        put_elem(&mut px[c * esize..], ty, value(slot), modes.swap_bytes && esize > 1);
+                    let mut c = [texel_to_rgba(img.base, tx)];
+                    t.color(&mut c);
+                    if lum {
+                        // glGetTexImage's luminance is R (not R + G + B as
+                        // for glReadPixels).
+                        c[0][1] = 0.0;
+                        c[0][2] = 0.0;
                     }
+                    dest.put_color_at(i, j, k, c[0]);
                 }
             }
         }
@@ -386,4 +346,62 @@ pub fn downsample(src: &[[f32; 4]], w: usize, h: usize, d: usize) -> (Vec<[f32; 
         }
     }
     (out, nw, nh, nd)
+}
+
+/// [`downsample`] on 8-bit texels: the exact mean of the covered texels,
+/// rounded to nearest (halves up).
+pub fn downsample_rgba8(src: &[[u8; 4]], w: usize, h: usize, d: usize) -> (Vec<[u8; 4]>, usize, usize, usize) {
+    let (nw, nh, nd) = ((w / 2).max(1), (h / 2).max(1), (d / 2).max(1));
+    let (sx, sy, sz) = (if w > 1 { 2 } else { 1 }, if h > 1 { 2 } else { 1 }, if d > 1 { 2 } else { 1 });
+    let n = (sx * sy * sz) as u32;
+    let mut out = Vec::with_capacity(nw * nh * nd);
+    for k in 0..nd {
+        for j in 0..nh {
+            for i in 0..nw {
+                let mut acc = [0u32; 4];
+                for dz in 0..sz {
+                    for dy in 0..sy {
+                        let row = ((k * sz + dz) * h + j * sy + dy) * w + i * sx;
+                        for t in &src[row..row + sx] {
+                            for c in 0..4 {
+                                acc[c] += t[c] as u32;
+                            }
+                        }
+                    }
+                }
+                out.push(acc.map(|v| ((v + n / 2) / n) as u8));
+            }
+        }
+    }
+    (out, nw, nh, nd)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The byte box filter is the f32 one rounded: compare on every 2x2
+    /// block of a pseudo-random image, and on odd and 1-wide sizes.
+    #[test]
+    fn byte_box_filter_matches_the_mean() {
+        let mut seed = 7u32;
+        for (w, h, d) in [(8, 8, 1), (5, 3, 1), (1, 6, 1), (4, 4, 4), (7, 1, 1)] {
+            let src: Vec<[u8; 4]> = (0..w * h * d)
+                .map(|_| {
+                    seed = seed.wrapping_mul(1103515245).wrapping_add(12345);
+                    (seed >> 3).to_ne_bytes()
+                })
+                .collect();
+            let f: Vec<[f32; 4]> = src.iter().map(|p| p.map(|c| c as f32)).collect();
+            let (bytes, bw, bh, bd) = downsample_rgba8(&src, w, h, d);
+            let (mean, fw, fh, fd) = downsample(&f, w, h, d);
+            assert_eq!((bw, bh, bd), (fw, fh, fd));
+            for (b, m) in bytes.iter().zip(&mean) {
+                for c in 0..4 {
+                    // Halves round up; the f32 mean of integers is exact here.
+                    assert_eq!(b[c] as f32, (m[c] + 0.5).floor(), "{w}x{h}x{d}");
+                }
+            }
+        }
+    }
 }

@@ -21,9 +21,10 @@ use self::enums::*;
 use self::image::{internal_format, InternalFormat};
 use super::context::Context;
 use super::enums::{GL_INVALID_ENUM, GL_INVALID_OPERATION, GL_INVALID_VALUE, GL_OUT_OF_MEMORY};
+use super::pixel_data;
 use super::get::Value;
 use crate::render::fragment::CompareFunc;
-use crate::render::texture::{Base, Env, Filter, Image, Params, Target, TextureStage, UnitSampler, Wrap, MAX_LOD_BIAS, MAX_UNITS};
+use crate::render::texture::{Base, Env, Filter, Image, Params, Target, Texels, TextureStage, UnitSampler, Wrap, MAX_LOD_BIAS, MAX_UNITS};
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
@@ -35,6 +36,9 @@ pub const MAX_3D_TEXTURE_SIZE: i32 = 256;
 pub const MAX_CUBE_MAP_TEXTURE_SIZE: i32 = 2048;
 /// Levels per face: log2(MAX_TEXTURE_SIZE) + 1.
 pub const MAX_LEVELS: usize = 12;
+/// The largest image softgl allocates (bytes of stored texels): larger
+/// requests are GL_OUT_OF_MEMORY at once (proxies: not supported).
+const MAX_IMAGE_BYTES: usize = 1 << 30;
 
 const TARGETS: [Target; 4] = [Target::T1D, Target::T2D, Target::T3D, Target::Cube];
 
@@ -304,9 +308,26 @@ pub struct CopyTexCmd {
     pub border: i32,
 }
 
-fn valid_size(n: i32, border: i32, max: i32) -> bool {
-    let m = n - 2 * border;
-    n >= 0 && m >= 0 && m <= max && (m == 0 || (m & (m - 1)) == 0)
+/// A width, height or depth the GL accepts at all (INVALID_VALUE
+/// otherwise): at least twice the border. Any size is allowed, not only
+/// powers of two (ARB_texture_non_power_of_two).
+fn valid_size(n: i32, border: i32) -> bool {
+    n >= 0 && n - 2 * border >= 0
+}
+
+/// Does an inner size fit level `level` of a target whose largest image is
+/// `max` (2^(k - level), section 3.8.1)?
+fn fits_level(n: i32, border: i32, max: i32, level: i32) -> bool {
+    n - 2 * border <= max >> level.clamp(0, 31)
+}
+
+/// The size limit of level `level` of an image target enum (for unpacking
+/// client images only when they can be valid).
+fn level_limit(target: u32, dims: u8, level: i32) -> i32 {
+    match image_target(target, dims) {
+        Some((t, _, _)) => (max_size(t) >> level.clamp(0, 31)) + 2,
+        None => 0,
+    }
 }
 
 impl Context {
@@ -459,7 +480,8 @@ impl Context {
     pub unsafe fn tex_image_command(&mut self, dims: u8, target: u32, level: i32, internal_format: i32, size: [i32; 3], border: i32, format: u32, ty: u32, pixels: *const u8) -> Option<super::Command> {
         let mut cmd = TexImageCmd { dims, target, level, internal_format, size, border, format, ty, pixels: None };
         let proxy = matches!(image_target(target, dims), Some((_, _, true)));
-        let sizes_ok = size.iter().all(|&s| (0..=MAX_TEXTURE_SIZE + 2).contains(&s));
+        let limit = level_limit(target, dims, level);
+        let sizes_ok = size[..dims as usize].iter().all(|&s| (0..=limit).contains(&s));
         if !proxy && !pixels.is_null() && sizes_ok && image::check_format_type(format, ty).is_ok() {
             let [w, h, d] = size.map(|s| s as usize);
             cmd.pixels = Some(Arc::new(image::unpack(&self.pixel_store.unpack, w, h, d, format, ty, pixels)));
@@ -482,7 +504,8 @@ impl Context {
     #[allow(clippy::too_many_arguments)]
     pub unsafe fn tex_sub_image_command(&mut self, dims: u8, target: u32, level: i32, offset: [i32; 3], size: [i32; 3], format: u32, ty: u32, pixels: *const u8) -> super::Command {
         let mut cmd = TexSubImageCmd { dims, target, level, offset, size, format, ty, pixels: None };
-        let sizes_ok = size.iter().all(|&s| (0..=MAX_TEXTURE_SIZE + 2).contains(&s));
+        let limit = level_limit(target, dims, 0);
+        let sizes_ok = size[..dims as usize].iter().all(|&s| (0..=limit).contains(&s));
         if !pixels.is_null() && sizes_ok && image::check_format_type(format, ty).is_ok() {
             let [w, h, d] = size.map(|s| s as usize);
             cmd.pixels = Some(Arc::new(image::unpack(&self.pixel_store.unpack, w, h, d, format, ty, pixels)));
@@ -491,8 +514,11 @@ impl Context {
     }
 
     /// Checks an image call's common arguments; the target, face, proxy
-    /// flag and internal format on success (the error is set otherwise).
-    fn check_image_args(&mut self, dims: u8, target: u32, level: i32, ifmt: u32, size: [i32; 3], border: i32) -> Option<(Target, usize, bool, InternalFormat)> {
+    /// flag, internal format and whether the image fits the level's size
+    /// limit on success (the error is set otherwise). An image that does
+    /// not fit is INVALID_VALUE, except for a proxy, which it zeroes.
+    #[allow(clippy::type_complexity)]
+    fn check_image_args(&mut self, dims: u8, target: u32, level: i32, ifmt: u32, size: [i32; 3], border: i32) -> Option<(Target, usize, bool, InternalFormat, bool)> {
         let Some((t, face, proxy)) = image_target(target, dims) else {
             self.set_error(GL_INVALID_ENUM);
             return None;
@@ -511,7 +537,7 @@ impl Context {
             return None;
         }
         for &s in &size[..dims as usize] {
-            if !valid_size(s, border, max) {
+            if !valid_size(s, border) {
                 self.set_error(GL_INVALID_VALUE);
                 return None;
             }
@@ -524,7 +550,15 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return None;
         }
-        Some((t, face, proxy, f))
+        let texels: usize = size[..dims as usize].iter().map(|&s| s as usize).product();
+        let bytes = texels.saturating_mul(if f.compact() { 4 } else { 16 });
+        let fits = size[..dims as usize].iter().all(|&s| fits_level(s, border, max, level)) && bytes <= MAX_IMAGE_BYTES;
+        if !fits && !proxy {
+            let too_big = size[..dims as usize].iter().any(|&s| !fits_level(s, border, max, level));
+            self.set_error(if too_big { GL_INVALID_VALUE } else { GL_OUT_OF_MEMORY });
+            return None;
+        }
+        Some((t, face, proxy, f, fits))
     }
 
     /// glTexImage1D/2D/3D (section 3.8.1).
@@ -534,34 +568,32 @@ impl Context {
         for s in size.iter_mut().skip(dims) {
             *s = 1;
         }
-        let Some((t, face, proxy, f)) = self.check_image_args(cmd.dims, cmd.target, cmd.level, cmd.internal_format as u32, size, cmd.border) else {
+        let Some((t, face, proxy, f, fits)) = self.check_image_args(cmd.dims, cmd.target, cmd.level, cmd.internal_format as u32, size, cmd.border) else {
             return;
         };
+        // Depth data for a colour format or the reverse: INVALID_OPERATION,
+        // before STENCIL_INDEX's INVALID_ENUM (it is not depth data either).
+        let depth_data = matches!(cmd.format, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL);
+        if depth_data != (f.base == Base::Depth) && pixel_data::format_info(cmd.format).is_some() {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
         if let Err(e) = image::check_format_type(cmd.format, cmd.ty) {
             return self.set_error(e);
         }
-        if (cmd.format == GL_DEPTH_COMPONENT) != (f.base == Base::Depth) {
-            return self.set_error(GL_INVALID_OPERATION);
-        }
         let (w, h, d) = (size[0], if dims >= 2 { size[1] } else { 1 }, if dims >= 3 { size[2] } else { 1 });
-        let img = Image { width: w, height: h, depth: d, border: cmd.border, internal_format: cmd.internal_format as u32, base: f.base, texels: Vec::new() };
+        let img = Image { width: w, height: h, depth: d, border: cmd.border, internal_format: cmd.internal_format as u32, base: f.base, texels: Texels::default() };
         let slot = face * MAX_LEVELS + cmd.level as usize;
         if proxy {
-            // The proxy's level state: every supported size is accepted.
-            self.texture.proxies[target_index(t)].images[slot] = Some(Arc::new(img));
+            // The proxy's level state: an image softgl cannot hold zeroes it.
+            self.texture.proxies[target_index(t)].images[slot] = if fits { Some(Arc::new(img)) } else { None };
             return;
         }
         let n = w as usize * h as usize * d as usize;
         let mut img = img;
-        let mut texels = Vec::new();
-        if texels.try_reserve_exact(n).is_err() {
-            return self.set_error(GL_OUT_OF_MEMORY);
-        }
-        match &cmd.pixels {
-            Some(p) if p.len() == n => texels.extend(p.iter().map(|&px| image::to_texel(&f, px))),
-            _ => texels.resize(n, image::to_texel(&f, [0.0, 0.0, 0.0, 0.0])),
-        }
-        img.texels = texels;
+        img.texels = match &cmd.pixels {
+            Some(p) if p.len() == n => image::texels(&f, p, &self.pixel),
+            _ => image::zero_texels(&f, n),
+        };
         self.drop_derived_textures();
         let u = self.texture.active;
         let obj = self.texture.object_mut(u, t);
@@ -578,15 +610,16 @@ impl Context {
         if cmd.level < 0 || cmd.level > log2_floor(max_size(t)) {
             return self.set_error(GL_INVALID_VALUE);
         }
-        if let Err(e) = image::check_format_type(cmd.format, cmd.ty) {
-            return self.set_error(e);
-        }
         let u = self.texture.active;
         let Some(img) = self.texture.object(u, t).image(face, cmd.level as usize).cloned() else {
             return self.set_error(GL_INVALID_OPERATION);
         };
-        if (cmd.format == GL_DEPTH_COMPONENT) != (img.base == Base::Depth) {
+        let depth_data = matches!(cmd.format, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL);
+        if depth_data != (img.base == Base::Depth) && pixel_data::format_info(cmd.format).is_some() {
             return self.set_error(GL_INVALID_OPERATION);
+        }
+        if let Err(e) = image::check_format_type(cmd.format, cmd.ty) {
+            return self.set_error(e);
         }
         let full = [img.width, img.height, img.depth];
         let b = img.border;
@@ -605,18 +638,11 @@ impl Context {
         self.drop_derived_textures();
         let obj = self.texture.object_mut(u, t);
         if let Some(Some(dst)) = obj.images.get_mut(face * MAX_LEVELS + cmd.level as usize) {
-            let dst = Arc::make_mut(dst);
             if let Some(p) = cmd.pixels.as_ref().filter(|p| p.len() == n) {
+                let src = image::texels(&f, p, &self.pixel);
+                let dst = Arc::make_mut(dst);
                 let (w, h) = (dst.width as usize, dst.height as usize);
-                for k in 0..size[2] as usize {
-                    for j in 0..size[1] as usize {
-                        for i in 0..size[0] as usize {
-                            let src = p[(k * size[1] as usize + j) * size[0] as usize + i];
-                            let di = ((offset[2] as usize + k) * h + offset[1] as usize + j) * w + offset[0] as usize + i;
-                            dst.texels[di] = image::to_texel(&f, src);
-                        }
-                    }
-                }
+                dst.texels.write_block(w, h, offset.map(|o| o as usize), size.map(|s| s as usize), &src);
             }
         }
         if obj.generate_mipmap && cmd.level == obj.params.base_level {
@@ -632,12 +658,12 @@ impl Context {
         let dims = cmd.dims;
         if !cmd.sub {
             let size = [w, if dims >= 2 { h } else { 1 }, 1];
+            let Some((_, _, false)) = image_target(cmd.target, dims) else { return self.set_error(GL_INVALID_ENUM) };
+            // "internalformat may not be specified as 1, 2, 3, or 4" (GL 1.1).
             if matches!(cmd.internal_format, 1..=4) {
-                return self.set_error(GL_INVALID_VALUE);
+                return self.set_error(GL_INVALID_ENUM);
             }
-            let Some((t, _, false)) = image_target(cmd.target, dims) else { return self.set_error(GL_INVALID_ENUM) };
-            let _ = t;
-            let Some((_, _, _, f)) = self.check_image_args(dims, cmd.target, cmd.level, cmd.internal_format, size, cmd.border) else {
+            let Some((_, _, _, f, _)) = self.check_image_args(dims, cmd.target, cmd.level, cmd.internal_format, size, cmd.border) else {
                 return;
             };
             if f.base == Base::Depth && !self.fb.has_depth() {
@@ -652,7 +678,7 @@ impl Context {
                 size,
                 border: cmd.border,
                 format: if f.base == Base::Depth { GL_DEPTH_COMPONENT } else { GL_RGBA },
-                ty: GL_FLOAT,
+                ty: if f.base == Base::Depth { GL_FLOAT } else { GL_UNSIGNED_BYTE },
                 pixels: Some(Arc::new(pixels)),
             };
             self.tex_image(&img);
@@ -678,7 +704,7 @@ impl Context {
                 offset: cmd.offset,
                 size: [w, hh, 1],
                 format: if depth { GL_DEPTH_COMPONENT } else { GL_RGBA },
-                ty: GL_FLOAT,
+                ty: if depth { GL_FLOAT } else { GL_UNSIGNED_BYTE },
                 pixels: Some(Arc::new(pixels)),
             };
             // A 3D copy writes one slice: a 2D-shaped region at zoffset.
@@ -686,25 +712,33 @@ impl Context {
         }
     }
 
+    /// The framebuffer's colour bytes or depth values of a rectangle (pixel
+    /// transfer comes after, in `tex_image`); pixels outside the window
+    /// read as zero.
     fn read_framebuffer(&self, x: i32, y: i32, w: i32, h: i32, depth: bool) -> image::Pixels {
         let fb = &self.fb;
-        let mut out = Vec::with_capacity((w.max(0) * h.max(0)) as usize);
-        for j in 0..h {
-            for i in 0..w {
-                let (fx, fy) = (x as i64 + i as i64, y as i64 + j as i64);
-                if fx < 0 || fy < 0 || fx >= fb.width as i64 || fy >= fb.height as i64 {
-                    out.push([0.0, 0.0, 0.0, if depth { 1.0 } else { 0.0 }]);
-                    continue;
-                }
-                let idx = fb.index(fx as usize, fy as usize);
-                if depth {
-                    out.push([(fb.depth[idx] as f64 / crate::framebuffer::DEPTH_MAX as f64) as f32, 0.0, 0.0, 1.0]);
-                } else {
-                    out.push(fb.color[idx].map(|c| c as f32 / 255.0));
+        let n = w.max(0) as usize * h.max(0) as usize;
+        let at = |i: i32, j: i32| {
+            let (fx, fy) = (x as i64 + i as i64, y as i64 + j as i64);
+            (fx >= 0 && fy >= 0 && fx < fb.width as i64 && fy < fb.height as i64).then(|| fb.index(fx as usize, fy as usize))
+        };
+        if depth {
+            let mut out = Vec::with_capacity(n);
+            for j in 0..h {
+                for i in 0..w {
+                    out.push(at(i, j).map_or(0.0, |k| fb.depth[k] as f64 / crate::framebuffer::DEPTH_MAX as f64));
                 }
             }
+            image::Pixels::Depth(out)
+        } else {
+            let mut out = Vec::with_capacity(n);
+            for j in 0..h {
+                for i in 0..w {
+                    out.push(at(i, j).map_or([0; 4], |k| fb.color[k]));
+                }
+            }
+            image::Pixels::Rgba8(Arc::new(out))
         }
-        out
     }
 
     /// glTexParameter (section 3.8.4). Values arrive as floats (enums are
@@ -914,6 +948,7 @@ impl Context {
             GL_TEXTURE_LUMINANCE_SIZE => v(bits[4] as i64),
             GL_TEXTURE_INTENSITY_SIZE => v(bits[5] as i64),
             GL_TEXTURE_DEPTH_SIZE => v(bits[6] as i64),
+            GL_TEXTURE_STENCIL_SIZE => v(img.map_or(0, |i| if matches!(i.internal_format, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8) { 8 } else { 0 })),
             GL_TEXTURE_COMPRESSED => Some(Value::Bools(vec![false])),
             GL_TEXTURE_COMPRESSED_IMAGE_SIZE => {
                 self.set_error(GL_INVALID_OPERATION);
@@ -936,18 +971,19 @@ impl Context {
         if level < 0 || level > log2_floor(max_size(t)) {
             return self.set_error(GL_INVALID_VALUE);
         }
-        if let Err(e) = image::check_format_type(format, ty) {
-            return self.set_error(e);
+        match image::check_format_type(format, ty) {
+            Err(e) => return self.set_error(e),
+            Ok(pixel_data::Kind::ColorIndex) => return self.set_error(GL_INVALID_ENUM),
+            Ok(_) => {}
         }
         let Some(img) = self.texture.object(self.texture.active, t).image(face, level as usize) else { return };
-        if (format == GL_DEPTH_COMPONENT) != (img.base == Base::Depth) {
+        if matches!(format, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL) != (img.base == Base::Depth) {
             return self.set_error(GL_INVALID_OPERATION);
         }
         if out.is_null() || img.texels.is_empty() {
             return;
         }
-        let px: Vec<[f32; 4]> = img.texels.iter().map(|&tx| image::texel_to_rgba(img.base, tx)).collect();
-        image::pack(&self.pixel_store.pack, img.width as usize, img.height as usize, img.depth as usize, format, ty, &px, out);
+        image::pack(&self.pixel_store.pack, img, format, ty, &self.pixel, out);
     }
 
     /// glTexEnv (section 3.8.13); the integer form's colour is normalized.
@@ -1080,7 +1116,7 @@ impl Context {
                 let obj = ts.object(u, t);
                 if let Some(faces) = obj.complete(t) {
                     let base = faces[0][0].base;
-                    stage.units[u] = Some(UnitSampler { target: t, faces, params: obj.params.clone(), unit_bias: ts.units[u].lod_bias, base });
+                    stage.units[u] = Some(UnitSampler::new(t, faces, obj.params.clone(), ts.units[u].lod_bias, base));
                     stage.active.push(u);
                 }
             }
@@ -1100,26 +1136,40 @@ fn generate_mipmaps(obj: &mut TexObject, t: Target, face: usize, f: &InternalFor
     let dims = dims_of(t) as usize;
     let n = b.inner(dims);
     let bw = b.border;
-    // Strip the border.
-    let mut cur: Vec<[f32; 4]> = Vec::with_capacity((n[0] * n[1] * n[2]) as usize);
-    for k in 0..n[2] {
-        for j in 0..n[1] {
-            for i in 0..n[0] {
-                cur.push(b.texel_at(dims, i, j, k));
-            }
-        }
-    }
     let (mut w, mut h, mut d) = (n[0] as usize, n[1] as usize, n[2] as usize);
     let q = (base as i32 + log2_floor(n[..dims].iter().copied().max().unwrap_or(1))).min(obj.params.max_level).min(MAX_LEVELS as i32 - 1);
+    if let (0, Texels::Rgba8(src)) = (bw, &b.texels) {
+        // 8-bit storage without border: the box filter on bytes, each level
+        // from the previous stored one (exact mean, rounded).
+        let mut cur = src.clone();
+        for level in base + 1..=q.max(base as i32) as usize {
+            let (next, nw, nh, nd) = image::downsample_rgba8(&cur, w, h, d);
+            let next = Arc::new(next);
+            let img = Image { width: nw as i32, height: nh as i32, depth: nd as i32, border: 0, internal_format: b.internal_format, base: f.base, texels: Texels::Rgba8(next.clone()) };
+            obj.images[face * MAX_LEVELS + level] = Some(Arc::new(img));
+            cur = next;
+            (w, h, d) = (nw, nh, nd);
+        }
+        return;
+    }
+    // Strip the border.
+    let mut cur: Vec<[f32; 4]> = if bw == 0 {
+        b.texels.to_float()
+    } else {
+        let mut v = Vec::with_capacity((n[0] * n[1] * n[2]) as usize);
+        for k in 0..n[2] {
+            for j in 0..n[1] {
+                for i in 0..n[0] {
+                    v.push(b.texel_at(dims, i, j, k));
+                }
+            }
+        }
+        v
+    };
     for level in base + 1..=q.max(base as i32) as usize {
         let (next, nw, nh, nd) = image::downsample(&cur, w, h, d);
-        let texels: Vec<[f32; 4]> = if f.base == Base::Depth {
-            next.clone()
-        } else {
-            next.iter().map(|&t| image::to_texel(f, t)).collect()
-        };
         // Derived levels have the base's border width, filled from the edge.
-        let img = Image::with_border(nw as i32, nh as i32, nd as i32, dims, bw, b.internal_format, f.base, &texels);
+        let img = Image::with_border(nw as i32, nh as i32, nd as i32, dims, bw, b.internal_format, f.base, &next, f.compact());
         obj.images[face * MAX_LEVELS + level] = Some(Arc::new(img));
         cur = next;
         (w, h, d) = (nw, nh, nd);

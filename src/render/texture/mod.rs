@@ -9,11 +9,23 @@
 //! copied) and the parameters; an incomplete texture leaves the unit
 //! disabled, as GL says.
 //!
-//! Texels are stored as f32 RGBA already expanded to the "texture source
-//! colour" of table 3.23 (a LUMINANCE texel is (L, L, L, 1), an ALPHA one
+//! Texels are stored already expanded to the "texture source colour" of
+//! table 3.23 (a LUMINANCE texel is (L, L, L, 1), an ALPHA one
 //! (0, 0, 0, A), ...), with the image's [`Base`] format kept beside them for
-//! the environment functions. Depth textures keep their depth in every
-//! colour channel.
+//! the environment functions: as 8-bit RGBA ([`Texels::Rgba8`]) for the
+//! internal formats of at most 8 bits per component, as f32 RGBA
+//! ([`Texels::Float`]) for wider ones and depth. Depth textures keep their
+//! depth in every colour channel.
+//!
+//! Fast paths ([`Fast`], chosen once when validation builds the sampler):
+//! a 2D texture stored as 8-bit RGBA, without border, whose minification
+//! and magnification filters are the same non-mipmap filter and whose S
+//! and T wrap modes are REPEAT or CLAMP_TO_EDGE is sampled by a nearest or
+//! bilinear fetch specialized for that case: no LOD (both filters give the
+//! same answer at every λ), no border colour, no depth comparison, no
+//! per-texel storage dispatch. They compute exactly what the general path
+//! computes (the unit tests compare them on random coordinates);
+//! `SOFTGL_REFERENCE=1` turns them off.
 //!
 //! Addressing (3.8.7): for nearest filtering i = floor(u) after the wrap
 //! mode's treatment of s; for linear filtering i0 = floor(u - 1/2),
@@ -77,6 +89,118 @@ impl Base {
     }
 }
 
+/// u8 to [0, 1]: c / 255 (table 2.9), exactly as f32 division gives it.
+pub static UNORM8: [f32; 256] = {
+    let mut t = [0.0f32; 256];
+    let mut i = 0;
+    while i < 256 {
+        t[i] = i as f32 / 255.0;
+        i += 1;
+    }
+    t
+};
+
+#[inline]
+fn unorm8(p: [u8; 4]) -> [f32; 4] {
+    [UNORM8[p[0] as usize], UNORM8[p[1] as usize], UNORM8[p[2] as usize], UNORM8[p[3] as usize]]
+}
+
+/// [0, 1] to the nearest u8 (values outside clamp).
+#[inline]
+pub fn to_unorm8(v: f32) -> u8 {
+    (v.clamp(0.0, 1.0) * 255.0).round() as u8
+}
+
+/// An image's stored texels (expanded by table 3.23), row-major, bottom
+/// row first, slices after each other.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Texels {
+    /// Internal formats of at most 8 bits per component (shared with the
+    /// command that uploaded them when no conversion was needed).
+    Rgba8(Arc<Vec<[u8; 4]>>),
+    /// Wider formats and depth.
+    Float(Vec<[f32; 4]>),
+}
+
+impl Default for Texels {
+    fn default() -> Self {
+        Texels::Float(Vec::new())
+    }
+}
+
+impl Texels {
+    /// Texels from f32 values already expanded by the base format, stored
+    /// compactly (rounded to 8 bits) when `compact`.
+    pub fn from_float(v: Vec<[f32; 4]>, compact: bool) -> Texels {
+        if compact {
+            Texels::Rgba8(Arc::new(v.iter().map(|t| t.map(to_unorm8)).collect()))
+        } else {
+            Texels::Float(v)
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        match self {
+            Texels::Rgba8(v) => v.len(),
+            Texels::Float(v) => v.len(),
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    pub fn is_compact(&self) -> bool {
+        matches!(self, Texels::Rgba8(_))
+    }
+
+    /// Texel `i` as f32.
+    #[inline]
+    pub fn get(&self, i: usize) -> [f32; 4] {
+        match self {
+            Texels::Rgba8(v) => unorm8(v[i]),
+            Texels::Float(v) => v[i],
+        }
+    }
+
+    /// Every texel as f32.
+    pub fn to_float(&self) -> Vec<[f32; 4]> {
+        match self {
+            Texels::Rgba8(v) => v.iter().map(|&p| unorm8(p)).collect(),
+            Texels::Float(v) => v.clone(),
+        }
+    }
+
+    /// Copies `src` (a w x h x d block) into this image of row length
+    /// `full_w` and `full_h` rows per slice at `offset`, row by row. Both
+    /// must have the same storage (the same internal format); a mismatch
+    /// converts per texel.
+    pub fn write_block(&mut self, full_w: usize, full_h: usize, offset: [usize; 3], size: [usize; 3], src: &Texels) {
+        let [w, h, d] = size;
+        for k in 0..d {
+            for j in 0..h {
+                let s0 = (k * h + j) * w;
+                let d0 = ((offset[2] + k) * full_h + offset[1] + j) * full_w + offset[0];
+                match (&mut *self, src) {
+                    (Texels::Rgba8(dst), Texels::Rgba8(s)) => Arc::make_mut(dst)[d0..d0 + w].copy_from_slice(&s[s0..s0 + w]),
+                    (Texels::Float(dst), Texels::Float(s)) => dst[d0..d0 + w].copy_from_slice(&s[s0..s0 + w]),
+                    (Texels::Rgba8(dst), s) => {
+                        let dst = Arc::make_mut(dst);
+                        for i in 0..w {
+                            dst[d0 + i] = s.get(s0 + i).map(to_unorm8);
+                        }
+                    }
+                    (Texels::Float(dst), s) => {
+                        for i in 0..w {
+                            dst[d0 + i] = s.get(s0 + i);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
 /// One image (one level of one face), border included.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Image {
@@ -89,7 +213,7 @@ pub struct Image {
     pub base: Base,
     /// Row-major, bottom row first, slices after each other; empty for a
     /// proxy image.
-    pub texels: Vec<[f32; 4]>,
+    pub texels: Texels,
 }
 
 impl Image {
@@ -101,9 +225,10 @@ impl Image {
     }
 
     /// An image of inner size w x h x d with a border of width `border`
-    /// around `inner` texels (the border repeats the edge texels).
+    /// around `inner` texels (the border repeats the edge texels), stored
+    /// compactly when `compact`.
     #[allow(clippy::too_many_arguments)]
-    pub fn with_border(w: i32, h: i32, d: i32, dims: usize, border: i32, internal_format: u32, base: Base, inner: &[[f32; 4]]) -> Image {
+    pub fn with_border(w: i32, h: i32, d: i32, dims: usize, border: i32, internal_format: u32, base: Base, inner: &[[f32; 4]], compact: bool) -> Image {
         let b = border;
         let (fw, fh, fd) = (w + 2 * b, if dims >= 2 { h + 2 * b } else { 1 }, if dims >= 3 { d + 2 * b } else { 1 });
         let mut texels = Vec::with_capacity((fw * fh * fd) as usize);
@@ -117,7 +242,7 @@ impl Image {
                 }
             }
         }
-        Image { width: fw, height: fh, depth: fd, border, internal_format, base, texels }
+        Image { width: fw, height: fh, depth: fd, border, internal_format, base, texels: Texels::from_float(texels, compact) }
     }
 
     /// Texel at inner coordinates (i, j, k), which may reach into the border.
@@ -132,7 +257,7 @@ impl Image {
     fn texel(&self, dims: usize, i: i32, j: i32, k: i32) -> [f32; 4] {
         let b = self.border;
         let (x, y, z) = (i + b, if dims >= 2 { j + b } else { 0 }, if dims >= 3 { k + b } else { 0 });
-        self.texels[((z * self.height + y) * self.width + x) as usize]
+        self.texels.get(((z * self.height + y) * self.width + x) as usize)
     }
 }
 
@@ -210,6 +335,59 @@ pub struct UnitSampler {
     pub unit_bias: f32,
     /// The base format of the base level (what the environment sees).
     pub base: Base,
+    /// The specialized sampling function for this texture and its
+    /// parameters ([`Fast::General`] when none applies).
+    pub fast: Fast,
+    /// For the general path's per-level filtering: Some(repeat) when a 2D
+    /// colour texture wraps S and T by REPEAT or CLAMP_TO_EDGE, so 8-bit
+    /// levels without border take the specialized fetches (mipmapped
+    /// filters then pay only for the LOD and the blend of two levels).
+    pub fast_wrap: Option<[bool; 2]>,
+}
+
+/// Specialized samplers (see the module documentation). `repeat[k]`: the
+/// wrap mode of coordinate k is REPEAT (else CLAMP_TO_EDGE).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fast {
+    General,
+    Nearest2D { repeat: [bool; 2] },
+    Linear2D { repeat: [bool; 2] },
+}
+
+impl Fast {
+    /// The fast path for a texture (its levels from the base) and its
+    /// parameters, if one applies.
+    pub fn choose(target: Target, faces: &[Vec<Arc<Image>>], p: &Params) -> Fast {
+        let Some(img) = faces.first().and_then(|l| l.first()) else { return Fast::General };
+        let wraps_ok = p.wrap[..2].iter().all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge));
+        if target != Target::T2D || img.border != 0 || !img.texels.is_compact() || img.base == Base::Depth || !wraps_ok || p.min_filter != p.mag_filter {
+            return Fast::General;
+        }
+        let repeat = [p.wrap[0] == Wrap::Repeat, p.wrap[1] == Wrap::Repeat];
+        match p.min_filter {
+            Filter::Nearest => Fast::Nearest2D { repeat },
+            Filter::Linear => Fast::Linear2D { repeat },
+            _ => Fast::General,
+        }
+    }
+}
+
+/// `SOFTGL_REFERENCE=1` (DESIGN.md): every sampler takes the general path.
+fn reference_path() -> bool {
+    static REFERENCE: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *REFERENCE.get_or_init(|| std::env::var("SOFTGL_REFERENCE").is_ok_and(|v| v == "1"))
+}
+
+/// REPEAT or CLAMP_TO_EDGE of an index into [0, n).
+#[inline(always)]
+fn wrap_fast(i: i32, n: i32, repeat: bool) -> i32 {
+    if !repeat {
+        i.clamp(0, n - 1)
+    } else if n & (n - 1) == 0 {
+        i & (n - 1)
+    } else {
+        i.rem_euclid(n)
+    }
 }
 
 /// The fragment stage's texturing configuration.
@@ -317,8 +495,65 @@ impl UnitSampler {
         }
     }
 
+    /// A sampler for a complete texture; picks its fast path.
+    pub fn new(target: Target, faces: Vec<Vec<Arc<Image>>>, params: Params, unit_bias: f32, base: Base) -> UnitSampler {
+        if reference_path() {
+            return UnitSampler { target, faces, params, unit_bias, base, fast: Fast::General, fast_wrap: None };
+        }
+        let fast = Fast::choose(target, &faces, &params);
+        let wraps_ok = params.wrap[..2].iter().all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge));
+        let fast_wrap = (target == Target::T2D && base != Base::Depth && wraps_ok).then_some([params.wrap[0] == Wrap::Repeat, params.wrap[1] == Wrap::Repeat]);
+        UnitSampler { target, faces, params, unit_bias, base, fast, fast_wrap }
+    }
+
+    /// Nearest sampling of a 2D 8-bit RGBA image without border.
+    #[inline(always)]
+    fn nearest_2d(img: &Image, tex: &[[u8; 4]], s: f32, t: f32, repeat: [bool; 2]) -> Vec4 {
+        let (w, h) = (img.width, img.height);
+        let i = wrap_fast((s * w as f32).floor() as i32, w, repeat[0]);
+        let j = wrap_fast((t * h as f32).floor() as i32, h, repeat[1]);
+        Vec4::from_array(unorm8(tex[(j * w + i) as usize]))
+    }
+
+    /// Bilinear sampling of a 2D 8-bit RGBA image without border (the
+    /// general path's weights and order of operations).
+    #[inline(always)]
+    fn linear_2d(img: &Image, tex: &[[u8; 4]], s: f32, t: f32, repeat: [bool; 2]) -> Vec4 {
+        let (w, h) = (img.width, img.height);
+        let (a, b) = (s * w as f32 - 0.5, t * h as f32 - 0.5);
+        let (fa, fb) = (a.floor(), b.floor());
+        let (wa, wb) = (a - fa, b - fb);
+        let (i0, j0) = (fa as i32, fb as i32);
+        let (i0w, i1w) = (wrap_fast(i0, w, repeat[0]), wrap_fast(i0.wrapping_add(1), w, repeat[0]));
+        let (j0w, j1w) = (wrap_fast(j0, h, repeat[1]), wrap_fast(j0.wrapping_add(1), h, repeat[1]));
+        let at = |i: i32, j: i32| unorm8(tex[(j * w + i) as usize]);
+        let r0 = lerp4(at(i0w, j0w), at(i1w, j0w), wa);
+        let r1 = lerp4(at(i0w, j1w), at(i1w, j1w), wa);
+        Vec4::from_array(lerp4(r0, r1, wb))
+    }
+
     /// Samples at a fragment's coordinates (3.8.7 - 3.8.9, 3.8.14 for cube maps).
     pub fn sample(&self, c: &Coord) -> Vec4 {
+        match self.fast {
+            Fast::General => {}
+            Fast::Nearest2D { repeat } => {
+                let img = &self.faces[0][0];
+                if let Texels::Rgba8(tex) = &img.texels {
+                    return Self::nearest_2d(img, tex, c.str[0], c.str[1], repeat);
+                }
+            }
+            Fast::Linear2D { repeat } => {
+                let img = &self.faces[0][0];
+                if let Texels::Rgba8(tex) = &img.texels {
+                    return Self::linear_2d(img, tex, c.str[0], c.str[1], repeat);
+                }
+            }
+        }
+        self.sample_general(c)
+    }
+
+    /// The general sampler: every target, filter, wrap mode and format.
+    pub fn sample_general(&self, c: &Coord) -> Vec4 {
         let (face, str, dx, dy) = if self.target == Target::Cube {
             cube_face(c)
         } else {
@@ -372,6 +607,10 @@ impl UnitSampler {
     /// Nearest or linear filtering within one image, with depth comparison
     /// per texel (before filtering).
     fn filter(&self, img: &Image, str: [f32; 3], linear: bool) -> [f32; 4] {
+        if let (Some(repeat), Texels::Rgba8(tex), 0) = (self.fast_wrap, &img.texels, img.border) {
+            let v = if linear { Self::linear_2d(img, tex, str[0], str[1], repeat) } else { Self::nearest_2d(img, tex, str[0], str[1], repeat) };
+            return v.to_array();
+        }
         let dims = self.dims();
         let n = img.inner(dims);
         let p = &self.params;
@@ -494,11 +733,87 @@ mod tests {
                 texels.push(f(i, j));
             }
         }
-        Arc::new(Image { width: w, height: h, depth: 1, border: 0, internal_format: 0x1908, base: Base::Rgba, texels })
+        Arc::new(Image { width: w, height: h, depth: 1, border: 0, internal_format: 0x1908, base: Base::Rgba, texels: Texels::Float(texels) })
     }
 
     fn sampler(levels: Vec<Arc<Image>>, params: Params) -> UnitSampler {
-        UnitSampler { target: Target::T2D, faces: vec![levels], params, unit_bias: 0.0, base: Base::Rgba }
+        UnitSampler::new(Target::T2D, vec![levels], params, 0.0, Base::Rgba)
+    }
+
+    /// The fast nearest and bilinear paths give exactly what the general
+    /// path gives, for 8-bit textures of power-of-two and other sizes,
+    /// REPEAT and CLAMP_TO_EDGE, at coordinates in and far outside [0, 1].
+    #[test]
+    fn fast_paths_match_the_general_path() {
+        let mut seed = 12345u32;
+        let mut rnd = move || {
+            seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+            seed
+        };
+        for (w, h) in [(4, 4), (8, 2), (5, 3), (1, 7)] {
+            let texels: Vec<[u8; 4]> = (0..w * h).map(|_| rnd().to_ne_bytes()).collect();
+            let image = Arc::new(Image { width: w, height: h, depth: 1, border: 0, internal_format: 0x8058, base: Base::Rgba, texels: Texels::Rgba8(Arc::new(texels)) });
+            for filter in [Filter::Nearest, Filter::Linear] {
+                for wrap in [[Wrap::Repeat, Wrap::Repeat], [Wrap::ClampToEdge, Wrap::Repeat], [Wrap::Repeat, Wrap::ClampToEdge]] {
+                    let params = Params { min_filter: filter, mag_filter: filter, wrap: [wrap[0], wrap[1], Wrap::Repeat], ..Default::default() };
+                    let s = sampler(vec![image.clone()], params);
+                    assert_ne!(s.fast, Fast::General, "{filter:?} {wrap:?}");
+                    let reference = UnitSampler { fast: Fast::General, fast_wrap: None, ..s.clone() };
+                    for _ in 0..2000 {
+                        let u = (rnd() % 20000) as f32 / 1000.0 - 10.0;
+                        let v = (rnd() % 20000) as f32 / 1000.0 - 10.0;
+                        let c = Coord { str: [u, v, 0.0], dx: [0.01, 0.0, 0.0], dy: [0.0, 0.3, 0.0] };
+                        assert_eq!(s.sample(&c), reference.sample(&c), "{w}x{h} {filter:?} {wrap:?} at {u} {v}");
+                    }
+                }
+            }
+        }
+    }
+
+    /// Mipmapped filters on 8-bit levels (the per-level fast fetches)
+    /// against the reference path, across magnification and minification.
+    #[test]
+    fn mipmapped_fast_fetches_match_the_reference() {
+        let mut seed = 99u32;
+        let mut level = |n: i32| {
+            let texels: Vec<[u8; 4]> = (0..n * n)
+                .map(|_| {
+                    seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+                    seed.to_ne_bytes()
+                })
+                .collect();
+            Arc::new(Image { width: n, height: n, depth: 1, border: 0, internal_format: 0x8058, base: Base::Rgba, texels: Texels::Rgba8(Arc::new(texels)) })
+        };
+        let levels = vec![level(8), level(4), level(2), level(1)];
+        for filter in [Filter::NearestMipmapNearest, Filter::LinearMipmapNearest, Filter::NearestMipmapLinear, Filter::LinearMipmapLinear] {
+            let params = Params { min_filter: filter, mag_filter: Filter::Linear, ..Default::default() };
+            let s = sampler(levels.clone(), params);
+            assert_eq!(s.fast, Fast::General);
+            assert!(s.fast_wrap.is_some());
+            let reference = UnitSampler { fast_wrap: None, ..s.clone() };
+            for k in 0..3000 {
+                let (u, v) = ((k % 97) as f32 / 31.0 - 1.0, (k % 89) as f32 / 29.0 - 1.0);
+                let d = 0.01 * (k % 50) as f32;
+                let c = Coord { str: [u, v, 0.0], dx: [d, 0.0, 0.0], dy: [0.0, d * 0.7, 0.0] };
+                assert_eq!(s.sample(&c), reference.sample(&c), "{filter:?} at {u} {v} d {d}");
+            }
+        }
+    }
+
+    #[test]
+    fn fast_path_needs_its_conditions() {
+        let image = img(4, 4, |_, _| [0.5; 4]);
+        let p = Params { min_filter: Filter::Nearest, mag_filter: Filter::Nearest, ..Default::default() };
+        // f32 storage, mipmapped filters, different filters, CLAMP: general.
+        assert_eq!(sampler(vec![image.clone()], p.clone()).fast, Fast::General);
+        let compact = Arc::new(Image { texels: Texels::Rgba8(Arc::new(vec![[1, 2, 3, 4]; 16])), ..(*image).clone() });
+        assert_eq!(sampler(vec![compact.clone()], p.clone()).fast, Fast::Nearest2D { repeat: [true, true] });
+        let mixed = Params { mag_filter: Filter::Linear, ..p.clone() };
+        assert_eq!(sampler(vec![compact.clone()], mixed).fast, Fast::General);
+        let clamp = Params { wrap: [Wrap::Clamp; 3], ..p.clone() };
+        assert_eq!(sampler(vec![compact.clone()], clamp).fast, Fast::General);
+        let mip = Params { min_filter: Filter::NearestMipmapNearest, ..p };
+        assert_eq!(sampler(vec![compact], mip).fast, Fast::General);
     }
 
     #[test]
