@@ -138,6 +138,8 @@ impl Context {
                 } else {
                     self.other_caps.0.remove(&cap);
                 }
+                // GL_*_SMOOTH: validation derives the antialiasing state.
+                self.dirty |= DIRTY_RASTER;
             }
             _ => self.set_error(GL_INVALID_ENUM),
         }
@@ -246,6 +248,7 @@ impl Context {
             0x8129 /* GL_POINT_DISTANCE_ATTENUATION */ => p.attenuation = v,
             _ => return self.set_error(GL_INVALID_ENUM),
         }
+        self.dirty |= DIRTY_RASTER; // the fade threshold (smooth points)
     }
 
     /// glHint (section 5.6).
@@ -265,6 +268,8 @@ impl Context {
             _ => return self.set_error(GL_INVALID_ENUM),
         };
         *slot = mode;
-        self.dirty |= DIRTY_FOG; // GL_FOG_HINT picks per-vertex or per-fragment fog
+        // GL_FOG_HINT picks per-vertex or per-fragment fog; the smooth hints
+        // pick the coverage quality.
+        self.dirty |= DIRTY_FOG | DIRTY_RASTER;
     }
 }
