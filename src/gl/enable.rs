@@ -16,7 +16,8 @@ use std::collections::BTreeSet;
 #[derive(Clone, Debug, Default)]
 pub struct OtherCaps(pub BTreeSet<u32>);
 
-/// Every capability of GL 1.5 that softgl accepts but does not act on yet.
+/// Every capability of GL 1.5 kept in OtherCaps: the GL_*_SMOOTH ones
+/// (validation reads them from here), and those softgl does not act on yet.
 fn is_stored_cap(cap: u32) -> bool {
     matches!(
         cap,

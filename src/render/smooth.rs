@@ -25,9 +25,12 @@
 //!   under the 1/510 that would change an 8-bit alpha.
 //! - GL_FASTEST: a 4 x 4 grid of samples at ((i + 1/2) / 4, (j + 1/2) / 4)
 //!   in each pixel; coverage is the fraction of samples inside. Coverage is
-//!   then a multiple of 1/16; for a straight edge the error is at most
-//!   4/16 per pixel (an edge parallel to a grid row shifting across it;
-//!   the unit test measures at most 0.23 on random edges, mean 0.03).
+//!   then a multiple of 1/16. For one straight edge across a pixel the
+//!   error is about 1/8 at worst (an edge parallel to a row of 4 samples,
+//!   halfway between two rows); over 20000 random edges the unit test
+//!   measures worst 0.122 and mean 0.026 (alpha off by up to 31 and 7 on
+//!   average, in 8 bits). Thin shapes (a corner, a line narrower than a
+//!   pixel) can be off more: a shape between samples gets no fragment.
 //!
 //! Only squares with coverage > 0 produce a fragment: a square that touches
 //! the shape along an edge or corner would otherwise write its colour with
@@ -431,8 +434,9 @@ mod tests {
             worst = worst.max((e - f).abs());
             sum += (e - f).abs();
         }
-        assert!(worst <= 0.25, "worst {worst}");
-        assert!(sum / n as f64 <= 0.05, "mean {}", sum / n as f64);
+        eprintln!("GL_FASTEST coverage error on {n} random edges: worst {worst:.4}, mean {:.4}", sum / n as f64);
+        assert!(worst <= 0.13, "worst {worst}");
+        assert!(sum / n as f64 <= 0.03, "mean {}", sum / n as f64);
     }
 
     #[test]
