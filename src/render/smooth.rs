@@ -228,6 +228,10 @@ pub fn convex_pixels(poly: &[P], rect: Rect, quality: Quality, inside: impl Fn(f
         let col1 = (xmax.ceil() as i64).min(rect.x1 as i64);
         for px in col0..col1 {
             let cov = match quality {
+                // A square whose corners are all inside a convex shape is
+                // covered (by area and by every sample): the interior costs
+                // four corner tests, not a clip or 16 samples.
+                _ if [(0, 0), (1, 0), (0, 1), (1, 1)].iter().all(|&(i, j)| inside_convex(poly, ((px + i) as f64, (py + j) as f64))) => 1.0,
                 Quality::Exact => slab.clip(0, px as f64, true).clip(0, px as f64 + 1.0, false).area().min(1.0),
                 Quality::Sampled => sampled(px, py, &inside),
             };
@@ -285,7 +289,10 @@ pub fn disc_pixels(cx: f64, cy: f64, r: f64, rect: Rect, quality: Quality, mut e
         let col0 = ((cx - h).floor() as i64).max(rect.x0 as i64);
         let col1 = ((cx + h).ceil() as i64).min(rect.x1 as i64);
         for px in col0..col1 {
+            // The square's corner farthest from the centre.
+            let (fx, fy) = ((px as f64 - cx).abs().max((px as f64 + 1.0 - cx).abs()), (py as f64 - cy).abs().max((py as f64 + 1.0 - cy).abs()));
             let cov = match quality {
+                _ if fx * fx + fy * fy <= r * r => 1.0,
                 Quality::Exact => disc_area(cx, cy, r, px, py),
                 Quality::Sampled => sampled(px, py, &inside),
             };
