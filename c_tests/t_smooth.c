@@ -8,7 +8,8 @@
  *    coverage of the disc, the total = pi r^2; point fade and attenuation;
  *  - a smooth horizontal line of width 3 at y = 10.25: row coverages
  *    1/4, 1, 1, 3/4 exactly; a diagonal line's total = length * width;
- *    stipple cutting the line into 1 x width rectangles;
+ *    stipple cutting the line into 1 x width rectangles, its counter
+ *    continued across a strip;
  *  - a smooth triangle with an edge of slope 2/3: every pixel's coverage;
  *  - GL_FASTEST: coverages are multiples of 1/16 near the exact ones;
  *  - glBlendFunc(GL_SRC_ALPHA_SATURATE, GL_ONE), front to back: a smooth
@@ -230,6 +231,20 @@ int main(void)
             h_expect(0, "stippled smooth line: column %d alpha %d/%d, expected %d", x, alpha(x, 20), alpha(x, 21), want);
     }
     h_expect(bad == 0, "stippled smooth line: %d columns off", bad);
+    /* The counter continues across a strip: two segments of length 4 with
+     * pattern 0x00F0 draw only the second (rectangles 4-7). */
+    glLineStipple(1, 0x00F0);
+    clear();
+    glBegin(GL_LINE_STRIP);
+    glVertex2f(2.5f, 20.5f);
+    glVertex2f(6.5f, 20.5f);
+    glVertex2f(10.5f, 20.5f);
+    glEnd();
+    h_read(px);
+    h_expect(alpha(3, 20) == 0 && alpha(5, 20) == 0 && alpha(6, 20) == 128 && alpha(7, 20) == 255 && alpha(9, 20) == 255 &&
+                 alpha(10, 20) == 128 && alpha(11, 20) == 0,
+             "stippled smooth strip: alpha %d %d %d %d %d %d %d", alpha(3, 20), alpha(5, 20), alpha(6, 20), alpha(7, 20),
+             alpha(9, 20), alpha(10, 20), alpha(11, 20));
     glDisable(GL_LINE_STIPPLE);
     glDisable(GL_LINE_SMOOTH);
 
