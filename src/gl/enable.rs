@@ -16,7 +16,8 @@ use std::collections::BTreeSet;
 #[derive(Clone, Debug, Default)]
 pub struct OtherCaps(pub BTreeSet<u32>);
 
-/// Every capability of GL 1.5 that softgl accepts but does not act on yet.
+/// Every capability of GL 1.5 kept in OtherCaps: the GL_*_SMOOTH ones
+/// (validation reads them from here), and those softgl does not act on yet.
 fn is_stored_cap(cap: u32) -> bool {
     matches!(
         cap,
@@ -144,6 +145,8 @@ impl Context {
                 } else {
                     self.other_caps.0.remove(&cap);
                 }
+                // GL_*_SMOOTH: validation derives the antialiasing state.
+                self.dirty |= DIRTY_RASTER;
             }
             _ => self.set_error(GL_INVALID_ENUM),
         }
@@ -252,6 +255,7 @@ impl Context {
             0x8129 /* GL_POINT_DISTANCE_ATTENUATION */ => p.attenuation = v,
             _ => return self.set_error(GL_INVALID_ENUM),
         }
+        self.dirty |= DIRTY_RASTER; // the fade threshold (smooth points)
     }
 
     /// glHint (section 5.6).
@@ -271,6 +275,8 @@ impl Context {
             _ => return self.set_error(GL_INVALID_ENUM),
         };
         *slot = mode;
-        self.dirty |= DIRTY_FOG; // GL_FOG_HINT picks per-vertex or per-fragment fog
+        // GL_FOG_HINT picks per-vertex or per-fragment fog; the smooth hints
+        // pick the coverage quality.
+        self.dirty |= DIRTY_FOG | DIRTY_RASTER;
     }
 }

@@ -172,13 +172,15 @@ impl Context {
             GL_MAX_VIEWPORT_DIMS => ints([MAX_SIZE as i64, MAX_SIZE as i64]),
             GL_SUBPIXEL_BITS => ints([SUBPIXEL_BITS as i64]),
             GL_POINT_SIZE => Some(Value::Floats(vec![self.point.size as f64])),
-            // Smooth points are drawn like aliased ones for now: the same
-            // integer sizes.
-            GL_POINT_SIZE_RANGE | GL_ALIASED_POINT_SIZE_RANGE => Some(Value::Floats(vec![1.0, crate::render::point::MAX_SIZE as f64])),
-            GL_POINT_SIZE_GRANULARITY => Some(Value::Floats(vec![1.0])),
+            // GL_POINT_SIZE_RANGE and _GRANULARITY are the smooth ones
+            // (GL_SMOOTH_POINT_SIZE_*, same enums); likewise for lines.
+            GL_POINT_SIZE_RANGE | GL_LINE_WIDTH_RANGE => {
+                Some(Value::Floats(vec![crate::render::smooth::MIN_SIZE as f64, crate::render::smooth::MAX_SIZE as f64]))
+            }
+            GL_POINT_SIZE_GRANULARITY | GL_LINE_WIDTH_GRANULARITY => Some(Value::Floats(vec![crate::render::smooth::GRANULARITY as f64])),
+            GL_ALIASED_POINT_SIZE_RANGE => Some(Value::Floats(vec![1.0, crate::render::point::MAX_SIZE as f64])),
             GL_LINE_WIDTH => Some(Value::Floats(vec![self.line.width as f64])),
-            GL_LINE_WIDTH_RANGE | GL_ALIASED_LINE_WIDTH_RANGE => Some(Value::Floats(vec![1.0, crate::render::line::MAX_WIDTH as f64])),
-            GL_LINE_WIDTH_GRANULARITY => Some(Value::Floats(vec![1.0])),
+            GL_ALIASED_LINE_WIDTH_RANGE => Some(Value::Floats(vec![1.0, crate::render::line::MAX_WIDTH as f64])),
             GL_LINE_STIPPLE_PATTERN => ints([self.line.stipple_pattern as i64]),
             GL_LINE_STIPPLE_REPEAT => ints([self.line.stipple_repeat as i64]),
             GL_SHADE_MODEL => ints([self.shade_model as i64]),

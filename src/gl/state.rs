@@ -229,8 +229,8 @@ impl Default for CurrentState {
     }
 }
 
-/// GL_LINE_BIT state (section 3.4): width, stipple. GL_LINE_SMOOTH is still
-/// only stored (enable.rs, OtherCaps): smooth lines draw aliased for now.
+/// GL_LINE_BIT state (section 3.4): width, stipple. GL_LINE_SMOOTH lives in
+/// enable.rs's OtherCaps; validation hands it to the renderer.
 #[derive(Clone, Debug)]
 pub struct LineState {
     /// As specified (glGet returns it); rasterization rounds and clamps it.
@@ -247,8 +247,8 @@ impl Default for LineState {
     }
 }
 
-/// GL_POINT_BIT state (section 3.3): the size. GL_POINT_SMOOTH is still
-/// only stored: smooth points draw as squares for now.
+/// GL_POINT_BIT state (section 3.3): the size and the GL 1.4 point
+/// parameters. GL_POINT_SMOOTH lives in enable.rs's OtherCaps.
 #[derive(Clone, Debug)]
 pub struct PointState {
     pub size: f32,

@@ -55,6 +55,7 @@ impl Default for Derived {
                 polygon_stipple: None,
                 line: crate::render::line::LineParams { width: 1.0, stipple: None },
                 point_size: 1.0,
+                smooth: Default::default(),
                 clip_planes: crate::render::clip::FIXED_PLANES.to_vec(),
                 fragment: FragmentState::default(),
                 texture: None,
@@ -149,6 +150,14 @@ impl Context {
                 stipple: if l.stipple { Some((l.stipple_repeat as u32, l.stipple_pattern)) } else { None },
             };
             rs.point_size = self.point.size;
+            // Antialiasing (3.2): which primitives, at which quality.
+            let on = |cap: u32, hint: u32| self.other_caps.0.contains(&cap).then(|| crate::render::smooth::Quality::from_hint(hint));
+            rs.smooth = crate::render::smooth::SmoothState {
+                point: on(GL_POINT_SMOOTH, self.hints.point_smooth),
+                line: on(GL_LINE_SMOOTH, self.hints.line_smooth),
+                polygon: on(GL_POLYGON_SMOOTH, self.hints.polygon_smooth),
+                fade_threshold: self.point.fade_threshold,
+            };
         }
         if let Some(f) = fragment {
             rs.fragment = f;

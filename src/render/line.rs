@@ -30,10 +30,15 @@
 //! Stipple (3.4.3): the counter s counts width-1 fragments; a fragment is
 //! drawn iff bit (s / repeat) mod 16 of the pattern is set. The caller owns
 //! s (reset at glBegin and per GL_LINES segment; kept across a strip).
+//!
+//! GL_LINE_SMOOTH (3.4.2, "Antialiasing"): the rectangle of the smooth
+//! width centred on the segment, by coverage (`smooth_line`, `smooth`);
+//! stipple counts 1 x width rectangles instead of fragments.
 
 use super::clip::Plane;
 use super::fragment;
 use super::setup::{to_window, ONE};
+use super::smooth;
 use super::vertex::ClipVertex;
 use super::RenderState;
 use crate::framebuffer::Framebuffer;
@@ -223,45 +228,46 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
     let step = 1.0 / fdx.abs().max(fdy.abs());
     let flat = if rs.flat { Some(fragment::color_to_u8(flat_color)) } else { None };
     let fs = &rs.fragment;
+    // The fragment colour at parameter t (3.4.1 equation 3.7): texturing,
+    // the colour sum and fog when on, perspective-correct through 1/w.
+    let color_at = |t: f64| -> Vec4 {
+        let (ka, kb) = ((1.0 - t) * wa.q, t * wb.q);
+        let primary = match flat {
+            Some(c) => Vec4::from_array(c.map(|v| v as f32 / 255.0)),
+            None => ((wa.color.as_dvec4() * ka + wb.color.as_dvec4() * kb) / (ka + kb)).as_vec4().clamp(Vec4::ZERO, Vec4::ONE),
+        };
+        let mut c = match &rs.texture {
+            Some(stage) => {
+                let c = stage.shade(&super::texture::line_coords(stage, &wa.tex, wa.q, &wb.tex, wb.q, t, step), primary);
+                // The colour sum (3.9) after texturing.
+                let sec = ((wa.secondary.as_dvec4() * ka + wb.secondary.as_dvec4() * kb) / (ka + kb)).as_vec4();
+                (c.truncate() + sec.truncate()).extend(c.w).clamp(Vec4::ZERO, Vec4::ONE)
+            }
+            None => primary,
+        };
+        if let Some(f) = &rs.fog {
+            c = f.apply(c, ((wa.fog as f64 * ka + wb.fog as f64 * kb) / (ka + kb)) as f32);
+        }
+        c
+    };
+    // t of the pixel centre projected on the segment (3.4.1 equation 3.6).
+    let t_at = |px: i64, py: i64| (((px as f64 + 0.5 - fxa) * fdx + (py as f64 + 0.5 - fya) * fdy) / len2).clamp(0.0, 1.0);
+    if let Some(quality) = rs.smooth.line {
+        return smooth_line(rs, fb, lp, [fxa, fya, fdx, fdy], s, quality, |fb, px, py, cov| {
+            let t = t_at(px, py);
+            let c = color_at(t);
+            let mut color = fragment::color_to_u8(c);
+            color[3] = smooth::alpha_u8(c.w as f64 * cov);
+            fragment::shade_fragment(fs, fb, px as usize, py as usize, wa.z + t * (wb.z - wa.z), color);
+        });
+    }
     let shade = |fb: &mut Framebuffer, px: i64, py: i64| {
         if px < r.x0 as i64 || px >= r.x1 as i64 || py < r.y0 as i64 || py >= r.y1 as i64 {
             return;
         }
-        let t = (((px as f64 + 0.5 - fxa) * fdx + (py as f64 + 0.5 - fya) * fdy) / len2).clamp(0.0, 1.0);
+        let t = t_at(px, py);
         let z = wa.z + t * (wb.z - wa.z);
-        if rs.texture.is_some() || rs.fog.is_some() {
-            // Texturing (3.8): the primary colour, then the units; then
-            // fog (3.10) on the result, perspective-correct like colours.
-            let (ka, kb) = ((1.0 - t) * wa.q, t * wb.q);
-            let primary = match flat {
-                Some(c) => Vec4::from_array(c.map(|v| v as f32 / 255.0)),
-                None => ((wa.color.as_dvec4() * ka + wb.color.as_dvec4() * kb) / (ka + kb)).as_vec4().clamp(Vec4::ZERO, Vec4::ONE),
-            };
-            let mut c = match &rs.texture {
-                Some(stage) => {
-                    let c = stage.shade(&super::texture::line_coords(stage, &wa.tex, wa.q, &wb.tex, wb.q, t, step), primary);
-                    // The colour sum (3.9) after texturing.
-                    let sec = ((wa.secondary.as_dvec4() * ka + wb.secondary.as_dvec4() * kb) / (ka + kb)).as_vec4();
-                    (c.truncate() + sec.truncate()).extend(c.w).clamp(Vec4::ZERO, Vec4::ONE)
-                }
-                None => primary,
-            };
-            if let Some(f) = &rs.fog {
-                c = f.apply(c, ((wa.fog as f64 * ka + wb.fog as f64 * kb) / (ka + kb)) as f32);
-            }
-            fragment::shade_fragment(fs, fb, px as usize, py as usize, z, fragment::color_to_u8(c));
-            return;
-        }
-        let color = match flat {
-            Some(c) => c,
-            None => {
-                let (ka, kb) = ((1.0 - t) * wa.q, t * wb.q);
-                let den = ka + kb;
-                let c = (wa.color.as_dvec4() * ka + wb.color.as_dvec4() * kb) / den;
-                fragment::color_to_u8(c.as_vec4())
-            }
-        };
-        fragment::shade_fragment(fs, fb, px as usize, py as usize, z, color);
+        fragment::shade_fragment(fs, fb, px as usize, py as usize, z, fragment::color_to_u8(color_at(t)));
     };
     // With stipple, fragments outside the draw rectangle still advance the
     // counter, so the whole (guard-band-clipped) segment is walked.
@@ -282,4 +288,78 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
             }
         }
     });
+}
+
+/// GL_LINE_SMOOTH (3.4.2, "Antialiasing"): the rectangle of the smooth
+/// width centred on the segment [x, y, dx, dy] (window coordinates, from
+/// the snapped endpoints), by coverage. With stipple, the segment is a
+/// sequence of 1 x width rectangles counted on from `*s`; runs of those
+/// whose pattern bit is set are each a rectangle, and a pixel two runs
+/// share gets one fragment with the sum of their coverages. `*s` advances
+/// by the number of rectangles, ceil(length).
+#[allow(clippy::too_many_arguments)]
+fn smooth_line(
+    rs: &RenderState,
+    fb: &mut Framebuffer,
+    lp: &LineParams,
+    [x, y, dx, dy]: [f64; 4],
+    s: &mut u32,
+    quality: smooth::Quality,
+    mut shade: impl FnMut(&mut Framebuffer, i64, i64, f64),
+) {
+    let len = (dx * dx + dy * dy).sqrt();
+    if !(len > 0.0) || !len.is_finite() {
+        return;
+    }
+    let hw = smooth::smooth_size(lp.width) / 2.0;
+    let (ux, uy) = (dx / len, dy / len);
+    // The rectangle between lengths l0 and l1 along the segment,
+    // counter-clockwise.
+    let rect = |l0: f64, l1: f64| -> [smooth::P; 4] {
+        let (ax, ay, bx, by) = (x + ux * l0, y + uy * l0, x + ux * l1, y + uy * l1);
+        let (nx, ny) = (-uy * hw, ux * hw);
+        [(ax - nx, ay - ny), (bx - nx, by - ny), (bx + nx, by + ny), (ax + nx, ay + ny)]
+    };
+    // The point test for GL_FASTEST's samples: inside the run [l0, l1).
+    let inside = |l0: f64, l1: f64| {
+        move |px: f64, py: f64| {
+            let (rx, ry) = (px - x, py - y);
+            let along = rx * ux + ry * uy;
+            let across = -rx * uy + ry * ux;
+            along >= l0 && along < l1 && across.abs() <= hw
+        }
+    };
+    let Some((repeat, pattern)) = lp.stipple else {
+        let q = rect(0.0, len);
+        smooth::convex_pixels(&q, rs.draw_rect, quality, inside(0.0, len), |px, py, cov| shade(fb, px, py, cov));
+        return;
+    };
+    let n = len.ceil().min(u32::MAX as f64) as u32;
+    let on = |k: u32| pattern & (1 << ((s.wrapping_add(k) / repeat) % 16)) != 0;
+    let mut acc: std::collections::HashMap<(i64, i64), f64> = std::collections::HashMap::new();
+    let mut order = Vec::new();
+    let mut k = 0;
+    while k < n {
+        if !on(k) {
+            k += 1;
+            continue;
+        }
+        let start = k;
+        while k < n && on(k) {
+            k += 1;
+        }
+        let (l0, l1) = (start as f64, (k as f64).min(len));
+        let q = rect(l0, l1);
+        smooth::convex_pixels(&q, rs.draw_rect, quality, inside(l0, l1), |px, py, cov| {
+            let e = acc.entry((px, py)).or_insert_with(|| {
+                order.push((px, py));
+                0.0
+            });
+            *e += cov;
+        });
+    }
+    *s = s.wrapping_add(n);
+    for p in order {
+        shade(fb, p.0, p.1, acc[&p].min(1.0));
+    }
 }

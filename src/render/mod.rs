@@ -17,6 +17,7 @@ pub mod point;
 pub mod polygon_mode;
 pub mod raster;
 pub mod setup;
+pub mod smooth;
 pub mod texture;
 pub mod vertex;
 
@@ -55,6 +56,9 @@ pub struct RenderState {
     /// Line and point state, for polygons drawn as lines or points.
     pub line: line::LineParams,
     pub point_size: f32,
+    /// Antialiasing (GL_POINT_SMOOTH, GL_LINE_SMOOTH, GL_POLYGON_SMOOTH)
+    /// and its hints, and the point fade threshold.
+    pub smooth: smooth::SmoothState,
     /// The colour sum (3.9) is on: GL_COLOR_SUM, or lighting with
     /// GL_SEPARATE_SPECULAR_COLOR.
     pub color_sum: bool,
@@ -119,15 +123,24 @@ pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3]
         clip::Outcome::Rejected => {}
         clip::Outcome::Inside => {
             let w = [0, 1, 2].map(|i| setup::to_window(rs, v[i]));
-            setup::triangle(rs, fb, &w, flat_color);
+            fill_triangle(rs, fb, &w, flat_color);
         }
         clip::Outcome::Clipped => {
             let w: Vec<_> = poly.verts.iter().map(|cv| setup::to_window(rs, cv)).collect();
             // A clipped convex polygon: a fan; culling uses the original
             // orientation, which every piece shares.
             for i in 1..w.len().saturating_sub(1) {
-                setup::triangle(rs, fb, &[w[0], w[i], w[i + 1]], flat_color);
+                fill_triangle(rs, fb, &[w[0], w[i], w[i + 1]], flat_color);
             }
         }
+    }
+}
+
+/// A filled triangle in window coordinates: by coverage under
+/// GL_POLYGON_SMOOTH (`smooth`), else by the exact aliased rules (`setup`).
+pub fn fill_triangle(rs: &RenderState, fb: &mut Framebuffer, w: &[setup::WindowVertex; 3], flat_color: [glam::Vec4; 2]) {
+    match rs.smooth.polygon {
+        Some(q) => smooth::triangle(rs, fb, w, flat_color, q),
+        None => setup::triangle(rs, fb, w, flat_color),
     }
 }

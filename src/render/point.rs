@@ -6,9 +6,14 @@
 //! floor(y + 1/2)) for even w. With x snapped to 1/ONE pixel both rules
 //! are one formula: the first column is floor(x + 1/2 - w/2). Every
 //! fragment takes the vertex's depth and colour.
+//!
+//! GL_POINT_SMOOTH: the disc of the smooth size centred on the point,
+//! by coverage (`smooth`), with the GL 1.4 fade for derived sizes below the
+//! fade threshold.
 
 use super::fragment;
 use super::setup::{to_window, ONE};
+use super::smooth;
 use super::vertex::ClipVertex;
 use super::RenderState;
 use crate::framebuffer::Framebuffer;
@@ -43,8 +48,6 @@ pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVer
         return;
     }
     let wv = to_window(rs, v);
-    let w = raster_size(size);
-    let (x0, y0) = (first_pixel(wv.x, w), first_pixel(wv.y, w));
     let primary = v.color.clamp(glam::Vec4::ZERO, glam::Vec4::ONE);
     let mut c = match &rs.texture {
         // Texturing (3.8): every fragment takes the vertex's coordinates.
@@ -58,6 +61,21 @@ pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVer
     if let Some(f) = &rs.fog {
         c = f.apply(c, v.fog);
     }
+    if let Some(quality) = rs.smooth.point {
+        let (width, fade) = smooth::faded_point(size, rs.smooth.fade_threshold);
+        let alpha = c.w.clamp(0.0, 1.0) as f64 * fade as f64;
+        let color = fragment::color_to_u8(c);
+        // The centre snaps to 1/ONE pixel like every other vertex.
+        let snap = |c: f64| (c * ONE as f64).round() / ONE as f64;
+        smooth::disc_pixels(snap(wv.x), snap(wv.y), width / 2.0, r, quality, |x, y, cov| {
+            let mut col = color;
+            col[3] = smooth::alpha_u8(alpha * cov);
+            fragment::shade_fragment(&rs.fragment, fb, x as usize, y as usize, wv.z, col);
+        });
+        return;
+    }
+    let w = raster_size(size);
+    let (x0, y0) = (first_pixel(wv.x, w), first_pixel(wv.y, w));
     let color = fragment::color_to_u8(c);
     let xs = x0.max(r.x0 as i64)..(x0 + w).min(r.x1 as i64);
     for y in y0.max(r.y0 as i64)..(y0 + w).min(r.y1 as i64) {

@@ -54,7 +54,7 @@ pub fn draw(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3], flat_co
     let mode = rs.polygon_mode[if front { 0 } else { 1 }];
     if mode == GL_FILL {
         for i in 1..win.len() - 1 {
-            setup::triangle(rs, fb, &[win[0], win[i], win[i + 1]], flat_color);
+            super::fill_triangle(rs, fb, &[win[0], win[i], win[i + 1]], flat_color);
         }
         return;
     }

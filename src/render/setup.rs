@@ -120,7 +120,7 @@ pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &
 }
 
 #[allow(clippy::too_many_arguments)]
-fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
+pub(crate) fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
     let inv = 1.0 / ONE as f64;
     let x = ex.map(|c| c as f64 * inv);
     let y = ey.map(|c| c as f64 * inv);

@@ -171,7 +171,7 @@ fn eval(p: &Plane, cx: f64, cy: f64) -> f64 {
 
 /// The colour of a triangle's fragment at (cx, cy) relative to its origin.
 #[inline(always)]
-fn triangle_color(t: &TriangleSetup, cx: f64, cy: f64) -> [u8; 4] {
+pub(crate) fn triangle_color(t: &TriangleSetup, cx: f64, cy: f64) -> [u8; 4] {
     if let Some((plane, fog)) = &t.fog {
         // Fog (3.10) after texturing, on the unconverted colour.
         let c = match &t.tex {
