@@ -274,9 +274,11 @@ impl Context {
     }
 }
 
-/// Extensions whose functionality GL 1.2-1.5 promoted unchanged, all
-/// implemented by the core entry points (their ARB/EXT names resolve to
-/// them through GetProcAddress). ARB_imaging is not advertised.
+/// The extensions advertised: those whose functionality GL 1.2-1.5
+/// promoted unchanged, implemented by the core entry points (their ARB/EXT
+/// names resolve to them through GetProcAddress), plus EXT_vertex_array,
+/// ARB_texture_non_power_of_two, ARB_texture_rg, EXT/NV_packed_depth_stencil
+/// and EXT_shadow_funcs. ARB_imaging is not advertised.
 const EXTENSIONS: &[u8] = b"GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_point_parameters \
 GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine \
 GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_ARB_texture_rg GL_ARB_transpose_matrix \
