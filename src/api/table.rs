@@ -406,7 +406,7 @@ super::entry_points! {
     list glDepthFunc(func: GLenum) { |_c| Command::DepthFunc(func) }
     list glBlendFunc(sfactor: GLenum, dfactor: GLenum) { |_c| Command::BlendFunc([sfactor, dfactor, sfactor, dfactor]) }
     list glLogicOp(opcode: GLenum) { |_c| Command::LogicOp(opcode) }
-    list["double-buffered surfaces keep one colour buffer yet: FRONT and BACK name the same storage there"] glDrawBuffer(mode: GLenum) { |_c| Command::DrawBuffer(mode) }
+    list glDrawBuffer(mode: GLenum) { |_c| Command::DrawBuffer(mode) }
     list glIndexMask(mask: GLuint) { |_c| Command::IndexMask(mask) }
     list glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) { |_c| Command::ColorMask([truth(red), truth(green), truth(blue), truth(alpha)]) }
     list glDepthMask(flag: GLboolean) { |_c| Command::DepthMask(truth(flag)) }
@@ -418,7 +418,7 @@ super::entry_points! {
     list glClearStencil(s: GLint) { |_c| Command::ClearStencil(s) }
     list glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) { |_c| Command::ClearAccum([red, green, blue, alpha]) }
     list glAccum(op: GLenum, value: GLfloat) { |_c| Command::Accum(op, value) }
-    list["as glDrawBuffer"] glReadBuffer(mode: GLenum) { |_c| Command::ReadBuffer(mode) }
+    list glReadBuffer(mode: GLenum) { |_c| Command::ReadBuffer(mode) }
     exec["the ARB_imaging transfer stages (colour table, convolution, colour matrix, histogram) are not implemented"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
     list["texturing and fog of the fragments come with those features"] glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) { |_c| Command::CopyPixels(x, y, width, height, type_) }
     list glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) { |_c| map_command(read_points(target, points, stride, order, 0, 1), |points| Command::Map { target, u: (u1 as f32, u2 as f32), uorder: order, v: None, points }) }

@@ -173,7 +173,7 @@ impl Present for UserBuffer {
         unsafe {
             for y in 0..self.height.min(fb.height) {
                 let row = self.ptr.add(self.row_offset(y));
-                let src = &fb.color[fb.index(0, y)..fb.index(0, y) + self.width.min(fb.width)];
+                let src = &fb.front()[fb.index(0, y)..fb.index(0, y) + self.width.min(fb.width)];
                 if self.format == GL_RGBA && self.ty == GL_UNSIGNED_BYTE {
                     std::ptr::copy_nonoverlapping(src.as_ptr() as *const u8, row, src.len() * 4);
                 } else {

@@ -198,7 +198,7 @@ impl DcState {
     fn show(&mut self, fb: &Framebuffer) {
         let n = fb.width * fb.height;
         self.front.clear();
-        self.front.extend_from_slice(&fb.color[..n]);
+        self.front.extend_from_slice(&fb.front()[..n]);
         // The frame's size: the DC may have been resized since the context
         // last followed it.
         self.front_size = (fb.width, fb.height);
@@ -396,9 +396,8 @@ fn release_current() {
     }
     // SAFETY: a current context is live: deleting it releases it first.
     let c = unsafe { &mut *cur };
-    if !is_double(c.pixel_format) {
-        c.gl.flush();
-    }
+    // Single-buffered, or a double-buffered front buffer drawn into.
+    c.gl.flush();
     c.gl.surface = None;
     c.dc = None;
     c.bound.store(false, Ordering::Release);
@@ -447,7 +446,9 @@ pub fn make_current(hdc: Hdc, hglrc: Hglrc) -> Bool {
     if c.gl.fb.resize(w, h).is_err() {
         return 0;
     }
-    c.gl.surface = if is_double(format) { None } else { Some(Box::new(OnFlush(d.state.clone()))) };
+    // glFlush shows the front buffer (single-buffered, or drawn with
+    // glDrawBuffer(GL_FRONT)); SwapBuffers the back one.
+    c.gl.surface = Some(Box::new(OnFlush(d.state.clone())));
     c.dc = Some((hdc, d.state.clone()));
     c.gl.surface_resized(w as GLint, h as GLint);
     c.bound.store(true, Ordering::Release);
@@ -500,7 +501,7 @@ pub fn swap_buffers(hdc: Hdc) -> Bool {
     if c.gl.in_begin_end() {
         return 0;
     }
-    lock_dc(&d.state).show(&c.gl.fb);
+    c.gl.swap_buffers();
     let (w, h) = {
         let s = lock_dc(&d.state);
         (s.width, s.height)

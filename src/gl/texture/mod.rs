@@ -688,6 +688,7 @@ impl Context {
 
     fn read_framebuffer(&self, x: i32, y: i32, w: i32, h: i32, depth: bool) -> image::Pixels {
         let fb = &self.fb;
+        let read = self.read_color(); // glReadBuffer's buffer
         let mut out = Vec::with_capacity((w.max(0) * h.max(0)) as usize);
         for j in 0..h {
             for i in 0..w {
@@ -700,7 +701,7 @@ impl Context {
                 if depth {
                     out.push([(fb.depth[idx] as f64 / crate::framebuffer::DEPTH_MAX as f64) as f32, 0.0, 0.0, 1.0]);
                 } else {
-                    out.push(fb.color[idx].map(|c| c as f32 / 255.0));
+                    out.push(read[idx].map(|c| c as f32 / 255.0));
                 }
             }
         }

@@ -12,12 +12,12 @@
 //!
 //! Invariants and limits of this first slice:
 //! * A GLXWindow is the X window id, a GLXPixmap the X pixmap id.
-//! * Double buffering: a double-buffered context renders into its one
-//!   colour buffer and shows it at glXSwapBuffers only; glFlush/glFinish
-//!   show nothing. GL_FRONT and GL_BACK are the same buffer (distinct
-//!   front/back buffers are a later step). A single-buffered context (or
-//!   any context drawing into a GLXPixmap) shows its image at glFlush,
-//!   glFinish, glXWaitGL and when it stops being current.
+//! * Double buffering: a double-buffered context keeps a front and a back
+//!   buffer (see `framebuffer`); the window shows the front one.
+//!   glXSwapBuffers copies back to front and shows it; glFlush, glFinish,
+//!   glXWaitGL and releasing the context show the front buffer when it was
+//!   drawn into (glDrawBuffer(GL_FRONT) or FRONT_AND_BACK). A
+//!   single-buffered context shows its image at each of those.
 //! * The framebuffer follows the drawable's size (XGetGeometry) at
 //!   MakeCurrent and after each glXSwapBuffers; a resize clears it.
 //! * glXDestroyContext of a current context (in any thread) is deferred
@@ -553,7 +553,7 @@ impl XSurface {
         self.pixels.clear();
         self.pixels.reserve(w * h);
         for y in (0..h).rev() {
-            let row = &fb.color[fb.index(0, y)..fb.index(0, y) + w];
+            let row = &fb.front()[fb.index(0, y)..fb.index(0, y) + w];
             for c in row {
                 let mut p = ((c[0] as u32) << rs) | ((c[1] as u32) << gs) | ((c[2] as u32) << bs);
                 if let Some(s) = alpha {
@@ -675,7 +675,7 @@ fn release_current() {
     // it is released.
     unsafe {
         let ctx = &mut *cur;
-        if let Some((_, false)) = &ctx.surface {
+        if ctx.surface.is_some() {
             ctx.gl.flush();
         }
         ctx.gl.surface = None;
@@ -726,7 +726,7 @@ pub unsafe fn make_context_current(dpy: *mut Display, draw: Xid, read: Xid, ctx:
     let Some(surface) = XSurface::new(dpy, draw, &c.config) else { return 0 };
     let surface = Rc::new(RefCell::new(surface));
     let double = c.config.double && !is_pixmap(dpy, draw);
-    c.gl.surface = if double { None } else { Some(Box::new(OnFlush(surface.clone()))) };
+    c.gl.surface = Some(Box::new(OnFlush(surface.clone())));
     c.surface = Some((surface, double));
     c.dpy = dpy;
     c.draw = draw;
@@ -768,7 +768,8 @@ pub unsafe fn swap_buffers(dpy: *mut Display, drawable: Xid) {
     if !double {
         return; // no effect on a single-buffered drawable (section 3.3.10)
     }
-    surface.borrow_mut().put(&c.gl.fb);
+    let _ = surface;
+    c.gl.swap_buffers();
     // Follow a resize for the next frame.
     if let Some((w, h)) = geometry(dpy, drawable) {
         if (w, h) != (c.gl.fb.width, c.gl.fb.height) && c.gl.fb.resize(w, h).is_ok() {
@@ -818,7 +819,7 @@ pub fn wait_gl() {
     let c = current_glx();
     if !c.is_null() {
         unsafe {
-            if let Some((_, false)) = &(*c).surface {
+            if (*c).surface.is_some() {
                 (*c).gl.flush();
             }
         }
