@@ -62,6 +62,9 @@ pub struct Context {
     /// Dirty bits (validate::DIRTY_*): derived state to recompute.
     pub dirty: u32,
     pub derived: validate::Derived,
+    /// The share group whose display lists, textures and buffer objects
+    /// this context uses (gl::share); None: its own.
+    pub share: Option<std::sync::Arc<super::share::ShareGroup>>,
     /// The viewport and scissor are set to the surface size at the first
     /// MakeCurrent only (GL 1.5 section 2.11.1; GLX/WGL say the same).
     pub sized_once: bool,
@@ -106,6 +109,7 @@ impl Context {
             surface: None,
             dirty: validate::DIRTY_ALL,
             derived: validate::Derived::default(),
+            share: None,
             sized_once: false,
         }
     }

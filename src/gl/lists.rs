@@ -41,6 +41,13 @@ impl Lists {
     pub fn is_list(&self, n: u32) -> bool {
         self.lists.contains_key(&n)
     }
+
+    /// Exchanges the table of defined lists with a share group's
+    /// (gl::share): the lists are shared, compilation state and the list
+    /// base stay per context.
+    pub fn swap_table(&mut self, table: &mut HashMap<u32, Rc<[Command]>>) {
+        std::mem::swap(&mut self.lists, table);
+    }
 }
 
 /// Reads glCallLists' `n` names of type `ty` from `p`.

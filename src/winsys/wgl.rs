@@ -33,8 +33,8 @@
 //! context current elsewhere fails, as does deleting it. Any failing
 //! MakeCurrent leaves the thread with no current context (as Windows does).
 //!
-//! Not yet: wglShareLists accepts and returns TRUE but display lists stay
-//! per context; wglCopyContext copies the attribute groups softgl keeps
+//! wglShareLists shares display lists, textures and buffer objects
+//! (gl::share). wglCopyContext copies the attribute groups softgl keeps
 //! (see [`copy_context`]); wglUseFontOutlines is not implemented.
 #![allow(clippy::missing_safety_doc)]
 
@@ -509,10 +509,20 @@ pub fn swap_buffers(hdc: Hdc) -> Bool {
     follow_size(c, w, h) as Bool
 }
 
-/// wglShareLists: both contexts must exist; TRUE, but display lists are
-/// not shared yet (each context keeps its own).
+/// wglShareLists: `b` shares `a`'s display lists, textures and buffer
+/// objects from now on (gl::share); what `b` had is dropped (Windows
+/// requires it to have none). Both contexts must exist and `b` must not
+/// be current in another thread.
 pub fn share_lists(a: Hglrc, b: Hglrc) -> Bool {
-    (context(a).is_some() && context(b).is_some()) as Bool
+    let (Some(a), Some(b)) = (context(a), context(b)) else { return 0 };
+    // SAFETY: registered contexts are live.
+    unsafe {
+        if a != b && (*b).bound.load(Ordering::Acquire) && current_wgl() != b {
+            return 0;
+        }
+        crate::gl::share::join(&mut (*b).gl, &mut (*a).gl);
+    }
+    1
 }
 
 /// wglCopyContext: copies the attribute groups of `mask`, as glPushAttrib
