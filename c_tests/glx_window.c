@@ -202,6 +202,50 @@ static int run_visual(Display *dpy)
     XSync(dpy, False);
     check_scene(dpy, win, vi, w, h, "visual, after binding again");
 
+    /* Front and back buffers: drawing the front shows at glFlush; the back
+     * buffer (still the scene: swaps copy) shows at the next swap. */
+    glDrawBuffer(GL_FRONT);
+    glClearColor(0, 1, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glFlush();
+    XSync(dpy, False);
+    expect_pixel(dpy, win, vi, w - 3, 2, 0, 255, 0, "front buffer drawn, after glFlush");
+    glDrawBuffer(GL_BACK);
+    glXSwapBuffers(dpy, win);
+    XSync(dpy, False);
+    check_scene(dpy, win, vi, w, h, "visual, back buffer swapped over the front one");
+
+    /* GLX events: the mask is stored per drawable. */
+    {
+        unsigned long mask = 1234;
+        glXGetSelectedEvent(dpy, win, &mask);
+        CHECK(mask == 0, "glXGetSelectedEvent before glXSelectEvent: 0x%lx", mask);
+        glXSelectEvent(dpy, win, GLX_PBUFFER_CLOBBER_MASK);
+        glXGetSelectedEvent(dpy, win, &mask);
+        CHECK(mask == GLX_PBUFFER_CLOBBER_MASK, "glXGetSelectedEvent 0x%lx", mask);
+    }
+
+    /* A second context sharing the first one's lists; glXCopyContext
+     * copies the colour-buffer group (the clear colour) into it. */
+    {
+        GLuint list = glGenLists(1);
+        GLXContext ctx2 = glXCreateContext(dpy, vi, ctx, True);
+        GLfloat cc[4] = {0, 0, 0, 0};
+        glNewList(list, GL_COMPILE);
+        glColor3f(1, 1, 0);
+        glEndList();
+        glClearColor(0.5f, 0.25f, 1, 1);
+        CHECK(ctx2 != NULL, "glXCreateContext with a share list");
+        glXCopyContext(dpy, ctx, ctx2, GL_COLOR_BUFFER_BIT);
+        CHECK(glXMakeCurrent(dpy, win, ctx2), "glXMakeCurrent(ctx2)");
+        CHECK(glIsList(list), "ctx2 sees ctx's display list %u", list);
+        glGetFloatv(GL_COLOR_CLEAR_VALUE, cc);
+        CHECK(cc[0] == 0.5f && cc[1] == 0.25f && cc[2] == 1, "glXCopyContext: clear colour %g,%g,%g", cc[0], cc[1], cc[2]);
+        CHECK(glXMakeCurrent(dpy, win, ctx), "glXMakeCurrent(ctx) again");
+        glXDestroyContext(dpy, ctx2);
+        CHECK(glIsList(list), "ctx keeps the list after ctx2 is destroyed");
+    }
+
     /* Destroying a current context defers until it is released. */
     glXDestroyContext(dpy, ctx);
     CHECK(glXGetCurrentContext() == ctx, "a destroyed current context stays current until released");
