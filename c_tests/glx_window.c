@@ -246,6 +246,12 @@ static int run_visual(Display *dpy)
         CHECK(glIsList(list), "ctx keeps the list after ctx2 is destroyed");
     }
 
+    /* A window id that does not exist: False (BadDrawable is caught, the
+     * program is not stopped by Xlib's default error handler), and the
+     * context stays usable. */
+    CHECK(!glXMakeCurrent(dpy, (Window)0x1ffffff0, ctx), "glXMakeCurrent on a bad window succeeded");
+    CHECK(glXMakeCurrent(dpy, win, ctx), "glXMakeCurrent after a bad window");
+
     /* Destroying a current context defers until it is released. */
     glXDestroyContext(dpy, ctx);
     CHECK(glXGetCurrentContext() == ctx, "a destroyed current context stays current until released");
@@ -360,6 +366,47 @@ static int run_fbconfig(Display *dpy)
         CHECK(glXMakeContextCurrent(dpy, None, None, NULL), "glXMakeContextCurrent(None) after the pixmap");
         glXDestroyPixmap(dpy, gpm);
         XFreePixmap(dpy, pm);
+    }
+
+    /* A pbuffer: rendered into and read back with glReadPixels. */
+    {
+        int pb_attribs[] = {GLX_DRAWABLE_TYPE, GLX_PBUFFER_BIT, GLX_RED_SIZE, 8, None};
+        int pbuf_size[] = {GLX_PBUFFER_WIDTH, 20, GLX_PBUFFER_HEIGHT, 10, None};
+        int m = 0;
+        unsigned int qw = 0, qh = 0, qid = 0;
+        unsigned char px[4] = {0, 0, 0, 0}, px2[4] = {0, 0, 0, 0};
+        GLXFBConfig *pc = glXChooseFBConfig(dpy, DefaultScreen(dpy), pb_attribs, &m);
+        GLXPbuffer pb = None;
+        CHECK(pc && m > 0, "no pbuffer config");
+        if (pc) {
+            glXGetFBConfigAttrib(dpy, pc[0], GLX_MAX_PBUFFER_WIDTH, &v);
+            CHECK(v >= 2048, "GLX_MAX_PBUFFER_WIDTH %d", v);
+            pb = glXCreatePbuffer(dpy, pc[0], pbuf_size);
+        }
+        CHECK(pb != None, "glXCreatePbuffer");
+        if (pb != None) {
+            GLXContext pctx = glXCreateNewContext(dpy, pc[0], GLX_RGBA_TYPE, NULL, True);
+            glXQueryDrawable(dpy, pb, GLX_WIDTH, &qw);
+            glXQueryDrawable(dpy, pb, GLX_HEIGHT, &qh);
+            glXQueryDrawable(dpy, pb, GLX_FBCONFIG_ID, &qid);
+            CHECK(qw == 20 && qh == 10, "pbuffer size %ux%u", qw, qh);
+            glXGetFBConfigAttrib(dpy, pc[0], GLX_FBCONFIG_ID, &v);
+            CHECK(qid == (unsigned)v, "pbuffer GLX_FBCONFIG_ID %u, config %d", qid, v);
+            CHECK(pctx && glXMakeContextCurrent(dpy, pb, pb, pctx), "glXMakeContextCurrent(pbuffer)");
+            draw_scene(20, 10);
+            glReadPixels(2, 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+            glReadPixels(17, 7, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px2);
+            CHECK(px[0] == 255 && px[2] == 0 && px2[0] == 0 && px2[2] == 255,
+                  "pbuffer pixels %d,%d,%d and %d,%d,%d", px[0], px[1], px[2], px2[0], px2[1], px2[2]);
+            CHECK(glXMakeContextCurrent(dpy, None, None, NULL), "release the pbuffer");
+            glXDestroyContext(dpy, pctx);
+            glXDestroyPbuffer(dpy, pb);
+            qw = 0;
+            glXQueryDrawable(dpy, pb, GLX_WIDTH, &qw);
+            CHECK(qw == 0, "destroyed pbuffer still answers %u", qw);
+        }
+        if (pc)
+            XFree(pc);
     }
 
     CHECK(glXMakeContextCurrent(dpy, None, None, NULL), "glXMakeContextCurrent(None)");

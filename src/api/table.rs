@@ -750,9 +750,9 @@ super::entry_points! {
     free glXDestroyWindow(dpy: *mut Display, win: GLXDrawable) { glx::destroy_window(dpy, win) }
     free glXCreatePixmap(dpy: *mut Display, config: GLXFBConfig, pixmap: XID, attribList: *const c_int) -> GLXDrawable { glx::create_fb_pixmap(dpy, config, pixmap, attribList) }
     free glXDestroyPixmap(dpy: *mut Display, pixmap: GLXDrawable) { glx::destroy_pixmap(dpy, pixmap) }
-    todo glXCreatePbuffer(dpy: *mut Display, config: GLXFBConfig, attribList: *const c_int) -> GLXDrawable;
-    todo glXDestroyPbuffer(dpy: *mut Display, pbuf: GLXDrawable);
-    free["GLX_WIDTH and GLX_HEIGHT only"] glXQueryDrawable(dpy: *mut Display, draw: GLXDrawable, attribute: c_int, value: *mut std::ffi::c_uint) { glx::query_drawable(dpy, draw, attribute, value) }
+    free glXCreatePbuffer(dpy: *mut Display, config: GLXFBConfig, attribList: *const c_int) -> GLXDrawable { glx::create_pbuffer(dpy, config, attribList) }
+    free glXDestroyPbuffer(dpy: *mut Display, pbuf: GLXDrawable) { glx::destroy_pbuffer(dpy, pbuf) }
+    free glXQueryDrawable(dpy: *mut Display, draw: GLXDrawable, attribute: c_int, value: *mut std::ffi::c_uint) { glx::query_drawable(dpy, draw, attribute, value) }
     free glXCreateNewContext(dpy: *mut Display, config: GLXFBConfig, renderType: c_int, shareList: GLXContext, direct: Bool) -> GLXContext { glx::create_new_context(dpy, config, renderType, shareList, direct) }
     free["the read drawable must be the draw drawable's framebuffer: reads come from the draw drawable"] glXMakeContextCurrent(dpy: *mut Display, draw: GLXDrawable, read: GLXDrawable, ctx: GLXContext) -> Bool { glx::make_context_current(dpy, draw, read, ctx) }
     free glXGetCurrentReadDrawable() -> GLXDrawable { glx::get_current_read_drawable() }

@@ -29,8 +29,12 @@
 //!   threads. glXCopyContext copies the groups glPushAttrib saves.
 //!   glXSelectEvent's mask is stored and returned by glXGetSelectedEvent;
 //!   softgl never generates GLX_PBUFFER_CLOBBER events (its drawables are
-//!   never clobbered). pbuffers and glXUseXFont are not implemented
-//!   (`todo` in the table).
+//!   never clobbered). glXUseXFont is not implemented (`todo`).
+//! * Pbuffers are offscreen drawables with ids softgl makes (top bits set,
+//!   never an X id). Their pixels live in the framebuffer of the context
+//!   bound to them: rendering and glReadPixels work; another context bound
+//!   to the same pbuffer does not see them, and a context that binds a
+//!   drawable of another size in between loses them.
 //! * X visuals have no per-visual buffering in softgl: glXChooseVisual
 //!   records, per visual, whether the program asked for double buffering,
 //!   and glXGetConfig/glXCreateContext answer with that (double-buffered
@@ -147,10 +151,11 @@ impl FbConfig {
             GLX_X_VISUAL_TYPE => GLX_TRUE_COLOR,
             GLX_VISUAL_ID => self.visualid as c_int,
             GLX_SCREEN => self.screen,
-            GLX_DRAWABLE_TYPE => GLX_WINDOW_BIT | GLX_PIXMAP_BIT,
+            GLX_DRAWABLE_TYPE => GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT,
             GLX_RENDER_TYPE => GLX_RGBA_BIT,
             GLX_FBCONFIG_ID => self.id,
-            GLX_MAX_PBUFFER_WIDTH | GLX_MAX_PBUFFER_HEIGHT | GLX_MAX_PBUFFER_PIXELS => 0,
+            GLX_MAX_PBUFFER_WIDTH | GLX_MAX_PBUFFER_HEIGHT => MAX_SIZE as c_int,
+            GLX_MAX_PBUFFER_PIXELS => (MAX_SIZE * MAX_SIZE) as c_int,
             GLX_SAMPLE_BUFFERS | GLX_SAMPLES => 0,
             _ => return None,
         })
@@ -166,9 +171,35 @@ struct Screens {
     pixmaps: Vec<(usize, Xid)>,
     /// glXSelectEvent masks: (display, drawable, mask).
     events: Vec<(usize, Xid, c_ulong)>,
+    /// Pbuffers.
+    pbuffers: Vec<Pbuffer>,
+    /// The next pbuffer's id (PBUFFER_ID_BASE + n).
+    next_pbuffer: u32,
 }
 
-static SCREENS: Mutex<Screens> = Mutex::new(Screens { lists: Vec::new(), visual_double: Vec::new(), pixmaps: Vec::new(), events: Vec::new() });
+/// A GLXPbuffer: an offscreen drawable with no X resource behind it.
+#[derive(Clone, Copy, Debug)]
+struct Pbuffer {
+    dpy: usize,
+    id: Xid,
+    width: usize,
+    height: usize,
+    config: &'static FbConfig,
+    preserved: bool,
+    largest: bool,
+}
+
+/// Pbuffer ids have the top bits set, which X resource ids (29 bits) never
+/// have: they cannot collide with windows or pixmaps.
+const PBUFFER_ID_BASE: Xid = 0xE000_0000;
+
+pub const GLX_PRESERVED_CONTENTS: c_int = 0x801B;
+pub const GLX_LARGEST_PBUFFER: c_int = 0x801C;
+pub const GLX_PBUFFER_HEIGHT: c_int = 0x8040;
+pub const GLX_PBUFFER_WIDTH: c_int = 0x8041;
+
+static SCREENS: Mutex<Screens> =
+    Mutex::new(Screens { lists: Vec::new(), visual_double: Vec::new(), pixmaps: Vec::new(), events: Vec::new(), pbuffers: Vec::new(), next_pbuffer: 1 });
 
 fn lock() -> std::sync::MutexGuard<'static, Screens> {
     SCREENS.lock().unwrap_or_else(|e| e.into_inner())
@@ -513,11 +544,63 @@ fn is_pixmap(dpy: *mut Display, d: Xid) -> bool {
     lock().pixmaps.contains(&(dpy as usize, d))
 }
 
+fn pbuffer(dpy: *mut Display, d: Xid) -> Option<Pbuffer> {
+    lock().pbuffers.iter().find(|p| p.dpy == dpy as usize && p.id == d).copied()
+}
+
+/// glXCreatePbuffer: GLX_PBUFFER_WIDTH/HEIGHT (default 0, as GLX 1.4
+/// table 3.5 says), GLX_PRESERVED_CONTENTS and GLX_LARGEST_PBUFFER (stored
+/// and reported; contents are always preserved). The config must offer
+/// pbuffers (all do). None on a bad config, attribute or size.
+pub unsafe fn create_pbuffer(dpy: *mut Display, config: *const FbConfig, attribs_list: *const c_int) -> Xid {
+    if dpy.is_null() || config.is_null() {
+        return 0;
+    }
+    let Some(req) = attribs(attribs_list, false) else { return 0 };
+    let (mut w, mut h, mut preserved, mut largest) = (0i64, 0i64, true, false);
+    for (a, v) in req {
+        match a {
+            GLX_PBUFFER_WIDTH => w = v as i64,
+            GLX_PBUFFER_HEIGHT => h = v as i64,
+            GLX_PRESERVED_CONTENTS => preserved = v != 0,
+            GLX_LARGEST_PBUFFER => largest = v != 0,
+            _ => return 0, // BadValue
+        }
+    }
+    if w < 0 || h < 0 {
+        return 0;
+    }
+    let max = MAX_SIZE as i64;
+    if (w > max || h > max) && !largest {
+        return 0; // BadAlloc
+    }
+    let mut s = lock();
+    let id = PBUFFER_ID_BASE | (s.next_pbuffer as Xid & 0x0FFF_FFFF);
+    s.next_pbuffer = s.next_pbuffer.wrapping_add(1).max(1);
+    let config: &'static FbConfig = &*config;
+    s.pbuffers.push(Pbuffer { dpy: dpy as usize, id, width: w.min(max) as usize, height: h.min(max) as usize, config, preserved, largest });
+    id
+}
+
+pub fn destroy_pbuffer(dpy: *mut Display, pbuf: Xid) {
+    lock().pbuffers.retain(|p| !(p.dpy == dpy as usize && p.id == pbuf));
+}
+
 /// The size of a drawable, or None (no such drawable, no X).
 unsafe fn geometry(dpy: *mut Display, d: Xid) -> Option<(usize, usize)> {
+    if let Some(p) = pbuffer(dpy, d) {
+        // A 0x0 pbuffer is legal; the framebuffer gets at least a pixel.
+        return Some((p.width.max(1), p.height.max(1)));
+    }
+    if d & PBUFFER_ID_BASE == PBUFFER_ID_BASE || dpy.is_null() {
+        return None; // a destroyed pbuffer: not an X id
+    }
     let x = xlib()?;
     let (mut root, mut px, mut py, mut w, mut h, mut bw, mut depth): (Xid, c_int, c_int, c_uint, c_uint, c_uint, c_uint) = (0, 0, 0, 0, 0, 0, 0);
-    if (x.XGetGeometry)(dpy, d, &mut root, &mut px, &mut py, &mut w, &mut h, &mut bw, &mut depth) == 0 {
+    // A bad drawable is BadDrawable: caught, so that the program's handler
+    // (Xlib's default one exits) never sees an error softgl caused.
+    let (ok, failed) = xlib::trap_errors(x, dpy, || (x.XGetGeometry)(dpy, d, &mut root, &mut px, &mut py, &mut w, &mut h, &mut bw, &mut depth));
+    if ok == 0 || failed {
         return None;
     }
     Some(((w as usize).clamp(1, MAX_SIZE), (h as usize).clamp(1, MAX_SIZE)))
@@ -739,11 +822,18 @@ pub unsafe fn make_context_current(dpy: *mut Display, draw: Xid, read: Xid, ctx:
     if c.gl.fb.resize(w, h).is_err() {
         return 0;
     }
-    let Some(surface) = XSurface::new(dpy, draw, &c.config) else { return 0 };
-    let surface = Rc::new(RefCell::new(surface));
-    let double = c.config.double && !is_pixmap(dpy, draw);
-    c.gl.surface = Some(Box::new(OnFlush(surface.clone())));
-    c.surface = Some((surface, double));
+    if pbuffer(dpy, draw).is_some() {
+        // Nothing to show: the pixels stay in the framebuffer, read back
+        // with glReadPixels.
+        c.gl.surface = None;
+        c.surface = None;
+    } else {
+        let Some(surface) = XSurface::new(dpy, draw, &c.config) else { return 0 };
+        let surface = Rc::new(RefCell::new(surface));
+        let double = c.config.double && !is_pixmap(dpy, draw);
+        c.gl.surface = Some(Box::new(OnFlush(surface.clone())));
+        c.surface = Some((surface, double));
+    }
     c.dpy = dpy;
     c.draw = draw;
     c.read = read;
@@ -868,9 +958,22 @@ pub unsafe fn query_context(_dpy: *mut Display, ctx: *mut GlxContext, attrib: c_
     0
 }
 
-/// glXQueryDrawable: GLX_WIDTH and GLX_HEIGHT from the X drawable.
+/// glXQueryDrawable: GLX_WIDTH and GLX_HEIGHT (of the X drawable, or the
+/// pbuffer's as created); for pbuffers also GLX_PRESERVED_CONTENTS,
+/// GLX_LARGEST_PBUFFER and GLX_FBCONFIG_ID.
 pub unsafe fn query_drawable(dpy: *mut Display, d: Xid, attrib: c_int, value: *mut c_uint) {
     if value.is_null() {
+        return;
+    }
+    if let Some(p) = pbuffer(dpy, d) {
+        match attrib {
+            GLX_WIDTH => *value = p.width as c_uint,
+            GLX_HEIGHT => *value = p.height as c_uint,
+            GLX_PRESERVED_CONTENTS => *value = p.preserved as c_uint,
+            GLX_LARGEST_PBUFFER => *value = p.largest as c_uint,
+            GLX_FBCONFIG_ID => *value = p.config.id as c_uint,
+            _ => {}
+        }
         return;
     }
     if let Some((w, h)) = geometry(dpy, d) {
