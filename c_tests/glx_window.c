@@ -246,6 +246,54 @@ static int run_visual(Display *dpy)
         CHECK(glIsList(list), "ctx keeps the list after ctx2 is destroyed");
     }
 
+    /* glXUseXFont with the server's "fixed" font (6x13): a built-in font
+     * of cell height 13 draws 'H'; its lit pixels stay within 13 rows and
+     * 6 columns of the raster position. A bad font id must not stop the
+     * program (the default font is used). */
+    {
+        Font font = XLoadFont(dpy, "fixed");
+        GLuint base = glGenLists(2);
+        static unsigned char img[96 * 72 * 4];
+        int x, y, lit = 0, x0 = 1000, x1 = -1, y0 = 1000, y1 = -1;
+        glXUseXFont(font, 'H', 1, base);
+        glXUseXFont((Font)0x1ffffff1, 'H', 1, base + 1);
+        CHECK(glIsList(base) && glIsList(base + 1), "glXUseXFont made no lists");
+        glClearColor(0, 0, 0, 0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glColor3f(1, 1, 1);
+        glRasterPos2i(10, 10);
+        glCallList(base);
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        for (y = 0; y < h; y++)
+            for (x = 0; x < w; x++)
+                if (img[4 * (y * w + x)] == 255) {
+                    lit++;
+                    if (x < x0) x0 = x;
+                    if (x > x1) x1 = x;
+                    if (y < y0) y0 = y;
+                    if (y > y1) y1 = y;
+                }
+        CHECK(lit > 10 && x0 >= 10 && x1 < 18 && y0 >= 7 && y1 < 23 && y1 - y0 >= 6,
+              "glXUseXFont 'H': %d lit pixels in x %d..%d, y %d..%d", lit, x0, x1, y0, y1);
+        printf("glXUseXFont 'H' (fixed): %d lit pixels in x %d..%d, y %d..%d\n", lit, x0, x1, y0, y1);
+        {
+            /* The default font (16 pixels) from the bad font id: a taller H. */
+            int top = -1;
+            glClear(GL_COLOR_BUFFER_BIT);
+            glRasterPos2i(10, 10);
+            glCallList(base + 1);
+            glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img);
+            for (y = 0; y < h; y++)
+                for (x = 0; x < w; x++)
+                    if (img[4 * (y * w + x)] == 255 && y > top)
+                        top = y;
+            printf("glXUseXFont 'H' (default font): top row %d\n", top);
+            CHECK(top > y1, "the 16-pixel default H (top %d) is not taller than the fixed one (top %d)", top, y1);
+        }
+        XUnloadFont(dpy, font);
+        CHECK(glGetError() == GL_NO_ERROR, "GL error after glXUseXFont");
+    }
+
     /* A window id that does not exist: False (BadDrawable is caught, the
      * program is not stopped by Xlib's default error handler), and the
      * context stays usable. */

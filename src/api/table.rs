@@ -740,7 +740,7 @@ super::entry_points! {
     free glXGetCurrentDrawable() -> GLXDrawable { glx::get_current_drawable() }
     free glXWaitGL() { glx::wait_gl() }
     free glXWaitX() { glx::wait_x() }
-    todo glXUseXFont(font: XID, first: c_int, count: c_int, list: c_int);
+    free["draws with softgl's built-in bitmap fonts sized like the X font, not the X font's own glyphs"] glXUseXFont(font: XID, first: c_int, count: c_int, list: c_int) { glx::use_x_font(font, first, count, list) }
     free glXGetCurrentDisplay() -> *mut Display { glx::get_current_display() }
     free["no pbuffer configs"] glXChooseFBConfig(dpy: *mut Display, screen: c_int, attribList: *const c_int, nitems: *mut c_int) -> *mut GLXFBConfig { glx::choose_fb_config(dpy, screen, attribList, nitems) }
     free glXGetFBConfigAttrib(dpy: *mut Display, config: GLXFBConfig, attribute: c_int, value: *mut c_int) -> c_int { glx::get_fb_config_attrib(dpy, config, attribute, value) }

@@ -29,7 +29,12 @@
 //!   threads. glXCopyContext copies the groups glPushAttrib saves.
 //!   glXSelectEvent's mask is stored and returned by glXGetSelectedEvent;
 //!   softgl never generates GLX_PBUFFER_CLOBBER events (its drawables are
-//!   never clobbered). glXUseXFont is not implemented (`todo`).
+//!   never clobbered).
+//! * glXUseXFont draws with softgl's built-in fonts (src/fonts), not the X
+//!   font's glyphs: the one whose cell height is closest to the X font's
+//!   ascent + descent (XQueryFont), or the default 16-pixel font when the
+//!   font cannot be queried. Characters are taken as Latin-1, the usual X
+//!   font encoding.
 //! * Pbuffers are offscreen drawables with ids softgl makes (top bits set,
 //!   never an X id). Their pixels live in the framebuffer of the context
 //!   bound to them: rendering and glReadPixels work; another context bound
@@ -1017,4 +1022,28 @@ pub unsafe fn get_selected_event(dpy: *mut Display, draw: Xid, mask: *mut c_ulon
         return;
     }
     *mask = lock().events.iter().find(|&&(d, w, _)| d == dpy as usize && w == draw).map_or(0, |e| e.2);
+}
+
+/// glXUseXFont (GLX 1.4 section 3.3.9): display lists list..list+count-1,
+/// each a glBitmap of character first+i (see the module comment for the
+/// font used). Nothing happens with no current context, inside glBegin/End
+/// or while a list is being compiled, or for a negative count.
+pub unsafe fn use_x_font(font: Xid, first: c_int, count: c_int, list: c_int) {
+    let cur = current_glx();
+    if cur.is_null() || first < 0 || count <= 0 || list <= 0 {
+        return;
+    }
+    let dpy = (*cur).dpy;
+    let mut height = 0;
+    if let (Some(x), false) = (xlib(), dpy.is_null()) {
+        let (fs, failed) = xlib::trap_errors(x, dpy, || (x.XQueryFont)(dpy, font));
+        if !fs.is_null() {
+            if !failed {
+                height = ((*fs).ascent + (*fs).descent).clamp(0, 1024);
+            }
+            (x.XFreeFontInfo)(null_mut(), fs, 1);
+        }
+    }
+    let f = crate::fonts::select(height, 0);
+    crate::winsys::wgl::build_font_lists(&f, |c| c, first as u32, count as u32, list as u32);
 }
