@@ -875,7 +875,13 @@ pub unsafe fn swap_buffers(dpy: *mut Display, drawable: Xid) {
     if c.draw != drawable || c.dpy != dpy || c.gl.in_begin_end() {
         return;
     }
-    let Some((surface, double)) = c.surface.clone() else { return };
+    let Some((surface, double)) = c.surface.clone() else {
+        // A pbuffer: no window to show; a double-buffered one still swaps.
+        if pbuffer(dpy, drawable).is_some() {
+            c.gl.swap_buffers();
+        }
+        return;
+    };
     if !double {
         return; // no effect on a single-buffered drawable (section 3.3.10)
     }
