@@ -202,6 +202,104 @@ static int run_visual(Display *dpy)
     XSync(dpy, False);
     check_scene(dpy, win, vi, w, h, "visual, after binding again");
 
+    /* Front and back buffers: drawing the front shows at glFlush; the back
+     * buffer (still the scene: swaps copy) shows at the next swap. */
+    glDrawBuffer(GL_FRONT);
+    glClearColor(0, 1, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glFlush();
+    XSync(dpy, False);
+    expect_pixel(dpy, win, vi, w - 3, 2, 0, 255, 0, "front buffer drawn, after glFlush");
+    glDrawBuffer(GL_BACK);
+    glXSwapBuffers(dpy, win);
+    XSync(dpy, False);
+    check_scene(dpy, win, vi, w, h, "visual, back buffer swapped over the front one");
+
+    /* GLX events: the mask is stored per drawable. */
+    {
+        unsigned long mask = 1234;
+        glXGetSelectedEvent(dpy, win, &mask);
+        CHECK(mask == 0, "glXGetSelectedEvent before glXSelectEvent: 0x%lx", mask);
+        glXSelectEvent(dpy, win, GLX_PBUFFER_CLOBBER_MASK);
+        glXGetSelectedEvent(dpy, win, &mask);
+        CHECK(mask == GLX_PBUFFER_CLOBBER_MASK, "glXGetSelectedEvent 0x%lx", mask);
+    }
+
+    /* A second context sharing the first one's lists; glXCopyContext
+     * copies the colour-buffer group (the clear colour) into it. */
+    {
+        GLuint list = glGenLists(1);
+        GLXContext ctx2 = glXCreateContext(dpy, vi, ctx, True);
+        GLfloat cc[4] = {0, 0, 0, 0};
+        glNewList(list, GL_COMPILE);
+        glColor3f(1, 1, 0);
+        glEndList();
+        glClearColor(0.5f, 0.25f, 1, 1);
+        CHECK(ctx2 != NULL, "glXCreateContext with a share list");
+        glXCopyContext(dpy, ctx, ctx2, GL_COLOR_BUFFER_BIT);
+        CHECK(glXMakeCurrent(dpy, win, ctx2), "glXMakeCurrent(ctx2)");
+        CHECK(glIsList(list), "ctx2 sees ctx's display list %u", list);
+        glGetFloatv(GL_COLOR_CLEAR_VALUE, cc);
+        CHECK(cc[0] == 0.5f && cc[1] == 0.25f && cc[2] == 1, "glXCopyContext: clear colour %g,%g,%g", cc[0], cc[1], cc[2]);
+        CHECK(glXMakeCurrent(dpy, win, ctx), "glXMakeCurrent(ctx) again");
+        glXDestroyContext(dpy, ctx2);
+        CHECK(glIsList(list), "ctx keeps the list after ctx2 is destroyed");
+    }
+
+    /* glXUseXFont with the server's "fixed" font (6x13): a built-in font
+     * of cell height 13 draws 'H'; its lit pixels stay within 13 rows and
+     * 6 columns of the raster position. A bad font id must not stop the
+     * program (the default font is used). */
+    {
+        Font font = XLoadFont(dpy, "fixed");
+        GLuint base = glGenLists(2);
+        static unsigned char img[96 * 72 * 4];
+        int x, y, lit = 0, x0 = 1000, x1 = -1, y0 = 1000, y1 = -1;
+        glXUseXFont(font, 'H', 1, base);
+        glXUseXFont((Font)0x1ffffff1, 'H', 1, base + 1);
+        CHECK(glIsList(base) && glIsList(base + 1), "glXUseXFont made no lists");
+        glClearColor(0, 0, 0, 0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glColor3f(1, 1, 1);
+        glRasterPos2i(10, 10);
+        glCallList(base);
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        for (y = 0; y < h; y++)
+            for (x = 0; x < w; x++)
+                if (img[4 * (y * w + x)] == 255) {
+                    lit++;
+                    if (x < x0) x0 = x;
+                    if (x > x1) x1 = x;
+                    if (y < y0) y0 = y;
+                    if (y > y1) y1 = y;
+                }
+        CHECK(lit > 10 && x0 >= 10 && x1 < 18 && y0 >= 7 && y1 < 23 && y1 - y0 >= 6,
+              "glXUseXFont 'H': %d lit pixels in x %d..%d, y %d..%d", lit, x0, x1, y0, y1);
+        printf("glXUseXFont 'H' (fixed): %d lit pixels in x %d..%d, y %d..%d\n", lit, x0, x1, y0, y1);
+        {
+            /* The default font (16 pixels) from the bad font id: a taller H. */
+            int top = -1;
+            glClear(GL_COLOR_BUFFER_BIT);
+            glRasterPos2i(10, 10);
+            glCallList(base + 1);
+            glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img);
+            for (y = 0; y < h; y++)
+                for (x = 0; x < w; x++)
+                    if (img[4 * (y * w + x)] == 255 && y > top)
+                        top = y;
+            printf("glXUseXFont 'H' (default font): top row %d\n", top);
+            CHECK(top > y1, "the 16-pixel default H (top %d) is not taller than the fixed one (top %d)", top, y1);
+        }
+        XUnloadFont(dpy, font);
+        CHECK(glGetError() == GL_NO_ERROR, "GL error after glXUseXFont");
+    }
+
+    /* A window id that does not exist: False (BadDrawable is caught, the
+     * program is not stopped by Xlib's default error handler), and the
+     * context stays usable. */
+    CHECK(!glXMakeCurrent(dpy, (Window)0x1ffffff0, ctx), "glXMakeCurrent on a bad window succeeded");
+    CHECK(glXMakeCurrent(dpy, win, ctx), "glXMakeCurrent after a bad window");
+
     /* Destroying a current context defers until it is released. */
     glXDestroyContext(dpy, ctx);
     CHECK(glXGetCurrentContext() == ctx, "a destroyed current context stays current until released");
@@ -316,6 +414,47 @@ static int run_fbconfig(Display *dpy)
         CHECK(glXMakeContextCurrent(dpy, None, None, NULL), "glXMakeContextCurrent(None) after the pixmap");
         glXDestroyPixmap(dpy, gpm);
         XFreePixmap(dpy, pm);
+    }
+
+    /* A pbuffer: rendered into and read back with glReadPixels. */
+    {
+        int pb_attribs[] = {GLX_DRAWABLE_TYPE, GLX_PBUFFER_BIT, GLX_RED_SIZE, 8, None};
+        int pbuf_size[] = {GLX_PBUFFER_WIDTH, 20, GLX_PBUFFER_HEIGHT, 10, None};
+        int m = 0;
+        unsigned int qw = 0, qh = 0, qid = 0;
+        unsigned char px[4] = {0, 0, 0, 0}, px2[4] = {0, 0, 0, 0};
+        GLXFBConfig *pc = glXChooseFBConfig(dpy, DefaultScreen(dpy), pb_attribs, &m);
+        GLXPbuffer pb = None;
+        CHECK(pc && m > 0, "no pbuffer config");
+        if (pc) {
+            glXGetFBConfigAttrib(dpy, pc[0], GLX_MAX_PBUFFER_WIDTH, &v);
+            CHECK(v >= 2048, "GLX_MAX_PBUFFER_WIDTH %d", v);
+            pb = glXCreatePbuffer(dpy, pc[0], pbuf_size);
+        }
+        CHECK(pb != None, "glXCreatePbuffer");
+        if (pb != None) {
+            GLXContext pctx = glXCreateNewContext(dpy, pc[0], GLX_RGBA_TYPE, NULL, True);
+            glXQueryDrawable(dpy, pb, GLX_WIDTH, &qw);
+            glXQueryDrawable(dpy, pb, GLX_HEIGHT, &qh);
+            glXQueryDrawable(dpy, pb, GLX_FBCONFIG_ID, &qid);
+            CHECK(qw == 20 && qh == 10, "pbuffer size %ux%u", qw, qh);
+            glXGetFBConfigAttrib(dpy, pc[0], GLX_FBCONFIG_ID, &v);
+            CHECK(qid == (unsigned)v, "pbuffer GLX_FBCONFIG_ID %u, config %d", qid, v);
+            CHECK(pctx && glXMakeContextCurrent(dpy, pb, pb, pctx), "glXMakeContextCurrent(pbuffer)");
+            draw_scene(20, 10);
+            glReadPixels(2, 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+            glReadPixels(17, 7, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px2);
+            CHECK(px[0] == 255 && px[2] == 0 && px2[0] == 0 && px2[2] == 255,
+                  "pbuffer pixels %d,%d,%d and %d,%d,%d", px[0], px[1], px[2], px2[0], px2[1], px2[2]);
+            CHECK(glXMakeContextCurrent(dpy, None, None, NULL), "release the pbuffer");
+            glXDestroyContext(dpy, pctx);
+            glXDestroyPbuffer(dpy, pb);
+            qw = 0;
+            glXQueryDrawable(dpy, pb, GLX_WIDTH, &qw);
+            CHECK(qw == 0, "destroyed pbuffer still answers %u", qw);
+        }
+        if (pc)
+            XFree(pc);
     }
 
     CHECK(glXMakeContextCurrent(dpy, None, None, NULL), "glXMakeContextCurrent(None)");

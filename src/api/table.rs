@@ -418,7 +418,7 @@ super::entry_points! {
     list glDepthFunc(func: GLenum) { |_c| Command::DepthFunc(func) }
     list glBlendFunc(sfactor: GLenum, dfactor: GLenum) { |_c| Command::BlendFunc([sfactor, dfactor, sfactor, dfactor]) }
     list glLogicOp(opcode: GLenum) { |_c| Command::LogicOp(opcode) }
-    list["double-buffered surfaces keep one colour buffer yet: FRONT and BACK name the same storage there"] glDrawBuffer(mode: GLenum) { |_c| Command::DrawBuffer(mode) }
+    list glDrawBuffer(mode: GLenum) { |_c| Command::DrawBuffer(mode) }
     list glIndexMask(mask: GLuint) { |_c| Command::IndexMask(mask) }
     list glColorMask(red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) { |_c| Command::ColorMask([truth(red), truth(green), truth(blue), truth(alpha)]) }
     list glDepthMask(flag: GLboolean) { |_c| Command::DepthMask(truth(flag)) }
@@ -430,7 +430,7 @@ super::entry_points! {
     list glClearStencil(s: GLint) { |_c| Command::ClearStencil(s) }
     list glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) { |_c| Command::ClearAccum([red, green, blue, alpha]) }
     list glAccum(op: GLenum, value: GLfloat) { |_c| Command::Accum(op, value) }
-    list["as glDrawBuffer"] glReadBuffer(mode: GLenum) { |_c| Command::ReadBuffer(mode) }
+    list glReadBuffer(mode: GLenum) { |_c| Command::ReadBuffer(mode) }
     exec["the ARB_imaging transfer stages (colour table, convolution, colour matrix, histogram) are not implemented"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
     list["texturing and fog of the fragments come with those features"] glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) { |_c| Command::CopyPixels(x, y, width, height, type_) }
     list glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) { |_c| map_command(read_points(target, points, stride, order, 0, 1), |points| Command::Map { target, u: (u1 as f32, u2 as f32), uorder: order, v: None, points }) }
@@ -718,8 +718,8 @@ super::entry_points! {
     free gluEndTrim(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_trim()) }
 
     // ---- osmesa.h ----
-    free["the share-list argument is accepted but lists are not shared yet"] OSMesaCreateContext(format: GLenum, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_ext(format, 24, 8, 0, sharelist) }
-    free["as OSMesaCreateContext"] OSMesaCreateContextExt(format: GLenum, depthBits: GLint, stencilBits: GLint, accumBits: GLint, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_ext(format, depthBits, stencilBits, accumBits, sharelist) }
+    free OSMesaCreateContext(format: GLenum, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_ext(format, 24, 8, 0, sharelist) }
+    free OSMesaCreateContextExt(format: GLenum, depthBits: GLint, stencilBits: GLint, accumBits: GLint, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_ext(format, depthBits, stencilBits, accumBits, sharelist) }
     free["as OSMesaCreateContext"] OSMesaCreateContextAttribs(attribList: *const i32, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_attribs(attribList, sharelist) }
     free OSMesaDestroyContext(ctx: *mut OsContext) { osmesa::destroy_context(ctx) }
     free OSMesaMakeCurrent(ctx: *mut OsContext, buffer: *mut c_void, type_: GLenum, width: GLsizei, height: GLsizei) -> GLboolean { gl_bool(osmesa::make_current(ctx, buffer, type_, width, height)) }
@@ -740,10 +740,10 @@ super::entry_points! {
     free glXGetClientString(dpy: *mut Display, name: c_int) -> *const c_char { glx::get_client_string(dpy, name) }
     free["double buffering is per visual as glXChooseVisual was last asked; no colour-index, stereo or multisample visuals"] glXChooseVisual(dpy: *mut Display, screen: c_int, attribList: *mut c_int) -> *mut XVisualInfo { glx::choose_visual(dpy, screen, attribList) }
     free glXGetConfig(dpy: *mut Display, vis: *mut XVisualInfo, attrib: c_int, value: *mut c_int) -> c_int { glx::get_config(dpy, vis, attrib, value) }
-    free["the share list is accepted but display lists are not shared yet"] glXCreateContext(dpy: *mut Display, vis: *mut XVisualInfo, shareList: GLXContext, direct: Bool) -> GLXContext { glx::create_context(dpy, vis, shareList, direct) }
+    free glXCreateContext(dpy: *mut Display, vis: *mut XVisualInfo, shareList: GLXContext, direct: Bool) -> GLXContext { glx::create_context(dpy, vis, shareList, direct) }
     free glXDestroyContext(dpy: *mut Display, ctx: GLXContext) { glx::destroy_context(dpy, ctx) }
     free["GL_FRONT and GL_BACK are one colour buffer"] glXMakeCurrent(dpy: *mut Display, drawable: GLXDrawable, ctx: GLXContext) -> Bool { glx::make_current(dpy, drawable, ctx) }
-    todo glXCopyContext(dpy: *mut Display, src: GLXContext, dst: GLXContext, mask: std::ffi::c_ulong);
+    free glXCopyContext(dpy: *mut Display, src: GLXContext, dst: GLXContext, mask: std::ffi::c_ulong) { glx::copy_context(dpy, src, dst, mask) }
     free["shows the one colour buffer (no separate front buffer yet); XPutImage, no MIT-SHM"] glXSwapBuffers(dpy: *mut Display, drawable: GLXDrawable) { glx::swap_buffers(dpy, drawable) }
     free glXCreateGLXPixmap(dpy: *mut Display, visual: *mut XVisualInfo, pixmap: XID) -> GLXDrawable { glx::create_pixmap(dpy, if visual.is_null() { 0 } else { pixmap }) }
     free glXDestroyGLXPixmap(dpy: *mut Display, pixmap: GLXDrawable) { glx::destroy_pixmap(dpy, pixmap) }
@@ -752,7 +752,7 @@ super::entry_points! {
     free glXGetCurrentDrawable() -> GLXDrawable { glx::get_current_drawable() }
     free glXWaitGL() { glx::wait_gl() }
     free glXWaitX() { glx::wait_x() }
-    todo glXUseXFont(font: XID, first: c_int, count: c_int, list: c_int);
+    free["draws with softgl's built-in bitmap fonts sized like the X font, not the X font's own glyphs"] glXUseXFont(font: XID, first: c_int, count: c_int, list: c_int) { glx::use_x_font(font, first, count, list) }
     free glXGetCurrentDisplay() -> *mut Display { glx::get_current_display() }
     free["no pbuffer configs"] glXChooseFBConfig(dpy: *mut Display, screen: c_int, attribList: *const c_int, nitems: *mut c_int) -> *mut GLXFBConfig { glx::choose_fb_config(dpy, screen, attribList, nitems) }
     free glXGetFBConfigAttrib(dpy: *mut Display, config: GLXFBConfig, attribute: c_int, value: *mut c_int) -> c_int { glx::get_fb_config_attrib(dpy, config, attribute, value) }
@@ -762,15 +762,15 @@ super::entry_points! {
     free glXDestroyWindow(dpy: *mut Display, win: GLXDrawable) { glx::destroy_window(dpy, win) }
     free glXCreatePixmap(dpy: *mut Display, config: GLXFBConfig, pixmap: XID, attribList: *const c_int) -> GLXDrawable { glx::create_fb_pixmap(dpy, config, pixmap, attribList) }
     free glXDestroyPixmap(dpy: *mut Display, pixmap: GLXDrawable) { glx::destroy_pixmap(dpy, pixmap) }
-    todo glXCreatePbuffer(dpy: *mut Display, config: GLXFBConfig, attribList: *const c_int) -> GLXDrawable;
-    todo glXDestroyPbuffer(dpy: *mut Display, pbuf: GLXDrawable);
-    free["GLX_WIDTH and GLX_HEIGHT only"] glXQueryDrawable(dpy: *mut Display, draw: GLXDrawable, attribute: c_int, value: *mut std::ffi::c_uint) { glx::query_drawable(dpy, draw, attribute, value) }
-    free["the share list is accepted but display lists are not shared yet"] glXCreateNewContext(dpy: *mut Display, config: GLXFBConfig, renderType: c_int, shareList: GLXContext, direct: Bool) -> GLXContext { glx::create_new_context(dpy, config, renderType, shareList, direct) }
+    free glXCreatePbuffer(dpy: *mut Display, config: GLXFBConfig, attribList: *const c_int) -> GLXDrawable { glx::create_pbuffer(dpy, config, attribList) }
+    free glXDestroyPbuffer(dpy: *mut Display, pbuf: GLXDrawable) { glx::destroy_pbuffer(dpy, pbuf) }
+    free glXQueryDrawable(dpy: *mut Display, draw: GLXDrawable, attribute: c_int, value: *mut std::ffi::c_uint) { glx::query_drawable(dpy, draw, attribute, value) }
+    free glXCreateNewContext(dpy: *mut Display, config: GLXFBConfig, renderType: c_int, shareList: GLXContext, direct: Bool) -> GLXContext { glx::create_new_context(dpy, config, renderType, shareList, direct) }
     free["the read drawable must be the draw drawable's framebuffer: reads come from the draw drawable"] glXMakeContextCurrent(dpy: *mut Display, draw: GLXDrawable, read: GLXDrawable, ctx: GLXContext) -> Bool { glx::make_context_current(dpy, draw, read, ctx) }
     free glXGetCurrentReadDrawable() -> GLXDrawable { glx::get_current_read_drawable() }
     free["GLX_FBCONFIG_ID, GLX_RENDER_TYPE and GLX_SCREEN"] glXQueryContext(dpy: *mut Display, ctx: GLXContext, attribute: c_int, value: *mut c_int) -> c_int { glx::query_context(dpy, ctx, attribute, value) }
-    todo glXSelectEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: std::ffi::c_ulong);
-    todo glXGetSelectedEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: *mut std::ffi::c_ulong);
+    free glXSelectEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: std::ffi::c_ulong) { glx::select_event(dpy, draw, event_mask) }
+    free glXGetSelectedEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: *mut std::ffi::c_ulong) { glx::get_selected_event(dpy, draw, event_mask) }
     free glXGetProcAddressARB(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
     free glXGetProcAddress(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
 
@@ -780,7 +780,7 @@ super::entry_points! {
     free wglMakeCurrent(hdc: *mut c_void, hglrc: *mut c_void) -> c_int { crate::winsys::wgl::make_current(hdc, hglrc) }
     free wglGetCurrentContext() -> *mut c_void { crate::winsys::wgl::get_current_context() }
     free wglGetCurrentDC() -> *mut c_void { crate::winsys::wgl::get_current_dc() }
-    free["checks both contexts and returns TRUE, but display lists are not shared yet"] wglShareLists(hglrc1: *mut c_void, hglrc2: *mut c_void) -> c_int { crate::winsys::wgl::share_lists(hglrc1, hglrc2) }
+    free wglShareLists(hglrc1: *mut c_void, hglrc2: *mut c_void) -> c_int { crate::winsys::wgl::share_lists(hglrc1, hglrc2) }
     free["copies the groups glPushAttrib saves (see glPushAttrib)"] wglCopyContext(hglrcSrc: *mut c_void, hglrcDst: *mut c_void, mask: u32) -> c_int { crate::winsys::wgl::copy_context(hglrcSrc, hglrcDst, mask) }
     free wglGetProcAddress(lpszProc: *const c_char) -> GLproc { proc_from_name(lpszProc) }
     free wglChoosePixelFormat(hdc: *mut c_void, ppfd: *const crate::winsys::wgl::PixelFormatDescriptor) -> c_int { crate::winsys::wgl::choose_pixel_format(hdc, ppfd) }

@@ -4,6 +4,20 @@
 //! signed per channel). Rows are stored bottom-up: row 0 is window y = 0,
 //! as in GL's window coordinates, so the pipeline never flips.
 //!
+//! Colour buffers (section 4.2.1): a single-buffered surface has one, the
+//! front (left) buffer. A double-buffered surface keeps two, front and
+//! back, and `color` is always the one drawing writes first: the back
+//! buffer for GL_BACK and GL_FRONT_AND_BACK, the front buffer for GL_FRONT.
+//! Selecting a draw buffer swaps the two vectors (no copy), so the whole
+//! pipeline keeps writing `color`; only FRONT_AND_BACK needs the fragment
+//! stage's colour write to repeat itself into `other_color` (`draw_both`),
+//! blending against that buffer's own contents. Depth, stencil and
+//! accumulation are shared by both colour buffers.
+//!
+//! SwapBuffers copies the back buffer into the front one and leaves the
+//! back buffer as it was (GL leaves it undefined; this is what Mesa's xlib
+//! driver does, and piglit's swapbuffers-behavior reports it as a copy).
+//!
 //! Allocation is fallible: a surface too large for memory is reported, never
 //! aborts the program.
 
@@ -31,7 +45,20 @@ pub struct Framebuffer {
     pub width: usize,
     pub height: usize,
     pub config: Config,
+    /// The colour buffer drawing writes (see the module comment).
     pub color: Vec<[u8; 4]>,
+    /// Double-buffered surfaces: the other colour buffer; empty otherwise.
+    pub other_color: Vec<[u8; 4]>,
+    /// Whether `color` is the back buffer (never, single-buffered).
+    pub color_is_back: bool,
+    /// GL_FRONT_AND_BACK on a double-buffered surface: every colour write
+    /// to `color` is repeated into `other_color`.
+    pub draw_both: bool,
+    /// Something may have been drawn into the front buffer of a
+    /// double-buffered surface since it was last presented: glFlush and
+    /// glFinish present it then.
+    pub front_dirty: bool,
+    double: bool,
     pub depth: Vec<u32>,
     pub stencil: Vec<u8>,
     pub accum: Vec<[i16; 4]>,
@@ -51,7 +78,120 @@ fn alloc<T: Copy>(n: usize, fill: T) -> Result<Vec<T>, AllocError> {
 impl Framebuffer {
     /// An empty (0x0) framebuffer with the given ancillary buffers.
     pub fn new(config: Config) -> Framebuffer {
-        Framebuffer { width: 0, height: 0, config, color: Vec::new(), depth: Vec::new(), stencil: Vec::new(), accum: Vec::new(), samples_passed: 0 }
+        Framebuffer {
+            width: 0,
+            height: 0,
+            config,
+            color: Vec::new(),
+            other_color: Vec::new(),
+            color_is_back: false,
+            draw_both: false,
+            front_dirty: false,
+            double: false,
+            depth: Vec::new(),
+            stencil: Vec::new(),
+            accum: Vec::new(),
+            samples_passed: 0,
+        }
+    }
+
+    /// Gives the surface a back buffer (or takes it away). A new back
+    /// buffer starts as a copy of the front one.
+    pub fn set_double_buffered(&mut self, double: bool) -> Result<(), AllocError> {
+        if double == self.double {
+            return Ok(());
+        }
+        if double {
+            let mut back = Vec::new();
+            back.try_reserve_exact(self.color.len()).map_err(|_| AllocError)?;
+            back.extend_from_slice(&self.color);
+            self.other_color = back;
+            self.color_is_back = false;
+        } else {
+            if self.color_is_back {
+                std::mem::swap(&mut self.color, &mut self.other_color);
+            }
+            self.other_color = Vec::new();
+            self.color_is_back = false;
+            self.draw_both = false;
+        }
+        self.double = double;
+        Ok(())
+    }
+
+    pub fn is_double_buffered(&self) -> bool {
+        self.double
+    }
+
+    /// Points drawing at the buffers glDrawBuffer names. Cheap when nothing
+    /// changes; a no-op on a single-buffered surface, whose one buffer is
+    /// every name that exists.
+    pub fn select_draw(&mut self, target: DrawTarget) {
+        if !self.double {
+            return;
+        }
+        let (want_back, both) = match target {
+            DrawTarget::Front => (false, false),
+            DrawTarget::Back => (true, false),
+            DrawTarget::FrontAndBack => (true, true),
+            DrawTarget::None => (self.color_is_back, false),
+        };
+        if want_back != self.color_is_back {
+            std::mem::swap(&mut self.color, &mut self.other_color);
+            self.color_is_back = want_back;
+        }
+        self.draw_both = both;
+        if matches!(target, DrawTarget::Front | DrawTarget::FrontAndBack) {
+            self.front_dirty = true;
+        }
+    }
+
+    /// The front colour buffer: what a window shows.
+    pub fn front(&self) -> &[[u8; 4]] {
+        if self.color_is_back {
+            &self.other_color
+        } else {
+            &self.color
+        }
+    }
+
+    /// The back colour buffer (the front one on a single-buffered surface).
+    pub fn back(&self) -> &[[u8; 4]] {
+        if self.double && !self.color_is_back {
+            &self.other_color
+        } else {
+            &self.color
+        }
+    }
+
+    /// The colour buffer glReadBuffer names: the back one or the front one.
+    pub fn read_color(&self, back: bool) -> &[[u8; 4]] {
+        if back {
+            self.back()
+        } else {
+            self.front()
+        }
+    }
+
+    /// The colour buffers drawing writes: `color`, and `other_color` for
+    /// FRONT_AND_BACK. For glClear and glAccum's RETURN.
+    pub fn draw_colors(&mut self) -> impl Iterator<Item = &mut Vec<[u8; 4]>> {
+        let both = self.draw_both;
+        std::iter::once(&mut self.color).chain(both.then_some(&mut self.other_color))
+    }
+
+    /// SwapBuffers: the back buffer's contents become the front buffer's;
+    /// the back buffer keeps them (see the module comment).
+    pub fn swap_buffers(&mut self) {
+        if !self.double {
+            return;
+        }
+        if self.color_is_back {
+            self.other_color.copy_from_slice(&self.color);
+        } else {
+            self.color.copy_from_slice(&self.other_color);
+        }
+        self.front_dirty = false;
     }
 
     /// Resizes to `width` x `height`. Contents become undefined (zero), as
@@ -66,10 +206,25 @@ impl Framebuffer {
         }
         let n = width * height;
         let color = alloc(n, [0u8; 4])?;
+        let other_color = if self.double { alloc(n, [0u8; 4])? } else { Vec::new() };
         let depth = if self.config.depth_bits > 0 { alloc(n, 0u32)? } else { Vec::new() };
         let stencil = if self.config.stencil_bits > 0 { alloc(n, 0u8)? } else { Vec::new() };
         let accum = if self.config.accum_bits > 0 { alloc(n, [0i16; 4])? } else { Vec::new() };
-        *self = Framebuffer { width, height, config: self.config, color, depth, stencil, accum, samples_passed: self.samples_passed };
+        *self = Framebuffer {
+            width,
+            height,
+            config: self.config,
+            color,
+            other_color,
+            color_is_back: self.color_is_back,
+            draw_both: self.draw_both,
+            front_dirty: false,
+            double: self.double,
+            depth,
+            stencil,
+            accum,
+            samples_passed: self.samples_passed,
+        };
         Ok(())
     }
 
@@ -85,6 +240,15 @@ impl Framebuffer {
     pub fn has_stencil(&self) -> bool {
         !self.stencil.is_empty()
     }
+}
+
+/// Which colour buffers glDrawBuffer's mode names on this surface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DrawTarget {
+    Front,
+    Back,
+    FrontAndBack,
+    None,
 }
 
 /// A pixel rectangle [x0, x1) x [y0, y1) in window coordinates.
@@ -112,7 +276,9 @@ impl Rect {
 
 /// Where a context's finished pixels go: a caller's OSMesa buffer, an X
 /// window, a PNG dump. The window system installs one at MakeCurrent; GL
-/// calls it at glFlush/glFinish (single-buffered) or SwapBuffers.
+/// calls it at glFlush/glFinish (single-buffered, or a double-buffered
+/// surface whose front buffer was drawn) and SwapBuffers. It shows
+/// `fb.front()`.
 pub trait Present {
     fn present(&mut self, fb: &Framebuffer);
 }

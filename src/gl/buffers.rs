@@ -92,6 +92,13 @@ pub struct Buffers {
 }
 
 impl Buffers {
+    /// Exchanges the buffer objects and their names with a share group's
+    /// (gl::share); the bindings stay per context.
+    pub fn swap_objects(&mut self, other: &mut Buffers) {
+        std::mem::swap(&mut self.names, &mut other.names);
+        std::mem::swap(&mut self.objects, &mut other.objects);
+    }
+
     pub fn get(&self, name: u32) -> Option<&Buffer> {
         self.objects.get(&name)
     }

@@ -28,23 +28,27 @@ impl Context {
         if r.is_empty() {
             return;
         }
+        // Each draw buffer is cleared (4.2.3): both for FRONT_AND_BACK.
+        self.sync_draw_buffer();
         let fb: &mut Framebuffer = &mut self.fb;
         let w = fb.width;
         if mask & GL_COLOR_BUFFER_BIT != 0 {
             let value = color_to_u8(Vec4::from_array(self.color_buffer.clear));
             let m = if self.color_buffer.draw_buffer == 0 { [false; 4] } else { self.color_buffer.write_mask };
-            if m == [true; 4] {
-                rows(&mut fb.color, w, r, |row| row.fill(value));
-            } else if m != [false; 4] {
-                rows(&mut fb.color, w, r, |row| {
-                    for px in row {
-                        for ch in 0..4 {
-                            if m[ch] {
-                                px[ch] = value[ch];
+            for color in fb.draw_colors() {
+                if m == [true; 4] {
+                    rows(color, w, r, |row| row.fill(value));
+                } else if m != [false; 4] {
+                    rows(color, w, r, |row| {
+                        for px in row {
+                            for ch in 0..4 {
+                                if m[ch] {
+                                    px[ch] = value[ch];
+                                }
                             }
                         }
-                    }
-                });
+                    });
+                }
             }
         }
         if mask & GL_DEPTH_BUFFER_BIT != 0 && fb.has_depth() && self.depth.write_mask {

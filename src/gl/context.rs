@@ -62,6 +62,9 @@ pub struct Context {
     /// Dirty bits (validate::DIRTY_*): derived state to recompute.
     pub dirty: u32,
     pub derived: validate::Derived,
+    /// The share group whose display lists, textures and buffer objects
+    /// this context uses (gl::share); None: its own.
+    pub share: Option<std::sync::Arc<super::share::ShareGroup>>,
     /// The viewport and scissor are set to the surface size at the first
     /// MakeCurrent only (GL 1.5 section 2.11.1; GLX/WGL say the same).
     pub sized_once: bool,
@@ -106,6 +109,7 @@ impl Context {
             surface: None,
             dirty: validate::DIRTY_ALL,
             derived: validate::Derived::default(),
+            share: None,
             sized_once: false,
         }
     }
@@ -141,8 +145,27 @@ impl Context {
     }
 
     /// glFlush / glFinish: rendering is synchronous, so both just deliver
-    /// the framebuffer to the surface.
+    /// the front buffer to the surface: always on a single-buffered
+    /// surface, and on a double-buffered one when the front buffer may have
+    /// been drawn into since it was last shown (glDrawBuffer(GL_FRONT)).
     pub fn flush(&mut self) {
+        if self.double_buffered && !self.fb.front_dirty {
+            return;
+        }
+        self.fb.front_dirty = false;
+        if let Some(s) = self.surface.as_mut() {
+            s.present(&self.fb);
+        }
+    }
+
+    /// SwapBuffers: the back buffer becomes the front one (a copy: see
+    /// `framebuffer`) and is presented. No effect on a single-buffered
+    /// surface.
+    pub fn swap_buffers(&mut self) {
+        if !self.double_buffered {
+            return;
+        }
+        self.fb.swap_buffers();
         if let Some(s) = self.surface.as_mut() {
             s.present(&self.fb);
         }
@@ -151,10 +174,15 @@ impl Context {
     /// The window system says whether the surface is double-buffered;
     /// draw and read buffers start at BACK there (4.2.1, 4.3.2).
     pub fn set_double_buffered(&mut self, double: bool) {
+        if self.fb.set_double_buffered(double).is_err() {
+            // No memory for a back buffer: stay single-buffered.
+            return self.set_error(GL_OUT_OF_MEMORY);
+        }
         self.double_buffered = double;
         let initial = if double { GL_BACK } else { GL_FRONT };
         self.color_buffer.draw_buffer = initial;
         self.pixel_read_buffer = initial;
+        self.sync_draw_buffer();
         self.dirty |= validate::DIRTY_FRAGMENT;
     }
 

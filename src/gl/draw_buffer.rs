@@ -2,16 +2,19 @@
 //! colour-index mode's glIndexMask / glClearIndex, which an RGBA context
 //! stores and otherwise ignores.
 //!
-//! A softgl surface has one colour buffer: for single-buffered surfaces it
-//! is the front (left) buffer; double-buffered surfaces do not keep a
-//! separate front buffer yet, so FRONT and BACK name the same storage
-//! there. What is validated exactly: which names exist (RIGHT needs stereo,
-//! AUXi aux buffers, BACK a double-buffered surface: INVALID_OPERATION
-//! otherwise), and GL_NONE, which disables colour writes.
+//! A single-buffered surface has one colour buffer, the front left one; a
+//! double-buffered surface has a front and a back buffer (no stereo, no
+//! aux buffers). Names that do not exist on the surface are
+//! INVALID_OPERATION (RIGHT, AUXi, and BACK on a single-buffered surface);
+//! GL_NONE disables colour writes. The framebuffer is pointed at the named
+//! buffers lazily ([`Context::sync_draw_buffer`]) before anything draws,
+//! clears or accumulates, so every path that changes the draw-buffer state
+//! (glDrawBuffer, glPopAttrib, display lists) is covered by one call.
 
 use super::context::Context;
 use super::enums::*;
 use super::validate::DIRTY_FRAGMENT;
+use crate::framebuffer::DrawTarget;
 
 pub const GL_NONE: u32 = 0;
 pub const GL_FRONT_LEFT: u32 = 0x0400;
@@ -59,5 +62,26 @@ impl Context {
             return self.set_error(GL_INVALID_OPERATION);
         }
         self.pixel_read_buffer = mode;
+    }
+}
+
+impl Context {
+    /// Points the framebuffer at the buffers the draw-buffer state names.
+    pub fn sync_draw_buffer(&mut self) {
+        let target = match self.color_buffer.draw_buffer {
+            GL_FRONT | GL_FRONT_LEFT => DrawTarget::Front,
+            GL_BACK | GL_BACK_LEFT => DrawTarget::Back,
+            // Table 4.4: LEFT names the front and back left buffers.
+            GL_FRONT_AND_BACK | GL_LEFT => DrawTarget::FrontAndBack,
+            _ => DrawTarget::None,
+        };
+        self.fb.select_draw(target);
+    }
+
+    /// The colour buffer glReadBuffer names (FRONT and LEFT: the front
+    /// left buffer, BACK the back left one; section 4.3.2): what glReadPixels,
+    /// glCopyPixels, glCopyTexImage and glAccum read.
+    pub fn read_color(&self) -> &[[u8; 4]] {
+        self.fb.read_color(matches!(self.pixel_read_buffer, GL_BACK | GL_BACK_LEFT))
     }
 }

@@ -290,6 +290,7 @@ impl Context {
         self.validate();
         let shading = self.pixel_shading();
         let fb = &self.fb;
+        let read = self.read_color(); // glReadBuffer's buffer
         // Read everything first: overlapping copies see the old pixels.
         let at = |i: usize, j: usize| -> Option<usize> {
             let (fx, fy) = (x as i64 + i as i64, y as i64 + j as i64);
@@ -304,7 +305,7 @@ impl Context {
                     idx.iter()
                         .map(|o| {
                             o.map(|k| {
-                                let c = fb.color[k];
+                                let c = read[k];
                                 if identity && shading.is_none() {
                                     c
                                 } else {

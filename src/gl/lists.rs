@@ -104,8 +104,8 @@ impl List {
 
 /// The list names in use and their contents: the part of display-list
 /// state that contexts sharing lists (glXCreateContext's share_list,
-/// wglShareLists) would share. Everything else reaches it through these
-/// four methods.
+/// wglShareLists) share (gl::share swaps it in for each call). Everything
+/// else reaches it through these four methods.
 #[derive(Default)]
 pub struct ListStore {
     /// Defined lists (possibly empty). Rc: a list keeps running even if it
@@ -193,6 +193,13 @@ impl Lists {
     /// The list named `n`, for measurements and tests.
     pub fn get(&self, n: u32) -> Option<Rc<List>> {
         self.store.get(n)
+    }
+
+    /// Exchanges the table of defined lists with a share group's
+    /// (gl::share): the lists are shared, compilation state and the list
+    /// base stay per context.
+    pub fn swap_table(&mut self, table: &mut ListStore) {
+        std::mem::swap(&mut self.store, table);
     }
 }
 

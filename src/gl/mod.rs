@@ -29,6 +29,7 @@ pub mod pixels;
 pub mod queries;
 pub mod polygon;
 pub mod select;
+pub mod share;
 pub mod raster_pos;
 pub mod state;
 pub mod texture;

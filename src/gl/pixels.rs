@@ -101,6 +101,8 @@ impl Context {
         let (w, h) = (w as usize, h as usize);
         let mut dest = Dest::new(&modes, w, h, format, ty, out);
         let fb = &self.fb;
+        // Colours come from the buffer glReadBuffer names.
+        let color = self.read_color();
         let t = &self.pixel;
         // Fast path: RGBA bytes inside the window with no transfer are the
         // stored bytes, a row at a time.
@@ -108,7 +110,7 @@ impl Context {
         if format == GL_RGBA && ty == GL_UNSIGNED_BYTE && inside && t.color_is_identity() {
             let layout = dest.layout;
             for j in 0..h {
-                let src = &fb.color[fb.index(x as usize, y as usize + j)..][..w];
+                let src = &color[fb.index(x as usize, y as usize + j)..][..w];
                 let o = layout.offset(0, j, 0);
                 for (i, px) in src.iter().enumerate() {
                     dest.data[o + 4 * i..o + 4 * i + 4].copy_from_slice(px);
@@ -130,7 +132,7 @@ impl Context {
                 let idx = fb.index(fx as usize, fy as usize);
                 match kind {
                     Kind::Color => {
-                        let mut c = [fb.color[idx].map(|v| v as f32 / 255.0)];
+                        let mut c = [color[idx].map(|v| v as f32 / 255.0)];
                         t.color(&mut c);
                         dest.put_color(i, j, c[0]);
                     }

@@ -79,6 +79,10 @@ impl Context {
 
     /// Recomputes whatever is dirty.
     pub fn validate(&mut self) {
+        // Every draw comes through here: the framebuffer follows the draw
+        // buffer (cheap when unchanged; it also notes front-buffer drawing
+        // for glFlush).
+        self.sync_draw_buffer();
         if self.dirty == 0 {
             return;
         }

@@ -27,7 +27,7 @@ pub fn frame(fb: &Framebuffer) -> Option<PathBuf> {
     let dir = dir()?;
     let n = NEXT.fetch_add(1, Ordering::Relaxed);
     let path = dir.join(format!("frame-{n:05}.png"));
-    match write_png(&path, fb.width, fb.height, &fb.color) {
+    match write_png(&path, fb.width, fb.height, fb.front()) {
         Ok(()) => Some(path),
         Err(e) => {
             if !REPORTED.swap(true, Ordering::Relaxed) {

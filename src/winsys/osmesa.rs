@@ -173,7 +173,7 @@ impl Present for UserBuffer {
         unsafe {
             for y in 0..self.height.min(fb.height) {
                 let row = self.ptr.add(self.row_offset(y));
-                let src = &fb.color[fb.index(0, y)..fb.index(0, y) + self.width.min(fb.width)];
+                let src = &fb.front()[fb.index(0, y)..fb.index(0, y) + self.width.min(fb.width)];
                 if self.format == GL_RGBA && self.ty == GL_UNSIGNED_BYTE {
                     std::ptr::copy_nonoverlapping(src.as_ptr() as *const u8, row, src.len() * 4);
                 } else {
@@ -194,11 +194,18 @@ fn config(depth: i32, stencil: i32, accum: i32) -> Config {
     }
 }
 
-pub fn create_context_ext(format: u32, depth: i32, stencil: i32, accum: i32, _share: *mut OsContext) -> *mut OsContext {
+/// OSMesaCreateContextExt. A non-NULL `share` must be a live context: the
+/// new one shares its display lists, textures and buffer objects
+/// (gl::share).
+pub fn create_context_ext(format: u32, depth: i32, stencil: i32, accum: i32, share: *mut OsContext) -> *mut OsContext {
     if !is_format(format) {
         return null_mut();
     }
-    let ctx = Box::new(OsContext { gl: Context::new(config(depth, stencil, accum)), format, buffer: None, row_length: 0, y_up: true });
+    let mut ctx = Box::new(OsContext { gl: Context::new(config(depth, stencil, accum)), format, buffer: None, row_length: 0, y_up: true });
+    if !share.is_null() {
+        // SAFETY: OSMesa's contract: sharelist is NULL or a live context.
+        crate::gl::share::join(&mut ctx.gl, unsafe { &mut (*share).gl });
+    }
     Box::into_raw(ctx)
 }
 

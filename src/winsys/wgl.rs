@@ -33,8 +33,8 @@
 //! context current elsewhere fails, as does deleting it. Any failing
 //! MakeCurrent leaves the thread with no current context (as Windows does).
 //!
-//! Not yet: wglShareLists accepts and returns TRUE but display lists stay
-//! per context; wglCopyContext copies the attribute groups softgl keeps
+//! wglShareLists shares display lists, textures and buffer objects
+//! (gl::share). wglCopyContext copies the attribute groups softgl keeps
 //! (see [`copy_context`]); wglUseFontOutlines is not implemented.
 #![allow(clippy::missing_safety_doc)]
 
@@ -198,7 +198,7 @@ impl DcState {
     fn show(&mut self, fb: &Framebuffer) {
         let n = fb.width * fb.height;
         self.front.clear();
-        self.front.extend_from_slice(&fb.color[..n]);
+        self.front.extend_from_slice(&fb.front()[..n]);
         // The frame's size: the DC may have been resized since the context
         // last followed it.
         self.front_size = (fb.width, fb.height);
@@ -396,9 +396,8 @@ fn release_current() {
     }
     // SAFETY: a current context is live: deleting it releases it first.
     let c = unsafe { &mut *cur };
-    if !is_double(c.pixel_format) {
-        c.gl.flush();
-    }
+    // Single-buffered, or a double-buffered front buffer drawn into.
+    c.gl.flush();
     c.gl.surface = None;
     c.dc = None;
     c.bound.store(false, Ordering::Release);
@@ -447,7 +446,9 @@ pub fn make_current(hdc: Hdc, hglrc: Hglrc) -> Bool {
     if c.gl.fb.resize(w, h).is_err() {
         return 0;
     }
-    c.gl.surface = if is_double(format) { None } else { Some(Box::new(OnFlush(d.state.clone()))) };
+    // glFlush shows the front buffer (single-buffered, or drawn with
+    // glDrawBuffer(GL_FRONT)); SwapBuffers the back one.
+    c.gl.surface = Some(Box::new(OnFlush(d.state.clone())));
     c.dc = Some((hdc, d.state.clone()));
     c.gl.surface_resized(w as GLint, h as GLint);
     c.bound.store(true, Ordering::Release);
@@ -500,7 +501,7 @@ pub fn swap_buffers(hdc: Hdc) -> Bool {
     if c.gl.in_begin_end() {
         return 0;
     }
-    lock_dc(&d.state).show(&c.gl.fb);
+    c.gl.swap_buffers();
     let (w, h) = {
         let s = lock_dc(&d.state);
         (s.width, s.height)
@@ -508,10 +509,20 @@ pub fn swap_buffers(hdc: Hdc) -> Bool {
     follow_size(c, w, h) as Bool
 }
 
-/// wglShareLists: both contexts must exist; TRUE, but display lists are
-/// not shared yet (each context keeps its own).
+/// wglShareLists: `b` shares `a`'s display lists, textures and buffer
+/// objects from now on (gl::share); what `b` had is dropped (Windows
+/// requires it to have none). Both contexts must exist and `b` must not
+/// be current in another thread.
 pub fn share_lists(a: Hglrc, b: Hglrc) -> Bool {
-    (context(a).is_some() && context(b).is_some()) as Bool
+    let (Some(a), Some(b)) = (context(a), context(b)) else { return 0 };
+    // SAFETY: registered contexts are live.
+    unsafe {
+        if a != b && (*b).bound.load(Ordering::Acquire) && current_wgl() != b {
+            return 0;
+        }
+        crate::gl::share::join(&mut (*b).gl, &mut (*a).gl);
+    }
+    1
 }
 
 /// wglCopyContext: copies the attribute groups of `mask`, as glPushAttrib

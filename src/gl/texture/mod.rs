@@ -717,6 +717,7 @@ impl Context {
     /// read as zero.
     fn read_framebuffer(&self, x: i32, y: i32, w: i32, h: i32, depth: bool) -> image::Pixels {
         let fb = &self.fb;
+        let read = self.read_color(); // glReadBuffer's buffer
         let n = w.max(0) as usize * h.max(0) as usize;
         let at = |i: i32, j: i32| {
             let (fx, fy) = (x as i64 + i as i64, y as i64 + j as i64);
@@ -734,7 +735,7 @@ impl Context {
             let mut out = Vec::with_capacity(n);
             for j in 0..h {
                 for i in 0..w {
-                    out.push(at(i, j).map_or([0; 4], |k| fb.color[k]));
+                    out.push(at(i, j).map_or([0; 4], |k| read[k]));
                 }
             }
             image::Pixels::Rgba8(Arc::new(out))

@@ -357,6 +357,11 @@ fn fragment<const A: bool, const S: bool, const D: bool, const C: bool>(
             src = color();
         }
         write_color(fs, &mut fb.color[i], src);
+        // GL_FRONT_AND_BACK (framebuffer module): the same fragment into
+        // the other colour buffer, blended against its own contents.
+        if fb.draw_both {
+            write_color(fs, &mut fb.other_color[i], src);
+        }
     }
 }
 

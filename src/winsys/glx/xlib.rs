@@ -61,8 +61,47 @@ pub const ZPixmap: c_int = 2;
 pub const LSBFirst: c_int = 0;
 pub const MSBFirst: c_int = 1;
 
+/// XCharStruct (Xlib.h).
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub struct XCharStruct {
+    pub lbearing: i16,
+    pub rbearing: i16,
+    pub width: i16,
+    pub ascent: i16,
+    pub descent: i16,
+    pub attributes: u16,
+}
+
+/// XFontStruct (Xlib.h): only ascent and descent are read.
+#[repr(C)]
+pub struct XFontStruct {
+    pub ext_data: *mut c_void,
+    pub fid: Xid,
+    pub direction: c_uint,
+    pub min_char_or_byte2: c_uint,
+    pub max_char_or_byte2: c_uint,
+    pub min_byte1: c_uint,
+    pub max_byte1: c_uint,
+    pub all_chars_exist: c_int,
+    pub default_char: c_uint,
+    pub n_properties: c_int,
+    pub properties: *mut c_void,
+    pub min_bounds: XCharStruct,
+    pub max_bounds: XCharStruct,
+    pub per_char: *mut XCharStruct,
+    pub ascent: c_int,
+    pub descent: c_int,
+}
+
+/// An Xlib error handler (XErrorHandler).
+pub type ErrorHandler = unsafe extern "C" fn(*mut Display, *mut c_void) -> c_int;
+
 /// The Xlib entry points softgl calls.
 pub struct Xlib {
+    pub XSetErrorHandler: unsafe extern "C" fn(Option<ErrorHandler>) -> Option<ErrorHandler>,
+    pub XQueryFont: unsafe extern "C" fn(*mut Display, Xid) -> *mut XFontStruct,
+    pub XFreeFontInfo: unsafe extern "C" fn(*mut *mut c_char, *mut XFontStruct, c_int) -> c_int,
     pub XGetVisualInfo: unsafe extern "C" fn(*mut Display, c_long, *mut XVisualInfo, *mut c_int) -> *mut XVisualInfo,
     pub XFree: unsafe extern "C" fn(*mut c_void) -> c_int,
     pub XGetGeometry: unsafe extern "C" fn(*mut Display, Xid, *mut Xid, *mut c_int, *mut c_int, *mut c_uint, *mut c_uint, *mut c_uint, *mut c_uint) -> c_int,
@@ -92,6 +131,9 @@ unsafe fn load() -> Option<Xlib> {
         return None;
     }
     Some(Xlib {
+        XSetErrorHandler: sym(lib, b"XSetErrorHandler\0")?,
+        XQueryFont: sym(lib, b"XQueryFont\0")?,
+        XFreeFontInfo: sym(lib, b"XFreeFontInfo\0")?,
         XGetVisualInfo: sym(lib, b"XGetVisualInfo\0")?,
         XFree: sym(lib, b"XFree\0")?,
         XGetGeometry: sym(lib, b"XGetGeometry\0")?,
@@ -111,4 +153,28 @@ unsafe fn load() -> Option<Xlib> {
 pub fn xlib() -> Option<&'static Xlib> {
     static X: OnceLock<Option<Xlib>> = OnceLock::new();
     X.get_or_init(|| unsafe { load() }).as_ref()
+}
+
+static TRAPPED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+static TRAP: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+unsafe extern "C" fn note_error(_dpy: *mut Display, _event: *mut c_void) -> c_int {
+    TRAPPED.store(true, std::sync::atomic::Ordering::Relaxed);
+    0
+}
+
+/// Runs `f` (requests on `dpy`) with X errors caught instead of reaching
+/// the program's handler (Xlib's default one exits): returns f's result and
+/// whether an error came. Requests made before are synced first, so their
+/// errors still go to the program. Costs two round trips.
+pub unsafe fn trap_errors<R>(x: &Xlib, dpy: *mut Display, f: impl FnOnce() -> R) -> (R, bool) {
+    // The handler is process-wide: one trap at a time.
+    let _g = TRAP.lock().unwrap_or_else(|e| e.into_inner());
+    (x.XSync)(dpy, 0);
+    let old = (x.XSetErrorHandler)(Some(note_error));
+    TRAPPED.store(false, std::sync::atomic::Ordering::Relaxed);
+    let r = f();
+    (x.XSync)(dpy, 0);
+    (x.XSetErrorHandler)(old);
+    (r, TRAPPED.swap(false, std::sync::atomic::Ordering::Relaxed))
 }
