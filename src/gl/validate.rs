@@ -58,6 +58,7 @@ impl Default for Derived {
                 clip_planes: crate::render::clip::FIXED_PLANES.to_vec(),
                 fragment: FragmentState::default(),
                 texture: None,
+                reference: crate::render::reference_default(),
             },
         }
     }

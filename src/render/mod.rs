@@ -66,6 +66,16 @@ pub struct RenderState {
     /// Texturing: the enabled units with complete textures; None when no
     /// unit textures.
     pub texture: Option<std::sync::Arc<texture::TextureStage>>,
+    /// Use the reference path (SOFTGL_REFERENCE=1) instead of the fast
+    /// kernels; set at context creation from [`reference_default`].
+    pub reference: bool,
+}
+
+/// SOFTGL_REFERENCE=1 (read once per process): new contexts render through
+/// the plain reference path.
+pub fn reference_default() -> bool {
+    static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *ON.get_or_init(|| std::env::var("SOFTGL_REFERENCE").is_ok_and(|v| v == "1"))
 }
 
 impl RenderState {

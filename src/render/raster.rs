@@ -75,13 +75,14 @@ pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3]
     // A superset is enough: spans are exact.
     let row0 = floor_div(ymin - half, ONE).max(r.y0 as i64);
     let row1 = (floor_div(ymax - half, ONE) + 1).min(r.y1 as i64);
+    let kernel: fragment::fast::Kernel = if rs.reference { fragment::reference::shade_span } else { fragment::fast::select(&rs.fragment, setup) };
     for py in row0..row1 {
         let (lo, hi) = span(&edges, py, r.x0 as i64, r.x1 as i64);
         if lo >= hi {
             continue;
         }
         match &rs.polygon_stipple {
-            None => fragment::shade_span(&rs.fragment, setup, fb, py as usize, lo as usize, hi as usize),
+            None => kernel(&rs.fragment, setup, fb, py as usize, lo as usize, hi as usize),
             Some(pattern) => {
                 // Polygon stipple (3.5.2): only pixels whose bit
                 // (x mod 32, y mod 32) is set, as runs.
@@ -96,7 +97,7 @@ pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3]
                     while x < hi && row >> (x.rem_euclid(32)) & 1 == 1 {
                         x += 1;
                     }
-                    fragment::shade_span(&rs.fragment, setup, fb, py as usize, start as usize, x as usize);
+                    kernel(&rs.fragment, setup, fb, py as usize, start as usize, x as usize);
                 }
             }
         }
