@@ -11,10 +11,10 @@
 //! inequalities exactly in integers gives the covered span [x_start, x_end)
 //! directly, with no per-pixel coverage test.
 
-use super::fragment;
+use super::fragment::{self, fast::Kernel, FragmentState, SpanPixels};
 use super::setup::{TriangleSetup, ONE};
 use super::RenderState;
-use crate::framebuffer::Framebuffer;
+use crate::framebuffer::{Framebuffer, Rect};
 
 /// E(px, py) = a * px + b * py + c >= 0 inside, in pixel-centre units.
 #[derive(Clone, Copy, Debug)]
@@ -65,27 +65,28 @@ fn span(edges: &[Edge; 3], py: i64, x0: i64, x1: i64) -> (i64, i64) {
     (lo, hi)
 }
 
-pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup) {
+/// Calls `emit(py, lo, hi)` for every run of covered pixels [lo, hi) of
+/// row py inside `rect`, rows bottom to top, cut by the polygon stipple
+/// (3.5.2) when there is one.
+#[inline]
+pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, mut emit: impl FnMut(usize, usize, usize)) {
     let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
-    let r = rs.draw_rect;
     // Rows whose centres lie within the vertical extent.
     let half = ONE / 2;
-    let ymin = *y.iter().min().unwrap();
-    let ymax = *y.iter().max().unwrap();
+    let ymin = y[0].min(y[1]).min(y[2]);
+    let ymax = y[0].max(y[1]).max(y[2]);
     // A superset is enough: spans are exact.
-    let row0 = floor_div(ymin - half, ONE).max(r.y0 as i64);
-    let row1 = (floor_div(ymax - half, ONE) + 1).min(r.y1 as i64);
-    let kernel: fragment::fast::Kernel = if rs.reference { fragment::reference::shade_span } else { fragment::fast::select(&rs.fragment, setup) };
+    let row0 = floor_div(ymin - half, ONE).max(rect.y0 as i64);
+    let row1 = (floor_div(ymax - half, ONE) + 1).min(rect.y1 as i64);
     for py in row0..row1 {
-        let (lo, hi) = span(&edges, py, r.x0 as i64, r.x1 as i64);
+        let (lo, hi) = span(&edges, py, rect.x0 as i64, rect.x1 as i64);
         if lo >= hi {
             continue;
         }
-        match &rs.polygon_stipple {
-            None => kernel(&rs.fragment, setup, fb, py as usize, lo as usize, hi as usize),
+        match stipple {
+            None => emit(py as usize, lo as usize, hi as usize),
             Some(pattern) => {
-                // Polygon stipple (3.5.2): only pixels whose bit
-                // (x mod 32, y mod 32) is set, as runs.
+                // Only pixels whose bit (x mod 32, y mod 32) is set, as runs.
                 let row = pattern[py.rem_euclid(32) as usize];
                 let mut x = lo;
                 while x < hi {
@@ -97,11 +98,32 @@ pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3]
                     while x < hi && row >> (x.rem_euclid(32)) & 1 == 1 {
                         x += 1;
                     }
-                    kernel(&rs.fragment, setup, fb, py as usize, start as usize, x as usize);
+                    emit(py as usize, start as usize, x as usize);
                 }
             }
         }
     }
+}
+
+/// The span kernel for a triangle: the reference path's, or the fast one
+/// specialized for the state and the triangle's attributes.
+pub fn kernel(fs: &FragmentState, setup: &TriangleSetup, reference: bool) -> Kernel {
+    if reference {
+        fragment::reference::shade_span
+    } else {
+        fragment::fast::select(fs, setup)
+    }
+}
+
+/// Rasterizes and shades a triangle now, on this thread.
+pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup) {
+    let k = kernel(&rs.fragment, setup, rs.reference);
+    spans(x, y, rs.draw_rect, rs.polygon_stipple.as_deref(), |py, lo, hi| {
+        let mut px = SpanPixels::of(fb, py, lo, hi);
+        k(&rs.fragment, setup, &mut px, py, lo, hi);
+        let passed = px.passed;
+        fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+    });
 }
 
 #[cfg(test)]

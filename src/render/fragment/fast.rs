@@ -23,12 +23,11 @@
 //! reference kernel runs. The occlusion count is summed per span.
 
 use super::reference;
-use super::{color_to_u8, depth_to_fixed, write_color, Blend, BlendEquation, BlendFactor, ColorOp, CompareFunc, FragmentState};
-use crate::framebuffer::Framebuffer;
+use super::{color_to_u8, depth_to_fixed, write_color, Blend, BlendEquation, BlendFactor, ColorOp, CompareFunc, FragmentState, SpanPixels};
 use crate::render::setup::TriangleSetup;
 
 /// A span shader: pixels [x0, x1) of row y.
-pub type Kernel = fn(&FragmentState, &TriangleSetup, &mut Framebuffer, usize, usize, usize);
+pub type Kernel = fn(&FragmentState, &TriangleSetup, &mut SpanPixels, usize, usize, usize);
 
 /// Depth keys.
 const D_OFF: u8 = 0;
@@ -46,11 +45,6 @@ const CO_STORE: u8 = 1;
 const CO_OVER: u8 = 2;
 const CO_ADD: u8 = 3;
 const CO_GENERAL: u8 = 4;
-
-/// Pixels [x0, x1) of row `y` through the kernel for this state.
-pub fn shade_span(fs: &FragmentState, t: &TriangleSetup, fb: &mut Framebuffer, y: usize, x0: usize, x1: usize) {
-    select(fs, t)(fs, t, fb, y, x0, x1)
-}
 
 fn blend_is(b: &Blend, src: BlendFactor, dst: BlendFactor) -> bool {
     b.equation == BlendEquation::Add && b.src_rgb == src && b.src_alpha == src && b.dst_rgb == dst && b.dst_alpha == dst
@@ -151,12 +145,11 @@ fn add(s: [u8; 4], d: [u8; 4]) -> [u8; 4] {
     std::array::from_fn(|ch| div255(s[ch] as u32 * a + d[ch] as u32 * 255).min(255) as u8)
 }
 
-fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, fb: &mut Framebuffer, y: usize, x0: usize, x1: usize) {
+fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     if x0 >= x1 {
         return;
     }
     let cy = y as f64 + 0.5 - t.y0;
-    let row = y * fb.width;
     // Row terms of the planes, hoisted (same rounding as the reference).
     let zr = t.z.a0 + t.z.dy * cy;
     let zdx = t.z.dx;
@@ -166,12 +159,13 @@ fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentS
     let qdx = t.q.dx;
     let flat = t.flat.unwrap_or_default();
     let st = &fs.stencil;
-    let Framebuffer { color, depth, stencil, samples_passed, .. } = fb;
-    let col: &mut [[u8; 4]] = if CO != CO_NONE { &mut color[row + x0..row + x1] } else { &mut [] };
-    let dep: &mut [u32] = if D != D_OFF { &mut depth[row + x0..row + x1] } else { &mut [] };
-    let sten: &mut [u8] = if S { &mut stencil[row + x0..row + x1] } else { &mut [] };
+    let n = x1 - x0;
+    let SpanPixels { color, depth, stencil, passed: total } = px;
+    let col = &mut color[..if CO != CO_NONE { n } else { 0 }];
+    let dep = &mut depth[..if D != D_OFF { n } else { 0 }];
+    let sten = &mut stencil[..if S { n } else { 0 }];
     let mut passed = 0u64;
-    for k in 0..x1 - x0 {
+    for k in 0..n {
         let cx = (x0 + k) as f64 + 0.5 - t.x0;
         if S {
             let s = sten[k];
@@ -221,5 +215,5 @@ fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentS
             }
         }
     }
-    *samples_passed = samples_passed.wrapping_add(passed);
+    *total += passed;
 }

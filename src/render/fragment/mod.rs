@@ -200,7 +200,10 @@ macro_rules! dispatch {
 /// kernels (the rasterizer picks a kernel once per triangle instead, and
 /// the reference path when `RenderState::reference` is set).
 pub fn shade_span(fs: &FragmentState, t: &TriangleSetup, fb: &mut Framebuffer, y: usize, x0: usize, x1: usize) {
-    fast::shade_span(fs, t, fb, y, x0, x1)
+    let mut px = SpanPixels::of(fb, y, x0, x1);
+    fast::select(fs, t)(fs, t, &mut px, y, x0, x1);
+    let passed = px.passed;
+    fb.samples_passed = fb.samples_passed.wrapping_add(passed);
 }
 
 /// Runs one fragment whose depth (24-bit fixed point) and colour are known
@@ -218,13 +221,87 @@ pub fn shade_fragment(fs: &FragmentState, fb: &mut Framebuffer, x: usize, y: usi
     dispatch!(key(fs), fragment(fs, fb, i, || depth_to_fixed(z), || color))
 }
 
+/// The pixels a span's fragments go to: the colour, depth and stencil
+/// values of pixels [x0, x1) of one row (depth and stencil empty when the
+/// buffer is absent), and the span's occlusion count. Spans of different
+/// rows or columns are disjoint, so tiles can be shaded in parallel.
+pub struct SpanPixels<'a> {
+    pub color: &'a mut [[u8; 4]],
+    pub depth: &'a mut [u32],
+    pub stencil: &'a mut [u8],
+    /// Fragments that passed the depth test (occlusion queries).
+    pub passed: u64,
+}
+
+impl<'a> SpanPixels<'a> {
+    /// Pixels [x0, x1) of row y of a framebuffer.
+    pub fn of(fb: &'a mut Framebuffer, y: usize, x0: usize, x1: usize) -> SpanPixels<'a> {
+        let (a, b) = (y * fb.width + x0, y * fb.width + x1);
+        let Framebuffer { color, depth, stencil, .. } = fb;
+        SpanPixels {
+            color: &mut color[a..b],
+            depth: if depth.is_empty() { &mut [] } else { &mut depth[a..b] },
+            stencil: if stencil.is_empty() { &mut [] } else { &mut stencil[a..b] },
+            passed: 0,
+        }
+    }
+}
+
+/// Where [`fragment`] reads and writes: the whole framebuffer (index
+/// `y * width + x`) or one span (index from its start).
+pub(crate) trait Buffers {
+    fn stencil(&mut self, i: usize) -> &mut u8;
+    fn depth(&mut self, i: usize) -> &mut u32;
+    fn color(&mut self, i: usize) -> &mut [u8; 4];
+    /// One more fragment passed the depth test.
+    fn pass(&mut self);
+}
+
+impl Buffers for Framebuffer {
+    #[inline(always)]
+    fn stencil(&mut self, i: usize) -> &mut u8 {
+        &mut self.stencil[i]
+    }
+    #[inline(always)]
+    fn depth(&mut self, i: usize) -> &mut u32 {
+        &mut self.depth[i]
+    }
+    #[inline(always)]
+    fn color(&mut self, i: usize) -> &mut [u8; 4] {
+        &mut self.color[i]
+    }
+    #[inline(always)]
+    fn pass(&mut self) {
+        self.samples_passed = self.samples_passed.wrapping_add(1);
+    }
+}
+
+impl Buffers for SpanPixels<'_> {
+    #[inline(always)]
+    fn stencil(&mut self, i: usize) -> &mut u8 {
+        &mut self.stencil[i]
+    }
+    #[inline(always)]
+    fn depth(&mut self, i: usize) -> &mut u32 {
+        &mut self.depth[i]
+    }
+    #[inline(always)]
+    fn color(&mut self, i: usize) -> &mut [u8; 4] {
+        &mut self.color[i]
+    }
+    #[inline(always)]
+    fn pass(&mut self) {
+        self.passed += 1;
+    }
+}
+
 /// The per-fragment operations for one fragment, with the stage groups
 /// fixed at compile time: A alpha test, S stencil test, D depth test, C
 /// colour write. Depth and colour are computed only when a stage needs them.
 #[inline(always)]
 pub(crate) fn fragment<const A: bool, const S: bool, const D: bool, const C: bool>(
     fs: &FragmentState,
-    fb: &mut Framebuffer,
+    fb: &mut impl Buffers,
     i: usize,
     depth: impl Fn() -> u32,
     color: impl Fn() -> [u8; 4],
@@ -240,36 +317,38 @@ pub(crate) fn fragment<const A: bool, const S: bool, const D: bool, const C: boo
     // Section 4.1.5: stencil test; the fail operation.
     let st = &fs.stencil;
     if S {
-        let s = fb.stencil[i];
+        let s = *fb.stencil(i);
         if !st.test(s) {
-            fb.stencil[i] = st.apply(st.fail, s);
+            *fb.stencil(i) = st.apply(st.fail, s);
             return;
         }
     }
     // Section 4.1.6: depth test; the depth-fail operation.
     if D {
         let z = depth();
-        if !fs.depth_func.test(z, fb.depth[i]) {
+        if !fs.depth_func.test(z, *fb.depth(i)) {
             if S {
-                fb.stencil[i] = st.apply(st.zfail, fb.stencil[i]);
+                let s = fb.stencil(i);
+                *s = st.apply(st.zfail, *s);
             }
             return;
         }
         if fs.depth_write {
-            fb.depth[i] = z;
+            *fb.depth(i) = z;
         }
     }
     // Depth passed, or the depth test is off: a sample passed (occlusion
     // queries, gl::queries), and the depth-pass operation.
-    fb.samples_passed = fb.samples_passed.wrapping_add(1);
+    fb.pass();
     if S {
-        fb.stencil[i] = st.apply(st.zpass, fb.stencil[i]);
+        let s = fb.stencil(i);
+        *s = st.apply(st.zpass, *s);
     }
     if C {
         if !A {
             src = color();
         }
-        write_color(fs, &mut fb.color[i], src);
+        write_color(fs, fb.color(i), src);
     }
 }
 

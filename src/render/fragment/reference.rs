@@ -6,8 +6,7 @@
 //! `SOFTGL_REFERENCE=1` selects and what `tests/reference_diff.rs` checks
 //! the fast kernels ([`super::fast`]) against.
 
-use super::{depth_to_fixed, color_to_u8, fragment, key, FragmentState};
-use crate::framebuffer::Framebuffer;
+use super::{color_to_u8, depth_to_fixed, fragment, key, FragmentState, SpanPixels};
 use crate::render::setup::{Plane, TriangleSetup};
 use glam::Vec4;
 
@@ -96,15 +95,14 @@ pub fn textured_color(t: &TriangleSetup, tp: &crate::render::setup::TexPlanes, c
 
 
 /// Shades pixels [x0, x1) of row `y` of a triangle.
-pub fn shade_span(fs: &FragmentState, t: &TriangleSetup, fb: &mut Framebuffer, y: usize, x0: usize, x1: usize) {
-    dispatch!(key(fs), span(fs, t, fb, y, x0, x1))
+pub fn shade_span(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    dispatch!(key(fs), span(fs, t, px, y, x0, x1))
 }
 
-fn span<const A: bool, const S: bool, const D: bool, const C: bool>(fs: &FragmentState, t: &TriangleSetup, fb: &mut Framebuffer, y: usize, x0: usize, x1: usize) {
+fn span<const A: bool, const S: bool, const D: bool, const C: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     let cy = y as f64 + 0.5 - t.y0;
-    let row = fb.index(0, y);
     for x in x0..x1 {
         let cx = x as f64 + 0.5 - t.x0;
-        fragment::<A, S, D, C>(fs, fb, row + x, || depth_to_fixed(eval(&t.z, cx, cy)), || triangle_color(t, cx, cy));
+        fragment::<A, S, D, C>(fs, px, x - x0, || depth_to_fixed(eval(&t.z, cx, cy)), || triangle_color(t, cx, cy));
     }
 }
