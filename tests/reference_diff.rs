@@ -9,6 +9,7 @@
 //! identical: the fast path is exact under every hint (fast.rs says why),
 //! so no tolerance is needed.
 
+#![allow(non_snake_case)]
 use softgl::framebuffer::Config;
 use softgl::gl::enums::*;
 use softgl::gl::fog::{GL_FOG_COLOR, GL_FOG_DENSITY, GL_FOG_END, GL_FOG_MODE, GL_FOG_START};
@@ -16,8 +17,6 @@ use softgl::gl::texture::enums as t;
 use t::{GL_LINEAR, GL_NEAREST};
 use softgl::gl::{Command, Context};
 
-const W: usize = 61;
-const H: usize = 47;
 
 struct Rng(u64);
 
@@ -43,11 +42,12 @@ impl Rng {
     }
 }
 
-fn context(reference: bool) -> Context {
+fn context(reference: bool, (W, H): (usize, usize), threads: usize) -> Context {
     let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
     c.fb.resize(W, H).unwrap();
     c.surface_resized(W as i32, H as i32);
     c.derived.render.reference = reference;
+    c.derived.render.threads = threads;
     c
 }
 
@@ -72,7 +72,7 @@ const FACTORS: [u32; 15] = [
 ];
 
 /// The commands of one random case: state, then a few triangles.
-fn case(r: &mut Rng, tex: u32) -> Vec<Command> {
+fn case(r: &mut Rng, tex: u32, (W, H): (usize, usize)) -> Vec<Command> {
     let mut v = Vec::new();
     let en = |v: &mut Vec<Command>, cap: u32, on: bool| v.push(if on { Command::Enable(cap) } else { Command::Disable(cap) });
     v.push(Command::ShadeModel(if r.chance(30) { GL_FLAT } else { GL_SMOOTH }));
@@ -193,9 +193,10 @@ fn texture(c: &mut Context, r: &mut Rng) -> u32 {
 
 /// Renders `cases` random cases through both paths and returns the first
 /// difference, if any.
-fn compare(seed: u64, cases: usize) -> Result<(), String> {
+fn compare(seed: u64, cases: usize, size: (usize, usize), threads: usize) -> Result<(), String> {
+    let (W, H) = size;
     let mut r = Rng(seed);
-    let (mut fast, mut reference) = (context(false), context(true));
+    let (mut fast, mut reference) = (context(false, size, threads), context(true, size, 1));
     let mut tr = Rng(seed ^ 0x5eed);
     let tex = texture(&mut fast, &mut tr);
     let mut tr = Rng(seed ^ 0x5eed);
@@ -205,7 +206,7 @@ fn compare(seed: u64, cases: usize) -> Result<(), String> {
         let color: Vec<[u8; 4]> = (0..W * H).map(|_| (r.next() as u32).to_ne_bytes()).collect();
         let depth: Vec<u32> = (0..W * H).map(|_| if r.chance(50) { 0xFF_FFFF } else { r.next() as u32 & 0xFF_FFFF }).collect();
         let stencil: Vec<u8> = (0..W * H).map(|_| r.below(4) as u8 * if r.chance(50) { 1 } else { 85 }).collect();
-        let cmds = case(&mut r, tex);
+        let cmds = case(&mut r, tex, size);
         for c in [&mut fast, &mut reference] {
             c.fb.color.copy_from_slice(&color);
             c.fb.depth.copy_from_slice(&depth);
@@ -240,7 +241,19 @@ fn compare(seed: u64, cases: usize) -> Result<(), String> {
 #[test]
 fn fast_path_matches_reference() {
     for seed in 1..=4 {
-        if let Err(e) = compare(seed, 1000) {
+        if let Err(e) = compare(seed, 1000, (61, 47), 1) {
+            panic!("{e}");
+        }
+    }
+}
+
+/// The same through the binned, tiled path with 2 and 3 worker threads,
+/// on a surface large enough (several 64x64 tiles, partial edge tiles)
+/// that batches go to the workers.
+#[test]
+fn tiled_threaded_path_matches_reference() {
+    for (seed, threads) in [(11, 2), (12, 3)] {
+        if let Err(e) = compare(seed, 150, (301, 203), threads) {
             panic!("{e}");
         }
     }
@@ -251,14 +264,15 @@ fn fast_path_matches_reference() {
 #[test]
 fn cases_draw_pixels() {
     let mut r = Rng(7);
-    let mut c = context(false);
+    let size = (61, 47);
+    let mut c = context(false, size, 1);
     let tex = texture(&mut c, &mut Rng(1));
     let mut changed = 0;
     for _ in 0..200 {
         c.fb.color.fill([1, 2, 3, 4]);
         c.fb.depth.fill(0xFF_FFFF);
         c.fb.stencil.fill(0);
-        for cmd in case(&mut r, tex) {
+        for cmd in case(&mut r, tex, size) {
             c.execute(&cmd);
         }
         changed += c.fb.color.iter().filter(|&&p| p != [1, 2, 3, 4]).count();

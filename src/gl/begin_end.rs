@@ -58,6 +58,8 @@ impl Context {
                 self.triangle([&v[0], &v[i], &v[i + 1]], 0, edges);
             }
         }
+        // The end of a draw call: shade the triangles binned for tiles.
+        crate::render::flush(&self.derived.render, &mut self.fb);
     }
 
     /// glVertex: the vertex takes the current colour (section 2.7).

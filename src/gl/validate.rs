@@ -59,6 +59,8 @@ impl Default for Derived {
                 fragment: FragmentState::default(),
                 texture: None,
                 reference: crate::render::reference_default(),
+                threads: crate::render::tile::threads_default(),
+                batch: Default::default(),
             },
         }
     }

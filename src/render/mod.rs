@@ -18,6 +18,7 @@ pub mod polygon_mode;
 pub mod raster;
 pub mod setup;
 pub mod texture;
+pub mod tile;
 pub mod vertex;
 
 use crate::framebuffer::{Framebuffer, Rect};
@@ -69,6 +70,10 @@ pub struct RenderState {
     /// Use the reference path (SOFTGL_REFERENCE=1) instead of the fast
     /// kernels; set at context creation from [`reference_default`].
     pub reference: bool,
+    /// Rasterizer threads (SOFTGL_THREADS): above 1, filled triangles are
+    /// binned into `batch` and shaded by tiles at the end of the draw call.
+    pub threads: usize,
+    pub batch: tile::SharedBatch,
 }
 
 /// SOFTGL_REFERENCE=1 (read once per process): new contexts render through
@@ -92,6 +97,12 @@ impl RenderState {
             _ => Some(front),
         }
     }
+}
+
+/// Finishes the binned triangles of the current draw call (see [`tile`]):
+/// called at the end of every draw call.
+pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
+    tile::flush(rs, fb)
 }
 
 /// Twice the signed window-space area of a polygon (positive
@@ -122,6 +133,8 @@ pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3]
         return;
     }
     if rs.polygon_mode != [GL_FILL; 2] {
+        // Shaded immediately (with its lines and points, in order).
+        tile::flush(rs, fb);
         return polygon_mode::draw(rs, fb, v, flat_color, edges);
     }
     let mut poly = clip::Polygon::new();
