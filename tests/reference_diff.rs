@@ -193,7 +193,7 @@ fn texture(c: &mut Context, r: &mut Rng) -> u32 {
 
 /// Renders `cases` random cases through both paths and returns the first
 /// difference, if any.
-fn compare(seed: u64, cases: usize, size: (usize, usize), threads: usize) -> Result<(), String> {
+fn compare(seed: u64, cases: usize, size: (usize, usize), threads: usize, approximated: &mut usize) -> Result<(), String> {
     let (W, H) = size;
     let mut r = Rng(seed);
     let (mut fast, mut reference) = (context(false, size, threads), context(true, size, 1));
@@ -216,9 +216,17 @@ fn compare(seed: u64, cases: usize, size: (usize, usize), threads: usize) -> Res
             }
         }
         assert!(reference.derived.render.reference && !fast.derived.render.reference);
+        // Under GL_NICEST exact; otherwise colour may be 1/255 off (the
+        // fixed-point stepped colour of fast.rs).
+        let nicest = cmds.contains(&Command::Hint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST));
+        let tolerance = if nicest { 0 } else { 1 };
         for i in 0..W * H {
             let (a, b) = (fast.fb.color[i], reference.fb.color[i]);
-            if a != b || fast.fb.depth[i] != reference.fb.depth[i] || fast.fb.stencil[i] != reference.fb.stencil[i] {
+            let off = (0..4).map(|ch| a[ch].abs_diff(b[ch])).max().unwrap();
+            if off > 0 {
+                *approximated += 1;
+            }
+            if off > tolerance || fast.fb.depth[i] != reference.fb.depth[i] || fast.fb.stencil[i] != reference.fb.stencil[i] {
                 return Err(format!(
                     "case {n} pixel ({}, {}): fast {a:?} z {:#x} s {} / reference {b:?} z {:#x} s {}\nstate: {:?}\ncommands: {cmds:?}",
                     i % W,
@@ -240,11 +248,13 @@ fn compare(seed: u64, cases: usize, size: (usize, usize), threads: usize) -> Res
 
 #[test]
 fn fast_path_matches_reference() {
+    let mut approximated = 0;
     for seed in 1..=4 {
-        if let Err(e) = compare(seed, 1000, (61, 47), 1) {
+        if let Err(e) = compare(seed, 1000, (61, 47), 1, &mut approximated) {
             panic!("{e}");
         }
     }
+    eprintln!("pixels 1/255 off under GL_FASTEST/GL_DONT_CARE: {approximated} (of {} compared)", 4000 * 61 * 47);
 }
 
 /// The same through the binned, tiled path with 2 and 3 worker threads,
@@ -253,7 +263,7 @@ fn fast_path_matches_reference() {
 #[test]
 fn tiled_threaded_path_matches_reference() {
     for (seed, threads) in [(11, 2), (12, 3)] {
-        if let Err(e) = compare(seed, 150, (301, 203), threads) {
+        if let Err(e) = compare(seed, 150, (301, 203), threads, &mut 0) {
             panic!("{e}");
         }
     }

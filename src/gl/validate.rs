@@ -60,6 +60,7 @@ impl Default for Derived {
                 texture: None,
                 reference: crate::render::reference_default(),
                 threads: crate::render::tile::threads_default(),
+                approximate: true,
                 batch: Default::default(),
             },
         }
@@ -115,6 +116,8 @@ impl Context {
             self.derived.render.color_sum = self.fog.color_sum || (self.lighting.enabled && self.lighting.separate_specular);
         }
         if d & DIRTY_FOG != 0 {
+            // glHint marks DIRTY_FOG.
+            self.derived.render.approximate = self.hints.perspective_correction != GL_NICEST;
             self.derived.render.fog = self.fog_params();
             // The vertex stage needs eye coordinates for the fog distance.
             self.derived.modelview = self.transform.modelview.top().as_mat4();

@@ -73,6 +73,9 @@ pub struct RenderState {
     /// Rasterizer threads (SOFTGL_THREADS): above 1, filled triangles are
     /// binned into `batch` and shaded by tiles at the end of the draw call.
     pub threads: usize,
+    /// GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST: the fast kernels
+    /// may approximate colour interpolation (render::fragment::fast).
+    pub approximate: bool,
     pub batch: tile::SharedBatch,
 }
 

@@ -11,7 +11,7 @@
 //! inequalities exactly in integers gives the covered span [x_start, x_end)
 //! directly, with no per-pixel coverage test.
 
-use super::fragment::{self, fast::Kernel, FragmentState, SpanPixels};
+use super::fragment::{self, fast::Kernel, SpanPixels};
 use super::setup::{TriangleSetup, ONE};
 use super::RenderState;
 use crate::framebuffer::{Framebuffer, Rect};
@@ -107,17 +107,17 @@ pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, 
 
 /// The span kernel for a triangle: the reference path's, or the fast one
 /// specialized for the state and the triangle's attributes.
-pub fn kernel(fs: &FragmentState, setup: &TriangleSetup, reference: bool) -> Kernel {
-    if reference {
+pub fn kernel(rs: &RenderState, setup: &TriangleSetup) -> Kernel {
+    if rs.reference {
         fragment::reference::shade_span
     } else {
-        fragment::fast::select(fs, setup)
+        fragment::fast::select(&rs.fragment, setup, rs.approximate)
     }
 }
 
 /// Rasterizes and shades a triangle now, on this thread.
 pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup) {
-    let k = kernel(&rs.fragment, setup, rs.reference);
+    let k = kernel(rs, setup);
     spans(x, y, rs.draw_rect, rs.polygon_stipple.as_deref(), |py, lo, hi| {
         let mut px = SpanPixels::of(fb, py, lo, hi);
         k(&rs.fragment, setup, &mut px, py, lo, hi);

@@ -102,7 +102,7 @@ pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) {
     if bbox.is_empty() {
         return;
     }
-    let kernel = raster::kernel(&rs.fragment, &setup, false);
+    let kernel = raster::kernel(rs, &setup);
     let mut b = lock(&rs.batch);
     let fs = match &b.last_fs {
         Some(f) if **f == rs.fragment => f.clone(),

@@ -39,6 +39,10 @@ const CS_FLAT: u8 = 0;
 const CS_AFFINE: u8 = 1;
 const CS_PERSPECTIVE: u8 = 2;
 const CS_GENERAL: u8 = 3;
+/// Affine colour whose planes are constant: evaluated once per span.
+const CS_CONSTANT: u8 = 4;
+/// Affine colour stepped in 16.16 fixed point (hint not GL_NICEST).
+const CS_STEPPED: u8 = 5;
 /// Colour writes.
 const CO_NONE: u8 = 0;
 const CO_STORE: u8 = 1;
@@ -51,7 +55,13 @@ fn blend_is(b: &Blend, src: BlendFactor, dst: BlendFactor) -> bool {
 }
 
 /// The kernel for a triangle under a fragment state.
-pub fn select(fs: &FragmentState, t: &TriangleSetup) -> Kernel {
+///
+/// `approximate`: GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST, so
+/// colour interpolation may trade exactness for time (section 5.6): an
+/// affine smooth colour stored without blending is then stepped in fixed
+/// point, within one step (1/255) of the exact value. Everything else
+/// stays exact.
+pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kernel {
     if fs.alpha_test {
         return reference::shade_span;
     }
@@ -78,6 +88,10 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup) -> Kernel {
         CS_FLAT
     } else if t.perspective {
         CS_PERSPECTIVE
+    } else if t.color.iter().all(|p| p.dx == 0.0 && p.dy == 0.0) {
+        CS_CONSTANT
+    } else if approximate && co == CO_STORE {
+        CS_STEPPED
     } else {
         CS_AFFINE
     };
@@ -111,6 +125,8 @@ fn pick_cs<const D: u8>(cs: u8, co: u8) -> Kernel {
         CS_FLAT => pick_co::<D, CS_FLAT>(co),
         CS_AFFINE => pick_co::<D, CS_AFFINE>(co),
         CS_PERSPECTIVE => pick_co::<D, CS_PERSPECTIVE>(co),
+        CS_CONSTANT => pick_co::<D, CS_CONSTANT>(co),
+        CS_STEPPED => kernel::<false, D, CS_STEPPED, CO_STORE>,
         _ => pick_co::<D, CS_GENERAL>(co),
     }
 }
@@ -157,7 +173,24 @@ fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentS
     let cdx: [f64; 4] = std::array::from_fn(|c| t.color[c].dx);
     let qr = t.q.a0 + t.q.dy * cy;
     let qdx = t.q.dx;
-    let flat = t.flat.unwrap_or_default();
+    let mut flat = t.flat.unwrap_or_default();
+    if CS == CS_CONSTANT {
+        // a0 + 0 * cy + 0 * cx is a0 exactly: the reference's value.
+        flat = color_to_u8(glam::Vec4::from_array(std::array::from_fn(|c| cr[c] as f32)));
+    }
+    // Fixed-point stepping: 255 * c in 16.16 with the rounding half added.
+    const FX: f64 = 65536.0 * 255.0;
+    let mut fixed: [i64; 4] = [0; 4];
+    let mut fixed_dx: [i64; 4] = [0; 4];
+    if CS == CS_STEPPED {
+        let cx0 = x0 as f64 + 0.5 - t.x0;
+        for c in 0..4 {
+            // Clamped so that huge off-screen planes cannot overflow.
+            let v = ((cr[c] + cdx[c] * cx0) * FX).clamp(-1e12, 1e12);
+            fixed[c] = v as i64 + 32768;
+            fixed_dx[c] = (cdx[c] * FX).clamp(-1e8, 1e8) as i64;
+        }
+    }
     let st = &fs.stencil;
     let n = x1 - x0;
     let SpanPixels { color, depth, stencil, passed: total } = px;
@@ -198,7 +231,8 @@ fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentS
         }
         if CO != CO_NONE {
             let src = match CS {
-                CS_FLAT => flat,
+                CS_FLAT | CS_CONSTANT => flat,
+                CS_STEPPED => std::array::from_fn(|c| (fixed[c] + fixed_dx[c] * k as i64).clamp(0, 255 << 16) as u32 >> 16) .map(|v: u32| v as u8),
                 CS_AFFINE => color_to_u8(glam::Vec4::from_array(std::array::from_fn(|c| ((cr[c] + cdx[c] * cx) * 1.0) as f32))),
                 CS_PERSPECTIVE => {
                     let w = 1.0 / (qr + qdx * cx);

@@ -201,7 +201,7 @@ macro_rules! dispatch {
 /// the reference path when `RenderState::reference` is set).
 pub fn shade_span(fs: &FragmentState, t: &TriangleSetup, fb: &mut Framebuffer, y: usize, x0: usize, x1: usize) {
     let mut px = SpanPixels::of(fb, y, x0, x1);
-    fast::select(fs, t)(fs, t, &mut px, y, x0, x1);
+    fast::select(fs, t, false)(fs, t, &mut px, y, x0, x1);
     let passed = px.passed;
     fb.samples_passed = fb.samples_passed.wrapping_add(passed);
 }
