@@ -115,7 +115,9 @@ pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &
     let back = rs.two_side && !front_facing;
     let setup = planes(rs, v, ex, ey, flat_color[back as usize], back, front_facing);
     if super::tile::binning(rs) && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2] {
-        super::tile::bin(rs, ex, ey, setup);
+        if let Some(setup) = super::tile::bin(rs, ex, ey, setup) {
+            raster::triangle(rs, fb, ex, ey, &setup);
+        }
     } else {
         raster::triangle(rs, fb, ex, ey, &setup);
     }

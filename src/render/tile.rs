@@ -89,8 +89,15 @@ pub fn binning(rs: &RenderState) -> bool {
     rs.threads > 1 && !rs.reference
 }
 
-/// Adds a triangle (positively oriented fixed-point vertices) to the batch.
-pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) {
+/// Triangles whose bounding box covers fewer pixels than this are shaded
+/// at once when nothing is binned before them (order is kept): binning
+/// costs more than it saves for a sphere's strips.
+const SMALL_PIXELS: u64 = 1024;
+
+/// Adds a triangle (positively oriented fixed-point vertices) to the
+/// batch, or hands it back when it is small and nothing is pending, for
+/// the caller to shade at once.
+pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) -> Option<TriangleSetup> {
     let r = rs.draw_rect;
     let px = |c: i64| c.div_euclid(ONE);
     let bbox = Rect {
@@ -100,10 +107,14 @@ pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) {
         y1: (px(y[0].max(y[1]).max(y[2])) + 2).clamp(r.y0 as i64, r.y1 as i64) as i32,
     };
     if bbox.is_empty() {
-        return;
+        return None;
+    }
+    let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
+    let mut b = lock(&rs.batch);
+    if b.tris.is_empty() && area < SMALL_PIXELS {
+        return Some(setup);
     }
     let kernel = raster::kernel(rs, &setup);
-    let mut b = lock(&rs.batch);
     let fs = match &b.last_fs {
         Some(f) if **f == rs.fragment => f.clone(),
         _ => {
@@ -112,8 +123,9 @@ pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) {
             f
         }
     };
-    b.pixels += (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
+    b.pixels += area;
     b.tris.push(Binned { setup, x, y, fs, stipple: rs.polygon_stipple.clone(), kernel, bbox });
+    None
 }
 
 /// The framebuffer's planes as raw pointers, for workers that each write
