@@ -17,6 +17,10 @@ BIN = os.path.join(ROOT, "build", "bench", "bench_scene")
 
 IMPLS = {
     "softgl": {"LD_LIBRARY_PATH": os.path.join(ROOT, "build", "lib")},
+    # softgl with SOFTGL_THREADS=1 (no binning, no threads).
+    "softgl-1t": {"LD_LIBRARY_PATH": os.path.join(ROOT, "build", "lib"), "SOFTGL_THREADS": "1"},
+    # softgl's reference path (SOFTGL_REFERENCE=1): the images errors are measured against.
+    "softgl-ref": {"LD_LIBRARY_PATH": os.path.join(ROOT, "build", "lib"), "SOFTGL_REFERENCE": "1", "SOFTGL_THREADS": "1"},
     "llvmpipe-1t": {"GALLIUM_DRIVER": "llvmpipe", "LP_NUM_THREADS": "1"},
     "llvmpipe": {"GALLIUM_DRIVER": "llvmpipe"},
     "softpipe": {"GALLIUM_DRIVER": "softpipe"},
@@ -54,14 +58,14 @@ def frames_for(impl, w, h, scene):
     base = 30 if px <= 300 * 300 else 12 if px <= 1024 * 768 else 8
     if scene in ("immediate_1m", "display_list_1m", "spheres_l"):
         base = max(3, base // 3)
-    if impl == "softpipe":
+    if impl in ("softpipe", "softgl-ref"):
         base = max(2, base // 4)
     return base
 
 
 def run_one(impl, scene, w, h, frames, pam):
     env = dict(os.environ)
-    for k in ("LD_LIBRARY_PATH", "GALLIUM_DRIVER", "LP_NUM_THREADS"):
+    for k in ("LD_LIBRARY_PATH", "GALLIUM_DRIVER", "LP_NUM_THREADS", "SOFTGL_THREADS", "SOFTGL_REFERENCE"):
         env.pop(k, None)
     env.update(IMPLS[impl])
     start = time.time()
@@ -161,6 +165,9 @@ def main():
             mine = os.path.join(OUT, "img", f"{scene}_{size}_{impl}.pam")
             if impl != "softpipe" and os.path.exists(ref):
                 row["vs_softpipe"] = image_error(mine, ref)
+            sref = os.path.join(OUT, "img", f"{scene}_{size}_softgl-ref.pam")
+            if impl != "softgl-ref" and os.path.exists(sref):
+                row["vs_ref"] = image_error(mine, sref)
         results.append(row)
     with open(os.path.join(OUT, "results.json"), "w") as f:
         json.dump(results, f, indent=1)
@@ -171,8 +178,8 @@ def main():
 def write_markdown(results, sizes, scenes, impls):
     by = {(r["scene"], r["size"], r["impl"]): r for r in results}
     lines = ["| scene | size | " + " | ".join(f"{i} median / p90 ms" for i in impls) +
-             " | softgl / llvmpipe-1t | softgl / softpipe | first frame ms (softgl / llvmpipe) | peak MB (softgl / llvmpipe) | softgl vs softpipe: RMSE, max, >2/255 | llvmpipe vs softpipe: RMSE, max, >2/255 |",
-             "|" + " --- |" * (2 + len(impls) + 6)]
+             " | softgl / llvmpipe-1t | softgl-1t / llvmpipe-1t | softgl / llvmpipe | softgl / softpipe | first frame ms (softgl / llvmpipe) | peak MB (softgl / llvmpipe) | softgl vs softpipe: RMSE, max, >2/255 | llvmpipe vs softpipe: RMSE, max, >2/255 | softgl vs softgl-ref | llvmpipe vs softgl-ref |",
+             "|" + " --- |" * (2 + len(impls) + 10)]
     for scene in scenes:
         for (w, h) in sizes:
             size = f"{w}x{h}"
@@ -180,16 +187,17 @@ def write_markdown(results, sizes, scenes, impls):
             for i in impls:
                 r = by.get((scene, size, i), {})
                 cells.append(f"{r['median_ms']:.2f} / {r['p90_ms']:.2f}" if "median_ms" in r else r.get("error", "-")[:40])
-            s, l1, sp, l = (by.get((scene, size, k), {}) for k in ("softgl", "llvmpipe-1t", "softpipe", "llvmpipe"))
+            s, l1, sp, l, s1 = (by.get((scene, size, k), {}) for k in ("softgl", "llvmpipe-1t", "softpipe", "llvmpipe", "softgl-1t"))
             ratio = lambda x, y: f"{x['median_ms'] / y['median_ms']:.2f}x" if "median_ms" in x and "median_ms" in y and y["median_ms"] > 0 else "-"
-            err = lambda r: "{rmse:.2f}, {max}, {off_share:.1%}".format(**r["vs_softpipe"]) if r.get("vs_softpipe") else "-"
+            err = lambda r, k="vs_softpipe": "{rmse:.2f}, {max}, {off_share:.1%}".format(**r[k]) if r.get(k) else "-"
             ff = f"{s.get('first_frame_ms', 0):.0f} / {l.get('first_frame_ms', 0):.0f}"
             mem = f"{s.get('peak_mb', 0):.0f} / {l.get('peak_mb', 0):.0f}"
             lines.append(f"| {scene} | {size} | " + " | ".join(cells) +
-                         f" | {ratio(s, l1)} | {ratio(s, sp)} | {ff} | {mem} | {err(s)} | {err(l)} |")
+                         f" | {ratio(s, l1)} | {ratio(s1, l1)} | {ratio(s, l)} | {ratio(s, sp)} | {ff} | {mem} | {err(s)} | {err(l)} | {err(s, 'vs_ref')} | {err(l, 'vs_ref')} |")
     text = ["# softgl benchmark", "",
             "Frame times after one warm-up frame; ratios are softgl's median time over the other's (below 1 = softgl faster).",
-            "Image error is against softpipe's image of the same frame (softgl's reference path does not exist yet).", "",
+            "Image error is against softpipe's image of the same frame, and against softgl's reference path (`softgl-ref`, SOFTGL_REFERENCE=1).",
+            "`softgl` uses every core (SOFTGL_THREADS unset), `softgl-1t` one thread.", "",
             "Scenes:", ""] + [f"- `{k}`: {v[0]}" for k, v in SCENES.items() if k in scenes] + \
            ["", "Not runnable yet (softgl lacks the features): " + "; ".join(f"{k} ({v})" for k, v in NOT_YET.items()), "", *lines, ""]
     with open(os.path.join(OUT, "results.md"), "w") as f:
@@ -206,7 +214,7 @@ def plot(results, sizes, scenes, impls):
         print("matplotlib not available: no plots")
         return
     by = {(r["scene"], r["size"], r["impl"]): r for r in results}
-    colors = {"softgl": "tab:red", "llvmpipe-1t": "tab:blue", "llvmpipe": "tab:cyan", "softpipe": "tab:gray"}
+    colors = {"softgl": "tab:red", "softgl-1t": "tab:orange", "softgl-ref": "tab:brown", "llvmpipe-1t": "tab:blue", "llvmpipe": "tab:cyan", "softpipe": "tab:gray"}
     # Time against error, per scene, at the largest size.
     size = f"{sizes[-1][0]}x{sizes[-1][1]}"
     n = len(scenes)

@@ -71,6 +71,8 @@ impl Context {
             }
         }
         SPARE_VERTS.with(|s| s.set(std::mem::take(&mut asm.verts)));
+        // The end of a draw call: shade the triangles binned for tiles.
+        crate::render::flush(&self.derived.render, &mut self.fb);
     }
 
     /// glVertex: the vertex takes the current colour (section 2.7).

@@ -59,6 +59,10 @@ impl Default for Derived {
                 clip_planes: crate::render::clip::FIXED_PLANES.to_vec(),
                 fragment: FragmentState::default(),
                 texture: None,
+                reference: crate::render::reference_default(),
+                threads: crate::render::tile::threads_default(),
+                approximate: true,
+                batch: Default::default(),
             },
         }
     }
@@ -117,6 +121,8 @@ impl Context {
             self.derived.render.color_sum = self.fog.color_sum || (self.lighting.enabled && self.lighting.separate_specular);
         }
         if d & DIRTY_FOG != 0 {
+            // glHint marks DIRTY_FOG.
+            self.derived.render.approximate = self.hints.perspective_correction != GL_NICEST;
             self.derived.render.fog = self.fog_params();
             // The vertex stage needs eye coordinates for the fog distance.
             self.derived.modelview = self.transform.modelview.top().as_mat4();

@@ -19,6 +19,7 @@ pub mod raster;
 pub mod setup;
 pub mod smooth;
 pub mod texture;
+pub mod tile;
 pub mod vertex;
 
 use crate::framebuffer::{Framebuffer, Rect};
@@ -70,6 +71,23 @@ pub struct RenderState {
     /// Texturing: the enabled units with complete textures; None when no
     /// unit textures.
     pub texture: Option<std::sync::Arc<texture::TextureStage>>,
+    /// Use the reference path (SOFTGL_REFERENCE=1) instead of the fast
+    /// kernels; set at context creation from [`reference_default`].
+    pub reference: bool,
+    /// Rasterizer threads (SOFTGL_THREADS): above 1, filled triangles are
+    /// binned into `batch` and shaded by tiles at the end of the draw call.
+    pub threads: usize,
+    /// GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST: the fast kernels
+    /// may approximate colour interpolation (render::fragment::fast).
+    pub approximate: bool,
+    pub batch: tile::SharedBatch,
+}
+
+/// SOFTGL_REFERENCE=1 (read once per process): new contexts render through
+/// the plain reference path.
+pub fn reference_default() -> bool {
+    static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *ON.get_or_init(|| std::env::var("SOFTGL_REFERENCE").is_ok_and(|v| v == "1"))
 }
 
 impl RenderState {
@@ -86,6 +104,12 @@ impl RenderState {
             _ => Some(front),
         }
     }
+}
+
+/// Finishes the binned triangles of the current draw call (see [`tile`]):
+/// called at the end of every draw call.
+pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
+    tile::flush(rs, fb)
 }
 
 /// Twice the signed window-space area of a polygon (positive
@@ -116,6 +140,8 @@ pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3]
         return;
     }
     if rs.polygon_mode != [GL_FILL; 2] {
+        // Shaded immediately (with its lines and points, in order).
+        tile::flush(rs, fb);
         return polygon_mode::draw(rs, fb, v, flat_color, edges);
     }
     let mut poly = clip::Polygon::new();

@@ -10,11 +10,28 @@
 //! For each row, each edge bounds x from one side; solving the three
 //! inequalities exactly in integers gives the covered span [x_start, x_end)
 //! directly, with no per-pixel coverage test.
+//!
+//! Precision (what is exact, and why):
+//! - Coverage is exact for every pixel: vertices snap to 1/256 pixel, and
+//!   after clipping with the guard band (`clip`) window coordinates stay
+//!   below 2^19 pixels, so snapped values fit in 27 bits, edge functions
+//!   in 55 bits of i64 (`setup`), and the span solution is integer floor
+//!   division. Tiles (`tile`) only restrict the rectangle spans are cut
+//!   to, so binned and immediate rasterization cover the same pixels.
+//! - Attributes come from f64 plane equations evaluated at each pixel
+//!   centre, `(a0 + dy * cy) + dx * cx`, perspective-corrected by a per-pixel
+//!   division by the 1/w plane; depth converts to 24 bits by rounding.
+//!   The fast kernels (`fragment::fast`) do the same operations in the same
+//!   order as the reference (`fragment::reference`), so their depth,
+//!   stencil and colour are bit-identical to it, except that with
+//!   GL_PERSPECTIVE_CORRECTION_HINT not GL_NICEST an affine smooth colour
+//!   that is stored unblended is stepped in 16.16 fixed point: within
+//!   1/255 of the exact value (`tests/reference_diff.rs` checks both).
 
-use super::fragment;
+use super::fragment::{self, fast::Kernel, SpanPixels};
 use super::setup::{TriangleSetup, ONE};
 use super::RenderState;
-use crate::framebuffer::Framebuffer;
+use crate::framebuffer::{Framebuffer, Rect};
 
 /// E(px, py) = a * px + b * py + c >= 0 inside, in pixel-centre units.
 #[derive(Clone, Copy, Debug)]
@@ -65,26 +82,28 @@ fn span(edges: &[Edge; 3], py: i64, x0: i64, x1: i64) -> (i64, i64) {
     (lo, hi)
 }
 
-pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup) {
+/// Calls `emit(py, lo, hi)` for every run of covered pixels [lo, hi) of
+/// row py inside `rect`, rows bottom to top, cut by the polygon stipple
+/// (3.5.2) when there is one.
+#[inline]
+pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, mut emit: impl FnMut(usize, usize, usize)) {
     let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
-    let r = rs.draw_rect;
     // Rows whose centres lie within the vertical extent.
     let half = ONE / 2;
-    let ymin = *y.iter().min().unwrap();
-    let ymax = *y.iter().max().unwrap();
+    let ymin = y[0].min(y[1]).min(y[2]);
+    let ymax = y[0].max(y[1]).max(y[2]);
     // A superset is enough: spans are exact.
-    let row0 = floor_div(ymin - half, ONE).max(r.y0 as i64);
-    let row1 = (floor_div(ymax - half, ONE) + 1).min(r.y1 as i64);
+    let row0 = floor_div(ymin - half, ONE).max(rect.y0 as i64);
+    let row1 = (floor_div(ymax - half, ONE) + 1).min(rect.y1 as i64);
     for py in row0..row1 {
-        let (lo, hi) = span(&edges, py, r.x0 as i64, r.x1 as i64);
+        let (lo, hi) = span(&edges, py, rect.x0 as i64, rect.x1 as i64);
         if lo >= hi {
             continue;
         }
-        match &rs.polygon_stipple {
-            None => fragment::shade_span(&rs.fragment, setup, fb, py as usize, lo as usize, hi as usize),
+        match stipple {
+            None => emit(py as usize, lo as usize, hi as usize),
             Some(pattern) => {
-                // Polygon stipple (3.5.2): only pixels whose bit
-                // (x mod 32, y mod 32) is set, as runs.
+                // Only pixels whose bit (x mod 32, y mod 32) is set, as runs.
                 let row = pattern[py.rem_euclid(32) as usize];
                 let mut x = lo;
                 while x < hi {
@@ -96,11 +115,33 @@ pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3]
                     while x < hi && row >> (x.rem_euclid(32)) & 1 == 1 {
                         x += 1;
                     }
-                    fragment::shade_span(&rs.fragment, setup, fb, py as usize, start as usize, x as usize);
+                    emit(py as usize, start as usize, x as usize);
                 }
             }
         }
     }
+}
+
+/// The span kernel for a triangle: the reference path's, or the fast one
+/// specialized for the state and the triangle's attributes.
+pub fn kernel(rs: &RenderState, setup: &TriangleSetup) -> Kernel {
+    if rs.reference {
+        fragment::reference::shade_span
+    } else {
+        fragment::fast::select(&rs.fragment, setup, rs.approximate)
+    }
+}
+
+/// Rasterizes and shades a triangle now, on this thread.
+pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup) {
+    // Two colour buffers (GL_FRONT_AND_BACK): only the general path writes both.
+    let k = if fb.draw_both { fragment::reference::shade_span } else { kernel(rs, setup) };
+    spans(x, y, rs.draw_rect, rs.polygon_stipple.as_deref(), |py, lo, hi| {
+        let mut px = SpanPixels::of(fb, py, lo, hi);
+        k(&rs.fragment, setup, &mut px, py, lo, hi);
+        let passed = px.passed;
+        fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+    });
 }
 
 #[cfg(test)]

@@ -116,7 +116,13 @@ pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &
     // Two-sided lighting: a back-facing polygon shows its back colours.
     let back = rs.two_side && !front_facing;
     let setup = planes(rs, v, ex, ey, flat_color[back as usize], back, front_facing);
-    raster::triangle(rs, fb, ex, ey, &setup);
+    if super::tile::binning(rs) && !fb.draw_both && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2] {
+        if let Some(setup) = super::tile::bin(rs, ex, ey, setup) {
+            raster::triangle(rs, fb, ex, ey, &setup);
+        }
+    } else {
+        raster::triangle(rs, fb, ex, ey, &setup);
+    }
 }
 
 #[allow(clippy::too_many_arguments)]

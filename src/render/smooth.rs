@@ -344,7 +344,7 @@ pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, w: &[WindowVertex; 3], f
             }
         }
         let (cx, cy) = (px as f64 + 0.5 - t.x0, py as f64 + 0.5 - t.y0);
-        let mut color = fragment::triangle_color(&t, cx, cy);
+        let mut color = fragment::reference::triangle_color(&t, cx, cy);
         color[3] = scale_alpha(color[3], cov);
         let z = t.z.a0 + t.z.dx * cx + t.z.dy * cy;
         fragment::shade_fragment(fs, fb, px as usize, py as usize, z, color);

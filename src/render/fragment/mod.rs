@@ -32,7 +32,7 @@ pub use blend::{Blend, BlendEquation, BlendFactor};
 pub use logic::LogicOp;
 pub use stencil::{StencilOp, StencilTest};
 
-use super::setup::{Plane, TriangleSetup};
+use super::setup::TriangleSetup;
 use crate::framebuffer::{Framebuffer, DEPTH_MAX};
 use glam::Vec4;
 
@@ -164,90 +164,10 @@ pub fn depth_to_fixed(z: f64) -> u32 {
     (z.clamp(0.0, 1.0) * DEPTH_MAX as f64 + 0.5) as u32
 }
 
-#[inline]
-fn eval(p: &Plane, cx: f64, cy: f64) -> f64 {
-    p.a0 + p.dx * cx + p.dy * cy
-}
-
-/// The colour of a triangle's fragment at (cx, cy) relative to its origin.
-#[inline(always)]
-pub(crate) fn triangle_color(t: &TriangleSetup, cx: f64, cy: f64) -> [u8; 4] {
-    if let Some((plane, fog)) = &t.fog {
-        // Fog (3.10) after texturing, on the unconverted colour.
-        let c = match &t.tex {
-            Some(tp) => textured_color(t, tp, cx, cy),
-            None => primary_color(t, cx, cy),
-        };
-        let w = if t.perspective { 1.0 / eval(&t.q, cx, cy) } else { 1.0 };
-        return color_to_u8(fog.apply(c, (eval(plane, cx, cy) * w) as f32));
-    }
-    if let Some(tp) = &t.tex {
-        return color_to_u8(textured_color(t, tp, cx, cy));
-    }
-    match t.flat {
-        Some(c) => c,
-        None => {
-            let mut c = [0.0f32; 4];
-            let w = if t.perspective { 1.0 / eval(&t.q, cx, cy) } else { 1.0 };
-            for (ch, p) in t.color.iter().enumerate() {
-                c[ch] = (eval(p, cx, cy) * w) as f32;
-            }
-            color_to_u8(Vec4::from_array(c))
-        }
-    }
-}
-
-/// The interpolated (or flat) primary colour, clamped, as floats.
-#[inline]
-fn primary_color(t: &TriangleSetup, cx: f64, cy: f64) -> Vec4 {
-    match t.flat {
-        Some(c) => Vec4::from_array(c.map(|v| v as f32 / 255.0)),
-        None => {
-            let w = if t.perspective { 1.0 / eval(&t.q, cx, cy) } else { 1.0 };
-            let c: [f32; 4] = std::array::from_fn(|ch| (eval(&t.color[ch], cx, cy) * w) as f32);
-            Vec4::from_array(c).clamp(Vec4::ZERO, Vec4::ONE)
-        }
-    }
-}
-
-/// Texturing (section 3.8) of a triangle's fragment at (cx, cy): the
-/// primary colour, then each unit's sample and environment. Coordinates
-/// are the perspective-correct ratios S/Q of the planes, and their screen
-/// derivatives the exact ones of those ratios, (S' - s Q') / Q.
-fn textured_color(t: &TriangleSetup, tp: &super::setup::TexPlanes, cx: f64, cy: f64) -> Vec4 {
-    let primary = primary_color(t, cx, cy);
-    let mut coords = [super::texture::Coord::default(); super::texture::MAX_UNITS];
-    for &u in &tp.stage.active {
-        let p = &tp.planes[u];
-        let q = eval(&p[3], cx, cy);
-        if q == 0.0 || !q.is_finite() {
-            continue;
-        }
-        let iq = 1.0 / q;
-        let c = &mut coords[u];
-        for k in 0..3 {
-            let s = eval(&p[k], cx, cy) * iq;
-            c.str[k] = s as f32;
-            c.dx[k] = ((p[k].dx - s * p[3].dx) * iq) as f32;
-            c.dy[k] = ((p[k].dy - s * p[3].dy) * iq) as f32;
-        }
-    }
-    let c = tp.stage.shade(&coords, primary);
-    match &t.secondary {
-        // The colour sum (3.9): the secondary colour after texturing.
-        Some(s) => {
-            let w = if t.perspective { 1.0 / eval(&t.q, cx, cy) } else { 1.0 };
-            let sec = glam::Vec3::from_array(std::array::from_fn(|ch| (eval(&s[ch], cx, cy) * w) as f32));
-            (c.truncate() + sec).extend(c.w).clamp(Vec4::ZERO, Vec4::ONE)
-        }
-        None => c,
-    }
-}
-
 /// The stage-group key of a state: which of [`fragment`]'s const
 /// parameters are on.
 #[inline]
-fn key(fs: &FragmentState) -> u8 {
+pub(crate) fn key(fs: &FragmentState) -> u8 {
     (fs.alpha_test as u8) | (fs.stencil_test as u8) << 1 | (fs.depth_test as u8) << 2 | ((fs.color != ColorOp::None) as u8) << 3
 }
 
@@ -276,18 +196,14 @@ macro_rules! dispatch {
     };
 }
 
-/// Shades pixels [x0, x1) of row `y` of a triangle.
+/// Shades pixels [x0, x1) of row `y` of a triangle through the fast
+/// kernels (the rasterizer picks a kernel once per triangle instead, and
+/// the reference path when `RenderState::reference` is set).
 pub fn shade_span(fs: &FragmentState, t: &TriangleSetup, fb: &mut Framebuffer, y: usize, x0: usize, x1: usize) {
-    dispatch!(key(fs), span(fs, t, fb, y, x0, x1))
-}
-
-fn span<const A: bool, const S: bool, const D: bool, const C: bool>(fs: &FragmentState, t: &TriangleSetup, fb: &mut Framebuffer, y: usize, x0: usize, x1: usize) {
-    let cy = y as f64 + 0.5 - t.y0;
-    let row = fb.index(0, y);
-    for x in x0..x1 {
-        let cx = x as f64 + 0.5 - t.x0;
-        fragment::<A, S, D, C>(fs, fb, row + x, || depth_to_fixed(eval(&t.z, cx, cy)), || triangle_color(t, cx, cy));
-    }
+    let mut px = SpanPixels::of(fb, y, x0, x1);
+    fast::select(fs, t, false)(fs, t, &mut px, y, x0, x1);
+    let passed = px.passed;
+    fb.samples_passed = fb.samples_passed.wrapping_add(passed);
 }
 
 /// Runs one fragment whose depth (24-bit fixed point) and colour are known
@@ -305,13 +221,105 @@ pub fn shade_fragment(fs: &FragmentState, fb: &mut Framebuffer, x: usize, y: usi
     dispatch!(key(fs), fragment(fs, fb, i, || depth_to_fixed(z), || color))
 }
 
+/// The pixels a span's fragments go to: the colour, depth and stencil
+/// values of pixels [x0, x1) of one row (depth and stencil empty when the
+/// buffer is absent), and the span's occlusion count. Spans of different
+/// rows or columns are disjoint, so tiles can be shaded in parallel.
+pub struct SpanPixels<'a> {
+    pub color: &'a mut [[u8; 4]],
+    pub depth: &'a mut [u32],
+    pub stencil: &'a mut [u8],
+    /// The same pixels of the other colour buffer when drawing to
+    /// GL_FRONT_AND_BACK (`Framebuffer::draw_both`).
+    pub other: Option<&'a mut [[u8; 4]]>,
+    /// Fragments that passed the depth test (occlusion queries).
+    pub passed: u64,
+}
+
+impl<'a> SpanPixels<'a> {
+    /// Pixels [x0, x1) of row y of a framebuffer.
+    pub fn of(fb: &'a mut Framebuffer, y: usize, x0: usize, x1: usize) -> SpanPixels<'a> {
+        let (a, b) = (y * fb.width + x0, y * fb.width + x1);
+        let Framebuffer { color, depth, stencil, other_color, draw_both, .. } = fb;
+        SpanPixels {
+            color: &mut color[a..b],
+            other: if *draw_both { Some(&mut other_color[a..b]) } else { None },
+            depth: if depth.is_empty() { &mut [] } else { &mut depth[a..b] },
+            stencil: if stencil.is_empty() { &mut [] } else { &mut stencil[a..b] },
+            passed: 0,
+        }
+    }
+}
+
+/// Where [`fragment`] reads and writes: the whole framebuffer (index
+/// `y * width + x`) or one span (index from its start).
+pub(crate) trait Buffers {
+    fn stencil(&mut self, i: usize) -> &mut u8;
+    fn depth(&mut self, i: usize) -> &mut u32;
+    fn color(&mut self, i: usize) -> &mut [u8; 4];
+    /// The other colour buffer's pixel under GL_FRONT_AND_BACK.
+    fn other_color(&mut self, i: usize) -> Option<&mut [u8; 4]>;
+    /// One more fragment passed the depth test.
+    fn pass(&mut self);
+}
+
+impl Buffers for Framebuffer {
+    #[inline(always)]
+    fn stencil(&mut self, i: usize) -> &mut u8 {
+        &mut self.stencil[i]
+    }
+    #[inline(always)]
+    fn depth(&mut self, i: usize) -> &mut u32 {
+        &mut self.depth[i]
+    }
+    #[inline(always)]
+    fn color(&mut self, i: usize) -> &mut [u8; 4] {
+        &mut self.color[i]
+    }
+    #[inline(always)]
+    fn other_color(&mut self, i: usize) -> Option<&mut [u8; 4]> {
+        if self.draw_both {
+            Some(&mut self.other_color[i])
+        } else {
+            None
+        }
+    }
+    #[inline(always)]
+    fn pass(&mut self) {
+        self.samples_passed = self.samples_passed.wrapping_add(1);
+    }
+}
+
+impl Buffers for SpanPixels<'_> {
+    #[inline(always)]
+    fn stencil(&mut self, i: usize) -> &mut u8 {
+        &mut self.stencil[i]
+    }
+    #[inline(always)]
+    fn depth(&mut self, i: usize) -> &mut u32 {
+        &mut self.depth[i]
+    }
+    #[inline(always)]
+    fn color(&mut self, i: usize) -> &mut [u8; 4] {
+        &mut self.color[i]
+    }
+    #[inline(always)]
+    fn other_color(&mut self, i: usize) -> Option<&mut [u8; 4]> {
+        self.other.as_mut().map(|o| &mut o[i])
+    }
+    #[inline(always)]
+    fn pass(&mut self) {
+        self.passed += 1;
+    }
+}
+
 /// The per-fragment operations for one fragment, with the stage groups
 /// fixed at compile time: A alpha test, S stencil test, D depth test, C
 /// colour write. Depth and colour are computed only when a stage needs them.
 #[inline(always)]
-fn fragment<const A: bool, const S: bool, const D: bool, const C: bool>(
+pub(crate) fn fragment<const A: bool, const S: bool, const D: bool, const C: bool>(
     fs: &FragmentState,
-    fb: &mut Framebuffer,
+    fb: &mut impl Buffers,
     i: usize,
     depth: impl Fn() -> u32,
     color: impl Fn() -> [u8; 4],
@@ -327,40 +335,44 @@ fn fragment<const A: bool, const S: bool, const D: bool, const C: bool>(
     // Section 4.1.5: stencil test; the fail operation.
     let st = &fs.stencil;
     if S {
-        let s = fb.stencil[i];
+        let s = *fb.stencil(i);
         if !st.test(s) {
-            fb.stencil[i] = st.apply(st.fail, s);
+            *fb.stencil(i) = st.apply(st.fail, s);
             return;
         }
     }
     // Section 4.1.6: depth test; the depth-fail operation.
     if D {
         let z = depth();
-        if !fs.depth_func.test(z, fb.depth[i]) {
+        if !fs.depth_func.test(z, *fb.depth(i)) {
             if S {
-                fb.stencil[i] = st.apply(st.zfail, fb.stencil[i]);
+                let s = fb.stencil(i);
+                *s = st.apply(st.zfail, *s);
             }
             return;
         }
         if fs.depth_write {
-            fb.depth[i] = z;
+            *fb.depth(i) = z;
         }
     }
     // Depth passed, or the depth test is off: a sample passed (occlusion
     // queries, gl::queries), and the depth-pass operation.
-    fb.samples_passed = fb.samples_passed.wrapping_add(1);
+    fb.pass();
     if S {
-        fb.stencil[i] = st.apply(st.zpass, fb.stencil[i]);
+        let s = fb.stencil(i);
+        *s = st.apply(st.zpass, *s);
     }
     if C {
         if !A {
             src = color();
         }
-        write_color(fs, &mut fb.color[i], src);
+        write_color(fs, fb.color(i), src);
         // GL_FRONT_AND_BACK (framebuffer module): the same fragment into
-        // the other colour buffer, blended against its own contents.
-        if fb.draw_both {
-            write_color(fs, &mut fb.other_color[i], src);
+        // the other colour buffer, blended against its own contents. Only
+        // this general path draws to two buffers: the fast kernels and
+        // tile binning are not chosen then (raster::triangle, setup).
+        if let Some(other) = fb.other_color(i) {
+            write_color(fs, other, src);
         }
     }
 }
@@ -368,7 +380,7 @@ fn fragment<const A: bool, const S: bool, const D: bool, const C: bool>(
 /// Sections 4.1.8 to 4.1.10 and 4.2.2: blending or the logic op, then the
 /// colour write mask.
 #[inline(always)]
-fn write_color(fs: &FragmentState, dst: &mut [u8; 4], src: [u8; 4]) {
+pub(crate) fn write_color(fs: &FragmentState, dst: &mut [u8; 4], src: [u8; 4]) {
     let new = match fs.color {
         ColorOp::None => return,
         ColorOp::Replace => src,
@@ -386,3 +398,7 @@ fn write_color(fs: &FragmentState, dst: &mut [u8; 4], src: [u8; 4]) {
         }
     }
 }
+
+// After `dispatch!`, which they use (macro scope is textual).
+pub mod fast;
+pub mod reference;
