@@ -160,7 +160,7 @@ super::entry_points! {
 
     // ---- gl.h ----
     exec glGetError() -> GLenum { |c| c.take_error() }
-    list["GL_LINE_SMOOTH and GL_POINT_SMOOTH are not antialiased yet (issue 3)"] glBegin(mode: GLenum) { |_c| Command::Begin(mode) }
+    list glBegin(mode: GLenum) { |_c| Command::Begin(mode) }
     list glEnd() { |_c| Command::End }
     list glEdgeFlag(flag: GLboolean) { |_c| Command::EdgeFlag(truth(flag)) }
     list glEdgeFlagv(flag: *const GLboolean) { |_c| Command::EdgeFlag(truth(arr::<GLboolean, 1>(flag)?[0])) }
@@ -367,8 +367,8 @@ super::entry_points! {
     list glLightModeliv(pname: GLenum, params: *const GLint) { |_c| Command::LightModel(pname, read_params(params, light_model_param_count(pname), pname)?) }
     list glColorMaterial(face: GLenum, mode: GLenum) { |_c| Command::ColorMaterial(face, mode) }
     list glShadeModel(mode: GLenum) { |_c| Command::ShadeModel(mode) }
-    list["GL_POINT_SMOOTH draws square points; no point parameters"] glPointSize(size: GLfloat) { |_c| Command::PointSize(size) }
-    list["GL_LINE_SMOOTH draws aliased lines"] glLineWidth(width: GLfloat) { |_c| Command::LineWidth(width) }
+    list glPointSize(size: GLfloat) { |_c| Command::PointSize(size) }
+    list glLineWidth(width: GLfloat) { |_c| Command::LineWidth(width) }
     list glLineStipple(factor: GLint, pattern: GLushort) { |_c| Command::LineStipple(factor, pattern) }
     list glCullFace(mode: GLenum) { |_c| Command::CullFace(mode) }
     list glFrontFace(mode: GLenum) { |_c| Command::FrontFace(mode) }
@@ -382,9 +382,9 @@ super::entry_points! {
     list glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) { |_c| pixel_map(map, mapsize, values, |_, v| v.to_vec())? }
     list glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) { |_c| pixel_map(map, mapsize, values, |m, v| map_values_from_uint(m, v, 32))? }
     list glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) { |_c| pixel_map(map, mapsize, values, |m, v| map_values_from_uint(m, &v.iter().map(|&x| x as u32).collect::<Vec<_>>(), 16))? }
-    list["texturing and fog of the fragments come with those features"] glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.build_draw_pixels(width, height, format, type_, pixels as *const u8)? }
+    list glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.build_draw_pixels(width, height, format, type_, pixels as *const u8)? }
     list glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) { |_c| Command::PixelZoom(xfactor, yfactor) }
-    list["texturing and fog of the fragments come with those features"] glBitmap(width: GLsizei, height: GLsizei, xorig: GLfloat, yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, bitmap: *const GLubyte) { |c| c.build_bitmap(width, height, [xorig, yorig], [xmove, ymove], bitmap) }
+    list glBitmap(width: GLsizei, height: GLsizei, xorig: GLfloat, yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, bitmap: *const GLubyte) { |c| c.build_bitmap(width, height, [xorig, yorig], [xmove, ymove], bitmap) }
     list glTexImage1D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_image_command(1, target, level, internalFormat, [width, 1, 1], border, format, type_, pixels as *const u8)? }
     list glTexImage2D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, height: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_image_command(2, target, level, internalFormat, [width, height, 1], border, format, type_, pixels as *const u8)? }
     list glCopyTexImage1D(target: GLenum, level: GLint, internalFormat: GLenum, x: GLint, y: GLint, width: GLsizei, border: GLint) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 1, sub: false, target, level, internal_format: internalFormat, offset: [0; 3], rect: [x, y, width, 1], border })) }
@@ -432,7 +432,7 @@ super::entry_points! {
     list glAccum(op: GLenum, value: GLfloat) { |_c| Command::Accum(op, value) }
     list glReadBuffer(mode: GLenum) { |_c| Command::ReadBuffer(mode) }
     exec["the ARB_imaging transfer stages (colour table, convolution, colour matrix, histogram) are not implemented"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
-    list["texturing and fog of the fragments come with those features"] glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) { |_c| Command::CopyPixels(x, y, width, height, type_) }
+    list glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) { |_c| Command::CopyPixels(x, y, width, height, type_) }
     list glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) { |_c| map_command(read_points(target, points, stride, order, 0, 1), |points| Command::Map { target, u: (u1 as f32, u2 as f32), uorder: order, v: None, points }) }
     list glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat) { |_c| map_command(read_points(target, points, stride, order, 0, 1), |points| Command::Map { target, u: (u1, u2), uorder: order, v: None, points }) }
     list glMap2d(target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint, v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: *const GLdouble) { |_c| map_command(read_points(target, points, ustride, uorder, vstride, vorder), |points| Command::Map { target, u: (u1 as f32, u2 as f32), uorder, v: Some(((v1 as f32, v2 as f32), vorder)), points }) }
@@ -459,7 +459,7 @@ super::entry_points! {
     list glLoadName(name: GLuint) { |_c| Command::NameStack(NameOp::Load(name)) }
     list glPushName(name: GLuint) { |_c| Command::NameStack(NameOp::Push(name)) }
     list glPopName() { |_c| Command::NameStack(NameOp::Pop) }
-    exec["texture coordinates are reported as (0, 0, 0, 1) until texturing lands; glBitmap/glDrawPixels/glCopyPixels tokens not yet"] glFeedbackBuffer(size: GLsizei, type_: GLenum, buffer: *mut GLfloat) { |c| c.feedback_buffer(size, type_, buffer) }
+    exec["sphere-map, normal-map and reflection-map texgen are not applied to unit 0's reported coordinates when unit 0 is not texturing"] glFeedbackBuffer(size: GLsizei, type_: GLenum, buffer: *mut GLfloat) { |c| c.feedback_buffer(size, type_, buffer) }
     list glPassThrough(token: GLfloat) { |_c| Command::PassThrough(token) }
     exec glNewList(list: GLuint, mode: GLenum) { |c| c.new_list(list, mode) }
     exec glEndList() { |c| c.end_list() }
@@ -471,8 +471,8 @@ super::entry_points! {
     exec glDeleteLists(list: GLuint, range: GLsizei) { |c| c.delete_lists(list, range) }
     exec glFlush() { |c| c.flush() }
     exec glFinish() { |c| c.flush() }
-    list["stored; no hint changes rendering yet"] glHint(target: GLenum, mode: GLenum) { |_c| Command::Hint(target, mode) }
-    list["capabilities other than DEPTH_TEST, SCISSOR_TEST, CULL_FACE, DITHER, ALPHA_TEST, STENCIL_TEST, BLEND, COLOR_LOGIC_OP and INDEX_LOGIC_OP are stored and queryable but do not affect rendering yet"] glEnable(cap: GLenum) { |_c| Command::Enable(cap) }
+    list glHint(target: GLenum, mode: GLenum) { |_c| Command::Hint(target, mode) }
+    list["GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE/ONE and the ARB_imaging capabilities (colour tables, convolution, histogram, minmax) are stored and queryable but change nothing: no multisample buffers, no ARB_imaging"] glEnable(cap: GLenum) { |_c| Command::Enable(cap) }
     list["see glEnable"] glDisable(cap: GLenum) { |_c| Command::Disable(cap) }
     exec["as glEnable"] glIsEnabled(cap: GLenum) -> GLboolean { |c| match c.is_enabled(cap) { Some(b) => gl_bool(b), None => { c.set_error(GL_INVALID_ENUM); 0 } } }
     exec["as glGetIntegerv"] glGetBooleanv(pname: GLenum, params: *mut GLboolean) { |c| c.get_into(pname, params, |v| v.as_bool().into_iter().map(gl_bool).collect()) }
@@ -494,7 +494,7 @@ super::entry_points! {
     exec glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_parameter(target, pname) { write_out(params, &v.as_i32()) } }
     exec glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_tex_level_parameter(target, level, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
     exec glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_level_parameter(target, level, pname) { write_out(params, &v.as_i32()) } }
-    exec["no pixel transfer (scale, bias, maps) yet"] glGetTexImage(target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.get_tex_image(target, level, format, type_, pixels as *mut u8) }
+    exec glGetTexImage(target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.get_tex_image(target, level, format, type_, pixels as *mut u8) }
     exec glGetPixelMapfv(map: GLenum, values: *mut GLfloat) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, v), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetPixelMapuiv(map: GLenum, values: *mut GLuint) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 32)).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetPixelMapusv(map: GLenum, values: *mut GLushort) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 16) as u16).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
@@ -503,7 +503,7 @@ super::entry_points! {
     exec glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &get::Value::Floats(x).as_i32()), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetPolygonStipple(mask: *mut GLubyte) { |c| if !mask.is_null() { pack_stipple(&c.pixel_store.pack, &c.polygon.stipple_pattern, mask) } }
     exec glGetString(name: GLenum) -> *const GLubyte { |c| match get::string(name) { Some(s) => s.as_ptr(), None => { c.set_error(GL_INVALID_ENUM); std::ptr::null() } } }
-    list["saves the groups implemented so far: current, point, line, polygon, stipple, lighting, depth, accum, stencil, viewport, transform, enable, color buffer, hint, eval, list, scissor"] glPushAttrib(mask: GLbitfield) { |_c| Command::PushAttrib(mask) }
+    list["every group; GL_PIXEL_MODE_BIT has no colour-table, convolution or histogram state (ARB_imaging is not implemented)"] glPushAttrib(mask: GLbitfield) { |_c| Command::PushAttrib(mask) }
     list glPopAttrib() { |_c| Command::PopAttrib }
     client glPushClientAttrib(mask: GLbitfield) { |c| c.push_client_attrib(mask) }
     client glPopClientAttrib() { |c| c.pop_client_attrib() }
@@ -742,9 +742,9 @@ super::entry_points! {
     free glXGetConfig(dpy: *mut Display, vis: *mut XVisualInfo, attrib: c_int, value: *mut c_int) -> c_int { glx::get_config(dpy, vis, attrib, value) }
     free glXCreateContext(dpy: *mut Display, vis: *mut XVisualInfo, shareList: GLXContext, direct: Bool) -> GLXContext { glx::create_context(dpy, vis, shareList, direct) }
     free glXDestroyContext(dpy: *mut Display, ctx: GLXContext) { glx::destroy_context(dpy, ctx) }
-    free["GL_FRONT and GL_BACK are one colour buffer"] glXMakeCurrent(dpy: *mut Display, drawable: GLXDrawable, ctx: GLXContext) -> Bool { glx::make_current(dpy, drawable, ctx) }
+    free glXMakeCurrent(dpy: *mut Display, drawable: GLXDrawable, ctx: GLXContext) -> Bool { glx::make_current(dpy, drawable, ctx) }
     free glXCopyContext(dpy: *mut Display, src: GLXContext, dst: GLXContext, mask: std::ffi::c_ulong) { glx::copy_context(dpy, src, dst, mask) }
-    free["shows the one colour buffer (no separate front buffer yet); XPutImage, no MIT-SHM"] glXSwapBuffers(dpy: *mut Display, drawable: GLXDrawable) { glx::swap_buffers(dpy, drawable) }
+    free["copies the back buffer to the front and shows it with XPutImage; no MIT-SHM"] glXSwapBuffers(dpy: *mut Display, drawable: GLXDrawable) { glx::swap_buffers(dpy, drawable) }
     free glXCreateGLXPixmap(dpy: *mut Display, visual: *mut XVisualInfo, pixmap: XID) -> GLXDrawable { glx::create_pixmap(dpy, if visual.is_null() { 0 } else { pixmap }) }
     free glXDestroyGLXPixmap(dpy: *mut Display, pixmap: GLXDrawable) { glx::destroy_pixmap(dpy, pixmap) }
     free glXIsDirect(dpy: *mut Display, ctx: GLXContext) -> Bool { glx::is_direct(dpy, ctx) }
@@ -754,7 +754,7 @@ super::entry_points! {
     free glXWaitX() { glx::wait_x() }
     free["draws with softgl's built-in bitmap fonts sized like the X font, not the X font's own glyphs"] glXUseXFont(font: XID, first: c_int, count: c_int, list: c_int) { glx::use_x_font(font, first, count, list) }
     free glXGetCurrentDisplay() -> *mut Display { glx::get_current_display() }
-    free["no pbuffer configs"] glXChooseFBConfig(dpy: *mut Display, screen: c_int, attribList: *const c_int, nitems: *mut c_int) -> *mut GLXFBConfig { glx::choose_fb_config(dpy, screen, attribList, nitems) }
+    free glXChooseFBConfig(dpy: *mut Display, screen: c_int, attribList: *const c_int, nitems: *mut c_int) -> *mut GLXFBConfig { glx::choose_fb_config(dpy, screen, attribList, nitems) }
     free glXGetFBConfigAttrib(dpy: *mut Display, config: GLXFBConfig, attribute: c_int, value: *mut c_int) -> c_int { glx::get_fb_config_attrib(dpy, config, attribute, value) }
     free glXGetFBConfigs(dpy: *mut Display, screen: c_int, nelements: *mut c_int) -> *mut GLXFBConfig { glx::get_fb_configs(dpy, screen, nelements) }
     free glXGetVisualFromFBConfig(dpy: *mut Display, config: GLXFBConfig) -> *mut XVisualInfo { glx::get_visual_from_fb_config(dpy, config) }
