@@ -790,8 +790,8 @@ super::entry_points! {
     free wglSwapBuffers(hdc: *mut c_void) -> c_int { crate::winsys::wgl::swap_buffers(hdc) }
     free["built-in misc-fixed bitmap fonts chosen by height and weight (docs/fonts.md), not the DC's GDI font"] wglUseFontBitmapsA(hdc: *mut c_void, first: u32, count: u32, listBase: u32) -> c_int { crate::winsys::wgl::use_font_bitmaps(hdc, first, count, listBase, false) }
     free["as wglUseFontBitmapsA; code points beyond ASCII, Latin-1, Cyrillic and code pages 1251/1252 draw U+FFFD"] wglUseFontBitmapsW(hdc: *mut c_void, first: u32, count: u32, listBase: u32) -> c_int { crate::winsys::wgl::use_font_bitmaps(hdc, first, count, listBase, true) }
-    todo wglUseFontOutlinesA(hdc: *mut c_void, first: u32, count: u32, listBase: u32, deviation: f32, extrusion: f32, format: c_int, lpgmf: *mut c_void) -> c_int;
-    todo wglUseFontOutlinesW(hdc: *mut c_void, first: u32, count: u32, listBase: u32, deviation: f32, extrusion: f32, format: c_int, lpgmf: *mut c_void) -> c_int;
+    free["outlines are the exact pixel boundaries of the built-in bitmap fonts (winsys/font_outlines.rs), not TrueType curves; deviation is ignored"] wglUseFontOutlinesA(hdc: *mut c_void, first: u32, count: u32, listBase: u32, deviation: f32, extrusion: f32, format: c_int, lpgmf: *mut c_void) -> c_int { { let _ = deviation; crate::winsys::wgl::use_font_outlines(hdc, first, count, listBase, extrusion, format, lpgmf, false) } }
+    free["as wglUseFontOutlinesA"] wglUseFontOutlinesW(hdc: *mut c_void, first: u32, count: u32, listBase: u32, deviation: f32, extrusion: f32, format: c_int, lpgmf: *mut c_void) -> c_int { { let _ = deviation; crate::winsys::wgl::use_font_outlines(hdc, first, count, listBase, extrusion, format, lpgmf, true) } }
     free softglCreateDC(width: c_int, height: c_int) -> *mut c_void { crate::winsys::wgl::create_dc(width, height) }
     free softglDestroyDC(hdc: *mut c_void) -> c_int { crate::winsys::wgl::destroy_dc(hdc) }
     free softglResizeDC(hdc: *mut c_void, width: c_int, height: c_int) -> c_int { crate::winsys::wgl::resize_dc(hdc, width, height) }

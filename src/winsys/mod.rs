@@ -5,6 +5,7 @@
 
 pub mod current;
 pub mod dump;
+pub mod font_outlines;
 pub mod glx;
 pub mod osmesa;
 pub mod wgl;

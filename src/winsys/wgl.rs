@@ -569,6 +569,28 @@ pub fn use_font_bitmaps(hdc: Hdc, first: u32, count: u32, base: u32, wide: bool)
     build_font_lists(&font, decode, first, count, base) as Bool
 }
 
+/// wglUseFontOutlinesA/W: outlines of the DC's (built-in) font, see
+/// `winsys::font_outlines`.
+///
+/// # Safety
+/// `gmf` is NULL or points to `count` writable GLYPHMETRICSFLOATs.
+pub unsafe fn use_font_outlines(hdc: Hdc, first: u32, count: u32, base: u32, extrusion: f32, format: i32, gmf: *mut std::ffi::c_void, wide: bool) -> Bool {
+    let Some(d) = dc(hdc) else { return 0 };
+    let (height, weight, charset) = lock_dc(&d.state).font;
+    let font = fonts::select(height, weight);
+    let page = code_page(charset);
+    let decode = move |code: u32| -> u32 {
+        if wide {
+            code
+        } else if code <= 0xff {
+            page.decode(code as u8).unwrap_or(0xFFFD)
+        } else {
+            0xFFFD
+        }
+    };
+    super::font_outlines::build_outline_lists(&font, decode, first, count, base, extrusion, format, gmf as *mut super::font_outlines::GlyphMetricsFloat) as Bool
+}
+
 /// Builds glyph display lists through the public GL entry points (shared
 /// with glXUseXFont's built-in fallback). False without a usable current
 /// context.
@@ -765,5 +787,87 @@ mod tests {
         assert_eq!(pe, font.bitmap(0x041F));
         assert_eq!(code_page(ANSI_CHARSET), ansi_code_page());
         unsafe { destroy_dc(hdc) };
+    }
+
+    /// wglUseFontOutlines: the filled outline of each glyph, drawn with one
+    /// em mapped to the font's cell height in pixels, covers exactly the
+    /// pixels its bitmap does; the back face of an extruded glyph (seen
+    /// with front faces culled) covers them too, the side walls being edge
+    /// on; the metrics are the bitmap's in em units; each list advances by
+    /// the cell increment.
+    #[test]
+    fn font_outlines_cover_the_bitmap_glyphs() {
+        use crate::winsys::font_outlines::{GlyphMetricsFloat, WGL_FONT_LINES, WGL_FONT_POLYGONS};
+        unsafe {
+            let (w, h) = (96, 48);
+            let hdc = create_dc(w, h);
+            set_pixel_format(hdc, 1, null_mut());
+            let rc = create_context(hdc);
+            let mut gmf = [GlyphMetricsFloat::default(); 3];
+            assert_eq!(use_font_outlines(hdc, 65, 3, 100, 0.5, WGL_FONT_POLYGONS, gmf.as_mut_ptr() as *mut _, false), 0, "no context");
+            assert_eq!(make_current(hdc, rc), 1);
+            select_font(hdc, 24, 400, ANSI_CHARSET);
+            let font = fonts::select(24, 400);
+            let em = font.cell_height() as f32;
+            assert_eq!(use_font_outlines(hdc, 65, 3, 100, 0.5, WGL_FONT_POLYGONS, gmf.as_mut_ptr() as *mut _, false), 1);
+            assert_eq!(use_font_outlines(hdc, 65, 3, 200, 0.0, WGL_FONT_LINES, null_mut(), false), 1);
+            assert_eq!(use_font_outlines(hdc, 65, 3, 300, 0.0, 7, null_mut(), false), 0, "unknown format");
+            assert_eq!(use_font_bitmaps(hdc, 65, 3, 400, false), 1);
+            let b = font.bitmap(66);
+            assert_eq!(gmf[1].black_box_x, b.width as f32 / em);
+            assert_eq!(gmf[1].cell_inc_x, b.xmove / em);
+            assert_eq!(gmf[1].origin_y, (b.height as f32 - b.yorig) / em);
+            glMatrixMode(GL_PROJECTION);
+            glOrtho(0.0, w as f64 / em as f64, 0.0, h as f64 / em as f64, -1.0, 1.0);
+            glMatrixMode(GL_MODELVIEW);
+            let read = || {
+                let mut px = vec![0u8; (w * h * 4) as usize];
+                glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px.as_mut_ptr() as *mut _);
+                px
+            };
+            // "ABC" from the origin (10, 12) pixels, as bitmaps, then as
+            // outlines (front faces), then as back faces only.
+            let origin = (10.0 / em, 12.0 / em);
+            glClear(GL_COLOR_BUFFER_BIT);
+            glRasterPos2f(origin.0, origin.1);
+            let names: [u8; 3] = [0, 1, 2];
+            glListBase(400);
+            glCallLists(3, GL_UNSIGNED_BYTE, names.as_ptr() as *const _);
+            let bitmaps = read();
+            assert!(bitmaps.chunks(4).filter(|p| p[0] != 0).count() > 40, "the bitmaps drew");
+            for (base, cull) in [(100, GL_BACK), (100, GL_FRONT)] {
+                glClear(GL_COLOR_BUFFER_BIT);
+                glEnable(GL_CULL_FACE);
+                glCullFace(cull);
+                glLoadIdentity();
+                glTranslatef(origin.0, origin.1, 0.0);
+                glListBase(base);
+                glCallLists(3, GL_UNSIGNED_BYTE, names.as_ptr() as *const _);
+                glDisable(GL_CULL_FACE);
+                assert!(read() == bitmaps, "outlines (culling {cull:#x}) cover the bitmap pixels");
+            }
+            // The lines format draws the boundary: only pixels on or next
+            // to glyph pixels.
+            glClear(GL_COLOR_BUFFER_BIT);
+            glLoadIdentity();
+            glTranslatef(origin.0, origin.1, 0.0);
+            glListBase(200);
+            glCallLists(3, GL_UNSIGNED_BYTE, names.as_ptr() as *const _);
+            let lines = read();
+            let lit = |img: &[u8], x: i32, y: i32| x >= 0 && y >= 0 && x < w && y < h && img[((y * w + x) * 4) as usize] != 0;
+            let mut n = 0;
+            for y in 0..h {
+                for x in 0..w {
+                    if lit(&lines, x, y) {
+                        n += 1;
+                        assert!((-1..=1).any(|dy| (-1..=1).any(|dx| lit(&bitmaps, x + dx, y + dy))), "line pixel {x},{y} away from the glyphs");
+                    }
+                }
+            }
+            assert!(n > 40, "the outlines drew ({n} pixels)");
+            assert_eq!(glGetError(), GL_NO_ERROR);
+            delete_context(rc);
+            destroy_dc(hdc);
+        }
     }
 }
