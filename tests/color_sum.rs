@@ -79,3 +79,34 @@ fn back_faces_take_the_back_specular_under_two_sided_lighting() {
     c.execute(&Command::Rect([-1.0, -1.0, 1.0, 1.0]));
     assert_eq!(c.fb.color[c.fb.index(2, 2)], [0, 0, 255, 255]);
 }
+
+/// Flat shading takes the provoking vertex's secondary colour too
+/// (section 2.14.7), also when texturing makes the sum per fragment: a
+/// triangle (provoking vertex last) and a quad (provoking vertex last)
+/// whose other vertices have other secondary colours are uniform.
+#[test]
+fn flat_shading_takes_the_provoking_secondary_colour() {
+    let mut c = context();
+    let texel = [255u8, 255, 255, 255];
+    let cmd = unsafe { c.tex_image_command(2, t::GL_TEXTURE_2D, 0, t::GL_RGBA8 as i32, [1, 1, 1], 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE, texel.as_ptr()) };
+    c.submit(cmd.unwrap());
+    c.execute(&Command::TexParameter(t::GL_TEXTURE_2D, t::GL_TEXTURE_MIN_FILTER, [t::GL_NEAREST as f32, 0.0, 0.0, 0.0]));
+    c.execute(&Command::Enable(t::GL_TEXTURE_2D));
+    c.execute(&Command::Enable(GL_COLOR_SUM));
+    c.execute(&Command::ShadeModel(GL_FLAT));
+    c.execute(&Command::Color([0.0, 0.0, 0.0, 1.0]));
+    for (mode, verts) in [(GL_TRIANGLES, vec![[-3.0, -1.0], [1.0, -1.0], [1.0, 3.0]]), (GL_QUADS, vec![[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])] {
+        c.execute(&Command::Begin(mode));
+        let n = verts.len();
+        for (i, v) in verts.iter().enumerate() {
+            let s = if i + 1 == n { [0.0, 0.0, 1.0, 1.0] } else { [1.0, 0.0, 0.0, 1.0] };
+            c.execute(&Command::SecondaryColor(s));
+            c.execute(&Command::TexCoord(t::GL_TEXTURE0, [0.5, 0.5, 0.0, 1.0]));
+            c.execute(&Command::Vertex([v[0], v[1], 0.0, 1.0]));
+        }
+        c.execute(&Command::End);
+        for (x, y) in [(2, 1), (3, 0), (3, 3), (2, 2)] {
+            assert_eq!(c.fb.color[c.fb.index(x, y)], [0, 0, 255, 255], "mode {mode:#x} pixel {x},{y}");
+        }
+    }
+}

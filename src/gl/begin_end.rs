@@ -273,8 +273,17 @@ impl Context {
             return self.select_primitive(&[b, c, d], select::GL_POLYGON_TOKEN, false);
         }
         let flat = [provoking.color, provoking.back_color];
-        render::draw_triangle(&self.derived.render, &mut self.fb, [a, b, d], flat, [f(a), false, f(d)]);
-        render::draw_triangle(&self.derived.render, &mut self.fb, [b, c, d], flat, [f(b), f(c), false]);
+        let rs = &self.derived.render;
+        match flat_secondary(rs, [a, b, c, d], provoking) {
+            Some([a2, b2, c2, d2]) => {
+                render::draw_triangle(rs, &mut self.fb, [&a2, &b2, &d2], flat, [f(a), false, f(d)]);
+                render::draw_triangle(rs, &mut self.fb, [&b2, &c2, &d2], flat, [f(b), f(c), false]);
+            }
+            None => {
+                render::draw_triangle(rs, &mut self.fb, [a, b, d], flat, [f(a), false, f(d)]);
+                render::draw_triangle(rs, &mut self.fb, [b, c, d], flat, [f(b), f(c), false]);
+            }
+        }
     }
 
     /// One triangle; `edges[i]` flags the edge from v[i] to v[i + 1].
@@ -282,6 +291,22 @@ impl Context {
         if self.select.mode != select::GL_RENDER {
             return self.select_primitive(&v, select::GL_POLYGON_TOKEN, false);
         }
-        render::draw_triangle(&self.derived.render, &mut self.fb, v, [v[provoking].color, v[provoking].back_color], edges);
+        let flat = [v[provoking].color, v[provoking].back_color];
+        match flat_secondary(&self.derived.render, v, v[provoking]) {
+            Some(w) => render::draw_triangle(&self.derived.render, &mut self.fb, [&w[0], &w[1], &w[2]], flat, edges),
+            None => render::draw_triangle(&self.derived.render, &mut self.fb, v, flat, edges),
+        }
     }
+}
+
+/// Flat shading gives every fragment the provoking vertex's secondary
+/// colour as well as its primary (section 2.14.7). Only textured
+/// fragments interpolate the secondary colour (the colour sum comes after
+/// texturing, render::setup); for them the vertices are copied with the
+/// provoking vertex's secondary colours. None when nothing needs it.
+fn flat_secondary<const N: usize>(rs: &render::RenderState, v: [&ClipVertex; N], provoking: &ClipVertex) -> Option<[ClipVertex; N]> {
+    if !(rs.flat && rs.color_sum && rs.texture.is_some()) {
+        return None;
+    }
+    Some(v.map(|x| ClipVertex { secondary: provoking.secondary, back_secondary: provoking.back_secondary, ..*x }))
 }
