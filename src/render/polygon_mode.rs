@@ -31,7 +31,7 @@ fn polygon_offset(win: &[setup::WindowVertex], factor: f32, units: f32) -> f64 {
     } else {
         0.0
     };
-    m * factor as f64 + units as f64 / crate::framebuffer::DEPTH_MAX as f64
+    m * factor as f64 + units as f64 * super::setup::OFFSET_UNIT
 }
 
 pub fn draw(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3], flat_color: [Vec4; 2], edges: [bool; 3]) {

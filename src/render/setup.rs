@@ -126,6 +126,13 @@ pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &
 }
 
 #[allow(clippy::too_many_arguments)]
+/// r of polygon offset (3.5.5): the smallest difference in window depth
+/// guaranteed to be resolvable. Vertices reach window coordinates through
+/// f32 clip coordinates, so near the near plane two depths 1/2^24 apart
+/// can round to the same value: r is two steps of the 24-bit depth buffer,
+/// as measured by piglit's gl-1.4-polygon-offset (its "ideal MRD" here).
+pub const OFFSET_UNIT: f64 = 2.0 / crate::framebuffer::DEPTH_MAX as f64;
+
 pub(crate) fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
     let inv = 1.0 / ONE as f64;
     let x = ex.map(|c| c as f64 * inv);
@@ -151,7 +158,7 @@ pub(crate) fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: 
         // Polygon offset (3.5.5): m * factor + r * units, with m the
         // largest depth slope and r the depth buffer's resolution.
         let m = z.dx.abs().max(z.dy.abs());
-        z.a0 += m * factor as f64 + units as f64 / crate::framebuffer::DEPTH_MAX as f64;
+        z.a0 += m * factor as f64 + units as f64 * OFFSET_UNIT;
     }
     let tex = rs.texture.as_ref().map(|stage| {
         let mut planes = [[Plane::default(); 4]; super::texture::MAX_UNITS];
