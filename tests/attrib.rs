@@ -176,3 +176,13 @@ fn multisample_group_comes_back() {
     assert_eq!(getf(&mut c, 0x80AA), vec![1.0]);
     assert_eq!(c.take_error(), GL_NO_ERROR);
 }
+
+/// GL 1.5 table 6.17: GL_MULTISAMPLE is initially enabled (the other three
+/// multisample capabilities are not).
+#[test]
+fn multisample_starts_enabled() {
+    let c = context();
+    assert_eq!(c.is_enabled(GL_MULTISAMPLE), Some(true));
+    assert_eq!(c.is_enabled(GL_SAMPLE_COVERAGE), Some(false));
+    assert_eq!(c.is_enabled(GL_SAMPLE_ALPHA_TO_COVERAGE), Some(false));
+}

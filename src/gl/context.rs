@@ -94,7 +94,9 @@ impl Context {
             pixel_read_buffer: GL_FRONT,
             line: Default::default(),
             point: Default::default(),
-            other_caps: Default::default(),
+            // GL_MULTISAMPLE starts enabled (GL 1.5 table 6.17); with one
+            // sample per pixel it changes nothing, but glIsEnabled says so.
+            other_caps: enable::OtherCaps([GL_MULTISAMPLE].into_iter().collect()),
             transform: matrix::Transform::new(),
             prim: None,
             lists: Default::default(),
