@@ -38,25 +38,29 @@ SCENES = {
     "display_list_1m": ("the same through one display list", 333334),
     "readpixels": ("clear + triangle + full-frame glReadPixels RGBA", 1),
     "clear": ("colour + depth + stencil clear", 0),
+    "book_dino": ("the Persian book's reflected dinosaur, stencil on (c_tests/book port's code)", None),
+    "book_decal": ("the Russian book's decal airplane, stage 6: stencilled decals and the blended shadow", None),
+    "book_winding": ("the Persian book's winding-rule panels, re-tessellated (GLU) into lists every frame", None),
+    "fog_spheres": ("spheres_m under EXP2 fog, GL_FOG_HINT NICEST (per fragment)", 57600),
+    "fog_spheres_fast": ("the same with GL_FOG_HINT FASTEST", 57600),
+    "textured": ("a window-filling tunnel, 512x512 RGBA mipmapped, LINEAR_MIPMAP_LINEAR, perspective hint NICEST", 8),
+    "textured_fast": ("the same with GL_PERSPECTIVE_CORRECTION_HINT FASTEST", 8),
+    "drawpixels": ("a window-sized RGBA glDrawPixels, depth test on", 0),
+    "copypixels": ("a triangle, then two glCopyPixels of half the window (overlapping)", 1),
+    "arrays_1m": ("immediate_1m's triangles from client arrays, one glDrawArrays", 333334),
+    "accum_blur": ("spheres_s four times into the accumulation buffer (LOAD, ACCUM, RETURN)", 25600),
+    "shadow_volume": ("stencil shadow volumes (z-pass, INCR_WRAP/DECR_WRAP) of six squares over lit boxes", None),
+    "smooth_lines": ("600 antialiased blended lines of width 1.5 and 3, GL_LINE_SMOOTH_HINT NICEST", 0),
+    "smooth_lines_fast": ("the same with GL_LINE_SMOOTH_HINT FASTEST", 0),
 }
-# Scenes of issue 9 that need features softgl does not have yet.
-NOT_YET = {
-    "book: reflected dinosaur": "the book's program port (issue 8)",
-    "book: decal airplane and shadow": "the book's program port (issue 8)",
-    "book: winding-rule panels": "GLU tessellator",
-    "fogged spheres": "fog",
-    "trilinear-textured scene": "texturing",
-    "glDrawPixels / glCopyPixels": "pixel drawing",
-    "vertex arrays": "vertex arrays",
-    "accumulation blur": "accumulation buffer",
-    "stencil shadow volumes": "a scene to write",
-}
+# Scenes of issue 9 that need features softgl does not have yet (none now).
+NOT_YET = {}
 
 
 def frames_for(impl, w, h, scene):
     px = w * h
     base = 30 if px <= 300 * 300 else 12 if px <= 1024 * 768 else 8
-    if scene in ("immediate_1m", "display_list_1m", "spheres_l"):
+    if scene in ("immediate_1m", "display_list_1m", "arrays_1m", "spheres_l", "accum_blur"):
         base = max(3, base // 3)
     if impl in ("softpipe", "softgl-ref"):
         base = max(2, base // 4)
@@ -199,7 +203,7 @@ def write_markdown(results, sizes, scenes, impls):
             "Image error is against softpipe's image of the same frame, and against softgl's reference path (`softgl-ref`, SOFTGL_REFERENCE=1).",
             "`softgl` uses every core (SOFTGL_THREADS unset), `softgl-1t` one thread.", "",
             "Scenes:", ""] + [f"- `{k}`: {v[0]}" for k, v in SCENES.items() if k in scenes] + \
-           ["", "Not runnable yet (softgl lacks the features): " + "; ".join(f"{k} ({v})" for k, v in NOT_YET.items()), "", *lines, ""]
+           ([""] + ["Not runnable yet (softgl lacks the features): " + "; ".join(f"{k} ({v})" for k, v in NOT_YET.items())] if NOT_YET else []) + ["", *lines, ""]
     with open(os.path.join(OUT, "results.md"), "w") as f:
         f.write("\n".join(text))
     print("\n".join(lines))
@@ -217,20 +221,25 @@ def plot(results, sizes, scenes, impls):
     colors = {"softgl": "tab:red", "softgl-1t": "tab:orange", "softgl-ref": "tab:brown", "llvmpipe-1t": "tab:blue", "llvmpipe": "tab:cyan", "softpipe": "tab:gray"}
     # Time against error, per scene, at the largest size.
     size = f"{sizes[-1][0]}x{sizes[-1][1]}"
-    n = len(scenes)
+    # A scene's GL_FASTEST variant (NAME_fast) shares NAME's panel, marked x:
+    # the hint's two points side by side (issue 9 item 3).
+    panels = [s for s in scenes if not (s.endswith("_fast") and s[:-5] in scenes)]
+    n = len(panels)
     fig, axes = plt.subplots(1, n, figsize=(3.2 * n, 3), squeeze=False)
-    for ax, scene in zip(axes[0], scenes):
-        for i in impls:
-            r = by.get((scene, size, i), {})
-            if "median_ms" in r and (r.get("vs_softpipe") or i == "softpipe"):
-                e = r["vs_softpipe"]["rmse"] if r.get("vs_softpipe") else 0.0
-                ax.scatter([r["median_ms"]], [e], color=colors[i], label=i)
+    for ax, scene in zip(axes[0], panels):
+        for variant, marker in ((scene, "o"), (scene + "_fast", "x")):
+            for i in impls:
+                r = by.get((variant, size, i), {})
+                if "median_ms" in r and (r.get("vs_softpipe") or i == "softpipe"):
+                    e = r["vs_softpipe"]["rmse"] if r.get("vs_softpipe") else 0.0
+                    ax.scatter([r["median_ms"]], [e], color=colors[i], marker=marker,
+                               label=i + (" FASTEST" if marker == "x" else ""))
         ax.set_title(scene, fontsize=8); ax.set_xlabel("median ms"); ax.set_ylabel("RMSE vs softpipe")
     axes[0][0].legend(fontsize=6)
     fig.tight_layout(); fig.savefig(os.path.join(OUT, "time_vs_error.png"), dpi=80); plt.close(fig)
     # Time against resolution.
     fig, axes = plt.subplots(1, n, figsize=(3.2 * n, 3), squeeze=False)
-    for ax, scene in zip(axes[0], scenes):
+    for ax, scene in zip(axes[0], panels):
         for i in impls:
             pts = [(w * h / 1e6, by[(scene, f"{w}x{h}", i)]["median_ms"]) for (w, h) in sizes if "median_ms" in by.get((scene, f"{w}x{h}", i), {})]
             if pts:

@@ -19,6 +19,7 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <time.h>
+#include "scenes.h"
 
 static double mono(void)
 {
@@ -36,10 +37,10 @@ static double wall(void)
 
 #define IMAGE_FRAME 7
 
-static int W, H;
+int W, H;
 static GLuint list_id;
 
-static void perspective(void)
+void perspective(void)
 {
     double a = (double)W / H;
     glMatrixMode(GL_PROJECTION);
@@ -50,7 +51,7 @@ static void perspective(void)
 }
 
 /* A sphere of smooth-coloured triangle strips. */
-static void sphere(int stacks, int slices)
+void sphere(int stacks, int slices)
 {
     int i, j;
     for (i = 0; i < stacks; i++) {
@@ -70,7 +71,7 @@ static void sphere(int stacks, int slices)
 }
 
 /* 5x5 spheres; `detail` sets stacks (slices = 2 stacks): 25 * 4 * detail^2 triangles. */
-static void spheres(int frame, int detail)
+void spheres(int frame, int detail)
 {
     int i, j;
     glClearColor(0.05f, 0.05f, 0.1f, 1);
@@ -280,7 +281,10 @@ static int render(const char *scene, int frame)
     else if (!strcmp(scene, "display_list_1m")) calls(1);
     else if (!strcmp(scene, "readpixels")) read_pixels(frame);
     else if (!strcmp(scene, "clear")) clears(frame);
-    else return 0;
+    else if (!strcmp(scene, "book_dino")) book_dino(frame);
+    else if (!strcmp(scene, "book_decal")) book_decal(frame);
+    else if (!strcmp(scene, "book_winding")) book_winding(frame);
+    else if (!feature_scene(scene, frame)) return 0;
     glFinish();
     return 1;
 }
@@ -307,7 +311,8 @@ int main(int argc, char **argv)
     buf = calloc((size_t)W * H, 4);
     readback = calloc((size_t)W * H, 4);
     ms = calloc(frames + 1, sizeof *ms);
-    ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+    /* An accumulation buffer only where a scene uses it: it costs memory. */
+    ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, strcmp(scene, "accum_blur") ? 0 : 16, NULL);
     if (!ctx || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) {
         fprintf(stderr, "no OSMesa context\n");
         return 1;
