@@ -13,17 +13,8 @@ void book_winding(int frame)
 {
     static const GLdouble rules[5] = {GLU_TESS_WINDING_ODD, GLU_TESS_WINDING_NONZERO,
         GLU_TESS_WINDING_POSITIVE, GLU_TESS_WINDING_NEGATIVE, GLU_TESS_WINDING_ABS_GEQ_TWO};
-    if (!tobj) { /* the port's initGL */
-        glClearColor(0, 0, 0, 0);
-        glShadeModel(GL_FLAT);
-        tobj = gluNewTess();
-        gluTessCallback(tobj, GLU_TESS_VERTEX, (void (APIENTRY *)(void))vertex_cb);
-        gluTessCallback(tobj, GLU_TESS_BEGIN, (void (APIENTRY *)(void))begin_cb);
-        gluTessCallback(tobj, GLU_TESS_END, (void (APIENTRY *)(void))end_cb);
-        gluTessCallback(tobj, GLU_TESS_ERROR, (void (APIENTRY *)(void))error_cb);
-        gluTessCallback(tobj, GLU_TESS_COMBINE, (void (APIENTRY *)(void))combine_cb);
-        list = glGenLists(4);
-    }
+    if (!tobj)
+        init_gl();
     reshape(W, H);
     ncombined = 0;
     make_new_lists(GLU_TESS_WINDING_RULE, rules[frame % 5]);

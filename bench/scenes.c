@@ -40,6 +40,19 @@ static double wall(void)
 int W, H;
 static GLuint list_id;
 
+/* Clears the colour buffer to (r, g, b), depth test off, identity
+ * matrices: the 2D scenes' start. */
+void clear_2d(float r, float g, float b)
+{
+    glClearColor(r, g, b, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+}
+
 void perspective(void)
 {
     double a = (double)W / H;
@@ -142,13 +155,7 @@ static void particles(int frame)
 static void lines(int frame)
 {
     int i;
-    glClearColor(1, 1, 1, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glDisable(GL_DEPTH_TEST);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    clear_2d(1, 1, 1);
     glRotatef((float)frame, 0, 0, 1);
     for (i = 0; i < 3; i++) {
         int k;
@@ -221,13 +228,7 @@ static void tiny_triangles(void)
 
 static void calls(int use_list)
 {
-    glClearColor(0, 0, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glDisable(GL_DEPTH_TEST);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    clear_2d(0, 0, 0);
     if (use_list) {
         if (!list_id) {
             list_id = glGenLists(1);

@@ -4,6 +4,8 @@
 
 extern int W, H;
 
+/* Clear to (r, g, b), depth test off, identity matrices. */
+void clear_2d(float r, float g, float b);
 /* The projection every 3D scene uses: a frustum of the window's aspect. */
 void perspective(void);
 /* One smooth-coloured sphere of triangle strips. */

@@ -115,13 +115,7 @@ static void draw_pixels(int frame)
  * half, and the bottom half over the top (overlapping copies included). */
 static void copy_pixels(int frame)
 {
-    glClearColor(0.1f, 0.2f, 0.3f, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glDisable(GL_DEPTH_TEST);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    clear_2d(0.1f, 0.2f, 0.3f);
     glBegin(GL_TRIANGLES);
     glColor3f(1, 0, 0); glVertex2f(-0.9f, -0.9f);
     glColor3f(0, 1, 0); glVertex2f(0.1f * (frame % 5), -0.7f);
@@ -158,13 +152,7 @@ static void arrays_1m(void)
             }
         }
     }
-    glClearColor(0, 0, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glDisable(GL_DEPTH_TEST);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    clear_2d(0, 0, 0);
     glVertexPointer(2, GL_FLOAT, 0, v);
     glColorPointer(3, GL_UNSIGNED_BYTE, 0, c);
     glEnableClientState(GL_VERTEX_ARRAY);
@@ -306,13 +294,7 @@ static void shadow_volume(int frame)
 static void smooth_lines(int frame, GLenum hint)
 {
     int i, k;
-    glClearColor(1, 1, 1, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glDisable(GL_DEPTH_TEST);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    clear_2d(1, 1, 1);
     glRotatef((float)frame, 0, 0, 1);
     glEnable(GL_LINE_SMOOTH);
     glHint(GL_LINE_SMOOTH_HINT, hint);

@@ -113,6 +113,20 @@ static void make_new_lists(GLenum which, GLdouble winding)
     glEndList();
 }
 
+/* initGL of the book: the tessellator, its callbacks and the lists. */
+static void init_gl(void)
+{
+    glClearColor(0, 0, 0, 0);
+    glShadeModel(GL_FLAT);
+    tobj = gluNewTess();
+    gluTessCallback(tobj, GLU_TESS_VERTEX, (void (APIENTRY *)(void))vertex_cb);
+    gluTessCallback(tobj, GLU_TESS_BEGIN, (void (APIENTRY *)(void))begin_cb);
+    gluTessCallback(tobj, GLU_TESS_END, (void (APIENTRY *)(void))end_cb);
+    gluTessCallback(tobj, GLU_TESS_ERROR, (void (APIENTRY *)(void))error_cb);
+    gluTessCallback(tobj, GLU_TESS_COMBINE, (void (APIENTRY *)(void))combine_cb);
+    list = glGenLists(4);
+}
+
 static void display(void)
 {
     glClear(GL_COLOR_BUFFER_BIT);
@@ -265,16 +279,7 @@ int main(void)
     h_expect(glGetError() == GL_NO_ERROR, "glGetError with no context");
 #endif
     book_open(W, H);
-    /* initGL */
-    glClearColor(0, 0, 0, 0);
-    glShadeModel(GL_FLAT);
-    tobj = gluNewTess();
-    gluTessCallback(tobj, GLU_TESS_VERTEX, (void (APIENTRY *)(void))vertex_cb);
-    gluTessCallback(tobj, GLU_TESS_BEGIN, (void (APIENTRY *)(void))begin_cb);
-    gluTessCallback(tobj, GLU_TESS_END, (void (APIENTRY *)(void))end_cb);
-    gluTessCallback(tobj, GLU_TESS_ERROR, (void (APIENTRY *)(void))error_cb);
-    gluTessCallback(tobj, GLU_TESS_COMBINE, (void (APIENTRY *)(void))combine_cb);
-    list = glGenLists(4);
+    init_gl();
     reshape(W, H);
 
     /* The C original: a key press selects the next rule (else-if chain). */
