@@ -55,6 +55,7 @@ fn all_caps() -> Vec<u32> {
         GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_GEN_S,
         GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
     ];
+    caps.push(super::texture::enums::GL_TEXTURE_RECTANGLE);
     caps.extend(GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6);
     caps.extend(GL_LIGHT0..GL_LIGHT0 + 8);
     caps.extend(GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4);

@@ -1,6 +1,8 @@
 //! Texturing state and commands (GL 1.5 sections 3.8 and 2.10.4 / 2.11.4):
 //! texture objects (glGenTextures, glBindTexture, glDeleteTextures,
-//! glIsTexture, priorities), the 1D, 2D, 3D and cube-map images and their
+//! glIsTexture, priorities), the 1D, 2D, 3D, cube-map and rectangle
+//! (ARB_texture_rectangle: one level, no border, no REPEAT wraps or
+//! mipmap filters) images and their
 //! specification (glTexImage*, glTexSubImage*, glCopyTexImage*,
 //! glCopyTexSubImage*, proxies, GENERATE_MIPMAP), parameters, the
 //! per-unit environment and texture coordinate generation, and their
@@ -34,13 +36,15 @@ pub const DIRTY_TEXTURE: u32 = super::validate::DIRTY_TEXTURE;
 pub const MAX_TEXTURE_SIZE: i32 = 2048;
 pub const MAX_3D_TEXTURE_SIZE: i32 = 256;
 pub const MAX_CUBE_MAP_TEXTURE_SIZE: i32 = 2048;
+pub const MAX_RECTANGLE_TEXTURE_SIZE: i32 = 2048;
 /// Levels per face: log2(MAX_TEXTURE_SIZE) + 1.
 pub const MAX_LEVELS: usize = 12;
 /// The largest image softgl allocates (bytes of stored texels): larger
 /// requests are GL_OUT_OF_MEMORY at once (proxies: not supported).
 const MAX_IMAGE_BYTES: usize = 1 << 30;
 
-const TARGETS: [Target; 4] = [Target::T1D, Target::T2D, Target::T3D, Target::Cube];
+/// Every object target, in `Target` order (`target_index`).
+const TARGETS: [Target; 5] = [Target::T1D, Target::T2D, Target::T3D, Target::Cube, Target::Rect];
 
 fn target_index(t: Target) -> usize {
     t as usize
@@ -53,6 +57,7 @@ fn object_target(e: u32) -> Option<Target> {
         GL_TEXTURE_2D => Target::T2D,
         GL_TEXTURE_3D => Target::T3D,
         GL_TEXTURE_CUBE_MAP => Target::Cube,
+        GL_TEXTURE_RECTANGLE => Target::Rect,
         _ => return None,
     })
 }
@@ -68,23 +73,32 @@ fn image_target(e: u32, dims: u8) -> Option<(Target, usize, bool)> {
         (GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, 2) => (Target::Cube, (e - GL_TEXTURE_CUBE_MAP_POSITIVE_X) as usize, false),
         (GL_TEXTURE_3D, 3) => (Target::T3D, 0, false),
         (GL_PROXY_TEXTURE_3D, 3) => (Target::T3D, 0, true),
+        (GL_TEXTURE_RECTANGLE, 2) => (Target::Rect, 0, false),
+        (GL_PROXY_TEXTURE_RECTANGLE, 2) => (Target::Rect, 0, true),
         _ => return None,
     })
 }
 
 fn dims_of(t: Target) -> u8 {
-    match t {
-        Target::T1D => 1,
-        Target::T2D | Target::Cube => 2,
-        Target::T3D => 3,
-    }
+    t.dims() as u8
 }
 
 fn max_size(t: Target) -> i32 {
     match t {
         Target::T3D => MAX_3D_TEXTURE_SIZE,
         Target::Cube => MAX_CUBE_MAP_TEXTURE_SIZE,
+        Target::Rect => MAX_RECTANGLE_TEXTURE_SIZE,
         _ => MAX_TEXTURE_SIZE,
+    }
+}
+
+/// The last level an image of target `t` may have (rectangle textures
+/// have only level 0).
+fn max_level_of(t: Target) -> i32 {
+    if t == Target::Rect {
+        0
+    } else {
+        log2_floor(max_size(t))
     }
 }
 
@@ -107,8 +121,10 @@ pub struct TexObject {
 impl TexObject {
     fn new(target: Option<Target>) -> TexObject {
         let mut params = Params::default();
-        if target == Some(Target::Cube) {
-            params.wrap = [Wrap::Repeat; 3];
+        if target == Some(Target::Rect) {
+            // ARB_texture_rectangle's initial state: no REPEAT, no mipmaps.
+            params.wrap = [Wrap::ClampToEdge; 3];
+            params.min_filter = Filter::Linear;
         }
         TexObject { target, images: vec![None; 6 * MAX_LEVELS], params, generate_mipmap: false, priority: 1.0 }
     }
@@ -177,10 +193,10 @@ pub struct TexGenCoord {
 /// One texture unit's state (server side).
 #[derive(Clone, Debug)]
 pub struct TexUnit {
-    /// TEXTURE_1D, 2D, 3D, CUBE_MAP enables.
-    pub enabled: [bool; 4],
+    /// TEXTURE_1D, 2D, 3D, CUBE_MAP, RECTANGLE enables (`Target` order).
+    pub enabled: [bool; 5],
     /// Bound object names per target (0: the default object).
-    pub bound: [u32; 4],
+    pub bound: [u32; 5],
     pub env: Env,
     /// TEXTURE_FILTER_CONTROL's TEXTURE_LOD_BIAS.
     pub lod_bias: f32,
@@ -197,8 +213,8 @@ impl Default for TexUnit {
             p
         };
         TexUnit {
-            enabled: [false; 4],
-            bound: [0; 4],
+            enabled: [false; 5],
+            bound: [0; 5],
             env: Env::default(),
             lod_bias: 0.0,
             gen: [0, 1, 2, 3].map(|i| TexGenCoord { enabled: false, mode: GL_EYE_LINEAR, object_plane: plane(i), eye_plane: plane(i) }),
@@ -217,9 +233,9 @@ pub struct TextureState {
     pub objects: HashMap<u32, TexObject>,
     pub reserved: HashSet<u32>,
     /// The default objects (name 0) per target.
-    pub defaults: [TexObject; 4],
+    pub defaults: [TexObject; 5],
     /// The proxy "objects" per target: only their level state matters.
-    pub proxies: [TexObject; 4],
+    pub proxies: [TexObject; 5],
     /// Derived: what the vertex stage does per unit.
     pub vertex: texgen::VertexTexSetup,
 }
@@ -259,10 +275,10 @@ impl TextureState {
     }
 
     /// The target a unit textures with: the highest-priority enabled one
-    /// (cube map, 3D, 2D, 1D), if any.
+    /// (cube map, 3D, rectangle, 2D, 1D), if any.
     pub fn unit_target(&self, u: usize) -> Option<Target> {
         let e = &self.units[u].enabled;
-        [Target::Cube, Target::T3D, Target::T2D, Target::T1D].into_iter().find(|t| e[target_index(*t)])
+        [Target::Cube, Target::T3D, Target::Rect, Target::T2D, Target::T1D].into_iter().find(|t| e[target_index(*t)])
     }
 }
 
@@ -451,6 +467,7 @@ impl Context {
             GL_TEXTURE_2D => unit.enabled[1] = on,
             GL_TEXTURE_3D => unit.enabled[2] = on,
             GL_TEXTURE_CUBE_MAP => unit.enabled[3] = on,
+            GL_TEXTURE_RECTANGLE => unit.enabled[4] = on,
             GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q => unit.gen[(cap - GL_TEXTURE_GEN_S) as usize].enabled = on,
             _ => return false,
         }
@@ -465,6 +482,7 @@ impl Context {
             GL_TEXTURE_2D => unit.enabled[1],
             GL_TEXTURE_3D => unit.enabled[2],
             GL_TEXTURE_CUBE_MAP => unit.enabled[3],
+            GL_TEXTURE_RECTANGLE => unit.enabled[4],
             GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q => unit.gen[(cap - GL_TEXTURE_GEN_S) as usize].enabled,
             _ => return None,
         })
@@ -524,7 +542,8 @@ impl Context {
             return None;
         };
         let max = max_size(t);
-        if level < 0 || level > log2_floor(max) {
+        // A rectangle texture has one level and no border.
+        if level < 0 || level > max_level_of(t) || (t == Target::Rect && border != 0) {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
@@ -607,7 +626,7 @@ impl Context {
     pub fn tex_sub_image(&mut self, cmd: &TexSubImageCmd) {
         let dims = cmd.dims as usize;
         let Some((t, face, false)) = image_target(cmd.target, cmd.dims) else { return self.set_error(GL_INVALID_ENUM) };
-        if cmd.level < 0 || cmd.level > log2_floor(max_size(t)) {
+        if cmd.level < 0 || cmd.level > max_level_of(t) {
             return self.set_error(GL_INVALID_VALUE);
         }
         let u = self.texture.active;
@@ -686,7 +705,7 @@ impl Context {
             let Some((t, face, false)) = image_target(cmd.target, dims) else { return self.set_error(GL_INVALID_ENUM) };
             let u = self.texture.active;
             let Some(img) = self.texture.object(u, t).image(face, cmd.level.clamp(0, MAX_LEVELS as i32 - 1) as usize) else {
-                return self.set_error(if cmd.level < 0 || cmd.level >= MAX_LEVELS as i32 { GL_INVALID_VALUE } else { GL_INVALID_OPERATION });
+                return self.set_error(if cmd.level < 0 || cmd.level > max_level_of(t) { GL_INVALID_VALUE } else { GL_INVALID_OPERATION });
             };
             let depth = img.base == Base::Depth;
             if depth && !self.fb.has_depth() {
@@ -769,6 +788,19 @@ impl Context {
                 _ => return None,
             })
         };
+        // ARB_texture_rectangle: no REPEAT wraps, no mipmap filters
+        // (INVALID_ENUM), no base level but 0 (INVALID_OPERATION).
+        if t == Target::Rect {
+            let bad = match pname {
+                GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => matches!(e, GL_REPEAT | GL_MIRRORED_REPEAT).then_some(GL_INVALID_ENUM),
+                GL_TEXTURE_MIN_FILTER => (!matches!(e, GL_NEAREST | GL_LINEAR)).then_some(GL_INVALID_ENUM),
+                GL_TEXTURE_BASE_LEVEL => (v[0] != 0.0).then_some(if v[0] < 0.0 { GL_INVALID_VALUE } else { GL_INVALID_OPERATION }),
+                _ => None,
+            };
+            if let Some(err) = bad {
+                return self.set_error(err);
+            }
+        }
         let u = self.texture.active;
         let obj = self.texture.object_mut(u, t);
         let p = &mut obj.params;
@@ -927,7 +959,7 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return None;
         };
-        if level < 0 || level > log2_floor(max_size(t)) {
+        if level < 0 || level > max_level_of(t) {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
@@ -969,7 +1001,7 @@ impl Context {
     pub unsafe fn get_tex_image(&mut self, target: u32, level: i32, format: u32, ty: u32, out: *mut u8) {
         let found = [1u8, 2, 3].iter().find_map(|&d| image_target(target, d));
         let Some((t, face, false)) = found else { return self.set_error(GL_INVALID_ENUM) };
-        if level < 0 || level > log2_floor(max_size(t)) {
+        if level < 0 || level > max_level_of(t) {
             return self.set_error(GL_INVALID_VALUE);
         }
         match image::check_format_type(format, ty) {
@@ -1098,6 +1130,8 @@ impl Context {
             GL_TEXTURE_BINDING_2D => ints(&[u.bound[1] as i64]),
             GL_TEXTURE_BINDING_3D => ints(&[u.bound[2] as i64]),
             GL_TEXTURE_BINDING_CUBE_MAP => ints(&[u.bound[3] as i64]),
+            GL_TEXTURE_BINDING_RECTANGLE => ints(&[u.bound[4] as i64]),
+            GL_MAX_RECTANGLE_TEXTURE_SIZE => ints(&[MAX_RECTANGLE_TEXTURE_SIZE as i64]),
             GL_CURRENT_TEXTURE_COORDS => Some(Value::Floats(self.current.tex_coords[ts.active].iter().map(|&c| c as f64).collect())),
             GL_NUM_COMPRESSED_TEXTURE_FORMATS => ints(&[0]),
             GL_COMPRESSED_TEXTURE_FORMATS => Some(Value::Ints(Vec::new())),
