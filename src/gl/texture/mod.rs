@@ -688,7 +688,9 @@ impl Context {
             if f.base == Base::Depth && !self.fb.has_depth() {
                 return self.set_error(GL_INVALID_OPERATION);
             }
-            let pixels = self.read_framebuffer(x, y, size[0], size[1], f.base == Base::Depth);
+            let ds = image::is_depth_stencil(cmd.internal_format) && self.fb.has_stencil();
+            let pixels = self.read_framebuffer(x, y, size[0], size[1], f.base == Base::Depth, ds);
+            let (format, ty) = copy_format(f.base == Base::Depth, ds);
             let img = TexImageCmd {
                 dims,
                 target: cmd.target,
@@ -696,8 +698,8 @@ impl Context {
                 internal_format: cmd.internal_format as i32,
                 size,
                 border: cmd.border,
-                format: if f.base == Base::Depth { GL_DEPTH_COMPONENT } else { GL_RGBA },
-                ty: if f.base == Base::Depth { GL_FLOAT } else { GL_UNSIGNED_BYTE },
+                format,
+                ty,
                 pixels: Some(Arc::new(pixels)),
             };
             self.tex_image(&img);
@@ -715,15 +717,17 @@ impl Context {
                 return self.set_error(GL_INVALID_VALUE);
             }
             let hh = if dims >= 2 { h } else { 1 };
-            let pixels = self.read_framebuffer(x, y, w, hh, depth);
+            let ds = image::is_depth_stencil(img.internal_format) && self.fb.has_stencil();
+            let pixels = self.read_framebuffer(x, y, w, hh, depth, ds);
+            let (format, ty) = copy_format(depth, ds);
             let sub = TexSubImageCmd {
                 dims,
                 target: cmd.target,
                 level: cmd.level,
                 offset: cmd.offset,
                 size: [w, hh, 1],
-                format: if depth { GL_DEPTH_COMPONENT } else { GL_RGBA },
-                ty: if depth { GL_FLOAT } else { GL_UNSIGNED_BYTE },
+                format,
+                ty,
                 pixels: Some(Arc::new(pixels)),
             };
             // A 3D copy writes one slice: a 2D-shaped region at zoffset.
@@ -734,7 +738,7 @@ impl Context {
     /// The framebuffer's colour bytes or depth values of a rectangle (pixel
     /// transfer comes after, in `tex_image`); pixels outside the window
     /// read as zero.
-    fn read_framebuffer(&self, x: i32, y: i32, w: i32, h: i32, depth: bool) -> image::Pixels {
+    fn read_framebuffer(&self, x: i32, y: i32, w: i32, h: i32, depth: bool, stencil: bool) -> image::Pixels {
         let fb = &self.fb;
         let read = self.read_color(); // glReadBuffer's buffer
         let n = w.max(0) as usize * h.max(0) as usize;
@@ -742,7 +746,16 @@ impl Context {
             let (fx, fy) = (x as i64 + i as i64, y as i64 + j as i64);
             (fx >= 0 && fy >= 0 && fx < fb.width as i64 && fy < fb.height as i64).then(|| fb.index(fx as usize, fy as usize))
         };
-        if depth {
+        if depth && stencil {
+            // Packed depth/stencil formats copy both (EXT_packed_depth_stencil).
+            let mut out = Vec::with_capacity(n);
+            for j in 0..h {
+                for i in 0..w {
+                    out.push(at(i, j).map_or((0.0, 0.0), |k| (fb.depth[k] as f64 / crate::framebuffer::DEPTH_MAX as f64, fb.stencil[k] as f64)));
+                }
+            }
+            image::Pixels::DepthStencil(out)
+        } else if depth {
             let mut out = Vec::with_capacity(n);
             for j in 0..h {
                 for i in 0..w {
@@ -1158,6 +1171,15 @@ impl Context {
             self.derived.render.texture = if stage.active.is_empty() { None } else { Some(Arc::new(stage)) };
         }
         self.texture.vertex = texgen::VertexTexSetup::new(self);
+    }
+}
+
+/// The format and type a copy's framebuffer pixels are given as.
+fn copy_format(depth: bool, stencil: bool) -> (u32, u32) {
+    match (depth, stencil) {
+        (true, true) => (GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8),
+        (true, false) => (GL_DEPTH_COMPONENT, GL_FLOAT),
+        _ => (GL_RGBA, GL_UNSIGNED_BYTE),
     }
 }
 
