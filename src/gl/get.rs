@@ -77,6 +77,9 @@ impl Context {
         if let Some(v) = self.get_array_value(pname) {
             return Some(v);
         }
+        if let Some(v) = self.imaging_get(pname) {
+            return Some(v);
+        }
         let fb = &self.fb.config;
         let has = |bits: u8| bits as i64;
         match pname {

@@ -30,6 +30,9 @@ use crate::render::texture::{Base, Env, Filter, Image, Params, Target, Texels, T
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
+/// Pixel transfer that changes nothing (for groups already transferred).
+static IDENTITY_TRANSFER: std::sync::LazyLock<super::pixel_transfer::PixelTransfer> = std::sync::LazyLock::new(Default::default);
+
 /// Dirty bit: texture state the fragment stage derives from.
 pub const DIRTY_TEXTURE: u32 = super::validate::DIRTY_TEXTURE;
 
@@ -580,8 +583,47 @@ impl Context {
         Some((t, face, proxy, f, fits))
     }
 
+    /// The ARB_imaging stages on a texture image's colour groups (section
+    /// 3.8.1: texture images go through pixel transfer as glDrawPixels'
+    /// do): None when no stage is on (the caller transfers as usual),
+    /// Some(None) when a histogram or minmax sink consumed the image, else
+    /// the transferred groups and the image's size after convolution.
+    #[allow(clippy::option_option)]
+    fn imaging_texture(&mut self, dims: u8, pixels: Option<&image::Pixels>, size: [i32; 3]) -> Option<Option<(image::Pixels, [i32; 3])>> {
+        let p = pixels?;
+        let st = self.imaging_stages(dims)?;
+        let mut c: Vec<[f32; 4]> = match p {
+            image::Pixels::Rgba8(v) => v.iter().map(|p| p.map(|x| crate::render::texture::UNORM8[x as usize])).collect(),
+            image::Pixels::Color(v) => v.clone(),
+            image::Pixels::Index(v) => v.iter().map(|&i| self.pixel.index_to_rgba(i)).collect(),
+            _ => return None,
+        };
+        if !matches!(p, image::Pixels::Index(_)) {
+            self.pixel.scale_bias_map(&mut c);
+        }
+        // A 3D image's slices stack up as rows (no convolution applies).
+        let (w, h) = (size[0].max(0) as usize, (size[1].max(1) * if dims >= 3 { size[2].max(1) } else { 1 }) as usize);
+        let (c, w2, h2) = self.imaging(st, c, w, h)?;
+        let size = match dims {
+            1 => [w2 as i32, 1, 1],
+            2 => [w2 as i32, h2 as i32, 1],
+            _ => size,
+        };
+        Some(Some((image::Pixels::Color(c), size)))
+    }
+
     /// glTexImage1D/2D/3D (section 3.8.1).
     pub fn tex_image(&mut self, cmd: &TexImageCmd) {
+        match self.imaging_texture(cmd.dims, cmd.pixels.as_deref(), cmd.size) {
+            None => self.tex_image_transferred(cmd, false),
+            Some(None) => {}
+            Some(Some((p, size))) => self.tex_image_transferred(&TexImageCmd { size, pixels: Some(Arc::new(p)), ..cmd.clone() }, true),
+        }
+    }
+
+    /// glTexImage with `cmd`'s groups, already through pixel transfer when
+    /// `transferred`.
+    fn tex_image_transferred(&mut self, cmd: &TexImageCmd, transferred: bool) {
         let dims = cmd.dims as usize;
         let mut size = cmd.size;
         for s in size.iter_mut().skip(dims) {
@@ -610,7 +652,7 @@ impl Context {
         let n = w as usize * h as usize * d as usize;
         let mut img = img;
         img.texels = match &cmd.pixels {
-            Some(p) if p.len() == n => image::texels(&f, p, &self.pixel),
+            Some(p) if p.len() == n => image::texels(&f, p, if transferred { &IDENTITY_TRANSFER } else { &self.pixel }),
             _ => image::zero_texels(&f, n),
         };
         self.drop_derived_textures();
@@ -624,6 +666,14 @@ impl Context {
 
     /// glTexSubImage1D/2D/3D (section 3.8.2).
     pub fn tex_sub_image(&mut self, cmd: &TexSubImageCmd) {
+        match self.imaging_texture(cmd.dims, cmd.pixels.as_deref(), cmd.size) {
+            None => self.tex_sub_image_transferred(cmd, false),
+            Some(None) => {}
+            Some(Some((p, size))) => self.tex_sub_image_transferred(&TexSubImageCmd { size, pixels: Some(Arc::new(p)), ..cmd.clone() }, true),
+        }
+    }
+
+    fn tex_sub_image_transferred(&mut self, cmd: &TexSubImageCmd, transferred: bool) {
         let dims = cmd.dims as usize;
         let Some((t, face, false)) = image_target(cmd.target, cmd.dims) else { return self.set_error(GL_INVALID_ENUM) };
         if cmd.level < 0 || cmd.level > max_level_of(t) {
@@ -658,7 +708,7 @@ impl Context {
         let obj = self.texture.object_mut(u, t);
         if let Some(Some(dst)) = obj.images.get_mut(face * MAX_LEVELS + cmd.level as usize) {
             if let Some(p) = cmd.pixels.as_ref().filter(|p| p.len() == n) {
-                let src = image::texels(&f, p, &self.pixel);
+                let src = image::texels(&f, p, if transferred { &IDENTITY_TRANSFER } else { &self.pixel });
                 let dst = Arc::make_mut(dst);
                 let (w, h) = (dst.width as usize, dst.height as usize);
                 dst.texels.write_block(w, h, offset.map(|o| o as usize), size.map(|s| s as usize), &src);
