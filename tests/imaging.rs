@@ -334,3 +334,39 @@ fn display_lists_record_imaging_commands() {
     // Entries (1, 1, 1, 1) and (0, 0, 0, 0): an inverting threshold.
     assert_eq!(px(&c, 0, 0), [255, 0, 255, 0]);
 }
+
+#[test]
+fn convolution_1d_on_1d_textures_and_push_attrib() {
+    let mut c = context(2, 2);
+    // A 1D filter (0.5, 0.5) with REDUCE: a 3-texel 1D image becomes 2
+    // texels, each the mean of two neighbours.
+    run(&mut c, ImagingCmd::ConvolutionFilter { target: GL_CONVOLUTION_1D, internal_format: GL_RGBA, width: 2, height: 1, data: Some(vec![[0.5; 4]; 2]) });
+    c.execute(&Command::Enable(GL_CONVOLUTION_1D));
+    let img: [u8; 12] = [0, 0, 0, 255, 100, 0, 0, 255, 200, 0, 0, 255];
+    let cmd = unsafe { c.tex_image_command(1, t::GL_TEXTURE_1D, 0, t::GL_RGBA8 as i32, [3, 1, 1], 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE, img.as_ptr()) }.unwrap();
+    c.execute(&cmd);
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    let mut tex = [[0u8; 4]; 2];
+    unsafe { c.get_tex_image(t::GL_TEXTURE_1D, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE, tex.as_mut_ptr() as *mut u8) };
+    assert_eq!(tex, [[50, 0, 0, 255], [150, 0, 0, 255]]);
+    // 2D images ignore CONVOLUTION_1D.
+    draw(&mut c, 2, 1, &[[0.0, 0.0, 0.0, 1.0], [0.4, 0.0, 0.0, 1.0]]);
+    assert_eq!(px(&c, 1, 0), [102, 0, 0, 255]);
+    // GL_PIXEL_MODE_BIT saves the filter parameters and post-convolution
+    // scale; not the filter itself.
+    c.execute(&Command::PushAttrib(softgl::gl::attrib::GL_PIXEL_MODE_BIT));
+    run(&mut c, ImagingCmd::ConvolutionParameter { target: GL_CONVOLUTION_1D, pname: im::GL_CONVOLUTION_BORDER_MODE, v: [im::GL_REPLICATE_BORDER as f32, 0.0, 0.0, 0.0] });
+    c.execute(&Command::PixelTransfer(0x801C, 2.0));
+    run(&mut c, ImagingCmd::ConvolutionFilter { target: GL_CONVOLUTION_1D, internal_format: GL_RGBA, width: 3, height: 1, data: Some(vec![[0.5; 4]; 3]) });
+    c.execute(&Command::PopAttrib);
+    assert_eq!(c.get_convolution_parameter(GL_CONVOLUTION_1D, im::GL_CONVOLUTION_BORDER_MODE).unwrap().as_f64()[0], im::GL_REDUCE as f64);
+    assert_eq!(c.get(0x801C).unwrap().as_f64()[0], 1.0);
+    assert_eq!(c.get_convolution_parameter(GL_CONVOLUTION_1D, im::GL_CONVOLUTION_WIDTH).unwrap().as_f64()[0], 3.0);
+}
+
+#[test]
+fn advertised() {
+    let s = softgl::gl::get::string(GL_EXTENSIONS).unwrap();
+    let s = std::str::from_utf8(&s[..s.len() - 1]).unwrap();
+    assert!(s.split(' ').any(|n| n == "GL_ARB_imaging"));
+}

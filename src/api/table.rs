@@ -525,7 +525,7 @@ super::entry_points! {
     exec glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &get::Value::Floats(x).as_i32()), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetPolygonStipple(mask: *mut GLubyte) { |c| if !mask.is_null() { pack_stipple(&c.pixel_store.pack, &c.polygon.stipple_pattern, mask) } }
     exec glGetString(name: GLenum) -> *const GLubyte { |c| match get::string(name) { Some(s) => s.as_ptr(), None => { c.set_error(GL_INVALID_ENUM); std::ptr::null() } } }
-    list["every group; GL_PIXEL_MODE_BIT does not save the colour-table and convolution scale, bias and border parameters (ARB_imaging)"] glPushAttrib(mask: GLbitfield) { |_c| Command::PushAttrib(mask) }
+    list glPushAttrib(mask: GLbitfield) { |_c| Command::PushAttrib(mask) }
     list glPopAttrib() { |_c| Command::PopAttrib }
     client glPushClientAttrib(mask: GLbitfield) { |c| c.push_client_attrib(mask) }
     client glPopClientAttrib() { |c| c.pop_client_attrib() }

@@ -21,9 +21,10 @@
 //! Tables and filters are stored as RGBA f32 after their own scale and
 //! bias (tables also clamped), with the base format of their internal
 //! format deciding which components they hold (table 3.15: luminance and
-//! intensity in R). Not saved by glPushAttrib (only the enables are): the
-//! tables' and filters' scale, bias and border state belong to
-//! GL_PIXEL_MODE_BIT in the spec.
+//! intensity in R). glPushAttrib(GL_PIXEL_MODE_BIT) saves the tables' and
+//! filters' parameters ([`PixelModeParams`]), not their contents nor the
+//! histogram and minmax (tables 6.20-6.22 list no attribute group for
+//! them).
 
 use super::context::Context;
 use super::enums::*;
@@ -220,6 +221,29 @@ pub struct Imaging {
     pub histogram: Histogram,
     pub proxy_histogram: Histogram,
     pub minmax: Minmax,
+}
+
+/// The imaging state of GL_PIXEL_MODE_BIT: each colour table's scale and
+/// bias, each filter's border mode, border colour, scale and bias.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelModeParams {
+    tables: [([f32; 4], [f32; 4]); 3],
+    filters: [(u32, [f32; 4], [f32; 4], [f32; 4]); 3],
+}
+
+impl Imaging {
+    pub fn pixel_mode_params(&self) -> PixelModeParams {
+        PixelModeParams { tables: self.tables.each_ref().map(|t| (t.scale, t.bias)), filters: self.filters.each_ref().map(|f| (f.border_mode, f.border_color, f.scale, f.bias)) }
+    }
+
+    pub fn set_pixel_mode_params(&mut self, p: PixelModeParams) {
+        for (t, (scale, bias)) in self.tables.iter_mut().zip(p.tables) {
+            (t.scale, t.bias) = (scale, bias);
+        }
+        for (f, (mode, color, scale, bias)) in self.filters.iter_mut().zip(p.filters) {
+            (f.border_mode, f.border_color, f.scale, f.bias) = (mode, color, scale, bias);
+        }
+    }
 }
 
 /// The stages on for one image, decided once per command.
