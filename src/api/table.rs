@@ -453,7 +453,7 @@ super::entry_points! {
     list glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) { |_c| Command::ClearAccum([red, green, blue, alpha]) }
     list glAccum(op: GLenum, value: GLfloat) { |_c| Command::Accum(op, value) }
     list glReadBuffer(mode: GLenum) { |_c| Command::ReadBuffer(mode) }
-    exec["the ARB_imaging transfer stages (colour table, convolution, colour matrix, histogram) are not implemented"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
+    exec glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
     list glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) { |_c| Command::CopyPixels(x, y, width, height, type_) }
     list glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) { |_c| map_command(read_points(target, points, stride, order, 0, 1), |points| Command::Map { target, u: (u1 as f32, u2 as f32), uorder: order, v: None, points }) }
     list glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat) { |_c| map_command(read_points(target, points, stride, order, 0, 1), |points| Command::Map { target, u: (u1, u2), uorder: order, v: None, points }) }
