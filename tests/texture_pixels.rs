@@ -280,14 +280,31 @@ fn packed_depth_stencil() {
     let (a2, b2) = (c.fb.index(2, 2), c.fb.index(3, 2));
     assert_eq!((c.fb.depth[a2], c.fb.stencil[a2]), (0x800000, 0x11));
     assert_eq!((c.fb.depth[b2], c.fb.stencil[b2]), (0xFFFFFF, 0x22));
-    // A DEPTH24_STENCIL8 texture from DEPTH_STENCIL data keeps the depth.
+    // A DEPTH24_STENCIL8 texture from DEPTH_STENCIL data keeps the depth
+    // and the stencil: glGetTexImage gives the same words back.
     tex_image(&mut c, t::GL_DEPTH24_STENCIL8, 2, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &[words[0].to_ne_bytes(), words[1].to_ne_bytes()].concat());
     assert_eq!(c.take_error(), GL_NO_ERROR);
     let q = |c: &mut Context, p: u32| c.get_tex_level_parameter(t::GL_TEXTURE_2D, 0, p).unwrap().as_i32()[0];
     assert_eq!((q(&mut c, t::GL_TEXTURE_DEPTH_SIZE), q(&mut c, t::GL_TEXTURE_STENCIL_SIZE)), (24, 8));
-    let got = get_image(&mut c, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 8);
-    let got: Vec<u32> = got.chunks(4).map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]])).collect();
-    assert_eq!(got, [0x800000 << 8, 0xFFFFFF << 8]);
+    let words_of = |b: Vec<u8>| -> Vec<u32> { b.chunks(4).map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]])).collect() };
+    let got = words_of(get_image(&mut c, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 8));
+    assert_eq!(got, words);
+    // TexSubImage replaces one texel's pair; the other keeps its own.
+    let sub = (0x400000u32 << 8 | 0x7F).to_ne_bytes();
+    let cmd = unsafe { c.tex_sub_image_command(2, t::GL_TEXTURE_2D, 0, [1, 0, 0], [1, 1, 1], GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, sub.as_ptr()) };
+    c.execute(&cmd);
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    assert_eq!(words_of(get_image(&mut c, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 8)), [words[0], 0x400000 << 8 | 0x7F]);
+    // The stencil goes through INDEX_OFFSET on the way out (as for
+    // glReadPixels): 0x11 + 3, 0x7F + 3.
+    c.execute(&Command::PixelTransfer(GL_INDEX_OFFSET, 3.0));
+    assert_eq!(words_of(get_image(&mut c, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 8)), [0x800000 << 8 | 0x14, 0x400000 << 8 | 0x82]);
+    c.execute(&Command::PixelTransfer(GL_INDEX_OFFSET, 0.0));
+    // CopyTexImage into DEPTH24_STENCIL8 copies the stencil buffer too:
+    // the pixels at (2, 2), (3, 2) hold the pairs CopyPixels wrote.
+    c.execute(&Command::CopyTex(Box::new(CopyTexCmd { dims: 2, sub: false, target: t::GL_TEXTURE_2D, level: 0, internal_format: t::GL_DEPTH24_STENCIL8, offset: [0; 3], rect: [2, 2, 2, 1], border: 0 })));
+    assert_eq!(c.take_error(), GL_NO_ERROR);
+    assert_eq!(words_of(get_image(&mut c, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 8)), words);
     // Colour formats do not take depth/stencil data.
     tex_image(&mut c, t::GL_RGBA8, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &[0; 4]);
     assert_eq!(c.take_error(), GL_INVALID_OPERATION);

@@ -1806,6 +1806,21 @@ typedef GLboolean (APIENTRYP PFNGLUNMAPBUFFERPROC) (GLenum target);
 typedef void (APIENTRYP PFNGLGETBUFFERPARAMETERIVPROC) (GLenum target, GLenum pname, GLint *params);
 typedef void (APIENTRYP PFNGLGETBUFFERPOINTERVPROC) (GLenum target, GLenum pname, GLvoid **params);
 
+/* GL_ARB_texture_rectangle (also GL_EXT_ and GL_NV_texture_rectangle) */
+#ifndef GL_ARB_texture_rectangle
+#define GL_ARB_texture_rectangle 1
+#define GL_TEXTURE_RECTANGLE_ARB                0x84F5
+#define GL_TEXTURE_BINDING_RECTANGLE_ARB        0x84F6
+#define GL_PROXY_TEXTURE_RECTANGLE_ARB          0x84F7
+#define GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB       0x84F8
+#endif
+#ifndef GL_TEXTURE_RECTANGLE
+#define GL_TEXTURE_RECTANGLE                    0x84F5
+#define GL_TEXTURE_BINDING_RECTANGLE            0x84F6
+#define GL_PROXY_TEXTURE_RECTANGLE              0x84F7
+#define GL_MAX_RECTANGLE_TEXTURE_SIZE           0x84F8
+#endif
+
 #ifdef __cplusplus
 }
 #endif

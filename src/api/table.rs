@@ -29,6 +29,7 @@ use crate::gl::pixel_transfer::{map_index, map_value_to_uint, map_values_from_ui
 use crate::gl::texture::enums::{GL_TEXTURE0 as TEX0, GL_TEXTURE_BORDER_COLOR as TBORDER, GL_TEXTURE_ENV_COLOR as TENV_COLOR, GL_TEXTURE_GEN_MODE as TGEN_MODE};
 use crate::gl::texture::CopyTexCmd;
 use crate::gl::arrays::Array;
+use crate::gl::imaging::ImagingCmd;
 
 /// GLU's opaque object types, as C sees them.
 pub type GLUquadric = c_void;
@@ -149,6 +150,27 @@ unsafe fn pixel_map<T: Copy>(map: GLenum, mapsize: GLsizei, values: *const T, co
     }
     let v = slice(values, mapsize as i64);
     Some(Command::PixelMap(map, conv(map, &v)))
+}
+
+/// An ARB_imaging command.
+fn imaging(cmd: ImagingCmd) -> Command {
+    Command::Imaging(Box::new(cmd))
+}
+
+/// glConvolutionParameter*v's values: one for the border mode, else four;
+/// the integer form's border colour is normalized as colours are (table
+/// 2.9), scale and bias convert plainly.
+unsafe fn convolution_params<T: Component>(p: *const T, pname: GLenum) -> Option<[f32; 4]> {
+    if p.is_null() {
+        return None;
+    }
+    let n = if pname == crate::gl::imaging::GL_CONVOLUTION_BORDER_MODE { 1 } else { 4 };
+    let mut v = [0.0f32; 4];
+    for (i, out) in v.iter_mut().enumerate().take(n) {
+        let x = std::ptr::read_unaligned(p.add(i));
+        *out = if pname == crate::gl::imaging::GL_CONVOLUTION_BORDER_COLOR { x.normalized() } else { x.plain() };
+    }
+    Some(v)
 }
 
 /// Texture coordinates from 1 to 4 components: t and r default to 0, q to 1.
@@ -431,7 +453,7 @@ super::entry_points! {
     list glClearAccum(red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) { |_c| Command::ClearAccum([red, green, blue, alpha]) }
     list glAccum(op: GLenum, value: GLfloat) { |_c| Command::Accum(op, value) }
     list glReadBuffer(mode: GLenum) { |_c| Command::ReadBuffer(mode) }
-    exec["the ARB_imaging transfer stages (colour table, convolution, colour matrix, histogram) are not implemented"] glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
+    exec glReadPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.read_pixels(x, y, width, height, format, type_, pixels as *mut u8) }
     list glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) { |_c| Command::CopyPixels(x, y, width, height, type_) }
     list glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) { |_c| map_command(read_points(target, points, stride, order, 0, 1), |points| Command::Map { target, u: (u1 as f32, u2 as f32), uorder: order, v: None, points }) }
     list glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat) { |_c| map_command(read_points(target, points, stride, order, 0, 1), |points| Command::Map { target, u: (u1, u2), uorder: order, v: None, points }) }
@@ -472,7 +494,7 @@ super::entry_points! {
     exec glFlush() { |c| c.flush() }
     exec glFinish() { |c| c.flush() }
     list glHint(target: GLenum, mode: GLenum) { |_c| Command::Hint(target, mode) }
-    list["GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE/ONE and the ARB_imaging capabilities (colour tables, convolution, histogram, minmax) are stored and queryable but change nothing: no multisample buffers, no ARB_imaging"] glEnable(cap: GLenum) { |_c| Command::Enable(cap) }
+    list["GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE/ONE are stored and queryable but change nothing: no multisample buffers"] glEnable(cap: GLenum) { |_c| Command::Enable(cap) }
     list["see glEnable"] glDisable(cap: GLenum) { |_c| Command::Disable(cap) }
     exec["as glEnable"] glIsEnabled(cap: GLenum) -> GLboolean { |c| match c.is_enabled(cap) { Some(b) => gl_bool(b), None => { c.set_error(GL_INVALID_ENUM); 0 } } }
     exec["as glGetIntegerv"] glGetBooleanv(pname: GLenum, params: *mut GLboolean) { |c| c.get_into(pname, params, |v| v.as_bool().into_iter().map(gl_bool).collect()) }
@@ -503,7 +525,7 @@ super::entry_points! {
     exec glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &get::Value::Floats(x).as_i32()), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetPolygonStipple(mask: *mut GLubyte) { |c| if !mask.is_null() { pack_stipple(&c.pixel_store.pack, &c.polygon.stipple_pattern, mask) } }
     exec glGetString(name: GLenum) -> *const GLubyte { |c| match get::string(name) { Some(s) => s.as_ptr(), None => { c.set_error(GL_INVALID_ENUM); std::ptr::null() } } }
-    list["every group; GL_PIXEL_MODE_BIT has no colour-table, convolution or histogram state (ARB_imaging is not implemented)"] glPushAttrib(mask: GLbitfield) { |_c| Command::PushAttrib(mask) }
+    list glPushAttrib(mask: GLbitfield) { |_c| Command::PushAttrib(mask) }
     list glPopAttrib() { |_c| Command::PopAttrib }
     client glPushClientAttrib(mask: GLbitfield) { |c| c.push_client_attrib(mask) }
     client glPopClientAttrib() { |c| c.pop_client_attrib() }
@@ -513,38 +535,38 @@ super::entry_points! {
     list glCopyTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 3, sub: true, target, level, internal_format: 0, offset: [xoffset, yoffset, zoffset], rect: [x, y, width, height], border: 0 })) }
     list glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) { |_c| Command::BlendColor([red, green, blue, alpha]) }
     list glBlendEquation(mode: GLenum) { |_c| Command::BlendEquation(mode) }
-    todo glColorTable(target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, type_: GLenum, table: *const c_void);
-    todo glColorTableParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat);
-    todo glColorTableParameteriv(target: GLenum, pname: GLenum, params: *const GLint);
-    todo glCopyColorTable(target: GLenum, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei);
-    todo glColorSubTable(target: GLenum, start: GLsizei, count: GLsizei, format: GLenum, type_: GLenum, data: *const c_void);
-    todo glCopyColorSubTable(target: GLenum, start: GLsizei, x: GLint, y: GLint, width: GLsizei);
-    todo glGetColorTable(target: GLenum, format: GLenum, type_: GLenum, table: *mut c_void);
-    todo glGetColorTableParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetColorTableParameteriv(target: GLenum, pname: GLenum, params: *mut GLint);
-    todo glConvolutionFilter1D(target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, type_: GLenum, image: *const c_void);
-    todo glConvolutionFilter2D(target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, image: *const c_void);
-    todo glSeparableFilter2D(target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, row: *const c_void, column: *const c_void);
-    todo glCopyConvolutionFilter1D(target: GLenum, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei);
-    todo glCopyConvolutionFilter2D(target: GLenum, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
-    todo glConvolutionParameterf(target: GLenum, pname: GLenum, param: GLfloat);
-    todo glConvolutionParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat);
-    todo glConvolutionParameteri(target: GLenum, pname: GLenum, param: GLint);
-    todo glConvolutionParameteriv(target: GLenum, pname: GLenum, params: *const GLint);
-    todo glGetConvolutionFilter(target: GLenum, format: GLenum, type_: GLenum, image: *mut c_void);
-    todo glGetSeparableFilter(target: GLenum, format: GLenum, type_: GLenum, row: *mut c_void, column: *mut c_void, span: *mut c_void);
-    todo glGetConvolutionParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetConvolutionParameteriv(target: GLenum, pname: GLenum, params: *mut GLint);
-    todo glHistogram(target: GLenum, width: GLsizei, internalformat: GLenum, sink: GLboolean);
-    todo glResetHistogram(target: GLenum);
-    todo glGetHistogram(target: GLenum, reset: GLboolean, format: GLenum, type_: GLenum, values: *mut c_void);
-    todo glGetHistogramParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetHistogramParameteriv(target: GLenum, pname: GLenum, params: *mut GLint);
-    todo glMinmax(target: GLenum, internalformat: GLenum, sink: GLboolean);
-    todo glResetMinmax(target: GLenum);
-    todo glGetMinmax(target: GLenum, reset: GLboolean, format: GLenum, type_: GLenum, values: *mut c_void);
-    todo glGetMinmaxParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat);
-    todo glGetMinmaxParameteriv(target: GLenum, pname: GLenum, params: *mut GLint);
+    list glColorTable(target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, type_: GLenum, table: *const c_void) { |c| match c.unpack_imaging(width, 1, format, type_, table as *const u8) { Ok(data) => imaging(ImagingCmd::ColorTable { target, internal_format: internalformat, width, data }), Err(e) => Command::Error(e) } }
+    list glColorTableParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) { |_c| imaging(ImagingCmd::ColorTableParameter { target, pname, v: arr::<GLfloat, 4>(params)? }) }
+    list glColorTableParameteriv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| imaging(ImagingCmd::ColorTableParameter { target, pname, v: arr::<GLint, 4>(params)?.map(|x| x as f32) }) }
+    list glCopyColorTable(target: GLenum, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei) { |_c| imaging(ImagingCmd::CopyColorTable { target, internal_format: internalformat, x, y, width }) }
+    list glColorSubTable(target: GLenum, start: GLsizei, count: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) { |c| match c.unpack_imaging(count, 1, format, type_, data as *const u8) { Ok(data) => imaging(ImagingCmd::ColorSubTable { target, start, count, data }), Err(e) => Command::Error(e) } }
+    list glCopyColorSubTable(target: GLenum, start: GLsizei, x: GLint, y: GLint, width: GLsizei) { |_c| imaging(ImagingCmd::CopyColorSubTable { target, start, x, y, width }) }
+    exec glGetColorTable(target: GLenum, format: GLenum, type_: GLenum, table: *mut c_void) { |c| c.get_color_table(target, format, type_, table as *mut u8) }
+    exec glGetColorTableParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_color_table_parameter(target, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetColorTableParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_color_table_parameter(target, pname) { write_out(params, &v.as_i32()) } }
+    list glConvolutionFilter1D(target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, type_: GLenum, image: *const c_void) { |c| match c.unpack_imaging(width, 1, format, type_, image as *const u8) { Ok(data) if target == GL_CONVOLUTION_1D => imaging(ImagingCmd::ConvolutionFilter { target, internal_format: internalformat, width, height: 1, data }), Ok(_) => Command::Error(GL_INVALID_ENUM), Err(e) => Command::Error(e) } }
+    list glConvolutionFilter2D(target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, image: *const c_void) { |c| match c.unpack_imaging(width, height, format, type_, image as *const u8) { Ok(data) if target == GL_CONVOLUTION_2D => imaging(ImagingCmd::ConvolutionFilter { target, internal_format: internalformat, width, height, data }), Ok(_) => Command::Error(GL_INVALID_ENUM), Err(e) => Command::Error(e) } }
+    list glSeparableFilter2D(target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, row: *const c_void, column: *const c_void) { |c| match (c.unpack_imaging(width, 1, format, type_, row as *const u8), c.unpack_imaging(height, 1, format, type_, column as *const u8)) { (Ok(row), Ok(column)) => imaging(ImagingCmd::SeparableFilter { target, internal_format: internalformat, width, height, row, column }), (Err(e), _) | (_, Err(e)) => Command::Error(e) } }
+    list glCopyConvolutionFilter1D(target: GLenum, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei) { |_c| if target == GL_CONVOLUTION_1D { imaging(ImagingCmd::CopyConvolutionFilter { target, internal_format: internalformat, x, y, width, height: 1 }) } else { Command::Error(GL_INVALID_ENUM) } }
+    list glCopyConvolutionFilter2D(target: GLenum, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| if target == GL_CONVOLUTION_2D { imaging(ImagingCmd::CopyConvolutionFilter { target, internal_format: internalformat, x, y, width, height }) } else { Command::Error(GL_INVALID_ENUM) } }
+    list glConvolutionParameterf(target: GLenum, pname: GLenum, param: GLfloat) { |_c| imaging(ImagingCmd::ConvolutionParameter { target, pname, v: [param, 0.0, 0.0, 0.0] }) }
+    list glConvolutionParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) { |_c| imaging(ImagingCmd::ConvolutionParameter { target, pname, v: convolution_params(params, pname)? }) }
+    list glConvolutionParameteri(target: GLenum, pname: GLenum, param: GLint) { |_c| imaging(ImagingCmd::ConvolutionParameter { target, pname, v: [param as f32, 0.0, 0.0, 0.0] }) }
+    list glConvolutionParameteriv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| imaging(ImagingCmd::ConvolutionParameter { target, pname, v: convolution_params(params, pname)? }) }
+    exec glGetConvolutionFilter(target: GLenum, format: GLenum, type_: GLenum, image: *mut c_void) { |c| if target == GL_SEPARABLE_2D { c.set_error(GL_INVALID_ENUM) } else { c.get_convolution_filter(target, format, type_, image as *mut u8, None) } }
+    exec glGetSeparableFilter(target: GLenum, format: GLenum, type_: GLenum, row: *mut c_void, column: *mut c_void, span: *mut c_void) { |c| { let _ = span; if target == GL_SEPARABLE_2D { c.get_convolution_filter(target, format, type_, row as *mut u8, Some(column as *mut u8)) } else { c.set_error(GL_INVALID_ENUM) } } }
+    exec glGetConvolutionParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_convolution_parameter(target, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetConvolutionParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_convolution_parameter(target, pname) { write_out(params, &v.as_i32()) } }
+    list glHistogram(target: GLenum, width: GLsizei, internalformat: GLenum, sink: GLboolean) { |_c| imaging(ImagingCmd::Histogram { target, width, internal_format: internalformat, sink: truth(sink) }) }
+    list glResetHistogram(target: GLenum) { |_c| imaging(ImagingCmd::ResetHistogram(target)) }
+    exec glGetHistogram(target: GLenum, reset: GLboolean, format: GLenum, type_: GLenum, values: *mut c_void) { |c| c.get_histogram(target, truth(reset), format, type_, values as *mut u8) }
+    exec glGetHistogramParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_histogram_parameter(target, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetHistogramParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_histogram_parameter(target, pname) { write_out(params, &v.as_i32()) } }
+    list glMinmax(target: GLenum, internalformat: GLenum, sink: GLboolean) { |_c| imaging(ImagingCmd::Minmax { target, internal_format: internalformat, sink: truth(sink) }) }
+    list glResetMinmax(target: GLenum) { |_c| imaging(ImagingCmd::ResetMinmax(target)) }
+    exec glGetMinmax(target: GLenum, reset: GLboolean, format: GLenum, type_: GLenum, values: *mut c_void) { |c| c.get_minmax(target, truth(reset), format, type_, values as *mut u8) }
+    exec glGetMinmaxParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_minmax_parameter(target, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    exec glGetMinmaxParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_minmax_parameter(target, pname) { write_out(params, &v.as_i32()) } }
     list glActiveTexture(texture: GLenum) { |_c| Command::ActiveTexture(texture) }
     client glClientActiveTexture(texture: GLenum) { |c| c.client_active_texture(texture) }
     list glMultiTexCoord1d(target: GLenum, s: GLdouble) { |_c| Command::TexCoord(target, texcoord(&[s])) }

@@ -55,6 +55,7 @@ fn all_caps() -> Vec<u32> {
         GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_GEN_S,
         GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
     ];
+    caps.push(super::texture::enums::GL_TEXTURE_RECTANGLE);
     caps.extend(GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6);
     caps.extend(GL_LIGHT0..GL_LIGHT0 + 8);
     caps.extend(GL_MAP1_COLOR_4..=GL_MAP1_VERTEX_4);
@@ -84,7 +85,7 @@ pub struct Saved {
     list_base: Option<u32>,
     scissor: Option<ScissorState>,
     fog: Option<super::fog::FogState>,
-    pixel_mode: Option<(super::pixel_transfer::PixelTransfer, u32)>,
+    pixel_mode: Option<(super::pixel_transfer::PixelTransfer, u32, super::imaging::PixelModeParams)>,
     texture: Option<SavedTexture>,
     /// GL_MULTISAMPLE_BIT: its four enables and the sample coverage.
     multisample: Option<([(u32, bool); 4], (f32, bool))>,
@@ -145,7 +146,7 @@ impl Context {
             list_base: has(GL_LIST_BIT).then_some(self.lists.base),
             scissor: has(GL_SCISSOR_BIT).then(|| self.scissor.clone()),
             fog: has(GL_FOG_BIT).then(|| self.fog.clone()),
-            pixel_mode: has(GL_PIXEL_MODE_BIT).then(|| (self.pixel.clone(), self.pixel_read_buffer)),
+            pixel_mode: has(GL_PIXEL_MODE_BIT).then(|| (self.pixel.clone(), self.pixel_read_buffer, self.imaging.pixel_mode_params())),
             texture: has(GL_TEXTURE_BIT).then(|| self.save_texture()),
             multisample: has(GL_MULTISAMPLE_BIT).then(|| {
                 let caps = [GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE];
@@ -253,9 +254,10 @@ impl Context {
         if let Some(v) = s.fog {
             self.fog = v;
         }
-        if let Some((v, read_buffer)) = s.pixel_mode {
+        if let Some((v, read_buffer, imaging)) = s.pixel_mode {
             self.pixel = v;
             self.pixel_read_buffer = read_buffer;
+            self.imaging.set_pixel_mode_params(imaging);
         }
         if let Some(v) = s.texture {
             self.restore_texture(v);

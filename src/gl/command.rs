@@ -150,6 +150,9 @@ pub enum Command {
     TexSubImage(Box<super::texture::TexSubImageCmd>),
     CopyTex(Box<super::texture::CopyTexCmd>),
     PrioritizeTextures(Vec<(u32, f32)>),
+    // Section 3.6.3, ARB_imaging: colour tables, convolution filters,
+    // histogram and minmax (client data unpacked when built).
+    Imaging(Box<super::imaging::ImagingCmd>),
 }
 
 impl Command {
@@ -363,6 +366,7 @@ impl Context {
             TexSubImage(cmd) => self.tex_sub_image(cmd),
             CopyTex(cmd) => self.copy_tex(cmd),
             PrioritizeTextures(p) => self.prioritize_textures(p),
+            Imaging(cmd) => self.imaging_command(cmd),
         }
     }
 }

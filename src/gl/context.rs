@@ -52,6 +52,8 @@ pub struct Context {
     pub queries: queries::Queries,
     /// Pixel transfer, maps and zoom (GL_PIXEL_MODE_BIT).
     pub pixel: super::pixel_transfer::PixelTransfer,
+    /// ARB_imaging's tables, filters, histogram and minmax.
+    pub imaging: super::imaging::Imaging,
     /// The current raster position (section 2.13).
     pub raster: super::raster_pos::RasterPos,
     pub texture: texture::TextureState,
@@ -105,6 +107,7 @@ impl Context {
             buffers: Default::default(),
             queries: Default::default(),
             pixel: Default::default(),
+            imaging: Default::default(),
             raster: Default::default(),
             texture: Default::default(),
             fb: Framebuffer::new(config),

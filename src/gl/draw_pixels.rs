@@ -200,6 +200,20 @@ impl Context {
             return;
         }
         self.validate();
+        let (mut w, mut h) = (r.width, r.height);
+        // The ARB_imaging stages (section 3.6.5) on colour groups, when on.
+        let imaged = match (&r.data, self.imaging_stages(2)) {
+            (PixelData::Color(c), Some(st)) => {
+                let mut c = c.clone();
+                self.pixel.scale_bias_map(&mut c);
+                Some(self.imaging(st, c, w, h))
+            }
+            (PixelData::ColorIndex(ix), Some(st)) => {
+                let c = ix.iter().map(|&i| self.pixel.index_to_rgba(i)).collect();
+                Some(self.imaging(st, c, w, h))
+            }
+            _ => None,
+        };
         let shading = self.pixel_shading();
         let finish = |p: [f32; 4]| match &shading {
             Some(sh) => sh.apply(p),
@@ -207,6 +221,14 @@ impl Context {
         };
         let t = &self.pixel;
         let groups = match &r.data {
+            _ if imaged.is_some() => match imaged.expect("checked") {
+                // A histogram or minmax sink consumed the groups.
+                None => return,
+                Some((c, w2, h2)) => {
+                    (w, h) = (w2, h2);
+                    Groups::Color(c.iter().map(|&p| Some(finish(p))).collect())
+                }
+            },
             PixelData::Color(c) => {
                 let mut c = c.clone();
                 t.color(&mut c);
@@ -223,7 +245,7 @@ impl Context {
                 stencil
             }
         };
-        self.draw_groups(r.width, r.height, groups);
+        self.draw_groups(w, h, groups);
     }
 
     /// Turns transferred groups into fragments at the raster position.
@@ -286,8 +308,21 @@ impl Context {
         if !self.raster.valid || w == 0 || h == 0 {
             return;
         }
-        let (w, h) = (w as usize, h as usize);
+        let (mut w, mut h) = (w as usize, h as usize);
         self.validate();
+        if ty == GL_COLOR {
+            if let Some(st) = self.imaging_stages(2) {
+                // The imaging stages need the whole rectangle: read it (outside
+                // the window as zero), transfer it, draw what comes out.
+                let mut c = self.framebuffer_colors(x, y, w as i32, h as i32);
+                self.pixel.scale_bias_map(&mut c);
+                let Some((c, w2, h2)) = self.imaging(st, c, w, h) else { return };
+                let shading = self.pixel_shading();
+                let groups = Groups::Color(c.iter().map(|&p| Some(shading.as_ref().map_or_else(|| color_to_u8(Vec4::from_array(p)), |sh| sh.apply(p)))).collect());
+                (w, h) = (w2, h2);
+                return self.draw_groups(w, h, groups);
+            }
+        }
         let shading = self.pixel_shading();
         let fb = &self.fb;
         let read = self.read_color(); // glReadBuffer's buffer

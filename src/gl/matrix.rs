@@ -14,6 +14,8 @@ use glam::{DMat4, DVec3};
 pub const MAX_MODELVIEW_DEPTH: usize = 32;
 pub const MAX_PROJECTION_DEPTH: usize = 32;
 pub const MAX_TEXTURE_DEPTH: usize = 10;
+/// GL_MAX_COLOR_MATRIX_STACK_DEPTH (ARB_imaging; the spec's minimum is 2).
+pub const MAX_COLOR_DEPTH: usize = 10;
 
 /// A matrix stack; the last element is the current matrix.
 #[derive(Clone, Debug)]
@@ -49,6 +51,9 @@ pub struct Transform {
     pub textures: Vec<Stack>,
     /// ACTIVE_TEXTURE's unit: the stack GL_TEXTURE mode works on.
     pub active_texture: usize,
+    /// The colour matrix stack (GL_COLOR mode, ARB_imaging): pixel
+    /// transfer's colour matrix (`imaging`).
+    pub color: Stack,
 }
 
 impl Transform {
@@ -59,6 +64,7 @@ impl Transform {
             projection: Stack::new(MAX_PROJECTION_DEPTH),
             textures: vec![Stack::new(MAX_TEXTURE_DEPTH); crate::render::texture::MAX_UNITS],
             active_texture: 0,
+            color: Stack::new(MAX_COLOR_DEPTH),
         }
     }
 
@@ -71,6 +77,7 @@ impl Transform {
         match self.mode {
             GL_PROJECTION => &mut self.projection,
             GL_TEXTURE => &mut self.textures[self.active_texture],
+            GL_COLOR => &mut self.color,
             _ => &mut self.modelview,
         }
     }
@@ -85,7 +92,7 @@ impl Default for Transform {
 impl Context {
     pub fn matrix_mode(&mut self, mode: u32) {
         match mode {
-            GL_MODELVIEW | GL_PROJECTION | GL_TEXTURE => self.transform.mode = mode,
+            GL_MODELVIEW | GL_PROJECTION | GL_TEXTURE | GL_COLOR => self.transform.mode = mode,
             _ => self.set_error(GL_INVALID_ENUM),
         }
     }

@@ -20,6 +20,7 @@ pub mod eval;
 pub mod fog;
 pub mod fragment;
 pub mod get;
+pub mod imaging;
 pub mod lighting;
 pub mod lists;
 pub mod matrix;

@@ -516,6 +516,25 @@ impl<'a> Dest<'a> {
         self.data[o..o + 4].copy_from_slice(&b);
     }
 
+    /// Packs unnormalized values (histogram counts) at (i, j): each
+    /// component of the format as an integer of the type (FLOAT as is);
+    /// LUMINANCE takes R. Packed types take them as normalized values.
+    pub fn put_counts(&mut self, i: usize, j: usize, c: [f64; 4]) {
+        if packed_fields(self.ty).is_some() {
+            return self.put_color(i, j, c.map(|v| v as f32));
+        }
+        let comps = format_info(self.format).map_or(&[0usize][..], |f| f.1);
+        let l = self.layout;
+        let o = l.offset(i, j, 0);
+        for (n, &k) in comps.iter().enumerate() {
+            let e = &mut self.data[o + n * l.elem..o + (n + 1) * l.elem];
+            put_index(e, self.ty, c[if k == 4 { 0 } else { k }]);
+            if l.swap {
+                e.reverse();
+            }
+        }
+    }
+
     /// Packs an index (stencil) at (i, j); GL_BITMAP writes its low bit.
     pub fn put_index(&mut self, i: usize, j: usize, v: f64) {
         let l = self.layout;

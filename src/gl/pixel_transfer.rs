@@ -16,8 +16,8 @@
 //!   S_TO_S. The caller masks the result to the stencil bits.
 //!
 //! The ARB_imaging stages (colour tables, convolution, colour matrix,
-//! histogram, minmax) are not implemented: they would come after the
-//! MAP_COLOR lookup.
+//! histogram, minmax) come after the MAP_COLOR lookup, in `imaging`; their
+//! post-convolution and post-colour-matrix scale and bias are set here.
 
 use super::context::Context;
 use super::enums::*;
@@ -43,6 +43,12 @@ pub struct PixelTransfer {
     pub zoom: [f32; 2],
     /// The maps (each at least one entry; initially one 0).
     pub maps: [Vec<f32>; MAP_COUNT],
+    /// ARB_imaging: POST_CONVOLUTION_c_SCALE/_BIAS and
+    /// POST_COLOR_MATRIX_c_SCALE/_BIAS.
+    pub post_convolution_scale: [f32; 4],
+    pub post_convolution_bias: [f32; 4],
+    pub post_color_matrix_scale: [f32; 4],
+    pub post_color_matrix_bias: [f32; 4],
 }
 
 impl Default for PixelTransfer {
@@ -58,6 +64,10 @@ impl Default for PixelTransfer {
             map_stencil: false,
             zoom: [1.0, 1.0],
             maps: std::array::from_fn(|_| vec![0.0]),
+            post_convolution_scale: [1.0; 4],
+            post_convolution_bias: [0.0; 4],
+            post_color_matrix_scale: [1.0; 4],
+            post_color_matrix_bias: [0.0; 4],
         }
     }
 }
@@ -110,6 +120,17 @@ impl PixelTransfer {
 
     /// Scale, bias, MAP_COLOR and final conversion (clamp) of RGBA groups.
     pub fn color(&self, px: &mut [[f32; 4]]) {
+        self.scale_bias_map(px);
+        for c in px.iter_mut() {
+            for v in c.iter_mut() {
+                *v = v.clamp(0.0, 1.0);
+            }
+        }
+    }
+
+    /// Scale, bias and MAP_COLOR of RGBA groups, without the final clamp
+    /// (the imaging stages come between them).
+    pub fn scale_bias_map(&self, px: &mut [[f32; 4]]) {
         let identity_sb = self.scale == [1.0; 4] && self.bias == [0.0; 4];
         for c in px.iter_mut() {
             if !identity_sb {
@@ -122,9 +143,6 @@ impl PixelTransfer {
                     // R_TO_R .. A_TO_A are maps 6 .. 9.
                     *v = self.lookup_color(6 + k, *v);
                 }
-            }
-            for v in c.iter_mut() {
-                *v = v.clamp(0.0, 1.0);
             }
         }
     }
@@ -179,6 +197,10 @@ impl Context {
             GL_ALPHA_BIAS => t.bias[3] = f,
             GL_DEPTH_SCALE => t.depth_scale = f,
             GL_DEPTH_BIAS => t.depth_bias = f,
+            0x801C..=0x801F => t.post_convolution_scale[(pname - 0x801C) as usize] = f,
+            0x8020..=0x8023 => t.post_convolution_bias[(pname - 0x8020) as usize] = f,
+            0x80B4..=0x80B7 => t.post_color_matrix_scale[(pname - 0x80B4) as usize] = f,
+            0x80B8..=0x80BB => t.post_color_matrix_bias[(pname - 0x80B8) as usize] = f,
             _ => self.set_error(GL_INVALID_ENUM),
         }
     }

@@ -98,6 +98,23 @@ impl Context {
             return;
         }
         let modes = self.pixel_store.pack;
+        if kind == Kind::Color {
+            if let Some(st) = self.imaging_stages(2) {
+                // The ARB_imaging stages (section 3.6.5) need the whole
+                // rectangle (outside the window as zero); the packed image
+                // is what comes out (smaller after a REDUCE convolution,
+                // nothing after a sink).
+                let mut c = self.framebuffer_colors(x, y, w, h);
+                self.pixel.scale_bias_map(&mut c);
+                if let Some((c, w2, _)) = self.imaging(st, c, w as usize, h as usize) {
+                    let mut dest = Dest::new(&modes, w as usize, h as usize, format, ty, out);
+                    for (n, p) in c.iter().enumerate() {
+                        dest.put_color(n % w2.max(1), n / w2.max(1), *p);
+                    }
+                }
+                return;
+            }
+        }
         let (w, h) = (w as usize, h as usize);
         let mut dest = Dest::new(&modes, w, h, format, ty, out);
         let fb = &self.fb;

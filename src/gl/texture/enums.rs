@@ -20,6 +20,11 @@ pub const GL_TEXTURE_BINDING_1D: u32 = 0x8068;
 pub const GL_TEXTURE_BINDING_2D: u32 = 0x8069;
 pub const GL_TEXTURE_BINDING_3D: u32 = 0x806A;
 pub const GL_TEXTURE_BINDING_CUBE_MAP: u32 = 0x8514;
+// ARB_texture_rectangle (the same values as EXT_ and NV_texture_rectangle).
+pub const GL_TEXTURE_RECTANGLE: u32 = 0x84F5;
+pub const GL_TEXTURE_BINDING_RECTANGLE: u32 = 0x84F6;
+pub const GL_PROXY_TEXTURE_RECTANGLE: u32 = 0x84F7;
+pub const GL_MAX_RECTANGLE_TEXTURE_SIZE: u32 = 0x84F8;
 pub const GL_TEXTURE_MAG_FILTER: u32 = 0x2800;
 pub const GL_TEXTURE_MIN_FILTER: u32 = 0x2801;
 pub const GL_TEXTURE_WRAP_S: u32 = 0x2802;

@@ -77,11 +77,20 @@ pub fn internal_format(f: u32) -> Option<InternalFormat> {
         GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT24 => (Depth, [0, 0, 0, 0, 0, 0, 24]),
         GL_DEPTH_COMPONENT16 => (Depth, [0, 0, 0, 0, 0, 0, 16]),
         GL_DEPTH_COMPONENT32 => (Depth, [0, 0, 0, 0, 0, 0, 32]),
-        // EXT_packed_depth_stencil: sampled as depth (the stencil is not kept).
+        // EXT_packed_depth_stencil: sampled as depth; the stencil index is
+        // kept in the texel's alpha (see `is_depth_stencil`).
         GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => (Depth, [0, 0, 0, 0, 0, 0, 24]),
         _ => return None,
     };
     Some(InternalFormat { base, bits })
+}
+
+/// Is `f` a packed depth/stencil internal format? Its texels are stored
+/// as (depth, depth, depth, stencil index): depth textures sample only
+/// the first component, so the alpha is free to keep the stencil for
+/// glGetTexImage's DEPTH_STENCIL.
+pub fn is_depth_stencil(f: u32) -> bool {
+    matches!(f, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8)
 }
 
 impl InternalFormat {
@@ -122,6 +131,8 @@ pub enum Pixels {
     Index(Vec<f64>),
     /// DEPTH_COMPONENT groups, normalized.
     Depth(Vec<f64>),
+    /// DEPTH_STENCIL groups: (depth, stencil index).
+    DepthStencil(Vec<(f64, f64)>),
 }
 
 impl Pixels {
@@ -130,6 +141,7 @@ impl Pixels {
             Pixels::Rgba8(v) => v.len(),
             Pixels::Color(v) => v.len(),
             Pixels::Index(v) | Pixels::Depth(v) => v.len(),
+            Pixels::DepthStencil(v) => v.len(),
         }
     }
 
@@ -176,8 +188,7 @@ pub unsafe fn unpack(modes: &PixelModes, w: usize, h: usize, d: usize, format: u
     }
     match pixel_data::format_info(format).map(|f| f.0) {
         Some(Kind::Depth) => Pixels::Depth(src.values(w, h, d, true)),
-        // The stencil half of DEPTH_STENCIL data is not kept by textures.
-        Some(Kind::DepthStencil) => Pixels::Depth(src.depth_stencil(w, h, d).into_iter().map(|(z, _)| z).collect()),
+        Some(Kind::DepthStencil) => Pixels::DepthStencil(src.depth_stencil(w, h, d)),
         Some(Kind::ColorIndex) => Pixels::Index(src.values(w, h, d, false)),
         _ => Pixels::Color(src.colors(w, h, d)),
     }
@@ -220,6 +231,18 @@ pub fn texels(f: &InternalFormat, p: &Pixels, t: &PixelTransfer) -> Texels {
         }
         Pixels::Index(v) => v.iter().map(|&i| t.index_to_rgba(i)).collect(),
         Pixels::Depth(v) => v.iter().map(|&z| [t.depth(z) as f32, 0.0, 0.0, 1.0]).collect(),
+        Pixels::DepthStencil(v) => {
+            // Depth (stored as f32) with the stencil index, shifted, offset
+            // and mapped as glDrawPixels does, masked to 8 bits.
+            return Texels::Float(
+                v.iter()
+                    .map(|&(z, i)| {
+                        let d = t.depth(z) as f32;
+                        [d, d, d, (t.stencil(i) & 0xFF) as f32]
+                    })
+                    .collect(),
+            );
+        }
     };
     store(f, rgba)
 }
@@ -294,14 +317,18 @@ pub unsafe fn pack(modes: &PixelModes, img: &Image, format: u32, ty: u32, t: &Pi
     }
     let depth = format == GL_DEPTH_COMPONENT;
     let depth_stencil = format == GL_DEPTH_STENCIL;
+    let stencil = is_depth_stencil(img.internal_format);
     let lum = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);
     for k in 0..d {
         for j in 0..h {
             for i in 0..w {
                 let tx = img.texels.get((k * h + j) * w + i);
                 if depth_stencil {
-                    // Depth textures are 1D, 2D or cube maps: k is 0.
-                    dest.put_depth_stencil(i, j, t.depth(tx[0] as f64), 0);
+                    // Depth textures are 1D, 2D or cube maps: k is 0. The
+                    // stencil index goes through shift, offset and
+                    // MAP_STENCIL as glReadPixels' does.
+                    let s = if stencil { t.stencil(tx[3] as f64) } else { 0 };
+                    dest.put_depth_stencil(i, j, t.depth(tx[0] as f64), s);
                 } else if depth {
                     dest.put_normalized_at(i, j, k, t.depth(tx[0] as f64));
                 } else {

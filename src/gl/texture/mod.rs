@@ -1,6 +1,8 @@
 //! Texturing state and commands (GL 1.5 sections 3.8 and 2.10.4 / 2.11.4):
 //! texture objects (glGenTextures, glBindTexture, glDeleteTextures,
-//! glIsTexture, priorities), the 1D, 2D, 3D and cube-map images and their
+//! glIsTexture, priorities), the 1D, 2D, 3D, cube-map and rectangle
+//! (ARB_texture_rectangle: one level, no border, no REPEAT wraps or
+//! mipmap filters) images and their
 //! specification (glTexImage*, glTexSubImage*, glCopyTexImage*,
 //! glCopyTexSubImage*, proxies, GENERATE_MIPMAP), parameters, the
 //! per-unit environment and texture coordinate generation, and their
@@ -28,19 +30,24 @@ use crate::render::texture::{Base, Env, Filter, Image, Params, Target, Texels, T
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
+/// Pixel transfer that changes nothing (for groups already transferred).
+static IDENTITY_TRANSFER: std::sync::LazyLock<super::pixel_transfer::PixelTransfer> = std::sync::LazyLock::new(Default::default);
+
 /// Dirty bit: texture state the fragment stage derives from.
 pub const DIRTY_TEXTURE: u32 = super::validate::DIRTY_TEXTURE;
 
 pub const MAX_TEXTURE_SIZE: i32 = 2048;
 pub const MAX_3D_TEXTURE_SIZE: i32 = 256;
 pub const MAX_CUBE_MAP_TEXTURE_SIZE: i32 = 2048;
+pub const MAX_RECTANGLE_TEXTURE_SIZE: i32 = 2048;
 /// Levels per face: log2(MAX_TEXTURE_SIZE) + 1.
 pub const MAX_LEVELS: usize = 12;
 /// The largest image softgl allocates (bytes of stored texels): larger
 /// requests are GL_OUT_OF_MEMORY at once (proxies: not supported).
 const MAX_IMAGE_BYTES: usize = 1 << 30;
 
-const TARGETS: [Target; 4] = [Target::T1D, Target::T2D, Target::T3D, Target::Cube];
+/// Every object target, in `Target` order (`target_index`).
+const TARGETS: [Target; 5] = [Target::T1D, Target::T2D, Target::T3D, Target::Cube, Target::Rect];
 
 fn target_index(t: Target) -> usize {
     t as usize
@@ -53,6 +60,7 @@ fn object_target(e: u32) -> Option<Target> {
         GL_TEXTURE_2D => Target::T2D,
         GL_TEXTURE_3D => Target::T3D,
         GL_TEXTURE_CUBE_MAP => Target::Cube,
+        GL_TEXTURE_RECTANGLE => Target::Rect,
         _ => return None,
     })
 }
@@ -68,23 +76,32 @@ fn image_target(e: u32, dims: u8) -> Option<(Target, usize, bool)> {
         (GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, 2) => (Target::Cube, (e - GL_TEXTURE_CUBE_MAP_POSITIVE_X) as usize, false),
         (GL_TEXTURE_3D, 3) => (Target::T3D, 0, false),
         (GL_PROXY_TEXTURE_3D, 3) => (Target::T3D, 0, true),
+        (GL_TEXTURE_RECTANGLE, 2) => (Target::Rect, 0, false),
+        (GL_PROXY_TEXTURE_RECTANGLE, 2) => (Target::Rect, 0, true),
         _ => return None,
     })
 }
 
 fn dims_of(t: Target) -> u8 {
-    match t {
-        Target::T1D => 1,
-        Target::T2D | Target::Cube => 2,
-        Target::T3D => 3,
-    }
+    t.dims() as u8
 }
 
 fn max_size(t: Target) -> i32 {
     match t {
         Target::T3D => MAX_3D_TEXTURE_SIZE,
         Target::Cube => MAX_CUBE_MAP_TEXTURE_SIZE,
+        Target::Rect => MAX_RECTANGLE_TEXTURE_SIZE,
         _ => MAX_TEXTURE_SIZE,
+    }
+}
+
+/// The last level an image of target `t` may have (rectangle textures
+/// have only level 0).
+fn max_level_of(t: Target) -> i32 {
+    if t == Target::Rect {
+        0
+    } else {
+        log2_floor(max_size(t))
     }
 }
 
@@ -107,8 +124,10 @@ pub struct TexObject {
 impl TexObject {
     fn new(target: Option<Target>) -> TexObject {
         let mut params = Params::default();
-        if target == Some(Target::Cube) {
-            params.wrap = [Wrap::Repeat; 3];
+        if target == Some(Target::Rect) {
+            // ARB_texture_rectangle's initial state: no REPEAT, no mipmaps.
+            params.wrap = [Wrap::ClampToEdge; 3];
+            params.min_filter = Filter::Linear;
         }
         TexObject { target, images: vec![None; 6 * MAX_LEVELS], params, generate_mipmap: false, priority: 1.0 }
     }
@@ -177,10 +196,10 @@ pub struct TexGenCoord {
 /// One texture unit's state (server side).
 #[derive(Clone, Debug)]
 pub struct TexUnit {
-    /// TEXTURE_1D, 2D, 3D, CUBE_MAP enables.
-    pub enabled: [bool; 4],
+    /// TEXTURE_1D, 2D, 3D, CUBE_MAP, RECTANGLE enables (`Target` order).
+    pub enabled: [bool; 5],
     /// Bound object names per target (0: the default object).
-    pub bound: [u32; 4],
+    pub bound: [u32; 5],
     pub env: Env,
     /// TEXTURE_FILTER_CONTROL's TEXTURE_LOD_BIAS.
     pub lod_bias: f32,
@@ -197,8 +216,8 @@ impl Default for TexUnit {
             p
         };
         TexUnit {
-            enabled: [false; 4],
-            bound: [0; 4],
+            enabled: [false; 5],
+            bound: [0; 5],
             env: Env::default(),
             lod_bias: 0.0,
             gen: [0, 1, 2, 3].map(|i| TexGenCoord { enabled: false, mode: GL_EYE_LINEAR, object_plane: plane(i), eye_plane: plane(i) }),
@@ -217,9 +236,9 @@ pub struct TextureState {
     pub objects: HashMap<u32, TexObject>,
     pub reserved: HashSet<u32>,
     /// The default objects (name 0) per target.
-    pub defaults: [TexObject; 4],
+    pub defaults: [TexObject; 5],
     /// The proxy "objects" per target: only their level state matters.
-    pub proxies: [TexObject; 4],
+    pub proxies: [TexObject; 5],
     /// Derived: what the vertex stage does per unit.
     pub vertex: texgen::VertexTexSetup,
 }
@@ -259,10 +278,10 @@ impl TextureState {
     }
 
     /// The target a unit textures with: the highest-priority enabled one
-    /// (cube map, 3D, 2D, 1D), if any.
+    /// (cube map, 3D, rectangle, 2D, 1D), if any.
     pub fn unit_target(&self, u: usize) -> Option<Target> {
         let e = &self.units[u].enabled;
-        [Target::Cube, Target::T3D, Target::T2D, Target::T1D].into_iter().find(|t| e[target_index(*t)])
+        [Target::Cube, Target::T3D, Target::Rect, Target::T2D, Target::T1D].into_iter().find(|t| e[target_index(*t)])
     }
 }
 
@@ -451,6 +470,7 @@ impl Context {
             GL_TEXTURE_2D => unit.enabled[1] = on,
             GL_TEXTURE_3D => unit.enabled[2] = on,
             GL_TEXTURE_CUBE_MAP => unit.enabled[3] = on,
+            GL_TEXTURE_RECTANGLE => unit.enabled[4] = on,
             GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q => unit.gen[(cap - GL_TEXTURE_GEN_S) as usize].enabled = on,
             _ => return false,
         }
@@ -465,6 +485,7 @@ impl Context {
             GL_TEXTURE_2D => unit.enabled[1],
             GL_TEXTURE_3D => unit.enabled[2],
             GL_TEXTURE_CUBE_MAP => unit.enabled[3],
+            GL_TEXTURE_RECTANGLE => unit.enabled[4],
             GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q => unit.gen[(cap - GL_TEXTURE_GEN_S) as usize].enabled,
             _ => return None,
         })
@@ -524,7 +545,8 @@ impl Context {
             return None;
         };
         let max = max_size(t);
-        if level < 0 || level > log2_floor(max) {
+        // A rectangle texture has one level and no border.
+        if level < 0 || level > max_level_of(t) || (t == Target::Rect && border != 0) {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
@@ -561,8 +583,47 @@ impl Context {
         Some((t, face, proxy, f, fits))
     }
 
+    /// The ARB_imaging stages on a texture image's colour groups (section
+    /// 3.8.1: texture images go through pixel transfer as glDrawPixels'
+    /// do): None when no stage is on (the caller transfers as usual),
+    /// Some(None) when a histogram or minmax sink consumed the image, else
+    /// the transferred groups and the image's size after convolution.
+    #[allow(clippy::option_option)]
+    fn imaging_texture(&mut self, dims: u8, pixels: Option<&image::Pixels>, size: [i32; 3]) -> Option<Option<(image::Pixels, [i32; 3])>> {
+        let p = pixels?;
+        let st = self.imaging_stages(dims)?;
+        let mut c: Vec<[f32; 4]> = match p {
+            image::Pixels::Rgba8(v) => v.iter().map(|p| p.map(|x| crate::render::texture::UNORM8[x as usize])).collect(),
+            image::Pixels::Color(v) => v.clone(),
+            image::Pixels::Index(v) => v.iter().map(|&i| self.pixel.index_to_rgba(i)).collect(),
+            _ => return None,
+        };
+        if !matches!(p, image::Pixels::Index(_)) {
+            self.pixel.scale_bias_map(&mut c);
+        }
+        // A 3D image's slices stack up as rows (no convolution applies).
+        let (w, h) = (size[0].max(0) as usize, (size[1].max(1) * if dims >= 3 { size[2].max(1) } else { 1 }) as usize);
+        let (c, w2, h2) = self.imaging(st, c, w, h)?;
+        let size = match dims {
+            1 => [w2 as i32, 1, 1],
+            2 => [w2 as i32, h2 as i32, 1],
+            _ => size,
+        };
+        Some(Some((image::Pixels::Color(c), size)))
+    }
+
     /// glTexImage1D/2D/3D (section 3.8.1).
     pub fn tex_image(&mut self, cmd: &TexImageCmd) {
+        match self.imaging_texture(cmd.dims, cmd.pixels.as_deref(), cmd.size) {
+            None => self.tex_image_transferred(cmd, false),
+            Some(None) => {}
+            Some(Some((p, size))) => self.tex_image_transferred(&TexImageCmd { size, pixels: Some(Arc::new(p)), ..cmd.clone() }, true),
+        }
+    }
+
+    /// glTexImage with `cmd`'s groups, already through pixel transfer when
+    /// `transferred`.
+    fn tex_image_transferred(&mut self, cmd: &TexImageCmd, transferred: bool) {
         let dims = cmd.dims as usize;
         let mut size = cmd.size;
         for s in size.iter_mut().skip(dims) {
@@ -591,7 +652,7 @@ impl Context {
         let n = w as usize * h as usize * d as usize;
         let mut img = img;
         img.texels = match &cmd.pixels {
-            Some(p) if p.len() == n => image::texels(&f, p, &self.pixel),
+            Some(p) if p.len() == n => image::texels(&f, p, if transferred { &IDENTITY_TRANSFER } else { &self.pixel }),
             _ => image::zero_texels(&f, n),
         };
         self.drop_derived_textures();
@@ -605,9 +666,17 @@ impl Context {
 
     /// glTexSubImage1D/2D/3D (section 3.8.2).
     pub fn tex_sub_image(&mut self, cmd: &TexSubImageCmd) {
+        match self.imaging_texture(cmd.dims, cmd.pixels.as_deref(), cmd.size) {
+            None => self.tex_sub_image_transferred(cmd, false),
+            Some(None) => {}
+            Some(Some((p, size))) => self.tex_sub_image_transferred(&TexSubImageCmd { size, pixels: Some(Arc::new(p)), ..cmd.clone() }, true),
+        }
+    }
+
+    fn tex_sub_image_transferred(&mut self, cmd: &TexSubImageCmd, transferred: bool) {
         let dims = cmd.dims as usize;
         let Some((t, face, false)) = image_target(cmd.target, cmd.dims) else { return self.set_error(GL_INVALID_ENUM) };
-        if cmd.level < 0 || cmd.level > log2_floor(max_size(t)) {
+        if cmd.level < 0 || cmd.level > max_level_of(t) {
             return self.set_error(GL_INVALID_VALUE);
         }
         let u = self.texture.active;
@@ -639,7 +708,7 @@ impl Context {
         let obj = self.texture.object_mut(u, t);
         if let Some(Some(dst)) = obj.images.get_mut(face * MAX_LEVELS + cmd.level as usize) {
             if let Some(p) = cmd.pixels.as_ref().filter(|p| p.len() == n) {
-                let src = image::texels(&f, p, &self.pixel);
+                let src = image::texels(&f, p, if transferred { &IDENTITY_TRANSFER } else { &self.pixel });
                 let dst = Arc::make_mut(dst);
                 let (w, h) = (dst.width as usize, dst.height as usize);
                 dst.texels.write_block(w, h, offset.map(|o| o as usize), size.map(|s| s as usize), &src);
@@ -669,7 +738,9 @@ impl Context {
             if f.base == Base::Depth && !self.fb.has_depth() {
                 return self.set_error(GL_INVALID_OPERATION);
             }
-            let pixels = self.read_framebuffer(x, y, size[0], size[1], f.base == Base::Depth);
+            let ds = image::is_depth_stencil(cmd.internal_format) && self.fb.has_stencil();
+            let pixels = self.read_framebuffer(x, y, size[0], size[1], f.base == Base::Depth, ds);
+            let (format, ty) = copy_format(f.base == Base::Depth, ds);
             let img = TexImageCmd {
                 dims,
                 target: cmd.target,
@@ -677,8 +748,8 @@ impl Context {
                 internal_format: cmd.internal_format as i32,
                 size,
                 border: cmd.border,
-                format: if f.base == Base::Depth { GL_DEPTH_COMPONENT } else { GL_RGBA },
-                ty: if f.base == Base::Depth { GL_FLOAT } else { GL_UNSIGNED_BYTE },
+                format,
+                ty,
                 pixels: Some(Arc::new(pixels)),
             };
             self.tex_image(&img);
@@ -686,7 +757,7 @@ impl Context {
             let Some((t, face, false)) = image_target(cmd.target, dims) else { return self.set_error(GL_INVALID_ENUM) };
             let u = self.texture.active;
             let Some(img) = self.texture.object(u, t).image(face, cmd.level.clamp(0, MAX_LEVELS as i32 - 1) as usize) else {
-                return self.set_error(if cmd.level < 0 || cmd.level >= MAX_LEVELS as i32 { GL_INVALID_VALUE } else { GL_INVALID_OPERATION });
+                return self.set_error(if cmd.level < 0 || cmd.level > max_level_of(t) { GL_INVALID_VALUE } else { GL_INVALID_OPERATION });
             };
             let depth = img.base == Base::Depth;
             if depth && !self.fb.has_depth() {
@@ -696,15 +767,17 @@ impl Context {
                 return self.set_error(GL_INVALID_VALUE);
             }
             let hh = if dims >= 2 { h } else { 1 };
-            let pixels = self.read_framebuffer(x, y, w, hh, depth);
+            let ds = image::is_depth_stencil(img.internal_format) && self.fb.has_stencil();
+            let pixels = self.read_framebuffer(x, y, w, hh, depth, ds);
+            let (format, ty) = copy_format(depth, ds);
             let sub = TexSubImageCmd {
                 dims,
                 target: cmd.target,
                 level: cmd.level,
                 offset: cmd.offset,
                 size: [w, hh, 1],
-                format: if depth { GL_DEPTH_COMPONENT } else { GL_RGBA },
-                ty: if depth { GL_FLOAT } else { GL_UNSIGNED_BYTE },
+                format,
+                ty,
                 pixels: Some(Arc::new(pixels)),
             };
             // A 3D copy writes one slice: a 2D-shaped region at zoffset.
@@ -715,7 +788,7 @@ impl Context {
     /// The framebuffer's colour bytes or depth values of a rectangle (pixel
     /// transfer comes after, in `tex_image`); pixels outside the window
     /// read as zero.
-    fn read_framebuffer(&self, x: i32, y: i32, w: i32, h: i32, depth: bool) -> image::Pixels {
+    fn read_framebuffer(&self, x: i32, y: i32, w: i32, h: i32, depth: bool, stencil: bool) -> image::Pixels {
         let fb = &self.fb;
         let read = self.read_color(); // glReadBuffer's buffer
         let n = w.max(0) as usize * h.max(0) as usize;
@@ -723,7 +796,16 @@ impl Context {
             let (fx, fy) = (x as i64 + i as i64, y as i64 + j as i64);
             (fx >= 0 && fy >= 0 && fx < fb.width as i64 && fy < fb.height as i64).then(|| fb.index(fx as usize, fy as usize))
         };
-        if depth {
+        if depth && stencil {
+            // Packed depth/stencil formats copy both (EXT_packed_depth_stencil).
+            let mut out = Vec::with_capacity(n);
+            for j in 0..h {
+                for i in 0..w {
+                    out.push(at(i, j).map_or((0.0, 0.0), |k| (fb.depth[k] as f64 / crate::framebuffer::DEPTH_MAX as f64, fb.stencil[k] as f64)));
+                }
+            }
+            image::Pixels::DepthStencil(out)
+        } else if depth {
             let mut out = Vec::with_capacity(n);
             for j in 0..h {
                 for i in 0..w {
@@ -769,6 +851,19 @@ impl Context {
                 _ => return None,
             })
         };
+        // ARB_texture_rectangle: no REPEAT wraps, no mipmap filters
+        // (INVALID_ENUM), no base level but 0 (INVALID_OPERATION).
+        if t == Target::Rect {
+            let bad = match pname {
+                GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => matches!(e, GL_REPEAT | GL_MIRRORED_REPEAT).then_some(GL_INVALID_ENUM),
+                GL_TEXTURE_MIN_FILTER => (!matches!(e, GL_NEAREST | GL_LINEAR)).then_some(GL_INVALID_ENUM),
+                GL_TEXTURE_BASE_LEVEL => (v[0] != 0.0).then_some(if v[0] < 0.0 { GL_INVALID_VALUE } else { GL_INVALID_OPERATION }),
+                _ => None,
+            };
+            if let Some(err) = bad {
+                return self.set_error(err);
+            }
+        }
         let u = self.texture.active;
         let obj = self.texture.object_mut(u, t);
         let p = &mut obj.params;
@@ -927,7 +1022,7 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return None;
         };
-        if level < 0 || level > log2_floor(max_size(t)) {
+        if level < 0 || level > max_level_of(t) {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
@@ -969,7 +1064,7 @@ impl Context {
     pub unsafe fn get_tex_image(&mut self, target: u32, level: i32, format: u32, ty: u32, out: *mut u8) {
         let found = [1u8, 2, 3].iter().find_map(|&d| image_target(target, d));
         let Some((t, face, false)) = found else { return self.set_error(GL_INVALID_ENUM) };
-        if level < 0 || level > log2_floor(max_size(t)) {
+        if level < 0 || level > max_level_of(t) {
             return self.set_error(GL_INVALID_VALUE);
         }
         match image::check_format_type(format, ty) {
@@ -1098,6 +1193,8 @@ impl Context {
             GL_TEXTURE_BINDING_2D => ints(&[u.bound[1] as i64]),
             GL_TEXTURE_BINDING_3D => ints(&[u.bound[2] as i64]),
             GL_TEXTURE_BINDING_CUBE_MAP => ints(&[u.bound[3] as i64]),
+            GL_TEXTURE_BINDING_RECTANGLE => ints(&[u.bound[4] as i64]),
+            GL_MAX_RECTANGLE_TEXTURE_SIZE => ints(&[MAX_RECTANGLE_TEXTURE_SIZE as i64]),
             GL_CURRENT_TEXTURE_COORDS => Some(Value::Floats(self.current.tex_coords[ts.active].iter().map(|&c| c as f64).collect())),
             GL_NUM_COMPRESSED_TEXTURE_FORMATS => ints(&[0]),
             GL_COMPRESSED_TEXTURE_FORMATS => Some(Value::Ints(Vec::new())),
@@ -1124,6 +1221,15 @@ impl Context {
             self.derived.render.texture = if stage.active.is_empty() { None } else { Some(Arc::new(stage)) };
         }
         self.texture.vertex = texgen::VertexTexSetup::new(self);
+    }
+}
+
+/// The format and type a copy's framebuffer pixels are given as.
+fn copy_format(depth: bool, stencil: bool) -> (u32, u32) {
+    match (depth, stencil) {
+        (true, true) => (GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8),
+        (true, false) => (GL_DEPTH_COMPONENT, GL_FLOAT),
+        _ => (GL_RGBA, GL_UNSIGNED_BYTE),
     }
 }
 

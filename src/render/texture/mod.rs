@@ -27,7 +27,9 @@
 //! computes (the unit tests compare them on random coordinates);
 //! `SOFTGL_REFERENCE=1` turns them off.
 //!
-//! Addressing (3.8.7): for nearest filtering i = floor(u) after the wrap
+//! Addressing (3.8.7): u = s * n (rectangle textures: u = s, their
+//! coordinates are in texels, and ρ is taken from them directly). For
+//! nearest filtering i = floor(u) after the wrap
 //! mode's treatment of s; for linear filtering i0 = floor(u - 1/2),
 //! i1 = i0 + 1 with weights from frac(u - 1/2). REPEAT takes indices modulo
 //! the size, MIRRORED_REPEAT mirrors them with period 2N, CLAMP_TO_EDGE
@@ -59,6 +61,20 @@ pub enum Target {
     T2D,
     T3D,
     Cube,
+    /// ARB_texture_rectangle: a 2D image addressed by unnormalized
+    /// coordinates (s in [0, width]), one level, no REPEAT wraps.
+    Rect,
+}
+
+impl Target {
+    /// Coordinates per texel fetch (a cube map's face images are 2D).
+    pub fn dims(self) -> usize {
+        match self {
+            Target::T1D => 1,
+            Target::T2D | Target::Cube | Target::Rect => 2,
+            Target::T3D => 3,
+        }
+    }
 }
 
 /// The base internal format of an image (table 3.15).
@@ -445,16 +461,18 @@ fn mirror(i: i32, n: i32) -> i32 {
     }
 }
 
-/// The coordinate u = s * n after the wrap mode's treatment of s, for
-/// nearest (`linear` false) or linear filtering.
+/// The texel-space coordinate u (s * n, or s itself for rectangle
+/// textures) after the wrap mode's treatment: CLAMP clamps s to [0, 1],
+/// that is u to [0, n] (the same f32 result: s * n is monotonic and exact
+/// at 0 and 1).
 #[inline]
-fn wrap_coord(wrap: Wrap, s: f32, n: i32) -> f32 {
+fn wrap_coord(wrap: Wrap, u: f32, n: i32) -> f32 {
     let nf = n as f32;
     match wrap {
-        Wrap::Clamp => s.clamp(0.0, 1.0) * nf,
-        Wrap::ClampToBorder => (s * nf).clamp(-0.5, nf + 0.5),
+        Wrap::Clamp => u.clamp(0.0, nf),
+        Wrap::ClampToBorder => u.clamp(-0.5, nf + 0.5),
         // The others are resolved on indices.
-        _ => s * nf,
+        _ => u,
     }
 }
 
@@ -488,11 +506,7 @@ impl UnitSampler {
     }
 
     fn dims(&self) -> usize {
-        match self.target {
-            Target::T1D => 1,
-            Target::T2D | Target::Cube => 2,
-            Target::T3D => 3,
-        }
+        self.target.dims()
     }
 
     /// A sampler for a complete texture; picks its fast path.
@@ -562,7 +576,8 @@ impl UnitSampler {
         let levels = &self.faces[face];
         let base = &levels[0];
         let dims = self.dims();
-        let n = base.inner(dims);
+        // Rectangle textures' coordinates are already in texels.
+        let n = if self.target == Target::Rect { [1; 3] } else { base.inner(dims) };
         let rho = {
             let lx = (0..dims).map(|k| (dx[k] * n[k] as f32).powi(2)).sum::<f32>().sqrt();
             let ly = (0..dims).map(|k| (dy[k] * n[k] as f32).powi(2)).sum::<f32>().sqrt();
@@ -625,7 +640,8 @@ impl UnitSampler {
             };
             self.compare(t, str[2])
         };
-        let u = [0, 1, 2].map(|k| if k < dims { wrap_coord(p.wrap[k], str[k], n[k]) } else { 0.0 });
+        let unnormalized = self.target == Target::Rect;
+        let u = [0, 1, 2].map(|k| if k < dims { wrap_coord(p.wrap[k], if unnormalized { str[k] } else { str[k] * n[k] as f32 }, n[k]) } else { 0.0 });
         if !linear {
             let i = u.map(|x| x.floor() as i32);
             // CLAMP at s = 1 reads the last texel, not the border.
