@@ -51,19 +51,22 @@
 //! output pointers or NULL).
 #![allow(clippy::missing_safety_doc)]
 
+pub mod drawable;
+pub mod present;
 pub mod xlib;
 
 use crate::api::types::*;
 use crate::framebuffer::{Config, Framebuffer, Present, DEPTH_BITS, MAX_SIZE};
 use crate::gl::Context;
-use crate::winsys::current;
-use std::cell::{Cell, RefCell};
+use crate::framebuffer::shared::Binding;
+use crate::winsys::{bound, current};
+use drawable::{Drawable, Kind, PBUFFER_ID_BASE};
+use std::cell::Cell;
 use std::ffi::{c_char, c_int, c_uint, c_ulong, c_void};
 use std::ptr::null_mut;
-use std::rc::Rc;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Mutex;
-use xlib::{xlib, Display, XImage, XVisualInfo, Xid};
+use std::sync::{Arc, Mutex};
+use xlib::{xlib, Display, XVisualInfo, Xid};
 
 pub type Bool = c_int;
 
@@ -172,31 +175,12 @@ struct Screens {
     lists: Vec<(usize, c_int, Vec<&'static FbConfig>)>,
     /// Per (display, visual): double-buffered as glXChooseVisual was asked.
     visual_double: Vec<(usize, c_ulong, bool)>,
-    /// GLXPixmaps (single-buffered drawables): (display, pixmap).
-    pixmaps: Vec<(usize, Xid)>,
     /// glXSelectEvent masks: (display, drawable, mask).
     events: Vec<(usize, Xid, c_ulong)>,
-    /// Pbuffers.
-    pbuffers: Vec<Pbuffer>,
     /// The next pbuffer's id (PBUFFER_ID_BASE + n).
     next_pbuffer: u32,
 }
 
-/// A GLXPbuffer: an offscreen drawable with no X resource behind it.
-#[derive(Clone, Copy, Debug)]
-struct Pbuffer {
-    dpy: usize,
-    id: Xid,
-    width: usize,
-    height: usize,
-    config: &'static FbConfig,
-    preserved: bool,
-    largest: bool,
-}
-
-/// Pbuffer ids have the top bits set, which X resource ids (29 bits) never
-/// have: they cannot collide with windows or pixmaps.
-const PBUFFER_ID_BASE: Xid = 0xE000_0000;
 
 pub const GLX_PRESERVED_CONTENTS: c_int = 0x801B;
 pub const GLX_LARGEST_PBUFFER: c_int = 0x801C;
@@ -204,14 +188,14 @@ pub const GLX_PBUFFER_HEIGHT: c_int = 0x8040;
 pub const GLX_PBUFFER_WIDTH: c_int = 0x8041;
 
 static SCREENS: Mutex<Screens> =
-    Mutex::new(Screens { lists: Vec::new(), visual_double: Vec::new(), pixmaps: Vec::new(), events: Vec::new(), pbuffers: Vec::new(), next_pbuffer: 1 });
+    Mutex::new(Screens { lists: Vec::new(), visual_double: Vec::new(), events: Vec::new(), next_pbuffer: 1 });
 
 fn lock() -> std::sync::MutexGuard<'static, Screens> {
     SCREENS.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 /// Whether a mask is 8 contiguous bits.
-fn is_8bit(m: c_ulong) -> bool {
+pub(crate) fn is_8bit(m: c_ulong) -> bool {
     m.count_ones() == 8 && (m >> m.trailing_zeros()) == 0xff
 }
 
@@ -514,43 +498,35 @@ pub unsafe fn get_visual_from_fb_config(dpy: *mut Display, config: *const FbConf
 
 // ---- drawables ----
 
-pub fn create_window(_dpy: *mut Display, config: *const FbConfig, win: Xid, _attribs: *const c_int) -> Xid {
-    if config.is_null() {
+pub unsafe fn create_window(dpy: *mut Display, config: *const FbConfig, win: Xid, _attribs: *const c_int) -> Xid {
+    if config.is_null() || dpy.is_null() || win == 0 {
         return 0;
     }
-    win
+    drawable::create_window(dpy, &*config, win)
 }
 
-pub fn destroy_window(_dpy: *mut Display, _win: Xid) {}
+pub fn destroy_window(dpy: *mut Display, win: Xid) {
+    drawable::remove(dpy, win, |k| *k == Kind::Window);
+}
 
-pub fn create_pixmap(dpy: *mut Display, pixmap: Xid) -> Xid {
-    if pixmap != 0 {
-        let mut s = lock();
-        if !s.pixmaps.contains(&(dpy as usize, pixmap)) {
-            s.pixmaps.push((dpy as usize, pixmap));
-        }
+/// glXCreateGLXPixmap: a pixmap drawable with the visual's config.
+pub unsafe fn create_glx_pixmap(dpy: *mut Display, vis: *mut XVisualInfo, pixmap: Xid) -> Xid {
+    match config_of_visual(dpy, vis) {
+        Some(c) if pixmap != 0 => drawable::create_pixmap(dpy, c, pixmap),
+        _ => 0,
     }
-    pixmap
 }
 
 /// glXCreatePixmap (no attributes are defined for it in GLX 1.4).
-pub fn create_fb_pixmap(dpy: *mut Display, config: *const FbConfig, pixmap: Xid, _attribs: *const c_int) -> Xid {
-    if config.is_null() {
+pub unsafe fn create_fb_pixmap(dpy: *mut Display, config: *const FbConfig, pixmap: Xid, _attribs: *const c_int) -> Xid {
+    if config.is_null() || dpy.is_null() || pixmap == 0 {
         return 0;
     }
-    create_pixmap(dpy, pixmap)
+    drawable::create_pixmap(dpy, &*config, pixmap)
 }
 
 pub fn destroy_pixmap(dpy: *mut Display, pixmap: Xid) {
-    lock().pixmaps.retain(|&p| p != (dpy as usize, pixmap));
-}
-
-fn is_pixmap(dpy: *mut Display, d: Xid) -> bool {
-    lock().pixmaps.contains(&(dpy as usize, d))
-}
-
-fn pbuffer(dpy: *mut Display, d: Xid) -> Option<Pbuffer> {
-    lock().pbuffers.iter().find(|p| p.dpy == dpy as usize && p.id == d).copied()
+    drawable::remove(dpy, pixmap, |k| *k == Kind::Pixmap);
 }
 
 /// glXCreatePbuffer: GLX_PBUFFER_WIDTH/HEIGHT (default 0, as GLX 1.4
@@ -579,131 +555,27 @@ pub unsafe fn create_pbuffer(dpy: *mut Display, config: *const FbConfig, attribs
     if (w > max || h > max) && !largest {
         return 0; // BadAlloc
     }
-    let mut s = lock();
-    let id = PBUFFER_ID_BASE | (s.next_pbuffer as Xid & 0x0FFF_FFFF);
-    s.next_pbuffer = s.next_pbuffer.wrapping_add(1).max(1);
-    let config: &'static FbConfig = &*config;
-    s.pbuffers.push(Pbuffer { dpy: dpy as usize, id, width: w.min(max) as usize, height: h.min(max) as usize, config, preserved, largest });
-    id
+    let id = {
+        let mut s = lock();
+        let id = PBUFFER_ID_BASE | (s.next_pbuffer as Xid & 0x0FFF_FFFF);
+        s.next_pbuffer = s.next_pbuffer.wrapping_add(1).max(1);
+        id
+    };
+    let kind = Kind::Pbuffer { width: w.min(max) as usize, height: h.min(max) as usize, preserved, largest };
+    drawable::create_pbuffer(dpy, &*config, id, kind)
 }
 
 pub fn destroy_pbuffer(dpy: *mut Display, pbuf: Xid) {
-    lock().pbuffers.retain(|p| !(p.dpy == dpy as usize && p.id == pbuf));
+    drawable::remove(dpy, pbuf, |k| matches!(k, Kind::Pbuffer { .. }));
 }
 
-/// The size of a drawable, or None (no such drawable, no X).
-unsafe fn geometry(dpy: *mut Display, d: Xid) -> Option<(usize, usize)> {
-    if let Some(p) = pbuffer(dpy, d) {
-        // A 0x0 pbuffer is legal; the framebuffer gets at least a pixel.
-        return Some((p.width.max(1), p.height.max(1)));
-    }
-    if d & PBUFFER_ID_BASE == PBUFFER_ID_BASE || dpy.is_null() {
-        return None; // a destroyed pbuffer: not an X id
-    }
-    let x = xlib()?;
-    let (mut root, mut px, mut py, mut w, mut h, mut bw, mut depth): (Xid, c_int, c_int, c_uint, c_uint, c_uint, c_uint) = (0, 0, 0, 0, 0, 0, 0);
-    // A bad drawable is BadDrawable: caught, so that the program's handler
-    // (Xlib's default one exits) never sees an error softgl caused.
-    let (ok, failed) = xlib::trap_errors(x, dpy, || (x.XGetGeometry)(dpy, d, &mut root, &mut px, &mut py, &mut w, &mut h, &mut bw, &mut depth));
-    if ok == 0 || failed {
-        return None;
-    }
-    Some(((w as usize).clamp(1, MAX_SIZE), (h as usize).clamp(1, MAX_SIZE)))
-}
-
-/// An X drawable as a place to put finished frames: XPutImage of the
-/// framebuffer, rows flipped to X's top-down order, pixels in the visual's
-/// channel masks.
-pub struct XSurface {
-    dpy: *mut Display,
-    drawable: Xid,
-    gc: xlib::Gc,
-    depth: c_int,
-    masks: [c_ulong; 3],
-    pixels: Vec<u32>,
-}
-
-impl XSurface {
-    unsafe fn new(dpy: *mut Display, drawable: Xid, config: &FbConfig) -> Option<XSurface> {
-        let x = xlib()?;
-        let gc = (x.XCreateGC)(dpy, drawable, 0, null_mut());
-        if gc.is_null() {
-            return None;
-        }
-        Some(XSurface { dpy, drawable, gc, depth: config.depth, masks: config.masks, pixels: Vec::new() })
-    }
-
-    fn put(&mut self, fb: &Framebuffer) {
-        crate::winsys::dump::frame(fb);
-        let Some(x) = xlib() else { return };
-        let (w, h) = (fb.width, fb.height);
-        if w == 0 || h == 0 {
-            return;
-        }
-        let shift = |m: c_ulong| m.trailing_zeros();
-        let [rs, gs, bs] = self.masks.map(shift);
-        // On a depth-32 visual the bits outside R, G and B hold alpha.
-        let rest = !(self.masks[0] | self.masks[1] | self.masks[2]) & 0xffff_ffff;
-        let alpha = if self.depth == 32 && is_8bit(rest) { Some(shift(rest)) } else { None };
-        self.pixels.clear();
-        self.pixels.reserve(w * h);
-        for y in (0..h).rev() {
-            let row = &fb.front()[fb.index(0, y)..fb.index(0, y) + w];
-            for c in row {
-                let mut p = ((c[0] as u32) << rs) | ((c[1] as u32) << gs) | ((c[2] as u32) << bs);
-                if let Some(s) = alpha {
-                    p |= (c[3] as u32) << s;
-                }
-                self.pixels.push(p);
-            }
-        }
-        let mut img = XImage {
-            width: w as c_int,
-            height: h as c_int,
-            xoffset: 0,
-            format: xlib::ZPixmap,
-            data: self.pixels.as_mut_ptr() as *mut c_char,
-            byte_order: if cfg!(target_endian = "little") { xlib::LSBFirst } else { xlib::MSBFirst },
-            bitmap_unit: 32,
-            bitmap_bit_order: xlib::LSBFirst,
-            bitmap_pad: 32,
-            depth: self.depth,
-            bytes_per_line: (w * 4) as c_int,
-            bits_per_pixel: 32,
-            red_mask: self.masks[0],
-            green_mask: self.masks[1],
-            blue_mask: self.masks[2],
-            obdata: null_mut(),
-            funcs: [null_mut(); 6],
-        };
-        // SAFETY: img describes self.pixels, which outlives the call; the
-        // display and drawable were valid at MakeCurrent.
-        unsafe {
-            if (x.XInitImage)(&mut img) == 0 {
-                return;
-            }
-            (x.XPutImage)(self.dpy, self.drawable, self.gc, &mut img, 0, 0, 0, 0, w as c_uint, h as c_uint);
-            (x.XFlush)(self.dpy);
-        }
-    }
-}
-
-impl Drop for XSurface {
-    fn drop(&mut self) {
-        if let Some(x) = xlib() {
-            // SAFETY: the GC was made on this display, which the program
-            // must keep open while a context is bound to its drawables.
-            unsafe { (x.XFreeGC)(self.dpy, self.gc) };
-        }
-    }
-}
-
-/// Presents at glFlush/glFinish (single-buffered drawables).
-struct OnFlush(Rc<RefCell<XSurface>>);
+/// Presents at glFlush/glFinish (single-buffered drawables, or a drawn
+/// front buffer).
+struct OnFlush(Arc<Drawable>);
 
 impl Present for OnFlush {
     fn present(&mut self, fb: &Framebuffer) {
-        self.0.borrow_mut().put(fb);
+        self.0.present(fb);
     }
 }
 
@@ -716,9 +588,9 @@ pub struct GlxContext {
     dpy: *mut Display,
     draw: Xid,
     read: Xid,
-    /// The bound drawable, and whether it shows frames at SwapBuffers
-    /// (double-buffered window) rather than at glFlush.
-    surface: Option<(Rc<RefCell<XSurface>>, bool)>,
+    /// The bound drawables (kept alive while bound, even if destroyed).
+    bound_draw: Option<Arc<Drawable>>,
+    bound_read: Option<Arc<Drawable>>,
     /// Current in some thread (GLX 1.4 section 3.3.7: a context is current
     /// in at most one thread).
     bound: AtomicBool,
@@ -742,7 +614,17 @@ unsafe fn new_context(dpy: *mut Display, config: Option<&'static FbConfig>) -> *
     }
     let mut gl = Context::new(c.framebuffer_config());
     gl.set_double_buffered(c.double);
-    Box::into_raw(Box::new(GlxContext { gl, config: *c, dpy, draw: 0, read: 0, surface: None, bound: AtomicBool::new(false), destroy_pending: AtomicBool::new(false) }))
+    Box::into_raw(Box::new(GlxContext {
+        gl,
+        config: *c,
+        dpy,
+        draw: 0,
+        read: 0,
+        bound_draw: None,
+        bound_read: None,
+        bound: AtomicBool::new(false),
+        destroy_pending: AtomicBool::new(false),
+    }))
 }
 
 /// Joins a new context to `share`'s objects (display lists, textures,
@@ -765,7 +647,7 @@ pub unsafe fn create_new_context(dpy: *mut Display, config: *const FbConfig, ren
     with_share(new_context(dpy, Some(&*config)), share)
 }
 
-/// Unbinds the calling thread's current context from its drawable,
+/// Unbinds the calling thread's current context from its drawables,
 /// delivering a single-buffered image (the implicit glFlush of section
 /// 3.3.7), and frees it if its destruction was deferred.
 fn release_current() {
@@ -779,11 +661,14 @@ fn release_current() {
     // it is released.
     unsafe {
         let ctx = &mut *cur;
-        if ctx.surface.is_some() {
-            ctx.gl.flush();
+        if ctx.gl.surface.is_some() {
+            bound::with_bound(&mut ctx.gl, |gl| gl.flush());
         }
         ctx.gl.surface = None;
-        ctx.surface = None;
+        ctx.gl.bound = None;
+        ctx.gl.read_fb = None;
+        ctx.bound_draw = None;
+        ctx.bound_read = None;
         ctx.draw = 0;
         ctx.read = 0;
         ctx.bound.store(false, Ordering::Release);
@@ -805,44 +690,43 @@ pub unsafe fn make_context_current(dpy: *mut Display, draw: Xid, read: Xid, ctx:
         return 0;
     }
     let c = &mut *ctx;
-    let Some((w, h)) = geometry(dpy, draw) else { return 0 };
+    let config: &'static FbConfig = match configs(dpy, c.config.screen).into_iter().find(|f| f.id == c.config.id) {
+        Some(f) => f,
+        None => return 0,
+    };
+    let Some(d) = drawable::for_binding(dpy, draw, config) else { return 0 };
+    let r = if read == draw { d.clone() } else { match drawable::for_binding(dpy, read, config) { Some(r) => r, None => return 0 } };
+    let Some(size) = d.size() else { return 0 };
+    let read_size = if read == draw { None } else { match r.size() { Some(s) => Some(s), None => return 0 } };
     let prev = current_glx();
     if prev == ctx && c.dpy == dpy && c.draw == draw && c.read == read {
         // Already bound here (freeglut rebinds before every callback): only
         // follow a resize.
-        if (w, h) != (c.gl.fb.width, c.gl.fb.height) {
-            if c.gl.fb.resize(w, h).is_err() {
-                return 0;
-            }
-            c.gl.surface_resized(w as GLint, h as GLint);
-        }
-        return 1;
+        let ok = d.follow_size(size) && read_size.is_none_or(|s| r.follow_size(s));
+        return ok as Bool;
     }
     if prev != ctx && c.bound.load(Ordering::Acquire) {
         return 0; // BadAccess: current in another thread
     }
-    // Reading from another drawable than the one drawn to is not supported
-    // yet: both are the context's one framebuffer.
     release_current();
-    if c.gl.fb.resize(w, h).is_err() {
+    if !d.follow_size(size) || !read_size.is_none_or(|s| r.follow_size(s)) {
         return 0;
     }
-    if pbuffer(dpy, draw).is_some() {
-        // Nothing to show: the pixels stay in the framebuffer, read back
-        // with glReadPixels.
-        c.gl.surface = None;
-        c.surface = None;
-    } else {
-        let Some(surface) = XSurface::new(dpy, draw, &c.config) else { return 0 };
-        let surface = Rc::new(RefCell::new(surface));
-        let double = c.config.double && !is_pixmap(dpy, draw);
-        c.gl.surface = Some(Box::new(OnFlush(surface.clone())));
-        c.surface = Some((surface, double));
+    if c.config.double && !d.make_double() {
+        return 0;
     }
+    if !d.ensure_surface() {
+        return 0;
+    }
+    c.gl.surface = if d.kind == Kind::Window || d.kind == Kind::Pixmap { Some(Box::new(OnFlush(d.clone()))) } else { None };
+    c.gl.bound = Some(Binding { draw: d.fb.clone(), read: (read != draw).then(|| r.fb.clone()) });
+    c.gl.read_fb = (read != draw).then(|| Framebuffer::new(c.config.framebuffer_config()));
+    c.bound_draw = Some(d);
+    c.bound_read = Some(r);
     c.dpy = dpy;
     c.draw = draw;
     c.read = read;
-    c.gl.surface_resized(w as GLint, h as GLint);
+    c.gl.surface_resized(size.0 as GLint, size.1 as GLint);
     c.bound.store(true, Ordering::Release);
     CURRENT_GLX.with(|cell| cell.set(ctx));
     current::set_current(&mut c.gl);
@@ -866,34 +750,23 @@ pub unsafe fn destroy_context(_dpy: *mut Display, ctx: *mut GlxContext) {
     }
 }
 
+/// glXSwapBuffers (section 3.3.10): swaps the drawable's buffers, whichever
+/// contexts are bound to it; then follows a window's resize for the next
+/// frame. A drawable softgl has never bound has nothing to show.
 pub unsafe fn swap_buffers(dpy: *mut Display, drawable: Xid) {
     let cur = current_glx();
-    if cur.is_null() {
+    if !cur.is_null() && (*cur).draw == drawable && (*cur).gl.in_begin_end() {
         return;
     }
-    let c = &mut *cur;
-    if c.draw != drawable || c.dpy != dpy || c.gl.in_begin_end() {
-        return;
-    }
-    let Some((surface, double)) = c.surface.clone() else {
-        // A pbuffer: no window to show; a double-buffered one still swaps.
-        if pbuffer(dpy, drawable).is_some() {
-            c.gl.swap_buffers();
-        }
-        return;
-    };
-    if !double {
-        return; // no effect on a single-buffered drawable (section 3.3.10)
-    }
-    let _ = surface;
-    c.gl.swap_buffers();
-    // Follow a resize for the next frame.
-    if let Some((w, h)) = geometry(dpy, drawable) {
-        if (w, h) != (c.gl.fb.width, c.gl.fb.height) && c.gl.fb.resize(w, h).is_ok() {
-            c.gl.surface_resized(w as GLint, h as GLint);
+    let Some(d) = drawable::find(dpy, drawable) else { return };
+    d.swap();
+    if d.kind == Kind::Window {
+        if let Some(size) = d.size() {
+            d.follow_size(size);
         }
     }
 }
+
 
 pub fn is_direct(_dpy: *mut Display, ctx: *mut GlxContext) -> Bool {
     (!ctx.is_null()) as Bool
@@ -936,8 +809,8 @@ pub fn wait_gl() {
     let c = current_glx();
     if !c.is_null() {
         unsafe {
-            if (*c).surface.is_some() {
-                (*c).gl.flush();
+            if (*c).gl.surface.is_some() {
+                bound::with_bound(&mut (*c).gl, |gl| gl.flush());
             }
         }
     }
@@ -970,31 +843,38 @@ pub unsafe fn query_context(_dpy: *mut Display, ctx: *mut GlxContext, attrib: c_
 }
 
 /// glXQueryDrawable: GLX_WIDTH and GLX_HEIGHT (of the X drawable, or the
-/// pbuffer's as created); for pbuffers also GLX_PRESERVED_CONTENTS,
-/// GLX_LARGEST_PBUFFER and GLX_FBCONFIG_ID.
+/// pbuffer's as created); for pbuffers also GLX_PRESERVED_CONTENTS and
+/// GLX_LARGEST_PBUFFER; GLX_FBCONFIG_ID for drawables softgl knows.
 pub unsafe fn query_drawable(dpy: *mut Display, d: Xid, attrib: c_int, value: *mut c_uint) {
     if value.is_null() {
         return;
     }
-    if let Some(p) = pbuffer(dpy, d) {
+    let rec = drawable::find(dpy, d);
+    if let Some(Kind::Pbuffer { width, height, preserved, largest }) = rec.as_ref().map(|r| r.kind) {
         match attrib {
-            GLX_WIDTH => *value = p.width as c_uint,
-            GLX_HEIGHT => *value = p.height as c_uint,
-            GLX_PRESERVED_CONTENTS => *value = p.preserved as c_uint,
-            GLX_LARGEST_PBUFFER => *value = p.largest as c_uint,
-            GLX_FBCONFIG_ID => *value = p.config.id as c_uint,
+            GLX_WIDTH => *value = width as c_uint,
+            GLX_HEIGHT => *value = height as c_uint,
+            GLX_PRESERVED_CONTENTS => *value = preserved as c_uint,
+            GLX_LARGEST_PBUFFER => *value = largest as c_uint,
+            GLX_FBCONFIG_ID => *value = rec.unwrap().config.id as c_uint,
             _ => {}
         }
         return;
     }
-    if let Some((w, h)) = geometry(dpy, d) {
+    if let Some((w, h)) = drawable::x_geometry(dpy, d) {
         match attrib {
             GLX_WIDTH => *value = w as c_uint,
             GLX_HEIGHT => *value = h as c_uint,
+            GLX_FBCONFIG_ID => {
+                if let Some(r) = rec {
+                    *value = r.config.id as c_uint;
+                }
+            }
             _ => {}
         }
     }
 }
+
 
 /// glXCopyContext (GLX 1.4 section 3.3.7): the attribute groups of `mask`
 /// (as glPushAttrib saves them, gl::attrib) from `src` to `dst`. Nothing

@@ -113,6 +113,7 @@ pub struct Xlib {
     pub XSync: unsafe extern "C" fn(*mut Display, c_int) -> c_int,
     pub XQueryExtension: unsafe extern "C" fn(*mut Display, *const c_char, *mut c_int, *mut c_int, *mut c_int) -> c_int,
     pub XScreenCount: unsafe extern "C" fn(*mut Display) -> c_int,
+    pub XConnectionNumber: unsafe extern "C" fn(*mut Display) -> c_int,
 }
 
 unsafe fn sym<T: Copy>(lib: *mut c_void, name: &[u8]) -> Option<T> {
@@ -145,6 +146,7 @@ unsafe fn load() -> Option<Xlib> {
         XSync: sym(lib, b"XSync\0")?,
         XQueryExtension: sym(lib, b"XQueryExtension\0")?,
         XScreenCount: sym(lib, b"XScreenCount\0")?,
+        XConnectionNumber: sym(lib, b"XConnectionNumber\0")?,
     })
 }
 
@@ -153,6 +155,44 @@ unsafe fn load() -> Option<Xlib> {
 pub fn xlib() -> Option<&'static Xlib> {
     static X: OnceLock<Option<Xlib>> = OnceLock::new();
     X.get_or_init(|| unsafe { load() }).as_ref()
+}
+
+/// XShmSegmentInfo (XShm.h).
+#[repr(C)]
+pub struct XShmSegmentInfo {
+    pub shmseg: Xid,
+    pub shmid: c_int,
+    pub shmaddr: *mut c_char,
+    pub readOnly: c_int,
+}
+
+/// The MIT-SHM entry points of libXext (XShm.h), for presenting through
+/// shared memory.
+pub struct Xext {
+    pub XShmQueryExtension: unsafe extern "C" fn(*mut Display) -> c_int,
+    pub XShmAttach: unsafe extern "C" fn(*mut Display, *mut XShmSegmentInfo) -> c_int,
+    pub XShmDetach: unsafe extern "C" fn(*mut Display, *mut XShmSegmentInfo) -> c_int,
+    pub XShmPutImage: unsafe extern "C" fn(*mut Display, Xid, Gc, *mut XImage, c_int, c_int, c_int, c_int, c_uint, c_uint, c_int) -> c_int,
+}
+
+unsafe fn load_xext() -> Option<Xext> {
+    let lib = libc::dlopen(c"libXext.so.6".as_ptr(), libc::RTLD_LAZY | libc::RTLD_LOCAL);
+    if lib.is_null() {
+        return None;
+    }
+    Some(Xext {
+        XShmQueryExtension: sym(lib, b"XShmQueryExtension\0")?,
+        XShmAttach: sym(lib, b"XShmAttach\0")?,
+        XShmDetach: sym(lib, b"XShmDetach\0")?,
+        XShmPutImage: sym(lib, b"XShmPutImage\0")?,
+    })
+}
+
+/// libXext, loaded the first time a surface may use MIT-SHM; None when it
+/// is not installed (then presenting uses XPutImage).
+pub fn xext() -> Option<&'static Xext> {
+    static X: OnceLock<Option<Xext>> = OnceLock::new();
+    X.get_or_init(|| unsafe { load_xext() }).as_ref()
 }
 
 static TRAPPED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
