@@ -773,6 +773,7 @@ super::entry_points! {
     free glXGetSelectedEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: *mut std::ffi::c_ulong) { glx::get_selected_event(dpy, draw, event_mask) }
     free glXGetProcAddressARB(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
     free glXGetProcAddress(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
+    free glXCreateContextAttribsARB(dpy: *mut Display, config: GLXFBConfig, shareContext: GLXContext, direct: Bool, attribList: *const c_int) -> GLXContext { glx::create_context_attribs(dpy, config, shareContext, direct, attribList) }
 
     // ---- softgl_wgl.h ----
     free wglCreateContext(hdc: *mut c_void) -> *mut c_void { crate::winsys::wgl::create_context(hdc) }

@@ -303,8 +303,8 @@ pub unsafe fn query_version(dpy: *mut Display, major: *mut c_int, minor: *mut c_
 
 const VENDOR: &[u8] = b"softgl\0";
 const VERSION: &[u8] = b"1.4 softgl\0";
-/// No GLX extensions yet (in particular not GLX_ARB_create_context).
-const EXTENSIONS: &[u8] = b"\0";
+/// The GLX extensions softgl implements.
+const EXTENSIONS: &[u8] = b"GLX_ARB_create_context GLX_ARB_create_context_profile GLX_ARB_get_proc_address\0";
 
 fn string(name: c_int) -> *const c_char {
     match name {
@@ -644,6 +644,96 @@ pub unsafe fn create_new_context(dpy: *mut Display, config: *const FbConfig, ren
     if config.is_null() || render_type != GLX_RGBA_TYPE {
         return null_mut();
     }
+    with_share(new_context(dpy, Some(&*config)), share)
+}
+
+pub const GLX_CONTEXT_MAJOR_VERSION_ARB: c_int = 0x2091;
+pub const GLX_CONTEXT_MINOR_VERSION_ARB: c_int = 0x2092;
+pub const GLX_CONTEXT_FLAGS_ARB: c_int = 0x2094;
+pub const GLX_CONTEXT_PROFILE_MASK_ARB: c_int = 0x9126;
+pub const GLX_CONTEXT_DEBUG_BIT_ARB: c_int = 0x1;
+pub const GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB: c_int = 0x2;
+pub const GLX_CONTEXT_CORE_PROFILE_BIT_ARB: c_int = 0x1;
+pub const GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB: c_int = 0x2;
+pub const GLX_COLOR_INDEX_TYPE: c_int = 0x8015;
+/// GLX error numbers (from the extension's first error).
+const GLX_BAD_CONTEXT_ERROR: u8 = 0;
+const GLX_BAD_FBCONFIG_ERROR: u8 = 9;
+const GLX_BAD_PROFILE_ARB_ERROR: u8 = 13;
+/// X_GLXCreateContextAttribsARB, the request errors are reported for.
+const X_GLX_CREATE_CONTEXT_ATTRIBS_ARB: u16 = 34;
+
+/// Whether `c` is one of the configs softgl handed out.
+fn is_config(c: *const FbConfig) -> bool {
+    lock().lists.iter().any(|(_, _, l)| l.iter().any(|&k| std::ptr::eq(k, c)))
+}
+
+/// What glXCreateContextAttribsARB was asked for, checked.
+fn check_context_attribs(req: &[(c_int, c_int)]) -> Result<(), xlib::GlxError> {
+    use xlib::GlxError::*;
+    let (mut major, mut minor, mut flags, mut profile, mut render) = (1, 0, 0, GLX_CONTEXT_CORE_PROFILE_BIT_ARB, GLX_RGBA_TYPE);
+    for &(a, v) in req {
+        match a {
+            GLX_CONTEXT_MAJOR_VERSION_ARB => major = v,
+            GLX_CONTEXT_MINOR_VERSION_ARB => minor = v,
+            GLX_CONTEXT_FLAGS_ARB => flags = v,
+            GLX_CONTEXT_PROFILE_MASK_ARB => profile = v,
+            GLX_RENDER_TYPE => render = v,
+            _ => return Err(BadValue), // not an attribute of the extension
+        }
+    }
+    if flags & !(GLX_CONTEXT_DEBUG_BIT_ARB | GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) != 0 {
+        return Err(BadValue);
+    }
+    // Exactly one of the two profiles (checked whatever the version,
+    // though the mask only matters from 3.2 on).
+    if profile != GLX_CONTEXT_CORE_PROFILE_BIT_ARB && profile != GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB {
+        return Err(Glx(GLX_BAD_PROFILE_ARB_ERROR));
+    }
+    if render != GLX_RGBA_TYPE && render != GLX_COLOR_INDEX_TYPE {
+        return Err(BadValue);
+    }
+    // OpenGL versions that exist; forward-compatible contexts exist from
+    // 3.0 on (the extension's list of invalid combinations).
+    let defined = match major {
+        1 => (0..=5).contains(&minor),
+        2 => (0..=1).contains(&minor),
+        3 => (0..=3).contains(&minor),
+        4 => (0..=6).contains(&minor),
+        _ => false,
+    };
+    if !defined || (flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB != 0 && major < 3) || (render == GLX_COLOR_INDEX_TYPE && major >= 3) {
+        return Err(BadMatch);
+    }
+    // A defined version above softgl's 1.5, or colour index: no config
+    // supports it.
+    if major > 1 || render == GLX_COLOR_INDEX_TYPE {
+        return Err(Glx(GLX_BAD_FBCONFIG_ERROR));
+    }
+    Ok(())
+}
+
+/// glXCreateContextAttribsARB (GLX_ARB_create_context and
+/// GLX_ARB_create_context_profile): versions 1.0 to 1.5, the debug flag
+/// (no effect) and either profile (which only versions from 3.2 on look
+/// at). Anything else returns NULL with the error the extension names,
+/// reported to the program's X error handler.
+pub unsafe fn create_context_attribs(dpy: *mut Display, config: *const FbConfig, share: *mut GlxContext, _direct: Bool, list: *const c_int) -> *mut GlxContext {
+    if dpy.is_null() {
+        return null_mut();
+    }
+    let fail = |e| {
+        xlib::report_error(dpy, e, X_GLX_CREATE_CONTEXT_ATTRIBS_ARB);
+        null_mut()
+    };
+    if config.is_null() || !is_config(config) {
+        return fail(xlib::GlxError::Glx(GLX_BAD_FBCONFIG_ERROR));
+    }
+    let Some(req) = attribs(list, false) else { return fail(xlib::GlxError::BadValue) };
+    if let Err(e) = check_context_attribs(&req) {
+        return fail(e);
+    }
+    let _ = GLX_BAD_CONTEXT_ERROR; // share contexts are not checked: GLXContext handles are pointers
     with_share(new_context(dpy, Some(&*config)), share)
 }
 

@@ -114,6 +114,19 @@ pub struct Xlib {
     pub XQueryExtension: unsafe extern "C" fn(*mut Display, *const c_char, *mut c_int, *mut c_int, *mut c_int) -> c_int,
     pub XScreenCount: unsafe extern "C" fn(*mut Display) -> c_int,
     pub XConnectionNumber: unsafe extern "C" fn(*mut Display) -> c_int,
+    pub XNextRequest: unsafe extern "C" fn(*mut Display) -> c_ulong,
+}
+
+/// XErrorEvent (Xlib.h).
+#[repr(C)]
+pub struct XErrorEvent {
+    pub kind: c_int,
+    pub display: *mut Display,
+    pub resourceid: Xid,
+    pub serial: c_ulong,
+    pub error_code: u8,
+    pub request_code: u8,
+    pub minor_code: u8,
 }
 
 unsafe fn sym<T: Copy>(lib: *mut c_void, name: &[u8]) -> Option<T> {
@@ -147,6 +160,7 @@ unsafe fn load() -> Option<Xlib> {
         XQueryExtension: sym(lib, b"XQueryExtension\0")?,
         XScreenCount: sym(lib, b"XScreenCount\0")?,
         XConnectionNumber: sym(lib, b"XConnectionNumber\0")?,
+        XNextRequest: sym(lib, b"XNextRequest\0")?,
     })
 }
 
@@ -217,4 +231,60 @@ pub unsafe fn trap_errors<R>(x: &Xlib, dpy: *mut Display, f: impl FnOnce() -> R)
     (x.XSync)(dpy, 0);
     (x.XSetErrorHandler)(old);
     (r, TRAPPED.swap(false, std::sync::atomic::Ordering::Relaxed))
+}
+
+/// The errors GLX functions generate (GLX 1.4 section 3.3; the X errors
+/// of the core protocol, or GLX's own, numbered from the GLX extension's
+/// first error).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GlxError {
+    BadValue,
+    BadMatch,
+    BadAlloc,
+    /// GLXBadContext, GLXBadFBConfig (9), GLXBadProfileARB (13), ...
+    Glx(u8),
+}
+
+/// Reports `err` for GLX request `minor` to the program's X error handler,
+/// as a direct-rendering GLX library does for errors it finds itself.
+/// (Not through Xlib's internal _XError, which needs the display's
+/// internal lock held, something only Xlib's macros can take.)
+/// GLX's own errors need the server's GLX extension (for their numbers);
+/// without it they are not reported.
+pub unsafe fn report_error(dpy: *mut Display, err: GlxError, minor: u16) {
+    let Some(x) = xlib() else { return };
+    if dpy.is_null() {
+        return;
+    }
+    let (mut major, mut first_event, mut first_error) = (0, 0, 0);
+    let has_glx = (x.XQueryExtension)(dpy, c"GLX".as_ptr(), &mut major, &mut first_event, &mut first_error) != 0;
+    let code = match err {
+        GlxError::BadValue => 2,
+        GlxError::BadMatch => 8,
+        GlxError::BadAlloc => 11,
+        GlxError::Glx(n) if has_glx => (first_error + n as c_int) as u8,
+        GlxError::Glx(_) => return,
+    };
+    let mut e = XErrorEvent {
+        kind: 0,
+        display: dpy,
+        resourceid: 0,
+        // The last request sent: the error belongs to the GLX call made now.
+        serial: (x.XNextRequest)(dpy).wrapping_sub(1),
+        error_code: code,
+        request_code: major as u8,
+        minor_code: minor as u8,
+    };
+    // The program's handler, called as Xlib would (without the display
+    // lock held); Xlib's default one prints the error and exits, as for
+    // any X error.
+    let handler = {
+        let _g = TRAP.lock().unwrap_or_else(|e| e.into_inner());
+        let h = (x.XSetErrorHandler)(None);
+        (x.XSetErrorHandler)(h);
+        h
+    };
+    if let Some(h) = handler {
+        h(dpy, &mut e as *mut XErrorEvent as *mut c_void);
+    }
 }
