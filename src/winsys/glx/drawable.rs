@@ -106,7 +106,16 @@ impl Drawable {
         }
         let mut s = self.surface.lock().unwrap_or_else(|e| e.into_inner());
         if s.is_none() {
-            *s = XSurface::new(self.dpy as *mut Display, self.id, self.config.depth, self.config.masks);
+            // Images must have the drawable's own depth (a pixmap made with
+            // another depth than the visual's would make XPutImage fail with
+            // BadMatch): 24 and 32 share the 32-bit pixel layout; other
+            // depths get no image (frames still reach SOFTGL_DUMP).
+            let dpy = self.dpy as *mut Display;
+            match x_geometry_depth(dpy, self.id) {
+                Some((_, _, depth @ (24 | 32))) => *s = XSurface::new(dpy, self.id, depth, self.config.masks),
+                Some(_) => return true,
+                None => return false,
+            }
         }
         s.is_some()
     }
@@ -141,6 +150,11 @@ impl Drawable {
 /// The size of an X drawable (XGetGeometry), or None (no such drawable,
 /// no X).
 pub unsafe fn x_geometry(dpy: *mut Display, d: Xid) -> Option<(usize, usize)> {
+    x_geometry_depth(dpy, d).map(|(w, h, _)| (w, h))
+}
+
+/// The size and depth of an X drawable.
+pub unsafe fn x_geometry_depth(dpy: *mut Display, d: Xid) -> Option<(usize, usize, c_int)> {
     if d & PBUFFER_ID_BASE == PBUFFER_ID_BASE || dpy.is_null() {
         return None; // a destroyed pbuffer: not an X id
     }
@@ -152,7 +166,7 @@ pub unsafe fn x_geometry(dpy: *mut Display, d: Xid) -> Option<(usize, usize)> {
     if ok == 0 || failed {
         return None;
     }
-    Some(((w as usize).clamp(1, MAX_SIZE), (h as usize).clamp(1, MAX_SIZE)))
+    Some(((w as usize).clamp(1, MAX_SIZE), (h as usize).clamp(1, MAX_SIZE), depth as c_int))
 }
 
 /// The record of drawable `id` on `dpy`.

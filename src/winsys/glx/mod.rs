@@ -133,7 +133,6 @@ pub struct FbConfig {
     /// GLX_FBCONFIG_ID: 1-based, per screen.
     id: c_int,
     visualid: c_ulong,
-    depth: c_int,
     masks: [c_ulong; 3],
     double: bool,
 }
@@ -233,7 +232,6 @@ unsafe fn configs(dpy: *mut Display, screen: c_int) -> Vec<&'static FbConfig> {
                 screen,
                 id: list.len() as c_int + 1,
                 visualid: v.visualid,
-                depth: v.depth,
                 masks: [v.red_mask, v.green_mask, v.blue_mask],
                 double,
             };

@@ -11,6 +11,10 @@
 //!   the segment, is trapped; the surface then falls back for good).
 //!   After each XShmPutImage a round trip (XSync) makes sure the server has
 //!   read the segment before the next frame overwrites it.
+//!
+//! Either way errors are trapped (xlib::trap_errors: two round trips per
+//! frame), so a drawable destroyed under a bound context costs a lost
+//! frame, never a BadDrawable in the program's error handler.
 //! * XPutImage: the frame goes through the socket in the X protocol.
 //!
 //! `SOFTGL_NO_SHM=1` forces XPutImage. The segment is made at the first
@@ -132,11 +136,17 @@ impl XSurface {
         }
         // SAFETY: the display and drawable were valid when bound; the
         // program keeps them while a context draws to them.
+        // Errors are caught: the drawable may be gone (a pixmap freed
+        // while a context was still bound to it, presented at release).
+        let Some(x) = xlib() else { return };
         unsafe {
-            if self.try_shm && self.put_shm(fb) {
-                return;
-            }
-            self.put_plain(fb);
+            let shm = self.try_shm && self.ensure_segment(w * h * 4);
+            let dpy = self.dpy;
+            xlib::trap_errors(x, dpy, || {
+                if !(shm && self.put_shm(fb)) {
+                    self.put_plain(fb);
+                }
+            });
         }
     }
 
@@ -150,20 +160,14 @@ impl XSurface {
         let mut img = self.image(w, h, pixels.as_mut_ptr() as *mut c_char);
         if (x.XInitImage)(&mut img) != 0 {
             (x.XPutImage)(self.dpy, self.drawable, self.gc, &mut img, 0, 0, 0, 0, w as c_uint, h as c_uint);
-            (x.XFlush)(self.dpy);
         }
         self.pixels = pixels;
     }
 
-    /// MIT-SHM presentation; false when it is not possible (then it is
+    /// Makes sure a segment of `need` bytes is attached (made again when
+    /// the size changed); false when MIT-SHM is not possible (then it is
     /// not tried again for this surface).
-    unsafe fn put_shm(&mut self, fb: &Framebuffer) -> bool {
-        let (Some(x), Some(e)) = (xlib(), xext()) else {
-            self.try_shm = false;
-            return false;
-        };
-        let (w, h) = (fb.width, fb.height);
-        let need = w * h * 4;
+    unsafe fn ensure_segment(&mut self, need: usize) -> bool {
         if self.shm.as_ref().is_some_and(|s| s.size != need) {
             self.free_shm();
         }
@@ -176,7 +180,17 @@ impl XSurface {
                 }
             }
         }
-        let seg = self.shm.as_mut().unwrap();
+        true
+    }
+
+    /// MIT-SHM presentation through the attached segment.
+    unsafe fn put_shm(&mut self, fb: &Framebuffer) -> bool {
+        let (Some(x), Some(e)) = (xlib(), xext()) else { return false };
+        let (w, h) = (fb.width, fb.height);
+        let Some(seg) = self.shm.as_mut() else { return false };
+        if seg.size != w * h * 4 {
+            return false;
+        }
         let info: *mut XShmSegmentInfo = &mut *seg.info;
         let data = (*info).shmaddr;
         // SAFETY: the segment is `need` bytes, page-aligned.
@@ -187,10 +201,10 @@ impl XSurface {
         if (x.XInitImage)(&mut img) == 0 {
             return false;
         }
+        // The server reads the segment asynchronously: the caller's round
+        // trip (trap_errors) waits for it before the next frame is written
+        // over it.
         (e.XShmPutImage)(self.dpy, self.drawable, self.gc, &mut img, 0, 0, 0, 0, w as c_uint, h as c_uint, 0);
-        // The server reads the segment asynchronously: wait for it before
-        // the next frame is written over it.
-        (x.XSync)(self.dpy, 0);
         true
     }
 
