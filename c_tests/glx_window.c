@@ -112,6 +112,14 @@ static void check_scene(Display *dpy, Window win, const XVisualInfo *vi, int w, 
     expect_pixel(dpy, win, vi, w - 3, 2, 0, 0, 255, what);     /* GL top right */
 }
 
+static int noted_error;
+static int note_error(Display *d, XErrorEvent *e)
+{
+    (void)d;
+    noted_error = e->error_code;
+    return 0;
+}
+
 static void check_common(Display *dpy, GLXContext ctx, Window drawable)
 {
     int major = 0, minor = 0, eb, evb;
@@ -450,7 +458,17 @@ static int run_fbconfig(Display *dpy)
             glXDestroyContext(dpy, pctx);
             glXDestroyPbuffer(dpy, pb);
             qw = 0;
-            glXQueryDrawable(dpy, pb, GLX_WIDTH, &qw);
+            {
+                /* GLXBadDrawable (GLX error 2) for a destroyed pbuffer. */
+                int major, ev, er;
+                XErrorHandler old = XSetErrorHandler(note_error);
+                noted_error = 0;
+                glXQueryDrawable(dpy, pb, GLX_WIDTH, &qw);
+                XSync(dpy, False);
+                XSetErrorHandler(old);
+                if (XQueryExtension(dpy, "GLX", &major, &ev, &er))
+                    CHECK(noted_error == er + 2, "destroyed pbuffer: X error %d, expected GLXBadDrawable (%d)", noted_error, er + 2);
+            }
             CHECK(qw == 0, "destroyed pbuffer still answers %u", qw);
         }
         if (pc)

@@ -503,9 +503,23 @@ pub unsafe fn create_window(dpy: *mut Display, config: *const FbConfig, win: Xid
     drawable::create_window(dpy, &*config, win)
 }
 
-pub fn destroy_window(dpy: *mut Display, win: Xid) {
+/// glXDestroyWindow: GLXBadWindow when `win` is not a GLXWindow, or its X
+/// window is gone (destroying the X window destroyed the GLXWindow).
+pub unsafe fn destroy_window(dpy: *mut Display, win: Xid) {
+    let alive = drawable::find(dpy, win).is_some_and(|d| d.kind == Kind::Window) && drawable::x_geometry(dpy, win).is_some();
     drawable::remove(dpy, win, |k| *k == Kind::Window);
+    if !alive {
+        xlib::report_error(dpy, xlib::GlxError::Glx(GLX_BAD_WINDOW_ERROR), X_GLX_DESTROY_WINDOW);
+    }
 }
+
+/// GLX error numbers and requests for errors of drawables.
+const GLX_BAD_DRAWABLE_ERROR: u8 = 2;
+const GLX_BAD_PBUFFER_ERROR: u8 = 10;
+const GLX_BAD_WINDOW_ERROR: u8 = 12;
+const X_GLX_DESTROY_PBUFFER: u16 = 28;
+const X_GLX_GET_DRAWABLE_ATTRIBUTES: u16 = 29;
+const X_GLX_DESTROY_WINDOW: u16 = 32;
 
 /// glXCreateGLXPixmap: a pixmap drawable with the visual's config.
 pub unsafe fn create_glx_pixmap(dpy: *mut Display, vis: *mut XVisualInfo, pixmap: Xid) -> Xid {
@@ -563,7 +577,10 @@ pub unsafe fn create_pbuffer(dpy: *mut Display, config: *const FbConfig, attribs
     drawable::create_pbuffer(dpy, &*config, id, kind)
 }
 
-pub fn destroy_pbuffer(dpy: *mut Display, pbuf: Xid) {
+pub unsafe fn destroy_pbuffer(dpy: *mut Display, pbuf: Xid) {
+    if !drawable::find(dpy, pbuf).is_some_and(|d| matches!(d.kind, Kind::Pbuffer { .. })) {
+        return xlib::report_error(dpy, xlib::GlxError::Glx(GLX_BAD_PBUFFER_ERROR), X_GLX_DESTROY_PBUFFER);
+    }
     drawable::remove(dpy, pbuf, |k| matches!(k, Kind::Pbuffer { .. }));
 }
 
@@ -933,6 +950,7 @@ pub unsafe fn query_context(_dpy: *mut Display, ctx: *mut GlxContext, attrib: c_
 /// glXQueryDrawable: GLX_WIDTH and GLX_HEIGHT (of the X drawable, or the
 /// pbuffer's as created); for pbuffers also GLX_PRESERVED_CONTENTS and
 /// GLX_LARGEST_PBUFFER; GLX_FBCONFIG_ID for drawables softgl knows.
+/// GLXBadDrawable for anything else.
 pub unsafe fn query_drawable(dpy: *mut Display, d: Xid, attrib: c_int, value: *mut c_uint) {
     if value.is_null() {
         return;
@@ -949,7 +967,10 @@ pub unsafe fn query_drawable(dpy: *mut Display, d: Xid, attrib: c_int, value: *m
         }
         return;
     }
-    if let Some((w, h)) = drawable::x_geometry(dpy, d) {
+    let Some((w, h)) = drawable::x_geometry(dpy, d) else {
+        return xlib::report_error(dpy, xlib::GlxError::Glx(GLX_BAD_DRAWABLE_ERROR), X_GLX_GET_DRAWABLE_ATTRIBUTES);
+    };
+    {
         match attrib {
             GLX_WIDTH => *value = w as c_uint,
             GLX_HEIGHT => *value = h as c_uint,
