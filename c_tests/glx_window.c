@@ -112,6 +112,14 @@ static void check_scene(Display *dpy, Window win, const XVisualInfo *vi, int w, 
     expect_pixel(dpy, win, vi, w - 3, 2, 0, 0, 255, what);     /* GL top right */
 }
 
+static int noted_error;
+static int note_error(Display *d, XErrorEvent *e)
+{
+    (void)d;
+    noted_error = e->error_code;
+    return 0;
+}
+
 static void check_common(Display *dpy, GLXContext ctx, Window drawable)
 {
     int major = 0, minor = 0, eb, evb;
@@ -119,7 +127,7 @@ static void check_common(Display *dpy, GLXContext ctx, Window drawable)
     const char *r = (const char *)glGetString(GL_RENDERER);
     CHECK(glXQueryExtension(dpy, &eb, &evb), "glXQueryExtension");
     CHECK(glXQueryVersion(dpy, &major, &minor) && major == 1 && minor == 4, "glXQueryVersion %d.%d", major, minor);
-    CHECK(ext && !strstr(ext, "GLX_ARB_create_context"), "extensions string '%s'", ext ? ext : "(null)");
+    CHECK(ext && strstr(ext, "GLX_ARB_create_context"), "extensions string '%s'", ext ? ext : "(null)");
     CHECK(glXGetClientString(dpy, GLX_VENDOR) != NULL, "glXGetClientString(GLX_VENDOR)");
     CHECK(glXQueryServerString(dpy, DefaultScreen(dpy), GLX_VERSION) != NULL, "glXQueryServerString(GLX_VERSION)");
     CHECK(r && strstr(r, "softgl"), "GL_RENDERER '%s'", r ? r : "(null)");
@@ -131,7 +139,7 @@ static void check_common(Display *dpy, GLXContext ctx, Window drawable)
     CHECK(glXGetProcAddressARB((const GLubyte *)"glClear") == (__GLXextFuncPtr)glClear, "glXGetProcAddressARB(glClear)");
     CHECK(glXGetProcAddress((const GLubyte *)"glXSwapBuffers") == (__GLXextFuncPtr)glXSwapBuffers, "glXGetProcAddress(glXSwapBuffers)");
     CHECK(glXGetProcAddress((const GLubyte *)"gluPerspective") != NULL, "glXGetProcAddress(gluPerspective)");
-    CHECK(glXGetProcAddress((const GLubyte *)"glXCreateContextAttribsARB") == NULL, "glXCreateContextAttribsARB is not offered");
+    CHECK(glXGetProcAddress((const GLubyte *)"glXCreateContextAttribsARB") != NULL, "glXCreateContextAttribsARB is offered (glx_drawables.c tests it)");
     CHECK(glGetError() == GL_NO_ERROR, "GL error");
 }
 
@@ -450,7 +458,17 @@ static int run_fbconfig(Display *dpy)
             glXDestroyContext(dpy, pctx);
             glXDestroyPbuffer(dpy, pb);
             qw = 0;
-            glXQueryDrawable(dpy, pb, GLX_WIDTH, &qw);
+            {
+                /* GLXBadDrawable (GLX error 2) for a destroyed pbuffer. */
+                int major, ev, er;
+                XErrorHandler old = XSetErrorHandler(note_error);
+                noted_error = 0;
+                glXQueryDrawable(dpy, pb, GLX_WIDTH, &qw);
+                XSync(dpy, False);
+                XSetErrorHandler(old);
+                if (XQueryExtension(dpy, "GLX", &major, &ev, &er))
+                    CHECK(noted_error == er + 2, "destroyed pbuffer: X error %d, expected GLXBadDrawable (%d)", noted_error, er + 2);
+            }
             CHECK(qw == 0, "destroyed pbuffer still answers %u", qw);
         }
         if (pc)

@@ -11,7 +11,11 @@
 #   3. when glxgears is installed (mesa-utils), Debian's glxgears runs for
 #      2 seconds with LD_LIBRARY_PATH=build/lib: it must report softgl as
 #      GL_RENDERER, keep running, and leave non-black pixels on the screen;
-#   4. when glxinfo is installed, `glxinfo -B` must report softgl.
+#   4. when glxinfo is installed, `glxinfo -B` must report softgl;
+#   5. c_tests/glx_drawables.c: MIT-SHM presenting (and XPutImage with
+#      SOFTGL_NO_SHM=1), glXCreateContextAttribsARB, several contexts on one
+#      window (two threads), a separate read drawable, a pbuffer in two
+#      contexts of a share group, a double-buffered GLXPixmap.
 # Exit 77 (skip) without Xvfb, the Xlib headers or build/lib/libGL.so.1.
 set -u
 cd "$(dirname "$0")/.." || exit 2
@@ -40,6 +44,12 @@ if ! $CC -std=c99 -O1 -Wall -I include -o "$DIR/glx_window" c_tests/glx_window.c
     exit 1
 fi
 if [ -s "$DIR/build.log" ]; then cat "$DIR/build.log"; fi
+if ! $CC -std=c99 -O1 -Wall -I include -o "$DIR/glx_drawables" c_tests/glx_drawables.c \
+    -L build/lib -Wl,-rpath,"$ROOT/build/lib" -lGL -lX11 -lpthread >"$DIR/build2.log" 2>&1; then
+    cat "$DIR/build2.log"
+    echo "FAIL t_glx (glx_drawables.c does not compile)"
+    exit 1
+fi
 
 # Our own Xvfb on a free display.
 disp=""
@@ -82,6 +92,20 @@ for mode in visual fbconfig; do
     echo "$out" | sed 's/^/  /'
     if [ $rc -ne 0 ]; then
         echo "  failure: glx_window $mode (exit status $rc)"
+        fails=$((fails + 1))
+    fi
+done
+
+for mode in shm noshm attribs multi read pbuffer pixmap; do
+    if [ $mode = noshm ]; then
+        out=$(SOFTGL_NO_SHM=1 timeout 30 "$DIR/glx_drawables" shm 2>&1)
+    else
+        out=$(timeout 30 "$DIR/glx_drawables" $mode 2>&1)
+    fi
+    rc=$?
+    echo "$out" | sed 's/^/  /'
+    if [ $rc -ne 0 ]; then
+        echo "  failure: glx_drawables $mode (exit status $rc)"
         fails=$((fails + 1))
     fi
 done

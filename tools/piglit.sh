@@ -6,6 +6,7 @@
 #   SOFTGL_LIB_DIR=DIR                 the libGL.so.1 to test (default build/lib)
 #   GROUP=core|ext|all JOBS=N TIMEOUT=S as ../shared/reference/piglit/run_gl1x.sh
 #   PIGLIT_DISPLAY=:N                  use that X server instead of starting Xvfb -noreset
+#   ONLY=REGEX                         run only the tests matching REGEX (e.g. '^glx@')
 #
 # Installs piglit and Xvfb with apt when run as root and they are missing.
 # The two tests Mesa itself needs 10+ minutes for are excluded.
@@ -36,8 +37,13 @@ if [ -z "${PIGLIT_DISPLAY:-}" ]; then
 else
   export DISPLAY=$PIGLIT_DISPLAY
 fi
-LD_LIBRARY_PATH="${SOFTGL_LIB_DIR:-$PWD/build/lib}${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
-  TIMEOUT=${TIMEOUT:-60} "$REF/run_gl1x.sh" "$OUT" -x 'gl-1.0-blend-func|texture-env-combine' >/dev/null
+if [ -n "${ONLY:-}" ]; then
+  LD_LIBRARY_PATH="${SOFTGL_LIB_DIR:-$PWD/build/lib}${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" PIGLIT_PLATFORM=glx \
+    piglit run opengl -p glx -j "${JOBS:-$(nproc)}" --timeout "${TIMEOUT:-60}" -l quiet -o -t "$ONLY" "$OUT" >/dev/null
+else
+  LD_LIBRARY_PATH="${SOFTGL_LIB_DIR:-$PWD/build/lib}${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
+    TIMEOUT=${TIMEOUT:-60} "$REF/run_gl1x.sh" "$OUT" -x 'gl-1.0-blend-func|texture-env-combine' >/dev/null
+fi
 python3 "$REF/summarize.py" "$OUT" --list > "$OUT.summary.txt"
 head -12 "$OUT.summary.txt"
 echo "(Mesa llvmpipe forced to GL 1.5: $(sed -n 3p $REF/baselines/llvmpipe-gl15override-gl1x-core.summary.txt))"

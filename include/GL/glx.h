@@ -214,6 +214,18 @@ GLAPI void GLAPIENTRY glXGetSelectedEvent (Display *dpy, GLXDrawable draw, unsig
 GLAPI __GLXextFuncPtr GLAPIENTRY glXGetProcAddressARB (const GLubyte *procName);
 GLAPI __GLXextFuncPtr GLAPIENTRY glXGetProcAddress (const GLubyte *procName);
 
+/* GLX_ARB_create_context, GLX_ARB_create_context_profile */
+#define GLX_CONTEXT_DEBUG_BIT_ARB                 0x00000001
+#define GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB    0x00000002
+#define GLX_CONTEXT_MAJOR_VERSION_ARB             0x2091
+#define GLX_CONTEXT_MINOR_VERSION_ARB             0x2092
+#define GLX_CONTEXT_FLAGS_ARB                     0x2094
+#define GLX_CONTEXT_CORE_PROFILE_BIT_ARB          0x00000001
+#define GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB 0x00000002
+#define GLX_CONTEXT_PROFILE_MASK_ARB              0x9126
+typedef GLXContext (*PFNGLXCREATECONTEXTATTRIBSARBPROC) (Display *dpy, GLXFBConfig config, GLXContext share_context, Bool direct, const int *attrib_list);
+GLAPI GLXContext GLAPIENTRY glXCreateContextAttribsARB (Display *dpy, GLXFBConfig config, GLXContext share_context, Bool direct, const int *attrib_list);
+
 #ifdef __cplusplus
 }
 #endif

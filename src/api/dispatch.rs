@@ -23,14 +23,17 @@ pub fn with_current<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
     // SAFETY: the pointer was made current by MakeCurrent and stays valid
     // until it is released; GL contexts are used by one thread at a time.
     let ctx = unsafe { &mut *p };
-    // Objects shared with other contexts are in place for the call.
-    crate::gl::share::with_shared(ctx, |ctx| match catch_unwind(AssertUnwindSafe(|| f(ctx))) {
-        Ok(r) => r,
-        Err(_) => {
-            let ctx = unsafe { &mut *p };
-            ctx.set_error(crate::gl::enums::GL_OUT_OF_MEMORY);
-            R::zero()
-        }
+    // Objects shared with other contexts, and the bound drawables'
+    // framebuffers, are in place for the call.
+    crate::winsys::bound::with_bound(ctx, |ctx| {
+        crate::gl::share::with_shared(ctx, |ctx| match catch_unwind(AssertUnwindSafe(|| f(ctx))) {
+            Ok(r) => r,
+            Err(_) => {
+                let ctx = unsafe { &mut *p };
+                ctx.set_error(crate::gl::enums::GL_OUT_OF_MEMORY);
+                R::zero()
+            }
+        })
     })
 }
 

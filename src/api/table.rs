@@ -767,7 +767,7 @@ super::entry_points! {
     free glXMakeCurrent(dpy: *mut Display, drawable: GLXDrawable, ctx: GLXContext) -> Bool { glx::make_current(dpy, drawable, ctx) }
     free glXCopyContext(dpy: *mut Display, src: GLXContext, dst: GLXContext, mask: std::ffi::c_ulong) { glx::copy_context(dpy, src, dst, mask) }
     free["copies the back buffer to the front and shows it with XPutImage; no MIT-SHM"] glXSwapBuffers(dpy: *mut Display, drawable: GLXDrawable) { glx::swap_buffers(dpy, drawable) }
-    free glXCreateGLXPixmap(dpy: *mut Display, visual: *mut XVisualInfo, pixmap: XID) -> GLXDrawable { glx::create_pixmap(dpy, if visual.is_null() { 0 } else { pixmap }) }
+    free glXCreateGLXPixmap(dpy: *mut Display, visual: *mut XVisualInfo, pixmap: XID) -> GLXDrawable { glx::create_glx_pixmap(dpy, visual, pixmap) }
     free glXDestroyGLXPixmap(dpy: *mut Display, pixmap: GLXDrawable) { glx::destroy_pixmap(dpy, pixmap) }
     free glXIsDirect(dpy: *mut Display, ctx: GLXContext) -> Bool { glx::is_direct(dpy, ctx) }
     free glXGetCurrentContext() -> GLXContext { glx::get_current_context() }
@@ -795,6 +795,7 @@ super::entry_points! {
     free glXGetSelectedEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: *mut std::ffi::c_ulong) { glx::get_selected_event(dpy, draw, event_mask) }
     free glXGetProcAddressARB(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
     free glXGetProcAddress(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
+    free glXCreateContextAttribsARB(dpy: *mut Display, config: GLXFBConfig, shareContext: GLXContext, direct: Bool, attribList: *const c_int) -> GLXContext { glx::create_context_attribs(dpy, config, shareContext, direct, attribList) }
 
     // ---- softgl_wgl.h ----
     free wglCreateContext(hdc: *mut c_void) -> *mut c_void { crate::winsys::wgl::create_context(hdc) }

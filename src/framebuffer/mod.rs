@@ -21,6 +21,8 @@
 //! Allocation is fallible: a surface too large for memory is reported, never
 //! aborts the program.
 
+pub mod shared;
+
 /// Largest surface side; also GL_MAX_VIEWPORT_DIMS. The rasterizer's
 /// fixed-point ranges are chosen for it (see `render::setup`).
 pub const MAX_SIZE: usize = 16384;

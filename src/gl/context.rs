@@ -61,6 +61,14 @@ pub struct Context {
     pub fb: Framebuffer,
     /// Where glFlush/glFinish deliver the image (set by the window system).
     pub surface: Option<Box<dyn Present>>,
+    /// A window-system drawable's framebuffers, shared with the other
+    /// contexts bound to it: swapped into `fb` (and `read_fb`) for the
+    /// length of each call (winsys::bound). None: `fb` is the context's own.
+    pub bound: Option<crate::framebuffer::shared::Binding>,
+    /// The read drawable's framebuffer when it is not the draw one
+    /// (glXMakeContextCurrent): glReadPixels, glCopyPixels and
+    /// glCopyTexImage read it (`read_source`).
+    pub read_fb: Option<Framebuffer>,
     /// Dirty bits (validate::DIRTY_*): derived state to recompute.
     pub dirty: u32,
     pub derived: validate::Derived,
@@ -112,6 +120,8 @@ impl Context {
             texture: Default::default(),
             fb: Framebuffer::new(config),
             surface: None,
+            bound: None,
+            read_fb: None,
             dirty: validate::DIRTY_ALL,
             derived: validate::Derived::default(),
             share: None,

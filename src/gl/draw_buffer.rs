@@ -84,4 +84,13 @@ impl Context {
     pub fn read_color(&self) -> &[[u8; 4]] {
         self.fb.read_color(matches!(self.pixel_read_buffer, GL_BACK | GL_BACK_LEFT))
     }
+
+    /// The read drawable's framebuffer (glXMakeContextCurrent's `read`;
+    /// the draw framebuffer unless the window system set another) and its
+    /// colour buffer glReadBuffer names: what glReadPixels, glCopyPixels
+    /// and glCopyTexImage read.
+    pub fn read_source(&self) -> (&crate::framebuffer::Framebuffer, &[[u8; 4]]) {
+        let fb = self.read_fb.as_ref().unwrap_or(&self.fb);
+        (fb, fb.read_color(matches!(self.pixel_read_buffer, GL_BACK | GL_BACK_LEFT)))
+    }
 }

@@ -324,8 +324,7 @@ impl Context {
             }
         }
         let shading = self.pixel_shading();
-        let fb = &self.fb;
-        let read = self.read_color(); // glReadBuffer's buffer
+        let (fb, read) = self.read_source(); // glReadBuffer's buffer
         // Read everything first: overlapping copies see the old pixels.
         let at = |i: usize, j: usize| -> Option<usize> {
             let (fx, fy) = (x as i64 + i as i64, y as i64 + j as i64);

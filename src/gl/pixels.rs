@@ -117,9 +117,8 @@ impl Context {
         }
         let (w, h) = (w as usize, h as usize);
         let mut dest = Dest::new(&modes, w, h, format, ty, out);
-        let fb = &self.fb;
         // Colours come from the buffer glReadBuffer names.
-        let color = self.read_color();
+        let (fb, color) = self.read_source();
         let t = &self.pixel;
         // Fast path: RGBA bytes inside the window with no transfer are the
         // stored bytes, a row at a time.

@@ -3,6 +3,7 @@
 //! [`osmesa`] is the OSMesa API over caller-owned buffers; [`glx`] is GLX 1.4
 //! over Xlib (loaded at run time).
 
+pub mod bound;
 pub mod current;
 pub mod dump;
 pub mod font_outlines;

@@ -789,8 +789,7 @@ impl Context {
     /// transfer comes after, in `tex_image`); pixels outside the window
     /// read as zero.
     fn read_framebuffer(&self, x: i32, y: i32, w: i32, h: i32, depth: bool, stencil: bool) -> image::Pixels {
-        let fb = &self.fb;
-        let read = self.read_color(); // glReadBuffer's buffer
+        let (fb, read) = self.read_source(); // glReadBuffer's buffer
         let n = w.max(0) as usize * h.max(0) as usize;
         let at = |i: i32, j: i32| {
             let (fx, fy) = (x as i64 + i as i64, y as i64 + j as i64);

@@ -51,19 +51,22 @@
 //! output pointers or NULL).
 #![allow(clippy::missing_safety_doc)]
 
+pub mod drawable;
+pub mod present;
 pub mod xlib;
 
 use crate::api::types::*;
 use crate::framebuffer::{Config, Framebuffer, Present, DEPTH_BITS, MAX_SIZE};
 use crate::gl::Context;
-use crate::winsys::current;
-use std::cell::{Cell, RefCell};
+use crate::framebuffer::shared::Binding;
+use crate::winsys::{bound, current};
+use drawable::{Drawable, Kind, PBUFFER_ID_BASE};
+use std::cell::Cell;
 use std::ffi::{c_char, c_int, c_uint, c_ulong, c_void};
 use std::ptr::null_mut;
-use std::rc::Rc;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Mutex;
-use xlib::{xlib, Display, XImage, XVisualInfo, Xid};
+use std::sync::{Arc, Mutex};
+use xlib::{xlib, Display, XVisualInfo, Xid};
 
 pub type Bool = c_int;
 
@@ -130,7 +133,6 @@ pub struct FbConfig {
     /// GLX_FBCONFIG_ID: 1-based, per screen.
     id: c_int,
     visualid: c_ulong,
-    depth: c_int,
     masks: [c_ulong; 3],
     double: bool,
 }
@@ -172,31 +174,12 @@ struct Screens {
     lists: Vec<(usize, c_int, Vec<&'static FbConfig>)>,
     /// Per (display, visual): double-buffered as glXChooseVisual was asked.
     visual_double: Vec<(usize, c_ulong, bool)>,
-    /// GLXPixmaps (single-buffered drawables): (display, pixmap).
-    pixmaps: Vec<(usize, Xid)>,
     /// glXSelectEvent masks: (display, drawable, mask).
     events: Vec<(usize, Xid, c_ulong)>,
-    /// Pbuffers.
-    pbuffers: Vec<Pbuffer>,
     /// The next pbuffer's id (PBUFFER_ID_BASE + n).
     next_pbuffer: u32,
 }
 
-/// A GLXPbuffer: an offscreen drawable with no X resource behind it.
-#[derive(Clone, Copy, Debug)]
-struct Pbuffer {
-    dpy: usize,
-    id: Xid,
-    width: usize,
-    height: usize,
-    config: &'static FbConfig,
-    preserved: bool,
-    largest: bool,
-}
-
-/// Pbuffer ids have the top bits set, which X resource ids (29 bits) never
-/// have: they cannot collide with windows or pixmaps.
-const PBUFFER_ID_BASE: Xid = 0xE000_0000;
 
 pub const GLX_PRESERVED_CONTENTS: c_int = 0x801B;
 pub const GLX_LARGEST_PBUFFER: c_int = 0x801C;
@@ -204,14 +187,14 @@ pub const GLX_PBUFFER_HEIGHT: c_int = 0x8040;
 pub const GLX_PBUFFER_WIDTH: c_int = 0x8041;
 
 static SCREENS: Mutex<Screens> =
-    Mutex::new(Screens { lists: Vec::new(), visual_double: Vec::new(), pixmaps: Vec::new(), events: Vec::new(), pbuffers: Vec::new(), next_pbuffer: 1 });
+    Mutex::new(Screens { lists: Vec::new(), visual_double: Vec::new(), events: Vec::new(), next_pbuffer: 1 });
 
 fn lock() -> std::sync::MutexGuard<'static, Screens> {
     SCREENS.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 /// Whether a mask is 8 contiguous bits.
-fn is_8bit(m: c_ulong) -> bool {
+pub(crate) fn is_8bit(m: c_ulong) -> bool {
     m.count_ones() == 8 && (m >> m.trailing_zeros()) == 0xff
 }
 
@@ -249,7 +232,6 @@ unsafe fn configs(dpy: *mut Display, screen: c_int) -> Vec<&'static FbConfig> {
                 screen,
                 id: list.len() as c_int + 1,
                 visualid: v.visualid,
-                depth: v.depth,
                 masks: [v.red_mask, v.green_mask, v.blue_mask],
                 double,
             };
@@ -319,8 +301,8 @@ pub unsafe fn query_version(dpy: *mut Display, major: *mut c_int, minor: *mut c_
 
 const VENDOR: &[u8] = b"softgl\0";
 const VERSION: &[u8] = b"1.4 softgl\0";
-/// No GLX extensions yet (in particular not GLX_ARB_create_context).
-const EXTENSIONS: &[u8] = b"\0";
+/// The GLX extensions softgl implements.
+const EXTENSIONS: &[u8] = b"GLX_ARB_create_context GLX_ARB_create_context_profile GLX_ARB_get_proc_address\0";
 
 fn string(name: c_int) -> *const c_char {
     match name {
@@ -514,43 +496,49 @@ pub unsafe fn get_visual_from_fb_config(dpy: *mut Display, config: *const FbConf
 
 // ---- drawables ----
 
-pub fn create_window(_dpy: *mut Display, config: *const FbConfig, win: Xid, _attribs: *const c_int) -> Xid {
-    if config.is_null() {
+pub unsafe fn create_window(dpy: *mut Display, config: *const FbConfig, win: Xid, _attribs: *const c_int) -> Xid {
+    if config.is_null() || dpy.is_null() || win == 0 {
         return 0;
     }
-    win
+    drawable::create_window(dpy, &*config, win)
 }
 
-pub fn destroy_window(_dpy: *mut Display, _win: Xid) {}
-
-pub fn create_pixmap(dpy: *mut Display, pixmap: Xid) -> Xid {
-    if pixmap != 0 {
-        let mut s = lock();
-        if !s.pixmaps.contains(&(dpy as usize, pixmap)) {
-            s.pixmaps.push((dpy as usize, pixmap));
-        }
+/// glXDestroyWindow: GLXBadWindow when `win` is not a GLXWindow, or its X
+/// window is gone (destroying the X window destroyed the GLXWindow).
+pub unsafe fn destroy_window(dpy: *mut Display, win: Xid) {
+    let alive = drawable::find(dpy, win).is_some_and(|d| d.kind == Kind::Window) && drawable::x_geometry(dpy, win).is_some();
+    drawable::remove(dpy, win, |k| *k == Kind::Window);
+    if !alive {
+        xlib::report_error(dpy, xlib::GlxError::Glx(GLX_BAD_WINDOW_ERROR), X_GLX_DESTROY_WINDOW);
     }
-    pixmap
+}
+
+/// GLX error numbers and requests for errors of drawables.
+const GLX_BAD_DRAWABLE_ERROR: u8 = 2;
+const GLX_BAD_PBUFFER_ERROR: u8 = 10;
+const GLX_BAD_WINDOW_ERROR: u8 = 12;
+const X_GLX_DESTROY_PBUFFER: u16 = 28;
+const X_GLX_GET_DRAWABLE_ATTRIBUTES: u16 = 29;
+const X_GLX_DESTROY_WINDOW: u16 = 32;
+
+/// glXCreateGLXPixmap: a pixmap drawable with the visual's config.
+pub unsafe fn create_glx_pixmap(dpy: *mut Display, vis: *mut XVisualInfo, pixmap: Xid) -> Xid {
+    match config_of_visual(dpy, vis) {
+        Some(c) if pixmap != 0 => drawable::create_pixmap(dpy, c, pixmap),
+        _ => 0,
+    }
 }
 
 /// glXCreatePixmap (no attributes are defined for it in GLX 1.4).
-pub fn create_fb_pixmap(dpy: *mut Display, config: *const FbConfig, pixmap: Xid, _attribs: *const c_int) -> Xid {
-    if config.is_null() {
+pub unsafe fn create_fb_pixmap(dpy: *mut Display, config: *const FbConfig, pixmap: Xid, _attribs: *const c_int) -> Xid {
+    if config.is_null() || dpy.is_null() || pixmap == 0 {
         return 0;
     }
-    create_pixmap(dpy, pixmap)
+    drawable::create_pixmap(dpy, &*config, pixmap)
 }
 
 pub fn destroy_pixmap(dpy: *mut Display, pixmap: Xid) {
-    lock().pixmaps.retain(|&p| p != (dpy as usize, pixmap));
-}
-
-fn is_pixmap(dpy: *mut Display, d: Xid) -> bool {
-    lock().pixmaps.contains(&(dpy as usize, d))
-}
-
-fn pbuffer(dpy: *mut Display, d: Xid) -> Option<Pbuffer> {
-    lock().pbuffers.iter().find(|p| p.dpy == dpy as usize && p.id == d).copied()
+    drawable::remove(dpy, pixmap, |k| *k == Kind::Pixmap);
 }
 
 /// glXCreatePbuffer: GLX_PBUFFER_WIDTH/HEIGHT (default 0, as GLX 1.4
@@ -579,131 +567,30 @@ pub unsafe fn create_pbuffer(dpy: *mut Display, config: *const FbConfig, attribs
     if (w > max || h > max) && !largest {
         return 0; // BadAlloc
     }
-    let mut s = lock();
-    let id = PBUFFER_ID_BASE | (s.next_pbuffer as Xid & 0x0FFF_FFFF);
-    s.next_pbuffer = s.next_pbuffer.wrapping_add(1).max(1);
-    let config: &'static FbConfig = &*config;
-    s.pbuffers.push(Pbuffer { dpy: dpy as usize, id, width: w.min(max) as usize, height: h.min(max) as usize, config, preserved, largest });
-    id
+    let id = {
+        let mut s = lock();
+        let id = PBUFFER_ID_BASE | (s.next_pbuffer as Xid & 0x0FFF_FFFF);
+        s.next_pbuffer = s.next_pbuffer.wrapping_add(1).max(1);
+        id
+    };
+    let kind = Kind::Pbuffer { width: w.min(max) as usize, height: h.min(max) as usize, preserved, largest };
+    drawable::create_pbuffer(dpy, &*config, id, kind)
 }
 
-pub fn destroy_pbuffer(dpy: *mut Display, pbuf: Xid) {
-    lock().pbuffers.retain(|p| !(p.dpy == dpy as usize && p.id == pbuf));
+pub unsafe fn destroy_pbuffer(dpy: *mut Display, pbuf: Xid) {
+    if !drawable::find(dpy, pbuf).is_some_and(|d| matches!(d.kind, Kind::Pbuffer { .. })) {
+        return xlib::report_error(dpy, xlib::GlxError::Glx(GLX_BAD_PBUFFER_ERROR), X_GLX_DESTROY_PBUFFER);
+    }
+    drawable::remove(dpy, pbuf, |k| matches!(k, Kind::Pbuffer { .. }));
 }
 
-/// The size of a drawable, or None (no such drawable, no X).
-unsafe fn geometry(dpy: *mut Display, d: Xid) -> Option<(usize, usize)> {
-    if let Some(p) = pbuffer(dpy, d) {
-        // A 0x0 pbuffer is legal; the framebuffer gets at least a pixel.
-        return Some((p.width.max(1), p.height.max(1)));
-    }
-    if d & PBUFFER_ID_BASE == PBUFFER_ID_BASE || dpy.is_null() {
-        return None; // a destroyed pbuffer: not an X id
-    }
-    let x = xlib()?;
-    let (mut root, mut px, mut py, mut w, mut h, mut bw, mut depth): (Xid, c_int, c_int, c_uint, c_uint, c_uint, c_uint) = (0, 0, 0, 0, 0, 0, 0);
-    // A bad drawable is BadDrawable: caught, so that the program's handler
-    // (Xlib's default one exits) never sees an error softgl caused.
-    let (ok, failed) = xlib::trap_errors(x, dpy, || (x.XGetGeometry)(dpy, d, &mut root, &mut px, &mut py, &mut w, &mut h, &mut bw, &mut depth));
-    if ok == 0 || failed {
-        return None;
-    }
-    Some(((w as usize).clamp(1, MAX_SIZE), (h as usize).clamp(1, MAX_SIZE)))
-}
-
-/// An X drawable as a place to put finished frames: XPutImage of the
-/// framebuffer, rows flipped to X's top-down order, pixels in the visual's
-/// channel masks.
-pub struct XSurface {
-    dpy: *mut Display,
-    drawable: Xid,
-    gc: xlib::Gc,
-    depth: c_int,
-    masks: [c_ulong; 3],
-    pixels: Vec<u32>,
-}
-
-impl XSurface {
-    unsafe fn new(dpy: *mut Display, drawable: Xid, config: &FbConfig) -> Option<XSurface> {
-        let x = xlib()?;
-        let gc = (x.XCreateGC)(dpy, drawable, 0, null_mut());
-        if gc.is_null() {
-            return None;
-        }
-        Some(XSurface { dpy, drawable, gc, depth: config.depth, masks: config.masks, pixels: Vec::new() })
-    }
-
-    fn put(&mut self, fb: &Framebuffer) {
-        crate::winsys::dump::frame(fb);
-        let Some(x) = xlib() else { return };
-        let (w, h) = (fb.width, fb.height);
-        if w == 0 || h == 0 {
-            return;
-        }
-        let shift = |m: c_ulong| m.trailing_zeros();
-        let [rs, gs, bs] = self.masks.map(shift);
-        // On a depth-32 visual the bits outside R, G and B hold alpha.
-        let rest = !(self.masks[0] | self.masks[1] | self.masks[2]) & 0xffff_ffff;
-        let alpha = if self.depth == 32 && is_8bit(rest) { Some(shift(rest)) } else { None };
-        self.pixels.clear();
-        self.pixels.reserve(w * h);
-        for y in (0..h).rev() {
-            let row = &fb.front()[fb.index(0, y)..fb.index(0, y) + w];
-            for c in row {
-                let mut p = ((c[0] as u32) << rs) | ((c[1] as u32) << gs) | ((c[2] as u32) << bs);
-                if let Some(s) = alpha {
-                    p |= (c[3] as u32) << s;
-                }
-                self.pixels.push(p);
-            }
-        }
-        let mut img = XImage {
-            width: w as c_int,
-            height: h as c_int,
-            xoffset: 0,
-            format: xlib::ZPixmap,
-            data: self.pixels.as_mut_ptr() as *mut c_char,
-            byte_order: if cfg!(target_endian = "little") { xlib::LSBFirst } else { xlib::MSBFirst },
-            bitmap_unit: 32,
-            bitmap_bit_order: xlib::LSBFirst,
-            bitmap_pad: 32,
-            depth: self.depth,
-            bytes_per_line: (w * 4) as c_int,
-            bits_per_pixel: 32,
-            red_mask: self.masks[0],
-            green_mask: self.masks[1],
-            blue_mask: self.masks[2],
-            obdata: null_mut(),
-            funcs: [null_mut(); 6],
-        };
-        // SAFETY: img describes self.pixels, which outlives the call; the
-        // display and drawable were valid at MakeCurrent.
-        unsafe {
-            if (x.XInitImage)(&mut img) == 0 {
-                return;
-            }
-            (x.XPutImage)(self.dpy, self.drawable, self.gc, &mut img, 0, 0, 0, 0, w as c_uint, h as c_uint);
-            (x.XFlush)(self.dpy);
-        }
-    }
-}
-
-impl Drop for XSurface {
-    fn drop(&mut self) {
-        if let Some(x) = xlib() {
-            // SAFETY: the GC was made on this display, which the program
-            // must keep open while a context is bound to its drawables.
-            unsafe { (x.XFreeGC)(self.dpy, self.gc) };
-        }
-    }
-}
-
-/// Presents at glFlush/glFinish (single-buffered drawables).
-struct OnFlush(Rc<RefCell<XSurface>>);
+/// Presents at glFlush/glFinish (single-buffered drawables, or a drawn
+/// front buffer).
+struct OnFlush(Arc<Drawable>);
 
 impl Present for OnFlush {
     fn present(&mut self, fb: &Framebuffer) {
-        self.0.borrow_mut().put(fb);
+        self.0.present(fb);
     }
 }
 
@@ -716,9 +603,9 @@ pub struct GlxContext {
     dpy: *mut Display,
     draw: Xid,
     read: Xid,
-    /// The bound drawable, and whether it shows frames at SwapBuffers
-    /// (double-buffered window) rather than at glFlush.
-    surface: Option<(Rc<RefCell<XSurface>>, bool)>,
+    /// The bound drawables (kept alive while bound, even if destroyed).
+    bound_draw: Option<Arc<Drawable>>,
+    bound_read: Option<Arc<Drawable>>,
     /// Current in some thread (GLX 1.4 section 3.3.7: a context is current
     /// in at most one thread).
     bound: AtomicBool,
@@ -742,7 +629,17 @@ unsafe fn new_context(dpy: *mut Display, config: Option<&'static FbConfig>) -> *
     }
     let mut gl = Context::new(c.framebuffer_config());
     gl.set_double_buffered(c.double);
-    Box::into_raw(Box::new(GlxContext { gl, config: *c, dpy, draw: 0, read: 0, surface: None, bound: AtomicBool::new(false), destroy_pending: AtomicBool::new(false) }))
+    Box::into_raw(Box::new(GlxContext {
+        gl,
+        config: *c,
+        dpy,
+        draw: 0,
+        read: 0,
+        bound_draw: None,
+        bound_read: None,
+        bound: AtomicBool::new(false),
+        destroy_pending: AtomicBool::new(false),
+    }))
 }
 
 /// Joins a new context to `share`'s objects (display lists, textures,
@@ -765,7 +662,97 @@ pub unsafe fn create_new_context(dpy: *mut Display, config: *const FbConfig, ren
     with_share(new_context(dpy, Some(&*config)), share)
 }
 
-/// Unbinds the calling thread's current context from its drawable,
+pub const GLX_CONTEXT_MAJOR_VERSION_ARB: c_int = 0x2091;
+pub const GLX_CONTEXT_MINOR_VERSION_ARB: c_int = 0x2092;
+pub const GLX_CONTEXT_FLAGS_ARB: c_int = 0x2094;
+pub const GLX_CONTEXT_PROFILE_MASK_ARB: c_int = 0x9126;
+pub const GLX_CONTEXT_DEBUG_BIT_ARB: c_int = 0x1;
+pub const GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB: c_int = 0x2;
+pub const GLX_CONTEXT_CORE_PROFILE_BIT_ARB: c_int = 0x1;
+pub const GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB: c_int = 0x2;
+pub const GLX_COLOR_INDEX_TYPE: c_int = 0x8015;
+/// GLX error numbers (from the extension's first error).
+const GLX_BAD_CONTEXT_ERROR: u8 = 0;
+const GLX_BAD_FBCONFIG_ERROR: u8 = 9;
+const GLX_BAD_PROFILE_ARB_ERROR: u8 = 13;
+/// X_GLXCreateContextAttribsARB, the request errors are reported for.
+const X_GLX_CREATE_CONTEXT_ATTRIBS_ARB: u16 = 34;
+
+/// Whether `c` is one of the configs softgl handed out.
+fn is_config(c: *const FbConfig) -> bool {
+    lock().lists.iter().any(|(_, _, l)| l.iter().any(|&k| std::ptr::eq(k, c)))
+}
+
+/// What glXCreateContextAttribsARB was asked for, checked.
+fn check_context_attribs(req: &[(c_int, c_int)]) -> Result<(), xlib::GlxError> {
+    use xlib::GlxError::*;
+    let (mut major, mut minor, mut flags, mut profile, mut render) = (1, 0, 0, GLX_CONTEXT_CORE_PROFILE_BIT_ARB, GLX_RGBA_TYPE);
+    for &(a, v) in req {
+        match a {
+            GLX_CONTEXT_MAJOR_VERSION_ARB => major = v,
+            GLX_CONTEXT_MINOR_VERSION_ARB => minor = v,
+            GLX_CONTEXT_FLAGS_ARB => flags = v,
+            GLX_CONTEXT_PROFILE_MASK_ARB => profile = v,
+            GLX_RENDER_TYPE => render = v,
+            _ => return Err(BadValue), // not an attribute of the extension
+        }
+    }
+    if flags & !(GLX_CONTEXT_DEBUG_BIT_ARB | GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) != 0 {
+        return Err(BadValue);
+    }
+    // Exactly one of the two profiles (checked whatever the version,
+    // though the mask only matters from 3.2 on).
+    if profile != GLX_CONTEXT_CORE_PROFILE_BIT_ARB && profile != GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB {
+        return Err(Glx(GLX_BAD_PROFILE_ARB_ERROR));
+    }
+    if render != GLX_RGBA_TYPE && render != GLX_COLOR_INDEX_TYPE {
+        return Err(BadValue);
+    }
+    // OpenGL versions that exist; forward-compatible contexts exist from
+    // 3.0 on (the extension's list of invalid combinations).
+    let defined = match major {
+        1 => (0..=5).contains(&minor),
+        2 => (0..=1).contains(&minor),
+        3 => (0..=3).contains(&minor),
+        4 => (0..=6).contains(&minor),
+        _ => false,
+    };
+    if !defined || (flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB != 0 && major < 3) || (render == GLX_COLOR_INDEX_TYPE && major >= 3) {
+        return Err(BadMatch);
+    }
+    // A defined version above softgl's 1.5, or colour index: no config
+    // supports it.
+    if major > 1 || render == GLX_COLOR_INDEX_TYPE {
+        return Err(Glx(GLX_BAD_FBCONFIG_ERROR));
+    }
+    Ok(())
+}
+
+/// glXCreateContextAttribsARB (GLX_ARB_create_context and
+/// GLX_ARB_create_context_profile): versions 1.0 to 1.5, the debug flag
+/// (no effect) and either profile (which only versions from 3.2 on look
+/// at). Anything else returns NULL with the error the extension names,
+/// reported to the program's X error handler.
+pub unsafe fn create_context_attribs(dpy: *mut Display, config: *const FbConfig, share: *mut GlxContext, _direct: Bool, list: *const c_int) -> *mut GlxContext {
+    if dpy.is_null() {
+        return null_mut();
+    }
+    let fail = |e| {
+        xlib::report_error(dpy, e, X_GLX_CREATE_CONTEXT_ATTRIBS_ARB);
+        null_mut()
+    };
+    if config.is_null() || !is_config(config) {
+        return fail(xlib::GlxError::Glx(GLX_BAD_FBCONFIG_ERROR));
+    }
+    let Some(req) = attribs(list, false) else { return fail(xlib::GlxError::BadValue) };
+    if let Err(e) = check_context_attribs(&req) {
+        return fail(e);
+    }
+    let _ = GLX_BAD_CONTEXT_ERROR; // share contexts are not checked: GLXContext handles are pointers
+    with_share(new_context(dpy, Some(&*config)), share)
+}
+
+/// Unbinds the calling thread's current context from its drawables,
 /// delivering a single-buffered image (the implicit glFlush of section
 /// 3.3.7), and frees it if its destruction was deferred.
 fn release_current() {
@@ -779,11 +766,14 @@ fn release_current() {
     // it is released.
     unsafe {
         let ctx = &mut *cur;
-        if ctx.surface.is_some() {
-            ctx.gl.flush();
+        if ctx.gl.surface.is_some() {
+            bound::with_bound(&mut ctx.gl, |gl| gl.flush());
         }
         ctx.gl.surface = None;
-        ctx.surface = None;
+        ctx.gl.bound = None;
+        ctx.gl.read_fb = None;
+        ctx.bound_draw = None;
+        ctx.bound_read = None;
         ctx.draw = 0;
         ctx.read = 0;
         ctx.bound.store(false, Ordering::Release);
@@ -805,44 +795,43 @@ pub unsafe fn make_context_current(dpy: *mut Display, draw: Xid, read: Xid, ctx:
         return 0;
     }
     let c = &mut *ctx;
-    let Some((w, h)) = geometry(dpy, draw) else { return 0 };
+    let config: &'static FbConfig = match configs(dpy, c.config.screen).into_iter().find(|f| f.id == c.config.id) {
+        Some(f) => f,
+        None => return 0,
+    };
+    let Some(d) = drawable::for_binding(dpy, draw, config) else { return 0 };
+    let r = if read == draw { d.clone() } else { match drawable::for_binding(dpy, read, config) { Some(r) => r, None => return 0 } };
+    let Some(size) = d.size() else { return 0 };
+    let read_size = if read == draw { None } else { match r.size() { Some(s) => Some(s), None => return 0 } };
     let prev = current_glx();
     if prev == ctx && c.dpy == dpy && c.draw == draw && c.read == read {
         // Already bound here (freeglut rebinds before every callback): only
         // follow a resize.
-        if (w, h) != (c.gl.fb.width, c.gl.fb.height) {
-            if c.gl.fb.resize(w, h).is_err() {
-                return 0;
-            }
-            c.gl.surface_resized(w as GLint, h as GLint);
-        }
-        return 1;
+        let ok = d.follow_size(size) && read_size.is_none_or(|s| r.follow_size(s));
+        return ok as Bool;
     }
     if prev != ctx && c.bound.load(Ordering::Acquire) {
         return 0; // BadAccess: current in another thread
     }
-    // Reading from another drawable than the one drawn to is not supported
-    // yet: both are the context's one framebuffer.
     release_current();
-    if c.gl.fb.resize(w, h).is_err() {
+    if !d.follow_size(size) || !read_size.is_none_or(|s| r.follow_size(s)) {
         return 0;
     }
-    if pbuffer(dpy, draw).is_some() {
-        // Nothing to show: the pixels stay in the framebuffer, read back
-        // with glReadPixels.
-        c.gl.surface = None;
-        c.surface = None;
-    } else {
-        let Some(surface) = XSurface::new(dpy, draw, &c.config) else { return 0 };
-        let surface = Rc::new(RefCell::new(surface));
-        let double = c.config.double && !is_pixmap(dpy, draw);
-        c.gl.surface = Some(Box::new(OnFlush(surface.clone())));
-        c.surface = Some((surface, double));
+    if c.config.double && !d.make_double() {
+        return 0;
     }
+    if !d.ensure_surface() {
+        return 0;
+    }
+    c.gl.surface = if d.kind == Kind::Window || d.kind == Kind::Pixmap { Some(Box::new(OnFlush(d.clone()))) } else { None };
+    c.gl.bound = Some(Binding { draw: d.fb.clone(), read: (read != draw).then(|| r.fb.clone()) });
+    c.gl.read_fb = (read != draw).then(|| Framebuffer::new(c.config.framebuffer_config()));
+    c.bound_draw = Some(d);
+    c.bound_read = Some(r);
     c.dpy = dpy;
     c.draw = draw;
     c.read = read;
-    c.gl.surface_resized(w as GLint, h as GLint);
+    c.gl.surface_resized(size.0 as GLint, size.1 as GLint);
     c.bound.store(true, Ordering::Release);
     CURRENT_GLX.with(|cell| cell.set(ctx));
     current::set_current(&mut c.gl);
@@ -866,34 +855,23 @@ pub unsafe fn destroy_context(_dpy: *mut Display, ctx: *mut GlxContext) {
     }
 }
 
+/// glXSwapBuffers (section 3.3.10): swaps the drawable's buffers, whichever
+/// contexts are bound to it; then follows a window's resize for the next
+/// frame. A drawable softgl has never bound has nothing to show.
 pub unsafe fn swap_buffers(dpy: *mut Display, drawable: Xid) {
     let cur = current_glx();
-    if cur.is_null() {
+    if !cur.is_null() && (*cur).draw == drawable && (*cur).gl.in_begin_end() {
         return;
     }
-    let c = &mut *cur;
-    if c.draw != drawable || c.dpy != dpy || c.gl.in_begin_end() {
-        return;
-    }
-    let Some((surface, double)) = c.surface.clone() else {
-        // A pbuffer: no window to show; a double-buffered one still swaps.
-        if pbuffer(dpy, drawable).is_some() {
-            c.gl.swap_buffers();
-        }
-        return;
-    };
-    if !double {
-        return; // no effect on a single-buffered drawable (section 3.3.10)
-    }
-    let _ = surface;
-    c.gl.swap_buffers();
-    // Follow a resize for the next frame.
-    if let Some((w, h)) = geometry(dpy, drawable) {
-        if (w, h) != (c.gl.fb.width, c.gl.fb.height) && c.gl.fb.resize(w, h).is_ok() {
-            c.gl.surface_resized(w as GLint, h as GLint);
+    let Some(d) = drawable::find(dpy, drawable) else { return };
+    d.swap();
+    if d.kind == Kind::Window {
+        if let Some(size) = d.size() {
+            d.follow_size(size);
         }
     }
 }
+
 
 pub fn is_direct(_dpy: *mut Display, ctx: *mut GlxContext) -> Bool {
     (!ctx.is_null()) as Bool
@@ -936,8 +914,8 @@ pub fn wait_gl() {
     let c = current_glx();
     if !c.is_null() {
         unsafe {
-            if (*c).surface.is_some() {
-                (*c).gl.flush();
+            if (*c).gl.surface.is_some() {
+                bound::with_bound(&mut (*c).gl, |gl| gl.flush());
             }
         }
     }
@@ -970,31 +948,42 @@ pub unsafe fn query_context(_dpy: *mut Display, ctx: *mut GlxContext, attrib: c_
 }
 
 /// glXQueryDrawable: GLX_WIDTH and GLX_HEIGHT (of the X drawable, or the
-/// pbuffer's as created); for pbuffers also GLX_PRESERVED_CONTENTS,
-/// GLX_LARGEST_PBUFFER and GLX_FBCONFIG_ID.
+/// pbuffer's as created); for pbuffers also GLX_PRESERVED_CONTENTS and
+/// GLX_LARGEST_PBUFFER; GLX_FBCONFIG_ID for drawables softgl knows.
+/// GLXBadDrawable for anything else.
 pub unsafe fn query_drawable(dpy: *mut Display, d: Xid, attrib: c_int, value: *mut c_uint) {
     if value.is_null() {
         return;
     }
-    if let Some(p) = pbuffer(dpy, d) {
+    let rec = drawable::find(dpy, d);
+    if let Some(Kind::Pbuffer { width, height, preserved, largest }) = rec.as_ref().map(|r| r.kind) {
         match attrib {
-            GLX_WIDTH => *value = p.width as c_uint,
-            GLX_HEIGHT => *value = p.height as c_uint,
-            GLX_PRESERVED_CONTENTS => *value = p.preserved as c_uint,
-            GLX_LARGEST_PBUFFER => *value = p.largest as c_uint,
-            GLX_FBCONFIG_ID => *value = p.config.id as c_uint,
+            GLX_WIDTH => *value = width as c_uint,
+            GLX_HEIGHT => *value = height as c_uint,
+            GLX_PRESERVED_CONTENTS => *value = preserved as c_uint,
+            GLX_LARGEST_PBUFFER => *value = largest as c_uint,
+            GLX_FBCONFIG_ID => *value = rec.unwrap().config.id as c_uint,
             _ => {}
         }
         return;
     }
-    if let Some((w, h)) = geometry(dpy, d) {
+    let Some((w, h)) = drawable::x_geometry(dpy, d) else {
+        return xlib::report_error(dpy, xlib::GlxError::Glx(GLX_BAD_DRAWABLE_ERROR), X_GLX_GET_DRAWABLE_ATTRIBUTES);
+    };
+    {
         match attrib {
             GLX_WIDTH => *value = w as c_uint,
             GLX_HEIGHT => *value = h as c_uint,
+            GLX_FBCONFIG_ID => {
+                if let Some(r) = rec {
+                    *value = r.config.id as c_uint;
+                }
+            }
             _ => {}
         }
     }
 }
+
 
 /// glXCopyContext (GLX 1.4 section 3.3.7): the attribute groups of `mask`
 /// (as glPushAttrib saves them, gl::attrib) from `src` to `dst`. Nothing

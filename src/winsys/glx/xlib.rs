@@ -113,6 +113,20 @@ pub struct Xlib {
     pub XSync: unsafe extern "C" fn(*mut Display, c_int) -> c_int,
     pub XQueryExtension: unsafe extern "C" fn(*mut Display, *const c_char, *mut c_int, *mut c_int, *mut c_int) -> c_int,
     pub XScreenCount: unsafe extern "C" fn(*mut Display) -> c_int,
+    pub XConnectionNumber: unsafe extern "C" fn(*mut Display) -> c_int,
+    pub XNextRequest: unsafe extern "C" fn(*mut Display) -> c_ulong,
+}
+
+/// XErrorEvent (Xlib.h).
+#[repr(C)]
+pub struct XErrorEvent {
+    pub kind: c_int,
+    pub display: *mut Display,
+    pub resourceid: Xid,
+    pub serial: c_ulong,
+    pub error_code: u8,
+    pub request_code: u8,
+    pub minor_code: u8,
 }
 
 unsafe fn sym<T: Copy>(lib: *mut c_void, name: &[u8]) -> Option<T> {
@@ -145,6 +159,8 @@ unsafe fn load() -> Option<Xlib> {
         XSync: sym(lib, b"XSync\0")?,
         XQueryExtension: sym(lib, b"XQueryExtension\0")?,
         XScreenCount: sym(lib, b"XScreenCount\0")?,
+        XConnectionNumber: sym(lib, b"XConnectionNumber\0")?,
+        XNextRequest: sym(lib, b"XNextRequest\0")?,
     })
 }
 
@@ -153,6 +169,44 @@ unsafe fn load() -> Option<Xlib> {
 pub fn xlib() -> Option<&'static Xlib> {
     static X: OnceLock<Option<Xlib>> = OnceLock::new();
     X.get_or_init(|| unsafe { load() }).as_ref()
+}
+
+/// XShmSegmentInfo (XShm.h).
+#[repr(C)]
+pub struct XShmSegmentInfo {
+    pub shmseg: Xid,
+    pub shmid: c_int,
+    pub shmaddr: *mut c_char,
+    pub readOnly: c_int,
+}
+
+/// The MIT-SHM entry points of libXext (XShm.h), for presenting through
+/// shared memory.
+pub struct Xext {
+    pub XShmQueryExtension: unsafe extern "C" fn(*mut Display) -> c_int,
+    pub XShmAttach: unsafe extern "C" fn(*mut Display, *mut XShmSegmentInfo) -> c_int,
+    pub XShmDetach: unsafe extern "C" fn(*mut Display, *mut XShmSegmentInfo) -> c_int,
+    pub XShmPutImage: unsafe extern "C" fn(*mut Display, Xid, Gc, *mut XImage, c_int, c_int, c_int, c_int, c_uint, c_uint, c_int) -> c_int,
+}
+
+unsafe fn load_xext() -> Option<Xext> {
+    let lib = libc::dlopen(c"libXext.so.6".as_ptr(), libc::RTLD_LAZY | libc::RTLD_LOCAL);
+    if lib.is_null() {
+        return None;
+    }
+    Some(Xext {
+        XShmQueryExtension: sym(lib, b"XShmQueryExtension\0")?,
+        XShmAttach: sym(lib, b"XShmAttach\0")?,
+        XShmDetach: sym(lib, b"XShmDetach\0")?,
+        XShmPutImage: sym(lib, b"XShmPutImage\0")?,
+    })
+}
+
+/// libXext, loaded the first time a surface may use MIT-SHM; None when it
+/// is not installed (then presenting uses XPutImage).
+pub fn xext() -> Option<&'static Xext> {
+    static X: OnceLock<Option<Xext>> = OnceLock::new();
+    X.get_or_init(|| unsafe { load_xext() }).as_ref()
 }
 
 static TRAPPED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
@@ -177,4 +231,60 @@ pub unsafe fn trap_errors<R>(x: &Xlib, dpy: *mut Display, f: impl FnOnce() -> R)
     (x.XSync)(dpy, 0);
     (x.XSetErrorHandler)(old);
     (r, TRAPPED.swap(false, std::sync::atomic::Ordering::Relaxed))
+}
+
+/// The errors GLX functions generate (GLX 1.4 section 3.3; the X errors
+/// of the core protocol, or GLX's own, numbered from the GLX extension's
+/// first error).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GlxError {
+    BadValue,
+    BadMatch,
+    BadAlloc,
+    /// GLXBadContext, GLXBadFBConfig (9), GLXBadProfileARB (13), ...
+    Glx(u8),
+}
+
+/// Reports `err` for GLX request `minor` to the program's X error handler,
+/// as a direct-rendering GLX library does for errors it finds itself.
+/// (Not through Xlib's internal _XError, which needs the display's
+/// internal lock held, something only Xlib's macros can take.)
+/// GLX's own errors need the server's GLX extension (for their numbers);
+/// without it they are not reported.
+pub unsafe fn report_error(dpy: *mut Display, err: GlxError, minor: u16) {
+    let Some(x) = xlib() else { return };
+    if dpy.is_null() {
+        return;
+    }
+    let (mut major, mut first_event, mut first_error) = (0, 0, 0);
+    let has_glx = (x.XQueryExtension)(dpy, c"GLX".as_ptr(), &mut major, &mut first_event, &mut first_error) != 0;
+    let code = match err {
+        GlxError::BadValue => 2,
+        GlxError::BadMatch => 8,
+        GlxError::BadAlloc => 11,
+        GlxError::Glx(n) if has_glx => (first_error + n as c_int) as u8,
+        GlxError::Glx(_) => return,
+    };
+    let mut e = XErrorEvent {
+        kind: 0,
+        display: dpy,
+        resourceid: 0,
+        // The last request sent: the error belongs to the GLX call made now.
+        serial: (x.XNextRequest)(dpy).wrapping_sub(1),
+        error_code: code,
+        request_code: major as u8,
+        minor_code: minor as u8,
+    };
+    // The program's handler, called as Xlib would (without the display
+    // lock held); Xlib's default one prints the error and exits, as for
+    // any X error.
+    let handler = {
+        let _g = TRAP.lock().unwrap_or_else(|e| e.into_inner());
+        let h = (x.XSetErrorHandler)(None);
+        (x.XSetErrorHandler)(h);
+        h
+    };
+    if let Some(h) = handler {
+        h(dpy, &mut e as *mut XErrorEvent as *mut c_void);
+    }
 }

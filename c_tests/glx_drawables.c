@@ -1,0 +1,565 @@
+/* GLX drawables, contexts and presenting beyond the basics of glx_window.c:
+ *
+ *   shm       frames go through MIT-SHM (a System V segment is mapped in
+ *             this process, sized to the window, re-made on resize) and
+ *             reach the window correctly; with SOFTGL_NO_SHM=1 none is
+ *             mapped and XPutImage shows the same pixels
+ *   attribs   glXCreateContextAttribsARB: advertised, found by
+ *             glXGetProcAddress, GL 1.0-1.5 contexts work, everything else
+ *             is NULL with the error GLX_ARB_create_context names
+ *   multi     several contexts on one window, in one thread and in two:
+ *             they all draw into the window's one framebuffer
+ *   read      glXMakeContextCurrent with a read drawable other than the
+ *             draw one: glReadPixels and glCopyPixels read the read one
+ *   pbuffer   a pbuffer current in two contexts of a share group
+ *   pixmap    a double-buffered GLXPixmap keeps a front buffer (what the X
+ *             pixmap shows) beside its back buffer
+ *   bench W H N   N glXSwapBuffers of a WxH window: ms per present
+ *
+ * Run by c_tests/t_glx.sh on its Xvfb. Exit status: number of failures. */
+#define _GNU_SOURCE
+#include <GL/gl.h>
+#include <GL/glx.h>
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static int failures;
+#define CHECK(cond, ...)                                   \
+    do {                                                   \
+        if (!(cond)) {                                     \
+            printf("  failure (line %d): ", __LINE__);     \
+            printf(__VA_ARGS__);                           \
+            printf("\n");                                  \
+            failures++;                                    \
+        }                                                  \
+    } while (0)
+
+static Display *dpy;
+static XVisualInfo *vi;
+static GLXFBConfig cfg;
+
+static int shift_of(unsigned long m)
+{
+    int s = 0;
+    while (m && !(m & 1)) {
+        m >>= 1;
+        s++;
+    }
+    return s;
+}
+
+/* The pixel at GL coordinates (x, y) of an X drawable of height h. */
+static unsigned long x_pixel(Drawable d, int x, int y, int h, int rgb[3])
+{
+    XImage *img = XGetImage(dpy, d, x, h - 1 - y, 1, 1, AllPlanes, ZPixmap);
+    if (!img) {
+        rgb[0] = rgb[1] = rgb[2] = -1;
+        return 0;
+    }
+    unsigned long p = XGetPixel(img, 0, 0);
+    rgb[0] = (p & vi->red_mask) >> shift_of(vi->red_mask);
+    rgb[1] = (p & vi->green_mask) >> shift_of(vi->green_mask);
+    rgb[2] = (p & vi->blue_mask) >> shift_of(vi->blue_mask);
+    XDestroyImage(img);
+    return p;
+}
+
+static void expect_x(Drawable d, int x, int y, int h, int r, int g, int b, const char *what)
+{
+    int c[3];
+    x_pixel(d, x, y, h, c);
+    CHECK(c[0] == r && c[1] == g && c[2] == b, "%s: X pixel (%d,%d) is %d,%d,%d, expected %d,%d,%d", what, x, y, c[0], c[1], c[2], r, g, b);
+}
+
+static void expect_gl(int x, int y, int r, int g, int b, const char *what)
+{
+    unsigned char p[4] = {0, 0, 0, 0};
+    glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+    CHECK(p[0] == r && p[1] == g && p[2] == b, "%s: glReadPixels(%d,%d) is %d,%d,%d, expected %d,%d,%d", what, x, y, p[0], p[1], p[2], r, g, b);
+}
+
+static Window make_window(int w, int h)
+{
+    XSetWindowAttributes a;
+    a.colormap = XCreateColormap(dpy, RootWindow(dpy, vi->screen), vi->visual, AllocNone);
+    a.border_pixel = 0;
+    a.background_pixmap = None;
+    Window win = XCreateWindow(dpy, RootWindow(dpy, vi->screen), 0, 0, w, h, 0, vi->depth, InputOutput, vi->visual, CWColormap | CWBorderPixel | CWBackPixmap, &a);
+    XMapWindow(dpy, win);
+    XSync(dpy, False);
+    return win;
+}
+
+static GLXContext new_context(GLXContext share)
+{
+    return glXCreateNewContext(dpy, cfg, GLX_RGBA_TYPE, share, True);
+}
+
+static void rect(float x0, float y0, float x1, float y1, int w, int h)
+{
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, w, 0, h, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glRectf(x0, y0, x1, y1);
+}
+
+/* Bytes of System V shared memory mapped in this process (/proc/self/maps
+ * names such mappings "/SYSV<key>"). */
+static long sysv_mapped(void)
+{
+    FILE *f = fopen("/proc/self/maps", "r");
+    char line[512];
+    long total = 0;
+    if (!f)
+        return -1;
+    while (fgets(line, sizeof line, f)) {
+        unsigned long a, b;
+        if (strstr(line, "/SYSV") && sscanf(line, "%lx-%lx", &a, &b) == 2)
+            total += (long)(b - a);
+    }
+    fclose(f);
+    return total;
+}
+
+static void run_shm(void)
+{
+    int no_shm = getenv("SOFTGL_NO_SHM") && strcmp(getenv("SOFTGL_NO_SHM"), "0") != 0;
+    int w = 160, h = 120;
+    Window win = make_window(w, h);
+    GLXContext ctx = new_context(NULL);
+    CHECK(glXMakeCurrent(dpy, win, ctx), "glXMakeCurrent");
+    long before = sysv_mapped();
+    glClearColor(0, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glColor3ub(255, 128, 0);
+    rect(10, 20, 50, 60, w, h);
+    glXSwapBuffers(dpy, win);
+    XSync(dpy, False);
+    expect_x(win, 30, 40, h, 255, 128, 0, "shm: rectangle");
+    expect_x(win, 100, 100, h, 0, 0, 255, "shm: background");
+    expect_x(win, 10, 20, h, 255, 128, 0, "shm: rectangle corner (rows not flipped wrong)");
+    long seg = sysv_mapped() - before;
+    long need = (long)w * h * 4;
+    if (no_shm)
+        CHECK(seg == 0, "SOFTGL_NO_SHM=1 but %ld bytes of SysV memory are mapped", seg);
+    else
+        CHECK(seg >= need && seg < need + 8192, "no MIT-SHM segment of %ld bytes mapped (%ld)", need, seg);
+    /* A resize: the segment is made again at the new size. */
+    XResizeWindow(dpy, win, 200, 150);
+    XSync(dpy, False);
+    glXSwapBuffers(dpy, win); /* follows the size for the next frame */
+    w = 200, h = 150;
+    glViewport(0, 0, w, h);
+    glClearColor(0, 1, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glColor3ub(255, 0, 255);
+    rect(150, 100, 190, 140, w, h);
+    glXSwapBuffers(dpy, win);
+    XSync(dpy, False);
+    expect_x(win, 170, 120, h, 255, 0, 255, "shm after resize: rectangle");
+    expect_x(win, 5, 5, h, 0, 255, 0, "shm after resize: background");
+    seg = sysv_mapped() - before;
+    need = (long)w * h * 4;
+    if (!no_shm)
+        CHECK(seg >= need && seg < need + 8192, "after a resize: no segment of %ld bytes (%ld mapped)", need, seg);
+    glXMakeCurrent(dpy, None, NULL);
+    glXDestroyContext(dpy, ctx);
+    XDestroyWindow(dpy, win);
+    XSync(dpy, False);
+    printf("  %s: %s\n", no_shm ? "XPutImage" : "MIT-SHM", failures ? "failed" : "ok");
+}
+
+/* ---- GLX_ARB_create_context ---- */
+
+static int last_error, last_request, last_minor;
+static int glx_error_base;
+
+static int on_error(Display *d, XErrorEvent *e)
+{
+    (void)d;
+    last_error = e->error_code;
+    last_request = e->request_code;
+    last_minor = e->minor_code;
+    return 0;
+}
+
+/* Creates a context from `attribs`; expects it to work (err == 0) or to
+ * fail with X error `err` (GLX errors: glx_error_base + n). */
+static void try_attribs(PFNGLXCREATECONTEXTATTRIBSARBPROC create, const int *attribs, int err, const char *what)
+{
+    last_error = 0;
+    GLXContext c = create(dpy, cfg, NULL, True, attribs);
+    XSync(dpy, False);
+    if (err == 0) {
+        CHECK(c != NULL && last_error == 0, "%s: no context (error %d)", what, last_error);
+        if (c) {
+            Window win = make_window(8, 8);
+            CHECK(glXMakeCurrent(dpy, win, c), "%s: glXMakeCurrent", what);
+            const char *v = (const char *)glGetString(GL_VERSION);
+            CHECK(v && strncmp(v, "1.5", 3) == 0, "%s: GL_VERSION %s", what, v ? v : "(null)");
+            glXMakeCurrent(dpy, None, NULL);
+            glXDestroyContext(dpy, c);
+            XDestroyWindow(dpy, win);
+        }
+    } else {
+        CHECK(c == NULL, "%s: made a context", what);
+        CHECK(last_error == err, "%s: X error %d, expected %d", what, last_error, err);
+        int major, ev, er;
+        XQueryExtension(dpy, "GLX", &major, &ev, &er);
+        CHECK(last_error == 0 || (last_request == major && last_minor == 34), "%s: error for request %d.%d, expected GLX (%d).34", what, last_request, last_minor, major);
+    }
+}
+
+static void run_attribs(void)
+{
+    const char *ext = glXQueryExtensionsString(dpy, vi->screen);
+    CHECK(ext && strstr(ext, "GLX_ARB_create_context ") && strstr(ext, "GLX_ARB_create_context_profile"), "extensions: %s", ext ? ext : "(null)");
+    PFNGLXCREATECONTEXTATTRIBSARBPROC create = (PFNGLXCREATECONTEXTATTRIBSARBPROC)glXGetProcAddress((const GLubyte *)"glXCreateContextAttribsARB");
+    CHECK(create != NULL, "glXGetProcAddress(glXCreateContextAttribsARB)");
+    if (!create)
+        return;
+    int major, ev;
+    if (!XQueryExtension(dpy, "GLX", &major, &ev, &glx_error_base)) {
+        printf("  note: the server has no GLX extension: GLX errors are not checked\n");
+        glx_error_base = -1000;
+    }
+    const int bad_fbconfig = glx_error_base + 9, bad_profile = glx_error_base + 13;
+    XErrorHandler old = XSetErrorHandler(on_error);
+    try_attribs(create, NULL, 0, "NULL list");
+    const int empty[] = {None};
+    try_attribs(create, empty, 0, "empty list");
+    for (int minor = 0; minor <= 5; minor++) {
+        int a[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, minor, None};
+        char what[32];
+        snprintf(what, sizeof what, "version 1.%d", minor);
+        try_attribs(create, a, 0, what);
+    }
+    const int debug[] = {GLX_CONTEXT_FLAGS_ARB, GLX_CONTEXT_DEBUG_BIT_ARB, GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB, GLX_RENDER_TYPE, GLX_RGBA_TYPE, None};
+    try_attribs(create, debug, 0, "debug flag, compatibility profile");
+    const int v16[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 6, None};
+    try_attribs(create, v16, BadMatch, "version 1.6");
+    const int v22[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 2, GLX_CONTEXT_MINOR_VERSION_ARB, 2, None};
+    try_attribs(create, v22, BadMatch, "version 2.2");
+    const int v0[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 0, None};
+    try_attribs(create, v0, BadMatch, "version 0.0");
+    const int fwd[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 5, GLX_CONTEXT_FLAGS_ARB, GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB, None};
+    try_attribs(create, fwd, BadMatch, "forward-compatible 1.5");
+    if (glx_error_base >= 0) {
+        const int v20[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 2, GLX_CONTEXT_MINOR_VERSION_ARB, 0, None};
+        try_attribs(create, v20, bad_fbconfig, "version 2.0 (defined, not supported)");
+        const int v33[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB, 3, GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_CORE_PROFILE_BIT_ARB, None};
+        try_attribs(create, v33, bad_fbconfig, "version 3.3 core");
+        const int p0[] = {GLX_CONTEXT_PROFILE_MASK_ARB, 0, None};
+        try_attribs(create, p0, bad_profile, "profile mask 0");
+        const int p3[] = {GLX_CONTEXT_PROFILE_MASK_ARB, 3, None};
+        try_attribs(create, p3, bad_profile, "profile mask core|compatibility");
+    }
+    const int flag8[] = {GLX_CONTEXT_FLAGS_ARB, 8, None};
+    try_attribs(create, flag8, BadValue, "unknown flag");
+    const int unknown[] = {0x2093, 0, None};
+    try_attribs(create, unknown, BadValue, "unknown attribute");
+    XSetErrorHandler(old);
+    printf("  attribs: %s\n", failures ? "failed" : "ok");
+}
+
+/* ---- several contexts on one window ---- */
+
+static Window shared_win;
+static const int MW = 100, MH = 80;
+
+static void *thread_draw(void *arg)
+{
+    GLXContext c = new_context(NULL);
+    if (!glXMakeCurrent(dpy, shared_win, c)) {
+        printf("  failure: thread glXMakeCurrent\n");
+        failures++;
+        return NULL;
+    }
+    glColor3ub(0, 0, 255);
+    rect(60, 10, 90, 40, MW, MH);
+    glFlush();
+    glXMakeCurrent(dpy, None, NULL);
+    glXDestroyContext(dpy, c);
+    (void)arg;
+    return NULL;
+}
+
+static void run_multi(void)
+{
+    shared_win = make_window(MW, MH);
+    GLXContext a = new_context(NULL), b = new_context(NULL);
+    CHECK(glXMakeCurrent(dpy, shared_win, a), "make A current");
+    glClearColor(1, 1, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glColor3ub(255, 0, 0);
+    rect(10, 10, 40, 40, MW, MH);
+    CHECK(glXMakeCurrent(dpy, shared_win, b), "make B current");
+    glColor3ub(0, 255, 0);
+    rect(30, 30, 60, 60, MW, MH);
+    expect_gl(20, 20, 255, 0, 0, "B sees A's rectangle");
+    CHECK(glXMakeCurrent(dpy, shared_win, a), "make A current again");
+    expect_gl(50, 50, 0, 255, 0, "A sees B's rectangle");
+    expect_gl(5, 70, 255, 255, 255, "A's clear");
+    /* Another thread draws with its own context while A stays current here. */
+    pthread_t t;
+    pthread_create(&t, NULL, thread_draw, NULL);
+    pthread_join(t, NULL);
+    expect_gl(75, 25, 0, 0, 255, "A sees the other thread's rectangle");
+    expect_gl(20, 20, 255, 0, 0, "A's rectangle is still there");
+    glXSwapBuffers(dpy, shared_win);
+    XSync(dpy, False);
+    expect_x(shared_win, 75, 25, MH, 0, 0, 255, "window after swap: the thread's rectangle");
+    expect_x(shared_win, 50, 50, MH, 0, 255, 0, "window after swap: B's rectangle");
+    glXMakeCurrent(dpy, None, NULL);
+    glXDestroyContext(dpy, a);
+    glXDestroyContext(dpy, b);
+    XDestroyWindow(dpy, shared_win);
+    printf("  multi: %s\n", failures ? "failed" : "ok");
+}
+
+/* ---- separate read drawable ---- */
+
+static GLXPbuffer pbuffer(int w, int h)
+{
+    int attribs[] = {GLX_PBUFFER_WIDTH, w, GLX_PBUFFER_HEIGHT, h, None};
+    return glXCreatePbuffer(dpy, cfg, attribs);
+}
+
+static void run_read(void)
+{
+    GLXPbuffer pa = pbuffer(64, 64), pb = pbuffer(32, 32);
+    GLXContext c = new_context(NULL);
+    CHECK(pa && pb && c, "pbuffers and context");
+    /* B: blue with a yellow corner. */
+    CHECK(glXMakeContextCurrent(dpy, pb, pb, c), "bind B");
+    glClearColor(0, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glColor3ub(255, 255, 0);
+    rect(0, 0, 8, 8, 32, 32);
+    /* A: grey. */
+    CHECK(glXMakeContextCurrent(dpy, pa, pa, c), "bind A");
+    glClearColor(0.5f, 0.5f, 0.5f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    expect_gl(40, 40, 128, 128, 128, "A cleared");
+    /* Draw A, read B. */
+    CHECK(glXMakeContextCurrent(dpy, pa, pb, c), "draw A read B");
+    CHECK(glXGetCurrentDrawable() == pa && glXGetCurrentReadDrawable() == pb, "current draw/read drawables");
+    expect_gl(20, 20, 0, 0, 255, "glReadPixels reads B");
+    expect_gl(2, 2, 255, 255, 0, "glReadPixels reads B's corner");
+    glViewport(0, 0, 64, 64); /* the first binding (B) set it to 32x32 */
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 64, 0, 64, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glRasterPos2i(40, 40);
+    glCopyPixels(0, 0, 16, 16, GL_COLOR); /* B's (0..16) to A's (40..56) */
+    glColor3ub(255, 0, 0);
+    glRectf(0, 0, 4, 4); /* drawn into A */
+    /* Back to A alone: the copy and the rectangle are there. */
+    CHECK(glXMakeContextCurrent(dpy, pa, pa, c), "bind A again");
+    expect_gl(42, 42, 255, 255, 0, "glCopyPixels brought B's yellow corner into A");
+    expect_gl(52, 52, 0, 0, 255, "glCopyPixels brought B's blue into A");
+    expect_gl(60, 60, 128, 128, 128, "A outside the copy");
+    expect_gl(1, 1, 255, 0, 0, "drawing went to A");
+    CHECK(glXMakeContextCurrent(dpy, pb, pb, c), "bind B again");
+    expect_gl(1, 1, 255, 255, 0, "B unchanged");
+    glXMakeContextCurrent(dpy, None, None, NULL);
+    glXDestroyContext(dpy, c);
+    glXDestroyPbuffer(dpy, pa);
+    glXDestroyPbuffer(dpy, pb);
+    printf("  read: %s\n", failures ? "failed" : "ok");
+}
+
+/* ---- a pbuffer in two contexts of a share group ---- */
+
+static GLXPbuffer shared_pb;
+static GLXContext shared_b;
+static GLuint shared_tex;
+
+static void *thread_pbuffer(void *arg)
+{
+    (void)arg;
+    if (!glXMakeContextCurrent(dpy, shared_pb, shared_pb, shared_b)) {
+        printf("  failure: thread bind of the pbuffer\n");
+        failures++;
+        return NULL;
+    }
+    /* The texture A made, drawn into the pbuffer A drew into. */
+    glEnable(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, shared_tex);
+    glColor3ub(255, 255, 255);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 32, 0, 32, -1, 1);
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0); glVertex2f(16, 16);
+    glTexCoord2f(1, 0); glVertex2f(32, 16);
+    glTexCoord2f(1, 1); glVertex2f(32, 32);
+    glTexCoord2f(0, 1); glVertex2f(16, 32);
+    glEnd();
+    glFinish();
+    glXMakeContextCurrent(dpy, None, None, NULL);
+    return NULL;
+}
+
+static void run_pbuffer(void)
+{
+    shared_pb = pbuffer(32, 32);
+    GLXContext a = new_context(NULL);
+    shared_b = new_context(a);
+    CHECK(glXMakeContextCurrent(dpy, shared_pb, shared_pb, a), "A binds the pbuffer");
+    glClearColor(1, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    static const unsigned char green[4] = {0, 255, 0, 255};
+    glGenTextures(1, &shared_tex);
+    glBindTexture(GL_TEXTURE_2D, shared_tex);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, green);
+    glFinish();
+    /* B in the same thread, while A is released... */
+    CHECK(glXMakeContextCurrent(dpy, shared_pb, shared_pb, shared_b), "B binds the pbuffer");
+    expect_gl(5, 5, 255, 0, 0, "B sees A's clear");
+    glScissor(0, 0, 8, 8);
+    glEnable(GL_SCISSOR_TEST);
+    glClearColor(0, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    glXMakeContextCurrent(dpy, None, None, NULL);
+    /* ... and in another thread while A is current here. */
+    CHECK(glXMakeContextCurrent(dpy, shared_pb, shared_pb, a), "A binds the pbuffer again");
+    expect_gl(2, 2, 0, 0, 255, "A sees B's clear");
+    pthread_t t;
+    pthread_create(&t, NULL, thread_pbuffer, NULL);
+    pthread_join(t, NULL);
+    expect_gl(24, 24, 0, 255, 0, "A sees B's textured quad (shared texture)");
+    expect_gl(10, 10, 255, 0, 0, "A's clear elsewhere");
+    glXMakeContextCurrent(dpy, None, None, NULL);
+    glXDestroyContext(dpy, shared_b);
+    glXDestroyContext(dpy, a);
+    glXDestroyPbuffer(dpy, shared_pb);
+    printf("  pbuffer: %s\n", failures ? "failed" : "ok");
+}
+
+/* ---- a double-buffered GLXPixmap ---- */
+
+static void run_pixmap(void)
+{
+    int w = 40, h = 30;
+    Pixmap px = XCreatePixmap(dpy, RootWindow(dpy, vi->screen), w, h, vi->depth);
+    GLXPixmap gp = glXCreateGLXPixmap(dpy, vi, px);
+    int dbl = 0;
+    glXGetConfig(dpy, vi, GLX_DOUBLEBUFFER, &dbl);
+    CHECK(dbl, "the visual is double-buffered");
+    GLXContext c = glXCreateContext(dpy, vi, NULL, True);
+    CHECK(glXMakeCurrent(dpy, gp, c), "bind the GLXPixmap");
+    GLint db = 0;
+    glGetIntegerv(GL_DRAW_BUFFER, &db);
+    CHECK(db == GL_BACK, "draw buffer %#x, expected GL_BACK", db);
+    glClearColor(0, 1, 0, 1); /* back: green */
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDrawBuffer(GL_FRONT);
+    glClearColor(0, 0, 1, 1); /* front: blue */
+    glClear(GL_COLOR_BUFFER_BIT);
+    glXSwapBuffers(dpy, gp); /* no effect on a pixmap (GLX 1.4 section 3.3.10) */
+    glFinish();
+    XSync(dpy, False);
+    expect_x(px, 5, 5, h, 0, 0, 255, "the X pixmap shows the front buffer");
+    glReadBuffer(GL_BACK);
+    expect_gl(5, 5, 0, 255, 0, "the back buffer is kept");
+    glReadBuffer(GL_FRONT);
+    expect_gl(5, 5, 0, 0, 255, "the front buffer");
+    glXMakeCurrent(dpy, None, NULL);
+    glXDestroyContext(dpy, c);
+    glXDestroyGLXPixmap(dpy, gp);
+    XFreePixmap(dpy, px);
+    printf("  pixmap: %s\n", failures ? "failed" : "ok");
+}
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + t.tv_nsec * 1e-9;
+}
+
+static void run_bench(int w, int h, int n)
+{
+    Window win = make_window(w, h);
+    GLXContext c = new_context(NULL);
+    glXMakeCurrent(dpy, win, c);
+    double total = 0, best = 1e9;
+    for (int i = 0; i < n; i++) {
+        glClearColor((i & 1) ? 1 : 0, 0.5f, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glFinish();
+        double t0 = now();
+        glXSwapBuffers(dpy, win);
+        XSync(dpy, False);
+        double dt = now() - t0;
+        if (i > 0) { /* the first one makes the segment */
+            total += dt;
+            if (dt < best)
+                best = dt;
+        }
+    }
+    printf("present %dx%d (%s): mean %.2f ms, best %.2f ms over %d frames\n", w, h, getenv("SOFTGL_NO_SHM") ? "XPutImage" : "MIT-SHM if available", 1000 * total / (n - 1), 1000 * best, n - 1);
+    glXMakeCurrent(dpy, None, NULL);
+    glXDestroyContext(dpy, c);
+}
+
+int main(int argc, char **argv)
+{
+    const char *mode = argc > 1 ? argv[1] : "shm";
+    dpy = XOpenDisplay(NULL);
+    if (!dpy) {
+        printf("SKIP glx_drawables: cannot open display\n");
+        return 77;
+    }
+    int attribs[] = {GLX_RGBA, GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8, GLX_BLUE_SIZE, 8, GLX_DOUBLEBUFFER, GLX_DEPTH_SIZE, 24, None};
+    vi = glXChooseVisual(dpy, DefaultScreen(dpy), attribs);
+    int fattribs[] = {GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT | GLX_PBUFFER_BIT, GLX_DOUBLEBUFFER, True, GLX_RED_SIZE, 8, None};
+    int n = 0;
+    GLXFBConfig *cs = glXChooseFBConfig(dpy, DefaultScreen(dpy), fattribs, &n);
+    if (!vi || !cs || n == 0) {
+        printf("FAIL glx_drawables: no visual or FBConfig\n");
+        return 1;
+    }
+    /* The config of the chosen visual, so windows made with vi match. */
+    cfg = cs[0];
+    for (int i = 0; i < n; i++) {
+        int id = 0;
+        glXGetFBConfigAttrib(dpy, cs[i], GLX_VISUAL_ID, &id);
+        if ((VisualID)id == vi->visualid) {
+            cfg = cs[i];
+            break;
+        }
+    }
+    if (!strcmp(mode, "shm"))
+        run_shm();
+    else if (!strcmp(mode, "attribs"))
+        run_attribs();
+    else if (!strcmp(mode, "multi"))
+        run_multi();
+    else if (!strcmp(mode, "read"))
+        run_read();
+    else if (!strcmp(mode, "pbuffer"))
+        run_pbuffer();
+    else if (!strcmp(mode, "pixmap"))
+        run_pixmap();
+    else if (!strcmp(mode, "bench") && argc > 4)
+        run_bench(atoi(argv[2]), atoi(argv[3]), atoi(argv[4]));
+    else {
+        printf("unknown mode %s\n", mode);
+        return 2;
+    }
+    XCloseDisplay(dpy);
+    return failures;
+}
