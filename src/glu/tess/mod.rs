@@ -409,6 +409,7 @@ struct Scratch {
     segs: Vec<Seg>,
     grid: Grid,
     split: split::Scratch,
+    sweep: sweep::Scratch,
 }
 
 /// One polygon's tessellation, with a copy of the callbacks it uses.
@@ -623,7 +624,7 @@ impl Job {
             }
         }
         // Merge near-coincident vertices.
-        let Scratch { p2, verts, p3, data, id, segs, grid, split } = sc;
+        let Scratch { p2, verts, p3, data, id, segs, grid, split, sweep: sw } = sc;
         verts.clear();
         p3.clear();
         data.clear();
@@ -657,11 +658,11 @@ impl Job {
         if !split::split_all(verts, grid, segs, &mut comb, split) {
             return;
         }
-        let region = sweep::region(verts, segs, self.rule, self.boundary_only);
+        sweep::region(verts, segs, self.rule, self.boundary_only, sw);
         if self.boundary_only {
-            self.emit_loops(&region.boundary, data);
+            self.emit_loops(&sw.region.boundary, data);
         } else {
-            self.emit_triangles(&region, data);
+            self.emit_triangles(&sw.region, data);
         }
     }
 

@@ -58,10 +58,13 @@ struct Edge {
     lo: usize,
     hi: usize,
     w: i64,
+    /// Pseudo-angle of lo→hi: orders a vertex's outgoing edges.
+    key: f64,
 }
 
 /// The selected region: its boundary edges directed with the region on
 /// their left, and its triangles (counter-clockwise).
+#[derive(Default)]
 pub struct Region {
     pub boundary: Vec<(usize, usize)>,
     pub triangles: Vec<[usize; 3]>,
@@ -90,49 +93,75 @@ fn lex_less(p: [f64; 2], q: [f64; 2]) -> bool {
 }
 
 /// Computes windings and the selected region; triangulates it unless `boundary_only`.
-pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool) -> Region {
+/// Buffers kept from one polygon to the next; `region` leaves its result
+/// in `boundary` and `triangles`.
+#[derive(Default)]
+pub struct Scratch {
+    dir: Vec<(u32, u32, i64)>,
+    edges: Vec<Edge>,
+    order: Vec<u32>,
+    out: Vec<u32>,
+    inc: Vec<u32>,
+    below: Vec<i64>,
+    active1: Vec<(usize, i64)>,
+    bedges: Vec<Edge>,
+    inside_above: Vec<bool>,
+    active2: Vec<(usize, Option<Reg>)>,
+    outs: Vec<(usize, Option<Reg>)>,
+    pub region: Region,
+}
+
+/// Computes windings and the selected region into `sc.region`;
+/// triangulates it unless `boundary_only`.
+pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc: &mut Scratch) {
     let nv = verts.len();
+    let Scratch { dir, edges, order, out, inc, below, active1, bedges, inside_above, active2, outs, region } = sc;
+    let Region { boundary, triangles: tris } = region;
+    boundary.clear();
+    tris.clear();
     // Net multiplicity per undirected edge: sort the directed edges by
     // their ends, add up runs.
-    let mut dir: Vec<(u32, u32, i64)> = segs
-        .iter()
-        .filter(|s| s.a != s.b)
-        .map(|s| if lex_less(verts[s.a].p, verts[s.b].p) { (s.a as u32, s.b as u32, 1) } else { (s.b as u32, s.a as u32, -1) })
-        .collect();
+    dir.clear();
+    dir.extend(
+        segs.iter()
+            .filter(|s| s.a != s.b)
+            .map(|s| if lex_less(verts[s.a].p, verts[s.b].p) { (s.a as u32, s.b as u32, 1) } else { (s.b as u32, s.a as u32, -1) }),
+    );
     dir.sort_unstable_by_key(|e| (e.0, e.1));
-    let mut edges: Vec<Edge> = Vec::with_capacity(dir.len());
+    edges.clear();
     for (k, e) in dir.iter().enumerate() {
         if k > 0 && dir[k - 1].0 == e.0 && dir[k - 1].1 == e.1 {
-            edges.last_mut().unwrap().w += e.2;
+            if let Some(l) = edges.last_mut() {
+                l.w += e.2;
+            }
         } else {
-            edges.push(Edge { lo: e.0 as usize, hi: e.1 as usize, w: e.2 });
+            edges.push(Edge { lo: e.0 as usize, hi: e.1 as usize, w: e.2, key: 0.0 });
         }
     }
     edges.retain(|e| e.w != 0);
     // Each vertex's outgoing edges counter-clockwise from straight down:
     // sorted by lo, then by a pseudo-angle of the direction (monotone in
     // the angle on the half plane lo→hi spans).
-    let angle = |e: &Edge| {
+    for e in edges.iter_mut() {
         let (a, b) = (verts[e.lo].p, verts[e.hi].p);
         let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
         let l = dx + dy.abs();
-        if l > 0.0 {
-            dy / l
-        } else {
-            0.0
-        }
-    };
-    edges.sort_by(|x, y| x.lo.cmp(&y.lo).then(angle(x).total_cmp(&angle(y))).then(x.hi.cmp(&y.hi)));
+        e.key = if l > 0.0 { dy / l } else { 0.0 };
+    }
+    edges.sort_unstable_by(|x, y| x.lo.cmp(&y.lo).then(x.key.total_cmp(&y.key)).then(x.hi.cmp(&y.hi)));
     // Sweep order of vertices.
-    let mut order: Vec<u32> = (0..nv as u32).collect();
+    order.clear();
+    order.extend(0..nv as u32);
     order.sort_unstable_by(|&i, &j| {
         let (p, q) = (verts[i as usize].p, verts[j as usize].p);
         p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1])).then(i.cmp(&j))
     });
     // Outgoing edges of v: es[out[v]..out[v + 1]] (es sorted by lo); incoming counts.
-    let build_out = |es: &[Edge]| {
-        let mut out = vec![0u32; nv + 1];
-        let mut inc = vec![0u32; nv];
+    let build_out = |es: &[Edge], out: &mut Vec<u32>, inc: &mut Vec<u32>| {
+        out.clear();
+        out.resize(nv + 1, 0);
+        inc.clear();
+        inc.resize(nv, 0);
         for e in es {
             out[e.lo + 1] += 1;
             inc[e.hi] += 1;
@@ -140,17 +169,18 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool) -> 
         for v in 0..nv {
             out[v + 1] += out[v];
         }
-        (out, inc)
     };
 
     // Sweep 1: the winding number below every edge.
-    let (out, inc) = build_out(&edges);
-    let mut below = vec![0i64; edges.len()];
+    build_out(edges, out, inc);
+    below.clear();
+    below.resize(edges.len(), 0);
     {
-        let mut active: Vec<(usize, i64)> = Vec::new();
-        for &v in &order {
+        let active = active1;
+        active.clear();
+        for &v in order.iter() {
             let v = v as usize;
-            let pos = locate(&mut active, v, inc[v], verts, |x| edges[x.0].hi, |x| (edges[x.0].lo, edges[x.0].hi));
+            let pos = locate(active, v, inc[v], verts, |x| edges[x.0].hi, |x| (edges[x.0].lo, edges[x.0].hi));
             let mut w = if pos > 0 { active[pos - 1].1 } else { 0 };
             let (o0, o1) = (out[v] as usize, out[v + 1] as usize);
             active.splice(
@@ -164,28 +194,27 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool) -> 
         }
     }
     // The boundary: edges whose two sides differ; "inside above" per edge.
-    let mut bedges = Vec::new();
-    let mut inside_above = Vec::new();
-    let mut boundary = Vec::new();
+    bedges.clear();
+    inside_above.clear();
     for (i, e) in edges.iter().enumerate() {
         let (b, a) = (rule.inside(below[i]), rule.inside(below[i] + e.w));
         if a != b {
-            bedges.push(Edge { lo: e.lo, hi: e.hi, w: e.w });
+            bedges.push(*e);
             inside_above.push(a);
             boundary.push(if a { (e.lo, e.hi) } else { (e.hi, e.lo) });
         }
     }
     if boundary_only {
-        return Region { boundary, triangles: Vec::new() };
+        return;
     }
 
     // Sweep 2: triangulate.
-    let (out, inc) = build_out(&bedges);
-    let mut tris: Vec<[usize; 3]> = Vec::new();
-    let mut active: Vec<(usize, Option<Reg>)> = Vec::new();
-    let mut t = Tri { verts, out: &mut tris };
-    let mut outs: Vec<(usize, Option<Reg>)> = Vec::new();
-    for &v in &order {
+    build_out(bedges, out, inc);
+    let active = active2;
+    active.clear();
+    let mut t = Tri { verts, out: tris };
+    outs.clear();
+    for &v in order.iter() {
         let v = v as usize;
         let (o0, o1) = (out[v] as usize, out[v + 1] as usize);
         if inc[v] == 0 && o0 == o1 {
@@ -197,7 +226,7 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool) -> 
             // The entries ending here (normally one contiguous block).
             let Some(lo) = active.iter().position(|x| bedges[x.0].hi == v) else {
                 // Inconsistent: treat as a start below.
-                insert_start(&mut active, v, &mut outs, &bedges, &inside_above, verts, &mut t);
+                insert_start(active, v, outs, bedges, inside_above, verts, &mut t);
                 continue;
             };
             let hi = active.iter().rposition(|x| bedges[x.0].hi == v).unwrap_or(lo);
@@ -242,10 +271,9 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool) -> 
                 active.splice(lo..lo, outs.drain(..));
             }
         } else {
-            insert_start(&mut active, v, &mut outs, &bedges, &inside_above, verts, &mut t);
+            insert_start(active, v, outs, bedges, inside_above, verts, &mut t);
         }
     }
-    Region { boundary, triangles: tris }
 }
 
 /// Finds where vertex v goes in the active list: removes the entries ending
