@@ -1,7 +1,7 @@
 /* tess_bench: softgl's GLU tessellator against Mesa's libGLU (the SGI
  * tessellator), in one process.
  *
- *   tess_bench [--softgl PATH] [--glu PATH] [--reps N] [--quick] [--only SET,SET] [--out FILE.md]
+ *   tess_bench [--softgl PATH] [--glu PATH] [--reps N] [--quick] [--only SET;SET] [--out FILE.md]
  *
  * Both libraries are loaded with dlopen by path (RTLD_LOCAL, so neither's
  * symbols leak into the other) and driven through the same function
@@ -501,13 +501,13 @@ static double time_set(Glu *g, Set *s)
     return t0 * 1e6 / s->n;
 }
 
-/* Is `name` one of the comma-separated names in `list`? */
+/* Is `name` one of the semicolon-separated names in `list`? */
 static int listed(const char *list, const char *name)
 {
     size_t n = strlen(name);
     const char *p = list;
     while ((p = strstr(p, name))) {
-        if ((p == list || p[-1] == ',') && (p[n] == ',' || p[n] == 0)) return 1;
+        if ((p == list || p[-1] == ';') && (p[n] == ';' || p[n] == 0)) return 1;
         p++;
     }
     return 0;
@@ -534,7 +534,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--quick")) quick = 1;
         else if (!strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
         else {
-            fprintf(stderr, "usage: %s [--softgl PATH] [--glu PATH] [--reps N] [--quick] [--only SET,SET] [--out FILE.md]\n", argv[0]);
+            fprintf(stderr, "usage: %s [--softgl PATH] [--glu PATH] [--reps N] [--quick] [--only SET;SET] [--out FILE.md]\n", argv[0]);
             return 2;
         }
     }
