@@ -16,7 +16,14 @@ pub struct Grid {
     head: Vec<u32>,
     next: Vec<u32>,
     shift: u32,
+    /// Vertices inserted while the grid is small enough to scan them all
+    /// (then no buckets are kept).
+    linear: usize,
+    hashed: bool,
 }
+
+/// Up to this many vertices, lookups scan them all (cheaper than hashing).
+const LINEAR: usize = 24;
 
 #[inline]
 fn cell(x: f64) -> i64 {
@@ -30,6 +37,12 @@ fn cell(x: f64) -> i64 {
 impl Grid {
     /// Empties the grid, sized for about `n` vertices.
     pub fn reset(&mut self, n: usize) {
+        self.linear = 0;
+        self.hashed = false;
+        if n <= LINEAR {
+            return;
+        }
+        self.hashed = true;
         let size = (2 * n).max(16).next_power_of_two();
         self.head.clear();
         self.head.resize(size, NONE);
@@ -45,6 +58,16 @@ impl Grid {
 
     /// The closest vertex within EPS of `p` (the lowest id among equals).
     pub fn find(&self, verts: &[Vert], p: [f64; 2]) -> Option<usize> {
+        if !self.hashed {
+            let mut best: Option<(f64, usize)> = None;
+            for (i, q) in verts[..self.linear.min(verts.len())].iter().enumerate() {
+                let d = (q.p[0] - p[0]).abs().max((q.p[1] - p[1]).abs());
+                if d <= EPS && best.is_none_or(|(bd, _)| d < bd) {
+                    best = Some((d, i));
+                }
+            }
+            return best.map(|b| b.1);
+        }
         let (x0, x1) = (cell(p[0] - EPS), cell(p[0] + EPS));
         let (y0, y1) = (cell(p[1] - EPS), cell(p[1] + EPS));
         let mut best: Option<(f64, usize)> = None;
@@ -68,6 +91,15 @@ impl Grid {
     /// Adds vertex `i`; every vertex below `i` must be in the grid already
     /// (the tessellator inserts each vertex it creates, in order).
     pub fn insert(&mut self, verts: &[Vert], i: usize) {
+        if !self.hashed {
+            if i < LINEAR {
+                self.linear = i + 1;
+                return;
+            }
+            // Outgrown: switch to buckets (rehashing below).
+            self.hashed = true;
+            self.head.clear();
+        }
         if self.next.len() <= i {
             self.next.resize(i + 1, NONE);
         }
