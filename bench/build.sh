@@ -16,3 +16,5 @@ done
 $CC $CFLAGS -w -I c_tests -c c_tests/harness.c -o build/bench/harness.o
 $CC $CFLAGS -I include -I bench bench/scenes.c bench/scenes_features.c $objs build/bench/harness.o \
   -o build/bench/bench_scene $(pkg-config --libs osmesa) -lGLU -lm
+# The GLU tessellator benchmark: loads softgl and Mesa's libGLU with dlopen (no link-time GL/GLU).
+$CC -O2 -std=c99 bench/tess_bench.c -o build/bench/tess_bench -ldl -lm

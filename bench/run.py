@@ -127,6 +127,22 @@ def pct(xs, q):
     return xs[lo] + (xs[hi] - xs[lo]) * (k - lo)
 
 
+def run_tess(quick):
+    """bench/tess_bench.c: softgl's tessellator against Mesa's libGLU -> out/bench/tess.md."""
+    exe = os.path.join(ROOT, "build", "bench", "tess_bench")
+    os.makedirs(OUT, exist_ok=True)
+    if not os.path.exists(exe):
+        print("tess_bench not built: no GLU tessellator benchmark")
+        return
+    glu = next((p for p in ("/usr/lib/x86_64-linux-gnu/libGLU.so.1", "/usr/lib64/libGLU.so.1", "/usr/lib/libGLU.so.1")
+                if os.path.exists(p)), "libGLU.so.1")
+    args = [exe, "--softgl", os.path.join(ROOT, "build", "lib", "libGLU.so.1"), "--glu", glu,
+            "--out", os.path.join(OUT, "tess.md")] + (["--quick"] if quick else [])
+    p = subprocess.run(args, cwd=ROOT)
+    if p.returncode != 0:
+        print(f"tess_bench failed ({p.returncode})")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--reps", type=int, default=3)
@@ -134,7 +150,13 @@ def main():
     ap.add_argument("--scenes", default=",".join(SCENES))
     ap.add_argument("--impls", default=",".join(IMPLS))
     ap.add_argument("--quick", action="store_true", help="one rep, 300x300 only")
+    ap.add_argument("--tess-only", action="store_true", help="only the GLU tessellator against libGLU")
+    ap.add_argument("--no-tess", action="store_true", help="skip the GLU tessellator benchmark")
     a = ap.parse_args()
+    if not a.no_tess:
+        run_tess(a.quick)
+    if a.tess_only:
+        return 0
     if a.quick:
         a.reps, a.sizes = 1, "300x300"
     sizes = [tuple(map(int, s.split("x"))) for s in a.sizes.split(",")]

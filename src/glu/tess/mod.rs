@@ -40,11 +40,15 @@
 //! glu.h describes them; callbacks have the signatures glu.h gives them.
 #![allow(clippy::missing_safety_doc)]
 
+pub mod merge;
+pub mod split;
 pub mod sweep;
 
 use crate::api::types::*;
+use merge::Grid;
+use split::{Combiner, Seg};
 use std::ffi::c_void;
-use sweep::{Combiner, Grid, Rule, Seg, Vert};
+use sweep::{Rule, Vert};
 
 pub const GLU_TESS_BEGIN: GLenum = 100100;
 pub const GLU_TESS_VERTEX: GLenum = 100101;
@@ -113,7 +117,11 @@ pub struct Tess {
     tolerance: f64,
     normal: [f64; 3],
     polygon_data: *mut c_void,
-    contours: Vec<Vec<InVertex>>,
+    /// The polygon's vertices, contour after contour; `starts` holds each
+    /// contour's first index.
+    input: Vec<InVertex>,
+    starts: Vec<usize>,
+    scratch: Scratch,
     busy: bool,
     delete_pending: bool,
 }
@@ -128,7 +136,9 @@ pub fn new_tess() -> *mut c_void {
         tolerance: 0.0,
         normal: [0.0; 3],
         polygon_data: std::ptr::null_mut(),
-        contours: Vec::new(),
+        input: Vec::new(),
+        starts: Vec::new(),
+        scratch: Scratch::default(),
         busy: false,
         delete_pending: false,
     }))
@@ -171,7 +181,8 @@ impl Tess {
                 }
                 (State::InPolygon, _) => {
                     self.error(GLU_TESS_MISSING_END_POLYGON);
-                    self.contours.clear();
+                    self.input.clear();
+                    self.starts.clear();
                     self.state = State::Dormant;
                 }
                 (State::InContour, _) => {
@@ -183,13 +194,14 @@ impl Tess {
     }
 
     fn begin_polygon(&mut self, data: *mut c_void) {
-        self.contours.clear();
+        self.input.clear();
+        self.starts.clear();
         self.state = State::InPolygon;
         self.polygon_data = data;
     }
 
     fn begin_contour(&mut self) {
-        self.contours.push(Vec::new());
+        self.starts.push(self.input.len());
         self.state = State::InContour;
     }
 }
@@ -245,9 +257,7 @@ pub unsafe fn vertex(t: *mut c_void, location: *const f64, data: *mut c_void) {
     if too_large {
         t.error(GLU_TESS_COORD_TOO_LARGE);
     }
-    if let Some(c) = t.contours.last_mut() {
-        c.push(InVertex { p, data });
-    }
+    t.input.push(InVertex { p, data });
 }
 
 pub unsafe fn normal(t: *mut c_void, x: f64, y: f64, z: f64) {
@@ -340,7 +350,9 @@ pub unsafe fn end_polygon(tp: *mut c_void) {
     let Some(t) = get(tp) else { return };
     t.require(State::InPolygon);
     t.state = State::Dormant;
-    let contours = std::mem::take(&mut t.contours);
+    let input = std::mem::take(&mut t.input);
+    let starts = std::mem::take(&mut t.starts);
+    let mut scratch = std::mem::take(&mut t.scratch);
     let job = Job { cb: t.cb, pdata: t.polygon_data, rule: t.rule, boundary_only: t.boundary_only, normal: t.normal };
     t.busy = true;
     // Callbacks run with `busy` set; a panic in our code is caught by the
@@ -358,8 +370,46 @@ pub unsafe fn end_polygon(tp: *mut c_void) {
             }
         }
     }
-    let _reset = Reset(tp as *mut Tess);
-    job.run(&contours);
+    let reset = Reset(tp as *mut Tess);
+    let contours = Contours { input: &input, starts: &starts };
+    job.run(&contours, &mut scratch);
+    // Keep the buffers for the next polygon (unless deleted meanwhile).
+    let t = &mut *reset.0;
+    if !t.delete_pending {
+        t.input = input;
+        t.starts = starts;
+        t.scratch = scratch;
+    }
+    drop(reset);
+}
+
+/// The input as contours: slices of `input` between `starts`.
+struct Contours<'a> {
+    input: &'a [InVertex],
+    starts: &'a [usize],
+}
+
+impl<'a> Contours<'a> {
+    fn iter(&self) -> impl Iterator<Item = &'a [InVertex]> + '_ {
+        (0..self.starts.len()).map(move |k| {
+            let end = self.starts.get(k + 1).copied().unwrap_or(self.input.len());
+            &self.input[self.starts[k]..end]
+        })
+    }
+}
+
+/// Buffers kept in the tessellator object from one polygon to the next.
+#[derive(Default)]
+struct Scratch {
+    p2: Vec<[f64; 2]>,
+    verts: Vec<Vert>,
+    p3: Vec<[f64; 3]>,
+    data: Vec<*mut c_void>,
+    id: Vec<usize>,
+    segs: Vec<Seg>,
+    grid: Grid,
+    split: split::Scratch,
+    sweep: sweep::Scratch,
 }
 
 /// One polygon's tessellation, with a copy of the callbacks it uses.
@@ -482,8 +532,8 @@ impl Job {
         }
     }
 
-    fn run(&self, contours: &[Vec<InVertex>]) {
-        let all = || contours.iter().flatten();
+    fn run(&self, contours: &Contours, sc: &mut Scratch) {
+        let all = || contours.input.iter();
         if all().next().is_none() {
             return;
         }
@@ -494,7 +544,7 @@ impl Job {
         let mut n = self.normal;
         if !(n.iter().all(|x| x.is_finite()) && norm(n) > 0.0) {
             let mut s = [0.0; 3];
-            for c in contours {
+            for c in contours.iter() {
                 for i in 0..c.len() {
                     let a = c[i].p.map(|x| x * k);
                     let b = c[(i + 1) % c.len()].p.map(|x| x * k);
@@ -531,12 +581,14 @@ impl Job {
         let u = u.map(|x| x / lu);
         let v = cross(n, u);
         // Project (scaled), then centre and normalise.
-        let mut p2: Vec<[f64; 2]> = all().map(|q| {
+        let p2 = &mut sc.p2;
+        p2.clear();
+        p2.extend(all().map(|q| {
             let q = q.p.map(|x| x * k);
             [dot(q, u), dot(q, v)]
-        }).collect();
+        }));
         let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for p in &p2 {
+        for p in p2.iter() {
             for i in 0..2 {
                 lo[i] = lo[i].min(p[i]);
                 hi[i] = hi[i].max(p[i]);
@@ -557,7 +609,7 @@ impl Job {
         if auto {
             let mut area = 0.0;
             let mut base = 0;
-            for cont in contours {
+            for cont in contours.iter() {
                 for i in 0..cont.len() {
                     let a = p2[base + i];
                     let b = p2[base + (i + 1) % cont.len()];
@@ -572,26 +624,27 @@ impl Job {
             }
         }
         // Merge near-coincident vertices.
-        let mut verts: Vec<Vert> = Vec::with_capacity(p2.len());
-        let mut p3: Vec<[f64; 3]> = Vec::with_capacity(p2.len());
-        let mut data: Vec<*mut c_void> = Vec::with_capacity(p2.len());
-        let mut grid = Grid::new();
-        let mut id = Vec::with_capacity(p2.len());
+        let Scratch { p2, verts, p3, data, id, segs, grid, split, sweep: sw } = sc;
+        verts.clear();
+        p3.clear();
+        data.clear();
+        id.clear();
+        grid.reset(p2.len());
         for (q, iv) in p2.iter().zip(all()) {
-            match grid.find(&verts, *q) {
+            match grid.find(verts, *q) {
                 Some(i) => id.push(i),
                 None => {
                     verts.push(Vert { p: *q });
                     p3.push(iv.p);
                     data.push(iv.data);
-                    grid.insert(&verts, verts.len() - 1);
+                    grid.insert(verts, verts.len() - 1);
                     id.push(verts.len() - 1);
                 }
             }
         }
-        let mut segs = Vec::new();
+        segs.clear();
         let mut base = 0;
-        for cont in contours {
+        for cont in contours.iter() {
             let len = cont.len();
             for i in 0..len {
                 let (a, b) = (id[base + i], id[base + (i + 1) % len]);
@@ -601,13 +654,15 @@ impl Job {
             }
             base += len;
         }
-        let mut comb = Comb { job: self, p3: &mut p3, data: &mut data, failed: false };
-        let Some(segs) = sweep::split_all(&mut verts, &mut grid, segs, &mut comb) else { return };
-        let region = sweep::region(&verts, &segs, self.rule, self.boundary_only);
+        let mut comb = Comb { job: self, p3, data, failed: false };
+        if !split::split_all(verts, grid, segs, &mut comb, split) {
+            return;
+        }
+        sweep::region(verts, segs, self.rule, self.boundary_only, sw);
         if self.boundary_only {
-            self.emit_loops(&region.boundary, &data);
+            self.emit_loops(&sw.region.boundary, data);
         } else {
-            self.emit_triangles(&region, &data);
+            self.emit_triangles(&sw.region, data);
         }
     }
 
@@ -636,22 +691,24 @@ impl Job {
     }
 
     fn emit_loops(&self, edges: &[(usize, usize)], data: &[*mut c_void]) {
-        let mut out: std::collections::HashMap<usize, Vec<usize>> = std::collections::HashMap::new();
-        for (i, &(a, _)) in edges.iter().enumerate() {
-            out.entry(a).or_default().push(i);
-        }
+        // Edges leaving each vertex: `by_start` sorted by start vertex (stable,
+        // so in boundary order), looked up by binary search.
+        let mut by_start: Vec<u32> = (0..edges.len() as u32).collect();
+        by_start.sort_by_key(|&i| edges[i as usize].0);
         let mut used = vec![false; edges.len()];
+        let mut lp = Vec::new();
         for s in 0..edges.len() {
             if used[s] {
                 continue;
             }
-            let mut lp = Vec::new();
+            lp.clear();
             let mut e = s;
             loop {
                 used[e] = true;
                 lp.push(edges[e].0);
                 let to = edges[e].1;
-                let next = out.get(&to).and_then(|l| l.iter().copied().find(|&x| !used[x]));
+                let first = by_start.partition_point(|&i| edges[i as usize].0 < to);
+                let next = by_start[first..].iter().take_while(|&&i| edges[i as usize].0 == to).map(|&i| i as usize).find(|&x| !used[x]);
                 match next {
                     Some(x) => e = x,
                     None => break,

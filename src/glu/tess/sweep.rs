@@ -13,9 +13,9 @@
 //! splitting) break the sweep's assumptions, it degrades (drops a piece)
 //! but never loops or indexes out of bounds. All sorts use total orders.
 
-use std::collections::HashMap;
+use super::split::Seg;
 
-/// A planar vertex: 2D position (normalised to about [-1, 1]) and where it came from.
+/// A planar vertex: 2D position (normalised to about [-1, 1]).
 #[derive(Clone, Copy, Debug)]
 pub struct Vert {
     pub p: [f64; 2],
@@ -28,270 +28,6 @@ pub fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
 
 /// Merge distance, in normalised units.
 pub const EPS: f64 = 1.0 / (1u64 << 42) as f64;
-
-/// A spatial hash that finds an existing vertex within EPS of a point.
-pub struct Grid {
-    cells: HashMap<(i64, i64), Vec<usize>>,
-}
-
-impl Default for Grid {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
-impl Grid {
-    pub fn new() -> Self {
-        Grid { cells: HashMap::new() }
-    }
-    fn key(p: [f64; 2]) -> (i64, i64) {
-        let c = 4.0 * EPS;
-        ((p[0] / c).floor() as i64, (p[1] / c).floor() as i64)
-    }
-    pub fn find(&self, verts: &[Vert], p: [f64; 2]) -> Option<usize> {
-        let (kx, ky) = Self::key(p);
-        let mut best: Option<(f64, usize)> = None;
-        for dx in -1..=1 {
-            for dy in -1..=1 {
-                if let Some(list) = self.cells.get(&(kx + dx, ky + dy)) {
-                    for &i in list {
-                        let q = verts[i].p;
-                        let d = (q[0] - p[0]).abs().max((q[1] - p[1]).abs());
-                        if d <= EPS && best.is_none_or(|(bd, _)| d < bd) {
-                            best = Some((d, i));
-                        }
-                    }
-                }
-            }
-        }
-        best.map(|b| b.1)
-    }
-    pub fn insert(&mut self, verts: &[Vert], i: usize) {
-        self.cells.entry(Self::key(verts[i].p)).or_default().push(i);
-    }
-}
-
-/// A directed input edge between vertex ids.
-#[derive(Clone, Copy, Debug)]
-pub struct Seg {
-    pub a: usize,
-    pub b: usize,
-}
-
-/// What the splitter asks of its caller when two edges cross at a new point:
-/// create a vertex there (returns its id, or None to abort).
-pub trait Combiner {
-    /// `ends` are the crossing edges' endpoints (a, b, c, d), `t`/`s` the
-    /// parameters of the point along a→b and c→d.
-    fn combine(&mut self, verts: &mut Vec<Vert>, p: [f64; 2], ends: [usize; 4], t: f64, s: f64) -> Option<usize>;
-}
-
-/// Splits the edges at every crossing and at every vertex lying on another
-/// edge. Repeats (a few passes at most) because rounded crossing points can
-/// create new near-crossings. Returns None if the combiner aborted.
-pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: Vec<Seg>, comb: &mut dyn Combiner) -> Option<Vec<Seg>> {
-    let mut segs = segs;
-    for _pass in 0..4 {
-        let n = segs.len();
-        // splits[i] = (param, vertex) points to insert into segment i.
-        let mut splits: Vec<Vec<(f64, usize)>> = vec![Vec::new(); n];
-        let mut any = false;
-        for (i, j) in candidate_pairs(verts, &segs) {
-            let (si, sj) = (segs[i], segs[j]);
-            if let Some(found) = intersect(verts, grid, si, sj, comb) {
-                let (pi, pj) = found?;
-                for (t, v) in pi {
-                    splits[i].push((t, v));
-                    any = true;
-                }
-                for (t, v) in pj {
-                    splits[j].push((t, v));
-                    any = true;
-                }
-            }
-        }
-        if !any {
-            return Some(segs);
-        }
-        let mut out = Vec::with_capacity(n * 2);
-        for (i, s) in segs.iter().enumerate() {
-            let sp = &mut splits[i];
-            if sp.is_empty() {
-                out.push(*s);
-                continue;
-            }
-            sp.sort_by(|x, y| x.0.total_cmp(&y.0));
-            let mut cur = s.a;
-            for &(_, v) in sp.iter() {
-                if v != cur && v != s.b {
-                    out.push(Seg { a: cur, b: v });
-                    cur = v;
-                }
-            }
-            if cur != s.b {
-                out.push(Seg { a: cur, b: s.b });
-            }
-        }
-        segs = out;
-    }
-    Some(segs)
-}
-
-/// The pairs of edges whose boxes (grown by EPS) overlap, each once, in a
-/// deterministic order: a uniform grid of about n square cells;
-/// a pair is reported by the cell holding the low corner of the two boxes'
-/// overlap. Edges spanning more than 64 cells are checked against all edges.
-fn candidate_pairs(verts: &[Vert], segs: &[Seg]) -> Vec<(usize, usize)> {
-    let n = segs.len();
-    let bb: Vec<[f64; 4]> = segs
-        .iter()
-        .map(|s| {
-            let (p, q) = (verts[s.a].p, verts[s.b].p);
-            [p[0].min(q[0]) - EPS, p[1].min(q[1]) - EPS, p[0].max(q[0]) + EPS, p[1].max(q[1]) + EPS]
-        })
-        .collect();
-    let overlap = |i: usize, j: usize| {
-        let (a, b) = (&bb[i], &bb[j]);
-        a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3]
-    };
-    let mut pairs = Vec::new();
-    if n < 2 {
-        return pairs;
-    }
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for b in &bb {
-        lo = [lo[0].min(b[0]), lo[1].min(b[1])];
-        hi = [hi[0].max(b[2]), hi[1].max(b[3])];
-    }
-    // About n square cells (the box's aspect ratio kept), at most 2^20.
-    let (w, h) = ((hi[0] - lo[0]).max(EPS), (hi[1] - lo[1]).max(EPS));
-    let cells_wanted = (n as f64).min((1u64 << 20) as f64);
-    let side = (w * h / cells_wanted).sqrt();
-    let cap = (2 * n + 4).min(1 << 21);
-    let mut gs = [((w / side) as usize).clamp(1, cap), ((h / side) as usize).clamp(1, cap)];
-    while gs[0] * gs[1] > cap {
-        let k = if gs[0] > gs[1] { 0 } else { 1 };
-        gs[k] = (gs[k] / 2).max(1);
-    }
-    let size = [(w / gs[0] as f64).max(f64::MIN_POSITIVE), (h / gs[1] as f64).max(f64::MIN_POSITIVE)];
-    let cell = |x: f64, k: usize| (((x - lo[k]) / size[k]) as usize).min(gs[k] - 1);
-    let g = gs[0];
-    let mut cells: Vec<Vec<u32>> = vec![Vec::new(); gs[0] * gs[1]];
-    let mut long = Vec::new();
-    for (i, b) in bb.iter().enumerate() {
-        let (x0, y0, x1, y1) = (cell(b[0], 0), cell(b[1], 1), cell(b[2], 0), cell(b[3], 1));
-        if (x1 - x0 + 1) * (y1 - y0 + 1) > 64 {
-            long.push(i);
-            continue;
-        }
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                cells[y * g + x].push(i as u32);
-            }
-        }
-    }
-    let mut is_long = vec![false; n];
-    for &i in &long {
-        is_long[i] = true;
-    }
-    for (c, list) in cells.iter().enumerate() {
-        let (cx, cy) = (c % g, c / g);
-        for (k, &i) in list.iter().enumerate() {
-            for &j in &list[k + 1..] {
-                let (i, j) = (i as usize, j as usize);
-                if !overlap(i, j) {
-                    continue;
-                }
-                let (a, b) = (&bb[i], &bb[j]);
-                if cell(a[0].max(b[0]), 0) == cx && cell(a[1].max(b[1]), 1) == cy {
-                    pairs.push((i, j));
-                }
-            }
-        }
-    }
-    for &i in &long {
-        for j in 0..n {
-            if j != i && (!is_long[j] || j > i) && overlap(i, j) {
-                pairs.push((i, j));
-            }
-        }
-    }
-    pairs
-}
-
-type Splits = (Vec<(f64, usize)>, Vec<(f64, usize)>);
-
-/// Tests two edges. Returns None when nothing is to be split,
-/// Some(None) when the combiner aborted.
-fn intersect(verts: &mut Vec<Vert>, grid: &mut Grid, s: Seg, r: Seg, comb: &mut dyn Combiner) -> Option<Option<Splits>> {
-    let (a, b, c, d) = (verts[s.a].p, verts[s.b].p, verts[r.a].p, verts[r.b].p);
-    let mut on_s = Vec::new();
-    let mut on_r = Vec::new();
-    // Endpoints lying on the other edge's interior (touching, collinear overlaps).
-    let lies_on = |p: [f64; 2], a: [f64; 2], b: [f64; 2]| -> Option<f64> {
-        let dx = b[0] - a[0];
-        let dy = b[1] - a[1];
-        let l2 = dx * dx + dy * dy;
-        if !(l2 > 0.0) {
-            return None;
-        }
-        let t = ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2;
-        if !(t > 0.0 && t < 1.0) {
-            return None;
-        }
-        let dist = orient(a, b, p).abs() / l2.sqrt();
-        (dist <= EPS).then_some(t)
-    };
-    for &(v, p) in &[(r.a, c), (r.b, d)] {
-        if v != s.a && v != s.b {
-            if let Some(t) = lies_on(p, a, b) {
-                on_s.push((t, v));
-            }
-        }
-    }
-    for &(v, p) in &[(s.a, a), (s.b, b)] {
-        if v != r.a && v != r.b {
-            if let Some(t) = lies_on(p, c, d) {
-                on_r.push((t, v));
-            }
-        }
-    }
-    if on_s.is_empty() && on_r.is_empty() && s.a != r.a && s.a != r.b && s.b != r.a && s.b != r.b {
-        let d1 = orient(c, d, a);
-        let d2 = orient(c, d, b);
-        let d3 = orient(a, b, c);
-        let d4 = orient(a, b, d);
-        if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
-            let t = (d1 / (d1 - d2)).clamp(0.0, 1.0);
-            let u = (d3 / (d3 - d4)).clamp(0.0, 1.0);
-            // Average both parametrisations: symmetric and within both edges' boxes.
-            let p1 = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
-            let p2 = [c[0] + u * (d[0] - c[0]), c[1] + u * (d[1] - c[1])];
-            let p = [0.5 * (p1[0] + p2[0]), 0.5 * (p1[1] + p2[1])];
-            let v = match grid.find(verts, p) {
-                Some(v) => v,
-                None => match comb.combine(verts, p, [s.a, s.b, r.a, r.b], t, u) {
-                    Some(v) => {
-                        grid.insert(verts, v);
-                        v
-                    }
-                    None => return Some(None),
-                },
-            };
-            if v != s.a && v != s.b {
-                on_s.push((t, v));
-            }
-            if v != r.a && v != r.b {
-                on_r.push((u, v));
-            }
-        }
-    }
-    if on_s.is_empty() && on_r.is_empty() {
-        None
-    } else {
-        Some(Some((on_s, on_r)))
-    }
-}
 
 /// The winding rules (GLU_TESS_WINDING_*).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -322,27 +58,33 @@ struct Edge {
     lo: usize,
     hi: usize,
     w: i64,
+    /// Pseudo-angle of lo→hi: orders a vertex's outgoing edges.
+    key: f64,
 }
 
 /// The selected region: its boundary edges directed with the region on
 /// their left, and its triangles (counter-clockwise).
+#[derive(Default)]
 pub struct Region {
     pub boundary: Vec<(usize, usize)>,
     pub triangles: Vec<[usize; 3]>,
 }
 
-/// Which triangle edges lie on the region's boundary (for the edge flags).
+/// Which triangle edges lie on the region's boundary (for the edge flags):
+/// the boundary's edges as sorted (min, max) pairs, found by binary search.
 pub struct BoundaryIndex {
-    set: std::collections::HashSet<(usize, usize)>,
+    set: Vec<(u32, u32)>,
 }
 
 impl BoundaryIndex {
     pub fn new(r: &Region) -> Self {
-        BoundaryIndex { set: r.boundary.iter().map(|&(a, b)| (a.min(b), a.max(b))).collect() }
+        let mut set: Vec<(u32, u32)> = r.boundary.iter().map(|&(a, b)| (a.min(b) as u32, a.max(b) as u32)).collect();
+        set.sort_unstable();
+        BoundaryIndex { set }
     }
 
     pub fn on_boundary(&self, a: usize, b: usize) -> bool {
-        self.set.contains(&(a.min(b), a.max(b)))
+        self.set.binary_search(&(a.min(b) as u32, a.max(b) as u32)).is_ok()
     }
 }
 
@@ -351,100 +93,146 @@ fn lex_less(p: [f64; 2], q: [f64; 2]) -> bool {
 }
 
 /// Computes windings and the selected region; triangulates it unless `boundary_only`.
-pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool) -> Region {
+/// Buffers kept from one polygon to the next; `region` leaves its result
+/// in `boundary` and `triangles`.
+#[derive(Default)]
+pub struct Scratch {
+    dir: Vec<(u32, u32, i64)>,
+    edges: Vec<Edge>,
+    order: Vec<u32>,
+    out: Vec<u32>,
+    inc: Vec<u32>,
+    below: Vec<i64>,
+    active1: Vec<(usize, i64)>,
+    bedges: Vec<Edge>,
+    inside_above: Vec<bool>,
+    active2: Vec<(usize, Option<Reg>)>,
+    outs: Vec<(usize, Option<Reg>)>,
+    pub region: Region,
+}
+
+/// Computes windings and the selected region into `sc.region`;
+/// triangulates it unless `boundary_only`.
+pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc: &mut Scratch) {
     let nv = verts.len();
-    // Net multiplicity per undirected edge.
-    let mut map: HashMap<(usize, usize), i64> = HashMap::new();
-    for s in segs {
-        if s.a == s.b {
-            continue;
+    let Scratch { dir, edges, order, out, inc, below, active1, bedges, inside_above, active2, outs, region } = sc;
+    let Region { boundary, triangles: tris } = region;
+    boundary.clear();
+    tris.clear();
+    // Net multiplicity per undirected edge: sort the directed edges by
+    // their ends, add up runs.
+    dir.clear();
+    dir.extend(
+        segs.iter()
+            .filter(|s| s.a != s.b)
+            .map(|s| if lex_less(verts[s.a].p, verts[s.b].p) { (s.a as u32, s.b as u32, 1) } else { (s.b as u32, s.a as u32, -1) }),
+    );
+    dir.sort_unstable_by_key(|e| (e.0, e.1));
+    edges.clear();
+    for (k, e) in dir.iter().enumerate() {
+        if k > 0 && dir[k - 1].0 == e.0 && dir[k - 1].1 == e.1 {
+            if let Some(l) = edges.last_mut() {
+                l.w += e.2;
+            }
+        } else {
+            edges.push(Edge { lo: e.0 as usize, hi: e.1 as usize, w: e.2, key: 0.0 });
         }
-        let (lo, hi, w) = if lex_less(verts[s.a].p, verts[s.b].p) { (s.a, s.b, 1) } else { (s.b, s.a, -1) };
-        *map.entry((lo, hi)).or_insert(0) += w;
     }
-    let mut edges: Vec<Edge> = map.into_iter().filter(|&(_, w)| w != 0).map(|((lo, hi), w)| Edge { lo, hi, w }).collect();
-    edges.sort_by_key(|e| (e.lo, e.hi));
-    // Sweep order of vertices.
-    let mut order: Vec<usize> = (0..nv).collect();
-    order.sort_by(|&i, &j| {
-        let (p, q) = (verts[i].p, verts[j].p);
-        p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
-    });
-    let angle = |e: &Edge| {
+    edges.retain(|e| e.w != 0);
+    // Each vertex's outgoing edges counter-clockwise from straight down:
+    // sorted by lo, then by a pseudo-angle of the direction (monotone in
+    // the angle on the half plane lo→hi spans).
+    for e in edges.iter_mut() {
         let (a, b) = (verts[e.lo].p, verts[e.hi].p);
-        (b[1] - a[1]).atan2(b[0] - a[0])
-    };
-    let build_out = |es: &[Edge]| {
-        let mut out: Vec<Vec<usize>> = vec![Vec::new(); nv];
-        let mut inc = vec![0u32; nv];
-        for (i, e) in es.iter().enumerate() {
-            out[e.lo].push(i);
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+        let l = dx + dy.abs();
+        e.key = if l > 0.0 { dy / l } else { 0.0 };
+    }
+    edges.sort_unstable_by(|x, y| x.lo.cmp(&y.lo).then(x.key.total_cmp(&y.key)).then(x.hi.cmp(&y.hi)));
+    // Sweep order of vertices.
+    order.clear();
+    order.extend(0..nv as u32);
+    order.sort_unstable_by(|&i, &j| {
+        let (p, q) = (verts[i as usize].p, verts[j as usize].p);
+        p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1])).then(i.cmp(&j))
+    });
+    // Outgoing edges of v: es[out[v]..out[v + 1]] (es sorted by lo); incoming counts.
+    let build_out = |es: &[Edge], out: &mut Vec<u32>, inc: &mut Vec<u32>| {
+        out.clear();
+        out.resize(nv + 1, 0);
+        inc.clear();
+        inc.resize(nv, 0);
+        for e in es {
+            out[e.lo + 1] += 1;
             inc[e.hi] += 1;
         }
-        for o in out.iter_mut() {
-            o.sort_by(|&i, &j| angle(&es[i]).total_cmp(&angle(&es[j])));
+        for v in 0..nv {
+            out[v + 1] += out[v];
         }
-        (out, inc)
     };
 
     // Sweep 1: the winding number below every edge.
-    let (out, inc) = build_out(&edges);
-    let mut below = vec![0i64; edges.len()];
+    build_out(edges, out, inc);
+    below.clear();
+    below.resize(edges.len(), 0);
     {
-        let mut active: Vec<(usize, i64)> = Vec::new();
-        for &v in &order {
-            let pos = locate(&mut active, v, inc[v], verts, |x| edges[x.0].hi, |x| (edges[x.0].lo, edges[x.0].hi));
+        let active = active1;
+        active.clear();
+        for &v in order.iter() {
+            let v = v as usize;
+            let pos = locate(active, v, inc[v], verts, |x| edges[x.0].hi, |x| (edges[x.0].lo, edges[x.0].hi));
             let mut w = if pos > 0 { active[pos - 1].1 } else { 0 };
-            let mut ins = Vec::with_capacity(out[v].len());
-            for &e in &out[v] {
-                below[e] = w;
-                w += edges[e].w;
-                ins.push((e, w));
-            }
-            active.splice(pos..pos, ins);
+            let (o0, o1) = (out[v] as usize, out[v + 1] as usize);
+            active.splice(
+                pos..pos,
+                (o0..o1).map(|e| {
+                    below[e] = w;
+                    w += edges[e].w;
+                    (e, w)
+                }),
+            );
         }
     }
     // The boundary: edges whose two sides differ; "inside above" per edge.
-    let mut bedges = Vec::new();
-    let mut inside_above = Vec::new();
-    let mut boundary = Vec::new();
+    bedges.clear();
+    inside_above.clear();
     for (i, e) in edges.iter().enumerate() {
         let (b, a) = (rule.inside(below[i]), rule.inside(below[i] + e.w));
         if a != b {
-            bedges.push(Edge { lo: e.lo, hi: e.hi, w: e.w });
+            bedges.push(*e);
             inside_above.push(a);
             boundary.push(if a { (e.lo, e.hi) } else { (e.hi, e.lo) });
         }
     }
     if boundary_only {
-        return Region { boundary, triangles: Vec::new() };
+        return;
     }
 
     // Sweep 2: triangulate.
-    let (out, inc) = build_out(&bedges);
-    let mut tris: Vec<[usize; 3]> = Vec::new();
-    let mut active: Vec<(usize, Option<Reg>)> = Vec::new();
-    let p = |i: usize| verts[i].p;
-    let mut t = Tri { verts, out: &mut tris };
-    for &v in &order {
-        if inc[v] == 0 && out[v].is_empty() {
+    build_out(bedges, out, inc);
+    let active = active2;
+    active.clear();
+    let mut t = Tri { verts, out: tris };
+    outs.clear();
+    for &v in order.iter() {
+        let v = v as usize;
+        let (o0, o1) = (out[v] as usize, out[v + 1] as usize);
+        if inc[v] == 0 && o0 == o1 {
             continue;
         }
-        let outs: Vec<(usize, Option<Reg>)> = out[v].iter().map(|&e| (e, None)).collect();
+        outs.clear();
+        outs.extend((o0..o1).map(|e| (e, None)));
         if inc[v] > 0 {
             // The entries ending here (normally one contiguous block).
-            let idx: Vec<usize> = (0..active.len()).filter(|&i| bedges[active[i].0].hi == v).collect();
-            if idx.is_empty() {
+            let Some(lo) = active.iter().position(|x| bedges[x.0].hi == v) else {
                 // Inconsistent: treat as a start below.
-                insert_start(&mut active, v, outs, &bedges, &inside_above, verts, &mut t);
+                insert_start(active, v, outs, bedges, inside_above, verts, &mut t);
                 continue;
-            }
-            let lo = idx[0];
-            let hi = *idx.last().unwrap();
+            };
+            let hi = active.iter().rposition(|x| bedges[x.0].hi == v).unwrap_or(lo);
             let r_below = if lo > 0 { active[lo - 1].1.take() } else { None };
-            let mut removed: Vec<(usize, Option<Reg>)> = active.drain(lo..=hi).collect();
-            let r_above = removed.last_mut().and_then(|x| x.1.take());
-            for (_, r) in removed.into_iter() {
+            let r_above = active[hi].1.take();
+            for (_, r) in active.drain(lo..=hi) {
                 if let Some(r) = r {
                     t.close(r, v);
                 }
@@ -453,10 +241,9 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool) -> 
             let r_above = r_above.map(|r| t.add(r, v, Side::Lower));
             if outs.is_empty() {
                 match (r_below, r_above) {
-                    (Some(b), Some(a)) => {
-                        let mut subs = b.subs;
-                        subs.extend(a.subs);
-                        active[lo - 1].1 = Some(Reg { subs });
+                    (Some(mut b), Some(a)) => {
+                        b.subs.extend(a.subs);
+                        active[lo - 1].1 = Some(b);
                     }
                     (Some(b), None) => active[lo - 1].1 = Some(b),
                     (None, Some(a)) => t.close(a, v),
@@ -470,7 +257,6 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool) -> 
                         t.close(b, v);
                     }
                 }
-                let mut outs = outs;
                 let k = outs.len();
                 for j in 0..k - 1 {
                     if inside_above[outs[j].0] {
@@ -482,14 +268,12 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool) -> 
                     None if inside_above[outs[k - 1].0] => Some(Reg::start(v)),
                     None => None,
                 };
-                active.splice(lo..lo, outs);
+                active.splice(lo..lo, outs.drain(..));
             }
         } else {
-            insert_start(&mut active, v, outs, &bedges, &inside_above, verts, &mut t);
+            insert_start(active, v, outs, bedges, inside_above, verts, &mut t);
         }
     }
-    let _ = p;
-    Region { boundary, triangles: tris }
 }
 
 /// Finds where vertex v goes in the active list: removes the entries ending
@@ -510,7 +294,7 @@ fn locate<T>(active: &mut Vec<T>, v: usize, inc: u32, verts: &[Vert], hi_of: imp
     })
 }
 
-fn insert_start(active: &mut Vec<(usize, Option<Reg>)>, v: usize, mut outs: Vec<(usize, Option<Reg>)>, bedges: &[Edge], inside_above: &[bool], verts: &[Vert], t: &mut Tri) {
+fn insert_start(active: &mut Vec<(usize, Option<Reg>)>, v: usize, outs: &mut Vec<(usize, Option<Reg>)>, bedges: &[Edge], inside_above: &[bool], verts: &[Vert], t: &mut Tri) {
     if outs.is_empty() {
         return;
     }
@@ -538,7 +322,7 @@ fn insert_start(active: &mut Vec<(usize, Option<Reg>)>, v: usize, mut outs: Vec<
             }
         }
     }
-    active.splice(pos..pos, outs);
+    active.splice(pos..pos, outs.drain(..));
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -601,7 +385,10 @@ impl Tri<'_> {
         if ch.side != s {
             self.fan(&ch, v);
             let last = *ch.verts.last().unwrap();
-            return Chain { verts: vec![last, v], side: s };
+            ch.verts.clear();
+            ch.verts.extend([last, v]);
+            ch.side = s;
+            return ch;
         }
         while ch.verts.len() >= 2 {
             let n = ch.verts.len();
@@ -619,19 +406,20 @@ impl Tri<'_> {
     }
 
     /// v arrives on one side of the region.
-    fn add(&mut self, r: Reg, v: usize, s: Side) -> Reg {
-        let mut subs = r.subs;
-        let keep = if s == Side::Lower { subs.len() - 1 } else { 0 };
-        let mut kept = None;
-        for (i, ch) in subs.drain(..).enumerate() {
-            if i == keep {
-                kept = Some(ch);
-            } else {
+    fn add(&mut self, mut r: Reg, v: usize, s: Side) -> Reg {
+        if r.subs.len() > 1 {
+            // Merge vertices waiting in the region: the others end at v.
+            let keep = if s == Side::Lower { r.subs.len() - 1 } else { 0 };
+            let kept = r.subs.swap_remove(keep);
+            for ch in r.subs.drain(..) {
                 self.fan(&ch, v);
             }
+            r.subs.push(kept);
         }
-        let ch = self.step(kept.unwrap(), v, s);
-        Reg { subs: vec![ch] }
+        let Some(ch) = r.subs.pop() else { return r };
+        let ch = self.step(ch, v, s);
+        r.subs.push(ch);
+        r
     }
 
     /// v ends the region.

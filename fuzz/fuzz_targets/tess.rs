@@ -1,0 +1,336 @@
+//! Fuzz target for the GLU tessellator, driven through the C entry points
+//! (gluNewTess ... gluTessEndPolygon) exactly as a C program would.
+//!
+//! The input bytes decode into options (winding rule, boundary-only, edge
+//! flag / combine callbacks on or off, the _DATA callback forms, a normal,
+//! a COMBINE that fails, sloppy begin/end calls) and one to three polygons
+//! tessellated by the same object. Vertices come from a small integer grid
+//! (duplicates, collinear runs, touching edges), raw bit patterns (NaN,
+//! infinities, subnormals), a table of extreme values (±1e150, 1e-150,
+//! 1e300 ...), scaled grid points and near-duplicates of the last vertex.
+//!
+//! Checked on every run: no panic (libfuzzer-sys aborts on one, before the
+//! entry point's guard could catch it), termination (libFuzzer's -timeout),
+//! every VERTEX pointer is one given to gluTessVertex or returned by
+//! COMBINE, COMBINE gets known pointers, finite weights summing to 1,
+//! finite coordinates inside the input's bounding box and *dataOut NULL,
+//! BEGIN/END nest and carry the right primitive type, triangles come in
+//! threes, EDGE_FLAG only when set and never for line loops, and only the
+//! errors the input can cause are reported.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use softgl::api::table::*;
+use softgl::glu::tess::*;
+use std::cell::RefCell;
+use std::collections::HashSet;
+use std::ffi::c_void;
+
+const RULES: [u32; 5] = [GLU_TESS_WINDING_ODD, GLU_TESS_WINDING_NONZERO, GLU_TESS_WINDING_POSITIVE, GLU_TESS_WINDING_NEGATIVE, GLU_TESS_WINDING_ABS_GEQ_TWO];
+const GL_LINE_LOOP: u32 = 2;
+const GL_TRIANGLES: u32 = 4;
+const SPECIAL: [f64; 16] = [
+    0.0, 1.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1e150, -1e150, 1e-150, -1e-150, 1e300, f64::MIN_POSITIVE, 5e-324, 1.0 + f64::EPSILON, 1e151, 0.5,
+];
+const SCALES: [f64; 8] = [1.0, 1e150, 1e-150, 1e-300, 1e300, 1e-5, 1e10, 3.0];
+const MAX_VERTS: usize = 4000;
+
+/// What the callbacks check against, and what they saw.
+#[derive(Default)]
+struct Check {
+    known: HashSet<usize>,
+    boundary: bool,
+    flags_cb: bool,
+    combine_fail_at: Option<usize>,
+    combines: usize,
+    combine_failed: bool,
+    in_prim: Option<u32>,
+    prim_verts: usize,
+    begins: usize,
+    errors: Vec<u32>,
+    /// Bounding box of the (clamped) input coordinates, for COMBINE's output.
+    lo: [f64; 3],
+    hi: [f64; 3],
+    arena: Vec<Box<[f64; 3]>>,
+}
+
+thread_local! {
+    static CHECK: RefCell<Check> = RefCell::new(Check::default());
+}
+
+fn with<R>(f: impl FnOnce(&mut Check) -> R) -> R {
+    CHECK.with(|c| f(&mut c.borrow_mut()))
+}
+
+extern "system" fn cb_begin(mode: u32) {
+    with(|c| {
+        assert!(c.in_prim.is_none(), "BEGIN inside BEGIN/END");
+        let want = if c.boundary { GL_LINE_LOOP } else { GL_TRIANGLES };
+        assert_eq!(mode, want, "primitive type");
+        assert!(!c.combine_failed, "output after NEED_COMBINE_CALLBACK");
+        c.in_prim = Some(mode);
+        c.prim_verts = 0;
+        c.begins += 1;
+    });
+}
+extern "system" fn cb_begin_data(mode: u32, d: *mut c_void) {
+    assert_eq!(d as usize, 0x5eed, "polygon data");
+    cb_begin(mode);
+}
+extern "system" fn cb_vertex(d: *mut c_void) {
+    with(|c| {
+        assert!(c.in_prim.is_some(), "VERTEX outside BEGIN/END");
+        assert!(c.known.contains(&(d as usize)), "VERTEX with a pointer never given: {d:p}");
+        c.prim_verts += 1;
+    });
+}
+extern "system" fn cb_vertex_data(d: *mut c_void, pd: *mut c_void) {
+    assert_eq!(pd as usize, 0x5eed, "polygon data");
+    cb_vertex(d);
+}
+extern "system" fn cb_end() {
+    with(|c| {
+        let mode = c.in_prim.take().expect("END without BEGIN");
+        if mode == GL_TRIANGLES {
+            assert!(c.prim_verts > 0 && c.prim_verts % 3 == 0, "GL_TRIANGLES with {} vertices", c.prim_verts);
+        } else {
+            assert!(c.prim_verts >= 2, "GL_LINE_LOOP with {} vertices", c.prim_verts);
+        }
+    });
+}
+extern "system" fn cb_end_data(pd: *mut c_void) {
+    assert_eq!(pd as usize, 0x5eed, "polygon data");
+    cb_end();
+}
+extern "system" fn cb_flag(_f: u8) {
+    with(|c| {
+        assert!(c.flags_cb, "EDGE_FLAG without a callback set");
+        assert!(!c.boundary, "EDGE_FLAG in boundary-only mode");
+    });
+}
+extern "system" fn cb_flag_data(f: u8, pd: *mut c_void) {
+    assert_eq!(pd as usize, 0x5eed, "polygon data");
+    cb_flag(f);
+}
+extern "system" fn cb_error(e: u32) {
+    with(|c| {
+        c.errors.push(e);
+        c.combine_failed |= e == GLU_TESS_NEED_COMBINE_CALLBACK;
+    });
+}
+extern "system" fn cb_error_data(e: u32, pd: *mut c_void) {
+    assert_eq!(pd as usize, 0x5eed, "polygon data");
+    cb_error(e);
+}
+extern "system" fn cb_combine(co: *const f64, d: *const *mut c_void, w: *const f32, out: *mut *mut c_void) {
+    unsafe {
+        assert!((*out).is_null(), "*dataOut not NULL before COMBINE");
+        let p = [*co, *co.add(1), *co.add(2)];
+        with(|c| {
+            c.combines += 1;
+            let mut sum = 0.0f64;
+            for i in 0..4 {
+                let wi = *w.add(i);
+                let di = *d.add(i);
+                assert!(wi.is_finite() && (0.0..=1.0).contains(&wi), "weight {wi}");
+                sum += wi as f64;
+                assert!(di.is_null() && wi == 0.0 || c.known.contains(&(di as usize)), "COMBINE given an unknown vertex {di:p}");
+            }
+            assert!((sum - 1.0).abs() < 1e-5, "weights sum to {sum}");
+            for k in 0..3 {
+                let slack = 1e-9 * (c.hi[k] - c.lo[k]).abs().max(c.lo[k].abs()).max(c.hi[k].abs());
+                assert!(p[k].is_finite() && p[k] >= c.lo[k] - slack && p[k] <= c.hi[k] + slack, "combined coordinate {k} = {} outside [{}, {}]", p[k], c.lo[k], c.hi[k]);
+            }
+            if c.combine_fail_at == Some(c.combines) {
+                return; // leaves *out NULL: the tessellator must report NEED_COMBINE_CALLBACK
+            }
+            let b = Box::new(p);
+            let ptr = &*b as *const [f64; 3] as *mut c_void;
+            c.arena.push(b);
+            c.known.insert(ptr as usize);
+            *out = ptr;
+        });
+    }
+}
+extern "system" fn cb_combine_data(co: *const f64, d: *const *mut c_void, w: *const f32, out: *mut *mut c_void, pd: *mut c_void) {
+    assert_eq!(pd as usize, 0x5eed, "polygon data");
+    cb_combine(co, d, w, out);
+}
+
+fn proc_of<T>(f: T) -> Option<unsafe extern "system" fn()> {
+    assert_eq!(std::mem::size_of::<T>(), std::mem::size_of::<usize>());
+    Some(unsafe { std::mem::transmute_copy::<T, unsafe extern "system" fn()>(&f) })
+}
+
+/// A byte reader that yields zeros once the input runs out.
+struct Bytes<'a>(&'a [u8]);
+impl Bytes<'_> {
+    fn u8(&mut self) -> u8 {
+        match self.0.split_first() {
+            Some((&b, rest)) => {
+                self.0 = rest;
+                b
+            }
+            None => 0,
+        }
+    }
+    fn f64(&mut self) -> f64 {
+        let mut b = [0u8; 8];
+        for x in b.iter_mut() {
+            *x = self.u8();
+        }
+        f64::from_le_bytes(b)
+    }
+    fn done(&self) -> bool {
+        self.0.is_empty()
+    }
+}
+
+/// One polygon: contours of points.
+type Polygon = Vec<Vec<[f64; 3]>>;
+
+/// Decodes contours until the input ends or a polygon break; returns None at end of input.
+fn decode_polygon(b: &mut Bytes, budget: &mut usize) -> Polygon {
+    let mut poly: Polygon = vec![Vec::new()];
+    let mut last = [0.0f64; 3];
+    while !b.done() && *budget > 0 {
+        let op = b.u8();
+        let p = match op & 7 {
+            0 => {
+                if op & 0x80 != 0 {
+                    break; // next polygon
+                }
+                poly.push(Vec::new());
+                continue;
+            }
+            1..=3 => {
+                let g = b.u8();
+                [(g & 15) as f64, (g >> 4) as f64, if op & 0x80 != 0 { (op >> 3 & 3) as f64 } else { 0.0 }]
+            }
+            4 => [b.f64(), b.f64(), if op & 0x80 != 0 { b.f64() } else { 0.0 }],
+            5 => {
+                let (i, j) = (b.u8(), b.u8());
+                [SPECIAL[(i & 15) as usize], SPECIAL[(j & 15) as usize], if op & 0x80 != 0 { SPECIAL[(i >> 4) as usize] } else { 0.0 }]
+            }
+            6 => {
+                let g = b.u8();
+                let s = SCALES[(op >> 3 & 7) as usize];
+                [(g & 15) as f64 * s, (g >> 4) as f64 * s, 0.0]
+            }
+            _ => {
+                // Near-duplicate of the last vertex: a few ulps or 2^-k away.
+                let k = b.u8();
+                let d = |x: f64, s: u8| if s & 1 == 0 { x + x.abs().max(1.0) * (2f64).powi(-(s as i32 >> 1) - 10) } else { f64::from_bits(x.to_bits().wrapping_add((s >> 1) as u64)) };
+                [d(last[0], k & 0x3f), d(last[1], op >> 3), last[2]]
+            }
+        };
+        last = p;
+        poly.last_mut().unwrap().push(p);
+        *budget -= 1;
+    }
+    poly
+}
+
+fn clamp_coord(x: f64) -> f64 {
+    if x.is_nan() {
+        0.0
+    } else {
+        x.clamp(-GLU_TESS_MAX_COORD, GLU_TESS_MAX_COORD)
+    }
+}
+
+fuzz_target!(|data: &[u8]| {
+    let mut b = Bytes(data);
+    let (f0, f1) = (b.u8(), b.u8());
+    let data_forms = f0 & 0x40 != 0;
+    let flags_cb = f0 & 0x10 != 0;
+    let combine_cb = f0 & 0x20 != 0;
+    let sloppy = f1 & 2 != 0;
+    let normal = if f0 & 0x80 != 0 { Some([SPECIAL[(f1 >> 4) as usize], b.f64(), SPECIAL[(f1 >> 2 & 3) as usize]]) } else { None };
+    let mut budget = MAX_VERTS;
+    let mut polys = Vec::new();
+    while polys.len() < 3 && (polys.is_empty() || !b.done()) {
+        polys.push(decode_polygon(&mut b, &mut budget));
+    }
+    let pd = 0x5eed as *mut c_void;
+    unsafe {
+        let t = gluNewTess();
+        if data_forms {
+            gluTessCallback(t, GLU_TESS_BEGIN_DATA, proc_of(cb_begin_data as extern "system" fn(u32, *mut c_void)));
+            gluTessCallback(t, GLU_TESS_VERTEX_DATA, proc_of(cb_vertex_data as extern "system" fn(*mut c_void, *mut c_void)));
+            gluTessCallback(t, GLU_TESS_END_DATA, proc_of(cb_end_data as extern "system" fn(*mut c_void)));
+            gluTessCallback(t, GLU_TESS_ERROR_DATA, proc_of(cb_error_data as extern "system" fn(u32, *mut c_void)));
+            if flags_cb {
+                gluTessCallback(t, GLU_TESS_EDGE_FLAG_DATA, proc_of(cb_flag_data as extern "system" fn(u8, *mut c_void)));
+            }
+            if combine_cb {
+                gluTessCallback(t, GLU_TESS_COMBINE_DATA, proc_of(cb_combine_data as extern "system" fn(*const f64, *const *mut c_void, *const f32, *mut *mut c_void, *mut c_void)));
+            }
+        } else {
+            gluTessCallback(t, GLU_TESS_BEGIN, proc_of(cb_begin as extern "system" fn(u32)));
+            gluTessCallback(t, GLU_TESS_VERTEX, proc_of(cb_vertex as extern "system" fn(*mut c_void)));
+            gluTessCallback(t, GLU_TESS_END, proc_of(cb_end as extern "system" fn()));
+            gluTessCallback(t, GLU_TESS_ERROR, proc_of(cb_error as extern "system" fn(u32)));
+            if flags_cb {
+                gluTessCallback(t, GLU_TESS_EDGE_FLAG, proc_of(cb_flag as extern "system" fn(u8)));
+            }
+            if combine_cb {
+                gluTessCallback(t, GLU_TESS_COMBINE, proc_of(cb_combine as extern "system" fn(*const f64, *const *mut c_void, *const f32, *mut *mut c_void)));
+            }
+        }
+        if let Some(n) = normal {
+            gluTessNormal(t, n[0], n[1], n[2]);
+        }
+        for (k, poly) in polys.iter().enumerate() {
+            // Each polygon may change the rule and boundary mode of the same object.
+            let opt = if k == 0 { f0 } else { f0.rotate_left(k as u32 * 3) ^ f1 };
+            let boundary = opt & 8 != 0;
+            gluTessProperty(t, GLU_TESS_WINDING_RULE, RULES[(opt & 7) as usize % 5] as f64);
+            gluTessProperty(t, GLU_TESS_BOUNDARY_ONLY, boundary as u8 as f64);
+            let mut store: Polygon = poly.clone();
+            let mut too_large = false;
+            let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+            let mut known = HashSet::new();
+            for v in store.iter_mut().flatten() {
+                for i in 0..3 {
+                    too_large |= v[i].is_nan() || v[i].abs() > GLU_TESS_MAX_COORD;
+                    let x = clamp_coord(v[i]);
+                    lo[i] = lo[i].min(x);
+                    hi[i] = hi[i].max(x);
+                }
+                known.insert(v as *mut [f64; 3] as usize);
+            }
+            let fail_at = if f1 & 1 != 0 { Some(1 + (f1 >> 5) as usize) } else { None };
+            with(|c| *c = Check { known, boundary, flags_cb, combine_fail_at: fail_at, lo, hi, ..Default::default() });
+            gluTessBeginPolygon(t, pd);
+            for (ci, c) in store.iter_mut().enumerate() {
+                if !(sloppy && ci % 2 == 1) {
+                    gluTessBeginContour(t);
+                }
+                for v in c.iter_mut() {
+                    gluTessVertex(t, v.as_mut_ptr(), v as *mut [f64; 3] as *mut c_void);
+                }
+                if !(sloppy && ci % 3 == 2) {
+                    gluTessEndContour(t);
+                }
+            }
+            gluTessEndPolygon(t);
+            with(|c| {
+                assert!(c.in_prim.is_none(), "BEGIN without END");
+                if c.combine_failed || c.errors.contains(&GLU_TESS_NEED_COMBINE_CALLBACK) {
+                    assert!(!combine_cb || fail_at.is_some_and(|n| n <= c.combines), "NEED_COMBINE_CALLBACK with a working COMBINE");
+                }
+                for &e in &c.errors {
+                    match e {
+                        GLU_TESS_COORD_TOO_LARGE => assert!(too_large, "COORD_TOO_LARGE for in-range input"),
+                        GLU_TESS_NEED_COMBINE_CALLBACK => {}
+                        GLU_TESS_MISSING_BEGIN_CONTOUR | GLU_TESS_MISSING_END_CONTOUR => assert!(sloppy, "missing-call error {e} for well-formed calls"),
+                        _ => panic!("unexpected error {e}"),
+                    }
+                }
+            });
+        }
+        gluDeleteTess(t);
+    }
+    with(|c| *c = Check::default());
+});

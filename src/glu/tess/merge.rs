@@ -1,0 +1,125 @@
+//! Merging near-coincident vertices: a hash grid of cells 4·EPS wide that
+//! finds an existing vertex within EPS (max norm) of a point.
+//!
+//! Chained buckets over vertex ids (`head` per bucket, `next` per vertex)
+//! with a multiplicative hash of the cell; no per-cell allocation, and the
+//! arrays are kept from one polygon to the next. A point within EPS of
+//! another lies in at most 2×2 cells, so a lookup probes one to four buckets.
+
+use super::sweep::{Vert, EPS};
+
+const CELL: f64 = 4.0 * EPS;
+const NONE: u32 = u32::MAX;
+
+#[derive(Default)]
+pub struct Grid {
+    head: Vec<u32>,
+    next: Vec<u32>,
+    shift: u32,
+    /// Vertices inserted while the grid is small enough to scan them all
+    /// (then no buckets are kept).
+    linear: usize,
+    hashed: bool,
+}
+
+/// Up to this many vertices, lookups scan them all (cheaper than hashing).
+const LINEAR: usize = 24;
+
+#[inline]
+fn cell(x: f64) -> i64 {
+    // floor without a libm call (no SSE4.1 rounding in the baseline target);
+    // NaN and huge values saturate, which is harmless here.
+    let c = x / CELL;
+    let i = c as i64;
+    i - ((i as f64) > c) as i64
+}
+
+impl Grid {
+    /// Empties the grid, sized for about `n` vertices.
+    pub fn reset(&mut self, n: usize) {
+        self.linear = 0;
+        self.hashed = false;
+        if n <= LINEAR {
+            return;
+        }
+        self.hashed = true;
+        let size = (2 * n).max(16).next_power_of_two();
+        self.head.clear();
+        self.head.resize(size, NONE);
+        self.next.clear();
+        self.shift = 64 - size.trailing_zeros();
+    }
+
+    #[inline]
+    fn bucket(&self, kx: i64, ky: i64) -> usize {
+        let h = (kx as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ (ky as u64).wrapping_mul(0xc2b2_ae3d_27d4_eb4f);
+        (h.wrapping_mul(0x94d0_49bb_1331_11eb) >> self.shift) as usize
+    }
+
+    /// The closest vertex within EPS of `p` (the lowest id among equals).
+    pub fn find(&self, verts: &[Vert], p: [f64; 2]) -> Option<usize> {
+        if !self.hashed {
+            let mut best: Option<(f64, usize)> = None;
+            for (i, q) in verts[..self.linear.min(verts.len())].iter().enumerate() {
+                let d = (q.p[0] - p[0]).abs().max((q.p[1] - p[1]).abs());
+                if d <= EPS && best.is_none_or(|(bd, _)| d < bd) {
+                    best = Some((d, i));
+                }
+            }
+            return best.map(|b| b.1);
+        }
+        let (x0, x1) = (cell(p[0] - EPS), cell(p[0] + EPS));
+        let (y0, y1) = (cell(p[1] - EPS), cell(p[1] + EPS));
+        let mut best: Option<(f64, usize)> = None;
+        for kx in x0..=x1.min(x0 + 1) {
+            for ky in y0..=y1.min(y0 + 1) {
+                let mut i = self.head[self.bucket(kx, ky)];
+                while i != NONE {
+                    let q = verts[i as usize].p;
+                    let d = (q[0] - p[0]).abs().max((q[1] - p[1]).abs());
+                    // The same vertex can be met twice (two probed cells in one bucket): harmless.
+                    if d <= EPS && best.is_none_or(|(bd, bi)| d < bd || (d == bd && (i as usize) < bi)) {
+                        best = Some((d, i as usize));
+                    }
+                    i = self.next[i as usize];
+                }
+            }
+        }
+        best.map(|b| b.1)
+    }
+
+    /// Adds vertex `i`; every vertex below `i` must be in the grid already
+    /// (the tessellator inserts each vertex it creates, in order).
+    pub fn insert(&mut self, verts: &[Vert], i: usize) {
+        if !self.hashed {
+            if i < LINEAR {
+                self.linear = i + 1;
+                return;
+            }
+            // Outgrown: switch to buckets (rehashing below).
+            self.hashed = true;
+            self.head.clear();
+        }
+        if self.next.len() <= i {
+            self.next.resize(i + 1, NONE);
+        }
+        if 2 * (i + 1) > self.head.len() {
+            // Grow and rehash.
+            let size = (4 * (i + 1)).next_power_of_two();
+            self.head.clear();
+            self.head.resize(size, NONE);
+            self.shift = 64 - size.trailing_zeros();
+            for j in 0..i {
+                self.link(verts, j);
+            }
+        }
+        self.link(verts, i);
+    }
+
+    fn link(&mut self, verts: &[Vert], i: usize) {
+        let p = verts[i].p;
+        let b = self.bucket(cell(p[0]), cell(p[1]));
+        self.next[i] = self.head[b];
+        self.head[b] = i as u32;
+    }
+}

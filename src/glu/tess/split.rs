@@ -1,0 +1,276 @@
+//! The arrangement of the contours' edges: every crossing becomes a vertex
+//! (COMBINE), and every edge is split at the vertices lying on it (within
+//! EPS), so that afterwards edges meet only at shared endpoints.
+//!
+//! Candidate pairs: all pairs for small inputs; otherwise a uniform grid
+//! of about n cells in which each edge is entered into the cells its
+//! EPS-thickened segment passes through (not its whole bounding box, so
+//! long diagonal edges stay cheap), stored flat (counts, then offsets); a
+//! per-edge stamp reports each pair once, in a deterministic order.
+
+use super::merge::Grid;
+use super::sweep::{orient, Vert, EPS};
+
+/// A directed input edge between vertex ids.
+#[derive(Clone, Copy, Debug)]
+pub struct Seg {
+    pub a: usize,
+    pub b: usize,
+}
+
+/// What the splitter asks of its caller when two edges cross at a new point:
+/// create a vertex there (returns its id, or None to abort).
+pub trait Combiner {
+    /// `ends` are the crossing edges' endpoints (a, b, c, d), `t`/`s` the
+    /// parameters of the point along a→b and c→d.
+    fn combine(&mut self, verts: &mut Vec<Vert>, p: [f64; 2], ends: [usize; 4], t: f64, s: f64) -> Option<usize>;
+}
+
+/// Buffers kept from one polygon to the next.
+#[derive(Default)]
+pub struct Scratch {
+    bb: Vec<[f64; 4]>,
+    pairs: Vec<(u32, u32)>,
+    /// Split points: (segment, parameter, vertex).
+    splits: Vec<(u32, f64, u32)>,
+    seg_start: Vec<u32>,
+    seg_cells: Vec<u32>,
+    cell_start: Vec<u32>,
+    cell_segs: Vec<u32>,
+    stamp: Vec<u32>,
+    out: Vec<Seg>,
+}
+
+/// Splits `segs` in place at every crossing and at every vertex lying on
+/// another edge. Repeats (a few passes at most) because rounded crossing
+/// points can create new near-crossings. Returns false if the combiner aborted.
+pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, comb: &mut dyn Combiner, sc: &mut Scratch) -> bool {
+    for _pass in 0..4 {
+        candidate_pairs(verts, segs, sc);
+        sc.splits.clear();
+        for k in 0..sc.pairs.len() {
+            let (i, j) = sc.pairs[k];
+            if !intersect(verts, grid, segs, i as usize, j as usize, comb, &mut sc.splits) {
+                return false;
+            }
+        }
+        if sc.splits.is_empty() {
+            return true;
+        }
+        sc.splits.sort_unstable_by(|x, y| x.0.cmp(&y.0).then(x.1.total_cmp(&y.1)));
+        sc.out.clear();
+        let mut k = 0;
+        for (i, s) in segs.iter().enumerate() {
+            let mut cur = s.a;
+            while k < sc.splits.len() && sc.splits[k].0 as usize == i {
+                let v = sc.splits[k].2 as usize;
+                if v != cur && v != s.b {
+                    sc.out.push(Seg { a: cur, b: v });
+                    cur = v;
+                }
+                k += 1;
+            }
+            if cur != s.b {
+                sc.out.push(Seg { a: cur, b: s.b });
+            }
+        }
+        std::mem::swap(segs, &mut sc.out);
+    }
+    true
+}
+
+/// Below this many edges, all pairs are tested (cheaper than a grid).
+const ALL_PAIRS: usize = 48;
+
+/// The pairs of edges whose boxes (grown by EPS) overlap and which may
+/// touch, each once, into `sc.pairs`.
+fn candidate_pairs(verts: &[Vert], segs: &[Seg], sc: &mut Scratch) {
+    let n = segs.len();
+    sc.pairs.clear();
+    sc.bb.clear();
+    sc.bb.extend(segs.iter().map(|s| {
+        let (p, q) = (verts[s.a].p, verts[s.b].p);
+        [p[0].min(q[0]) - EPS, p[1].min(q[1]) - EPS, p[0].max(q[0]) + EPS, p[1].max(q[1]) + EPS]
+    }));
+    let bb = &sc.bb;
+    let overlap = |i: usize, j: usize| {
+        let (a, b) = (&bb[i], &bb[j]);
+        a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3]
+    };
+    if n < 2 {
+        return;
+    }
+    if n <= ALL_PAIRS {
+        for i in 0..n {
+            for j in i + 1..n {
+                if overlap(i, j) {
+                    sc.pairs.push((i as u32, j as u32));
+                }
+            }
+        }
+        return;
+    }
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for b in bb {
+        lo = [lo[0].min(b[0]), lo[1].min(b[1])];
+        hi = [hi[0].max(b[2]), hi[1].max(b[3])];
+    }
+    // About n square cells (the box's aspect ratio kept).
+    let (w, h) = ((hi[0] - lo[0]).max(EPS), (hi[1] - lo[1]).max(EPS));
+    let side = (w * h / n as f64).sqrt();
+    let cap = (2 * n + 4).min(1 << 22);
+    let mut gs = [((w / side) as usize).clamp(1, cap), ((h / side) as usize).clamp(1, cap)];
+    while gs[0] * gs[1] > cap {
+        let k = if gs[0] > gs[1] { 0 } else { 1 };
+        gs[k] = (gs[k] / 2).max(1);
+    }
+    let size = [(w / gs[0] as f64).max(f64::MIN_POSITIVE), (h / gs[1] as f64).max(f64::MIN_POSITIVE)];
+    let cell = |x: f64, k: usize| {
+        let c = (x - lo[k]) / size[k];
+        if c > 0.0 {
+            (c as usize).min(gs[k] - 1)
+        } else {
+            0
+        }
+    };
+    let g = gs[0];
+    // The cells each edge passes through: per column of its box, the rows
+    // its EPS-thickened segment covers there.
+    sc.seg_start.clear();
+    sc.seg_cells.clear();
+    for (i, s) in segs.iter().enumerate() {
+        sc.seg_start.push(sc.seg_cells.len() as u32);
+        let b = bb[i];
+        let (x0, x1) = (cell(b[0], 0), cell(b[2], 0));
+        let (p, q) = (verts[s.a].p, verts[s.b].p);
+        let (y0b, y1b) = (cell(b[1], 1), cell(b[3], 1));
+        if x0 == x1 || p[0] == q[0] {
+            for x in x0..=x1 {
+                for y in y0b..=y1b {
+                    sc.seg_cells.push((y * g + x) as u32);
+                }
+            }
+            continue;
+        }
+        let slope = (q[1] - p[1]) / (q[0] - p[0]);
+        let (xmin, xmax) = (p[0].min(q[0]), p[0].max(q[0]));
+        for x in x0..=x1 {
+            // The column's x range, grown by EPS, within the segment's.
+            let cx0 = (lo[0] + x as f64 * size[0] - EPS).max(xmin);
+            let cx1 = (lo[0] + (x + 1) as f64 * size[0] + EPS).min(xmax);
+            let (ya, yb) = (p[1] + (cx0 - p[0]) * slope, p[1] + (cx1 - p[0]) * slope);
+            let (r0, r1) = (cell(ya.min(yb) - EPS, 1).max(y0b), cell(ya.max(yb) + EPS, 1).min(y1b));
+            // (Rounding at the box's ends: fall back to the whole box column.)
+            let (r0, r1) = if cx0 <= cx1 && r0 <= r1 { (r0, r1) } else { (y0b, y1b) };
+            for y in r0..=r1 {
+                sc.seg_cells.push((y * g + x) as u32);
+            }
+        }
+    }
+    sc.seg_start.push(sc.seg_cells.len() as u32);
+    // Cells' lists, flat.
+    let nc = gs[0] * gs[1];
+    sc.cell_start.clear();
+    sc.cell_start.resize(nc + 1, 0);
+    for &c in &sc.seg_cells {
+        sc.cell_start[c as usize + 1] += 1;
+    }
+    for c in 0..nc {
+        sc.cell_start[c + 1] += sc.cell_start[c];
+    }
+    sc.cell_segs.clear();
+    sc.cell_segs.resize(sc.seg_cells.len(), 0);
+    {
+        let mut fill: Vec<u32> = sc.cell_start[..nc].to_vec();
+        for i in 0..n {
+            for k in sc.seg_start[i]..sc.seg_start[i + 1] {
+                let c = sc.seg_cells[k as usize] as usize;
+                sc.cell_segs[fill[c] as usize] = i as u32;
+                fill[c] += 1;
+            }
+        }
+    }
+    // Pairs: for each edge, the later edges sharing a cell with it, once.
+    sc.stamp.clear();
+    sc.stamp.resize(n, u32::MAX);
+    for i in 0..n {
+        for k in sc.seg_start[i]..sc.seg_start[i + 1] {
+            let c = sc.seg_cells[k as usize] as usize;
+            for &j in &sc.cell_segs[sc.cell_start[c] as usize..sc.cell_start[c + 1] as usize] {
+                if j as usize > i && sc.stamp[j as usize] != i as u32 {
+                    sc.stamp[j as usize] = i as u32;
+                    if overlap(i, j as usize) {
+                        sc.pairs.push((i as u32, j));
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Tests edges i and j; pushes their split points. False if the combiner aborted.
+fn intersect(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &[Seg], i: usize, j: usize, comb: &mut dyn Combiner, out: &mut Vec<(u32, f64, u32)>) -> bool {
+    let (s, r) = (segs[i], segs[j]);
+    let (a, b, c, d) = (verts[s.a].p, verts[s.b].p, verts[r.a].p, verts[r.b].p);
+    let before = out.len();
+    // Endpoints lying on the other edge's interior (touching, collinear overlaps).
+    let lies_on = |p: [f64; 2], a: [f64; 2], b: [f64; 2]| -> Option<f64> {
+        let dx = b[0] - a[0];
+        let dy = b[1] - a[1];
+        let l2 = dx * dx + dy * dy;
+        if !(l2 > 0.0) {
+            return None;
+        }
+        let t = ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2;
+        if !(t > 0.0 && t < 1.0) {
+            return None;
+        }
+        let dist = orient(a, b, p).abs() / l2.sqrt();
+        (dist <= EPS).then_some(t)
+    };
+    for &(v, p) in &[(r.a, c), (r.b, d)] {
+        if v != s.a && v != s.b {
+            if let Some(t) = lies_on(p, a, b) {
+                out.push((i as u32, t, v as u32));
+            }
+        }
+    }
+    for &(v, p) in &[(s.a, a), (s.b, b)] {
+        if v != r.a && v != r.b {
+            if let Some(t) = lies_on(p, c, d) {
+                out.push((j as u32, t, v as u32));
+            }
+        }
+    }
+    if out.len() == before && s.a != r.a && s.a != r.b && s.b != r.a && s.b != r.b {
+        let d1 = orient(c, d, a);
+        let d2 = orient(c, d, b);
+        let d3 = orient(a, b, c);
+        let d4 = orient(a, b, d);
+        if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
+            let t = (d1 / (d1 - d2)).clamp(0.0, 1.0);
+            let u = (d3 / (d3 - d4)).clamp(0.0, 1.0);
+            // Average both parametrisations: symmetric and within both edges' boxes.
+            let p1 = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+            let p2 = [c[0] + u * (d[0] - c[0]), c[1] + u * (d[1] - c[1])];
+            let p = [0.5 * (p1[0] + p2[0]), 0.5 * (p1[1] + p2[1])];
+            let v = match grid.find(verts, p) {
+                Some(v) => v,
+                None => match comb.combine(verts, p, [s.a, s.b, r.a, r.b], t, u) {
+                    Some(v) => {
+                        grid.insert(verts, v);
+                        v
+                    }
+                    None => return false,
+                },
+            };
+            if v != s.a && v != s.b {
+                out.push((i as u32, t, v as u32));
+            }
+            if v != r.a && v != r.b {
+                out.push((j as u32, u, v as u32));
+            }
+        }
+    }
+    true
+}
