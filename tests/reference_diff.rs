@@ -290,3 +290,116 @@ fn cases_draw_pixels() {
     // 200 cases over 61x47 pixels: most draw something.
     assert!(changed > 200 * 100, "only {changed} pixels changed");
 }
+
+/// glDrawPixels of RGBA / UNSIGNED_BYTE images (the span path of
+/// `gl::draw_pixels_fast`) against the reference path: the triangle
+/// cases' random fragment state (often reduced to the plain state the
+/// span path takes), raster positions (fractional, negative, partly or
+/// wholly off-screen, random depth), zooms (mostly 1), pixel transfer and
+/// unpack modes, and FRONT_AND_BACK. Colour, depth, stencil and the
+/// occlusion count must be identical. Returns how many cases met the span
+/// path's conditions.
+fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize)) -> Result<usize, String> {
+    let (W, H) = size;
+    let mut r = Rng(seed);
+    let (mut fast, mut reference) = (context(false, size, 1), context(true, size, 1));
+    let tex = texture(&mut fast, &mut Rng(seed));
+    texture(&mut reference, &mut Rng(seed));
+    for c in [&mut fast, &mut reference] {
+        c.fb.set_double_buffered(true).unwrap();
+        c.execute(&Command::DrawBuffer(GL_BACK));
+    }
+    let mut plain = 0;
+    for n in 0..cases {
+        let color: Vec<[u8; 4]> = (0..W * H).map(|_| (r.next() as u32).to_ne_bytes()).collect();
+        let depth: Vec<u32> = (0..W * H).map(|_| if r.chance(30) { 0xFF_FFFF } else { r.next() as u32 & 0xFF_FFFF }).collect();
+        let stencil: Vec<u8> = (0..W * H).map(|_| r.below(4) as u8).collect();
+        let mut cmds = case(&mut r, tex, size);
+        let first = cmds.iter().position(|c| *c == Command::Begin(GL_TRIANGLES)).unwrap();
+        cmds.truncate(first);
+        let simple = r.chance(60);
+        if simple {
+            for cap in [GL_ALPHA_TEST, GL_STENCIL_TEST, GL_BLEND, GL_COLOR_LOGIC_OP, GL_FOG, t::GL_TEXTURE_2D] {
+                cmds.push(Command::Disable(cap));
+            }
+            cmds.push(Command::ColorMask([true; 4]));
+        }
+        let zoom = if r.chance(80) { (1.0, 1.0) } else { r.pick(&[(2.0, 1.0), (1.0, -1.0), (0.5, 1.5), (-1.0, 1.0)]) };
+        cmds.push(Command::PixelZoom(zoom.0, zoom.1));
+        let scaled = r.chance(10);
+        cmds.push(Command::PixelTransfer(GL_RED_SCALE, if scaled { 0.5 } else { 1.0 }));
+        if r.chance(5) {
+            cmds.push(Command::DrawBuffer(GL_FRONT_AND_BACK));
+        }
+        let frac = |r: &mut Rng| if r.chance(50) { 0.0 } else { r.pick(&[0.25, 0.5, 0.75, 0.4999]) };
+        let x = r.below(W as u64 + 20) as f32 - 15.0 + frac(&mut r);
+        let y = r.below(H as u64 + 20) as f32 - 15.0 + frac(&mut r);
+        cmds.push(Command::WindowPos([x, y, r.unit()]));
+        let (w, h) = (r.below(W as u64 + 8) as i32, r.below(H as u64 + 8) as i32);
+        let align = r.pick(&[1, 2, 4, 8]);
+        let row_length = if r.chance(30) { w + r.below(5) as i32 } else { 0 };
+        let (skip_px, skip_rows) = (r.below(3) as i32, r.below(3) as i32);
+        let stride = (4 * row_length.max(w) as usize).div_ceil(align) * align;
+        let data: Vec<u8> = (0..(h + skip_rows + 1) as usize * stride + 4 * (w + skip_px) as usize + 64).map(|_| r.next() as u8).collect();
+        for c in [&mut fast, &mut reference] {
+            c.pixel_store(GL_UNPACK_ALIGNMENT, align as f64);
+            c.pixel_store(GL_UNPACK_ROW_LENGTH, row_length as f64);
+            c.pixel_store(GL_UNPACK_SKIP_PIXELS, skip_px as f64);
+            c.pixel_store(GL_UNPACK_SKIP_ROWS, skip_rows as f64);
+        }
+        let draw = unsafe { fast.build_draw_pixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, data.as_ptr()) }.expect("a glDrawPixels command");
+        cmds.push(draw.clone());
+        if r.chance(40) {
+            // Again over itself: equal depths (LESS, LEQUAL, EQUAL decide).
+            cmds.push(Command::DepthFunc(r.pick(&[GL_LEQUAL, GL_EQUAL, GL_LESS, GL_GEQUAL])));
+            cmds.push(draw);
+        }
+        if simple && zoom == (1.0, 1.0) && !scaled {
+            plain += 1;
+        }
+        for c in [&mut fast, &mut reference] {
+            c.fb.color.copy_from_slice(&color);
+            c.fb.other_color.copy_from_slice(&color);
+            c.fb.depth.copy_from_slice(&depth);
+            c.fb.stencil.copy_from_slice(&stencil);
+            c.fb.samples_passed = 0;
+            for cmd in &cmds {
+                c.execute(cmd);
+            }
+            c.execute(&Command::DrawBuffer(GL_BACK));
+        }
+        for i in 0..W * H {
+            let (a, b) = (fast.fb.color[i], reference.fb.color[i]);
+            if a != b || fast.fb.other_color[i] != reference.fb.other_color[i] || fast.fb.depth[i] != reference.fb.depth[i] || fast.fb.stencil[i] != reference.fb.stencil[i] {
+                return Err(format!(
+                    "draw-pixels case {n} pixel ({}, {}): fast {a:?} z {:#x} s {} / reference {b:?} z {:#x} s {}\nstate: {:?}\ncommands: {:?}",
+                    i % W,
+                    i / W,
+                    fast.fb.depth[i],
+                    fast.fb.stencil[i],
+                    reference.fb.depth[i],
+                    reference.fb.stencil[i],
+                    fast.derived.render.fragment,
+                    &cmds[first..]
+                ));
+            }
+        }
+        if fast.fb.samples_passed != reference.fb.samples_passed {
+            return Err(format!("draw-pixels case {n}: samples passed {} / {}", fast.fb.samples_passed, reference.fb.samples_passed));
+        }
+    }
+    Ok(plain)
+}
+
+#[test]
+fn draw_pixels_fast_path_matches_reference() {
+    let mut plain = 0;
+    for seed in 21..=23 {
+        match compare_draw_pixels(seed, 300, (67, 45)) {
+            Ok(p) => plain += p,
+            Err(e) => panic!("{e}"),
+        }
+    }
+    // The span path's conditions occur in a good share of the cases.
+    assert!(plain > 300, "only {plain} of 900 cases took the span path's state");
+}

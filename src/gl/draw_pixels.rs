@@ -71,6 +71,8 @@ impl PixelShading {
 #[derive(Clone, Debug, PartialEq)]
 pub enum PixelData {
     Color(Vec<[f32; 4]>),
+    /// RGBA / UNSIGNED_BYTE groups as given (`draw_pixels_fast`).
+    Rgba8(Vec<[u8; 4]>),
     ColorIndex(Vec<f64>),
     Depth(Vec<f64>),
     Stencil(Vec<f64>),
@@ -129,6 +131,7 @@ impl Context {
         let (w, h) = (w as usize, h as usize);
         let src = Source::new(&self.pixel_store.unpack, w, h, 1, format, ty, ptr);
         let data = match kind {
+            Kind::Color if format == GL_RGBA && ty == GL_UNSIGNED_BYTE => PixelData::Rgba8(super::draw_pixels_fast::unpack_rgba8(&src, w, h)),
             Kind::Color => PixelData::Color(src.colors(w, h, 1)),
             Kind::Depth => PixelData::Depth(src.values(w, h, 1, true)),
             Kind::ColorIndex => PixelData::ColorIndex(src.values(w, h, 1, false)),
@@ -201,14 +204,19 @@ impl Context {
         }
         self.validate();
         let shading = self.pixel_shading();
+        if let (PixelData::Rgba8(b), None) = (&r.data, &shading) {
+            if self.draw_rgba8_fast(r.width, r.height, b) {
+                return;
+            }
+        }
         let finish = |p: [f32; 4]| match &shading {
             Some(sh) => sh.apply(p),
             None => color_to_u8(Vec4::from_array(p)),
         };
         let t = &self.pixel;
         let groups = match &r.data {
-            PixelData::Color(c) => {
-                let mut c = c.clone();
+            PixelData::Color(_) | PixelData::Rgba8(_) => {
+                let mut c = super::draw_pixels_fast::float_colors(&r.data);
                 t.color(&mut c);
                 Groups::Color(c.iter().map(|&p| Some(finish(p))).collect())
             }
