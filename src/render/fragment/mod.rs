@@ -403,3 +403,4 @@ pub(crate) fn write_color(fs: &FragmentState, dst: &mut [u8; 4], src: [u8; 4]) {
 pub mod fast;
 pub mod reference;
 pub mod pixel_span;
+pub mod textured;
