@@ -410,16 +410,20 @@ fn kernel<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup,
     let Some(tp) = t.tex.as_ref() else { return reference::shade_span(fs, t, px, y, x0, x1) };
     let Some((u, sampler)) = unit(tp) else { return reference::shade_span(fs, t, px, y, x0, x1) };
     let smp = Sampler::new(sampler);
-    if smp.pow2_repeat() {
-        span::<D, STORE, true>(fs, t, px, y, x0, x1, tp, u, sampler, &smp)
-    } else {
-        span::<D, STORE, false>(fs, t, px, y, x0, x1, tp, u, sampler, &smp)
+    let env = EnvFn::new(tp.stage.envs[u].mode, sampler.base);
+    // MODULATE of a texture with colour and alpha: one four-lane product.
+    let modulate = matches!(env, EnvFn::Modulate { color: true, alpha: true });
+    match (smp.pow2_repeat(), modulate) {
+        (true, true) => span::<D, STORE, true, true>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (true, false) => span::<D, STORE, true, false>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (false, true) => span::<D, STORE, false, true>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (false, false) => span::<D, STORE, false, false>(fs, t, px, y, x0, x1, tp, u, env, &smp),
     }
 }
 
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn span<const D: u8, const STORE: bool, const P: bool>(
+fn span<const D: u8, const STORE: bool, const P: bool, const M: bool>(
     fs: &FragmentState,
     t: &TriangleSetup,
     px: &mut SpanPixels,
@@ -428,10 +432,9 @@ fn span<const D: u8, const STORE: bool, const P: bool>(
     x1: usize,
     tp: &crate::render::setup::TexPlanes,
     u: usize,
-    sampler: &UnitSampler,
+    env: EnvFn,
     smp: &Sampler,
 ) {
-    let env = EnvFn::new(tp.stage.envs[u].mode, sampler.base);
     let cy = y as f64 + 0.5 - t.y0;
     let p = &tp.planes[u];
     let (s_row, t_row, q_row) = (Row::new(&p[0], cy), Row::new(&p[1], cy), Row::new(&p[3], cy));
@@ -491,7 +494,9 @@ fn span<const D: u8, const STORE: bool, const P: bool>(
                 Some(c) => c,
                 None => Vec4::from_array(std::array::from_fn(|c| (color_rows[c].at(cx) * w) as f32)).clamp(Vec4::ZERO, Vec4::ONE),
             };
-            let c = env.apply(primary, smp.sample::<P>(sf, tf, dx, dy));
+            let texel = smp.sample::<P>(sf, tf, dx, dy);
+            // (pc tc, pa ta) lane by lane is env.rs's MODULATE.
+            let c = if M { (primary * texel).clamp(Vec4::ZERO, Vec4::ONE) } else { env.apply(primary, texel) };
             match &fog {
                 Some((row, f)) => to_u8(f.apply(c, (row.at(cx) * w) as f32)),
                 None => to_u8(c),
