@@ -370,3 +370,27 @@ fn advertised() {
     let s = std::str::from_utf8(&s[..s.len() - 1]).unwrap();
     assert!(s.split(' ').any(|n| n == "GL_ARB_imaging"));
 }
+
+/// RGBA / UNSIGNED_BYTE images (kept as bytes, with their own fast path
+/// at unit zoom) go through the imaging stages too: an RGBA colour table
+/// that swaps red and blue.
+#[test]
+fn byte_images_take_the_imaging_stages() {
+    let mut c = context(2, 1);
+    let entries: Vec<[f32; 4]> = (0..256).map(|i| {
+        let v = i as f32 / 255.0;
+        [1.0 - v, v, v, 1.0]
+    }).collect();
+    table(&mut c, GL_COLOR_TABLE, GL_RGBA, &entries);
+    c.execute(&Command::Enable(GL_COLOR_TABLE));
+    let img: [u8; 8] = [255, 10, 20, 255, 0, 128, 200, 255];
+    let cmd = unsafe { c.build_draw_pixels(2, 1, GL_RGBA, GL_UNSIGNED_BYTE, img.as_ptr()) }.unwrap();
+    c.execute(&cmd);
+    // R -> 1 - R; G, B, A looked up as themselves.
+    assert_eq!(px(&c, 0, 0), [0, 10, 20, 255]);
+    assert_eq!(px(&c, 1, 0), [255, 128, 200, 255]);
+    // Without the table the bytes are drawn as they are.
+    c.execute(&Command::Disable(GL_COLOR_TABLE));
+    c.execute(&cmd);
+    assert_eq!(px(&c, 0, 0), [255, 10, 20, 255]);
+}

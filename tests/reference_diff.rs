@@ -290,3 +290,249 @@ fn cases_draw_pixels() {
     // 200 cases over 61x47 pixels: most draw something.
     assert!(changed > 200 * 100, "only {changed} pixels changed");
 }
+
+/// glDrawPixels of RGBA / UNSIGNED_BYTE images (the span path of
+/// `gl::draw_pixels_fast`) against the reference path: the triangle
+/// cases' random fragment state (often reduced to the plain state the
+/// span path takes), raster positions (fractional, negative, partly or
+/// wholly off-screen, random depth), zooms (mostly 1), pixel transfer and
+/// unpack modes, and FRONT_AND_BACK. Colour, depth, stencil and the
+/// occlusion count must be identical. Returns how many cases met the span
+/// path's conditions.
+fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize)) -> Result<usize, String> {
+    let (W, H) = size;
+    let mut r = Rng(seed);
+    let (mut fast, mut reference) = (context(false, size, 1), context(true, size, 1));
+    let tex = texture(&mut fast, &mut Rng(seed));
+    texture(&mut reference, &mut Rng(seed));
+    for c in [&mut fast, &mut reference] {
+        c.fb.set_double_buffered(true).unwrap();
+        c.execute(&Command::DrawBuffer(GL_BACK));
+    }
+    let mut plain = 0;
+    for n in 0..cases {
+        let color: Vec<[u8; 4]> = (0..W * H).map(|_| (r.next() as u32).to_ne_bytes()).collect();
+        let depth: Vec<u32> = (0..W * H).map(|_| if r.chance(30) { 0xFF_FFFF } else { r.next() as u32 & 0xFF_FFFF }).collect();
+        let stencil: Vec<u8> = (0..W * H).map(|_| r.below(4) as u8).collect();
+        let mut cmds = case(&mut r, tex, size);
+        let first = cmds.iter().position(|c| *c == Command::Begin(GL_TRIANGLES)).unwrap();
+        cmds.truncate(first);
+        let simple = r.chance(60);
+        if simple {
+            for cap in [GL_ALPHA_TEST, GL_STENCIL_TEST, GL_BLEND, GL_COLOR_LOGIC_OP, GL_FOG, t::GL_TEXTURE_2D] {
+                cmds.push(Command::Disable(cap));
+            }
+            cmds.push(Command::ColorMask([true; 4]));
+        }
+        let zoom = if r.chance(80) { (1.0, 1.0) } else { r.pick(&[(2.0, 1.0), (1.0, -1.0), (0.5, 1.5), (-1.0, 1.0)]) };
+        cmds.push(Command::PixelZoom(zoom.0, zoom.1));
+        let scaled = r.chance(10);
+        cmds.push(Command::PixelTransfer(GL_RED_SCALE, if scaled { 0.5 } else { 1.0 }));
+        if r.chance(5) {
+            cmds.push(Command::DrawBuffer(GL_FRONT_AND_BACK));
+        }
+        let frac = |r: &mut Rng| if r.chance(50) { 0.0 } else { r.pick(&[0.25, 0.5, 0.75, 0.4999]) };
+        let x = r.below(W as u64 + 20) as f32 - 15.0 + frac(&mut r);
+        let y = r.below(H as u64 + 20) as f32 - 15.0 + frac(&mut r);
+        cmds.push(Command::WindowPos([x, y, r.unit()]));
+        let (w, h) = (r.below(W as u64 + 8) as i32, r.below(H as u64 + 8) as i32);
+        let align = r.pick(&[1, 2, 4, 8]);
+        let row_length = if r.chance(30) { w + r.below(5) as i32 } else { 0 };
+        let (skip_px, skip_rows) = (r.below(3) as i32, r.below(3) as i32);
+        let stride = (4 * row_length.max(w) as usize).div_ceil(align) * align;
+        let data: Vec<u8> = (0..(h + skip_rows + 1) as usize * stride + 4 * (w + skip_px) as usize + 64).map(|_| r.next() as u8).collect();
+        for c in [&mut fast, &mut reference] {
+            c.pixel_store(GL_UNPACK_ALIGNMENT, align as f64);
+            c.pixel_store(GL_UNPACK_ROW_LENGTH, row_length as f64);
+            c.pixel_store(GL_UNPACK_SKIP_PIXELS, skip_px as f64);
+            c.pixel_store(GL_UNPACK_SKIP_ROWS, skip_rows as f64);
+        }
+        let draw = unsafe { fast.build_draw_pixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, data.as_ptr()) }.expect("a glDrawPixels command");
+        cmds.push(draw.clone());
+        if r.chance(40) {
+            // Again over itself: equal depths (LESS, LEQUAL, EQUAL decide).
+            cmds.push(Command::DepthFunc(r.pick(&[GL_LEQUAL, GL_EQUAL, GL_LESS, GL_GEQUAL])));
+            cmds.push(draw);
+        }
+        if simple && zoom == (1.0, 1.0) && !scaled {
+            plain += 1;
+        }
+        for c in [&mut fast, &mut reference] {
+            c.fb.color.copy_from_slice(&color);
+            c.fb.other_color.copy_from_slice(&color);
+            c.fb.depth.copy_from_slice(&depth);
+            c.fb.stencil.copy_from_slice(&stencil);
+            c.fb.samples_passed = 0;
+            for cmd in &cmds {
+                c.execute(cmd);
+            }
+            c.execute(&Command::DrawBuffer(GL_BACK));
+        }
+        for i in 0..W * H {
+            let (a, b) = (fast.fb.color[i], reference.fb.color[i]);
+            if a != b || fast.fb.other_color[i] != reference.fb.other_color[i] || fast.fb.depth[i] != reference.fb.depth[i] || fast.fb.stencil[i] != reference.fb.stencil[i] {
+                return Err(format!(
+                    "draw-pixels case {n} pixel ({}, {}): fast {a:?} z {:#x} s {} / reference {b:?} z {:#x} s {}\nstate: {:?}\ncommands: {:?}",
+                    i % W,
+                    i / W,
+                    fast.fb.depth[i],
+                    fast.fb.stencil[i],
+                    reference.fb.depth[i],
+                    reference.fb.stencil[i],
+                    fast.derived.render.fragment,
+                    &cmds[first..]
+                ));
+            }
+        }
+        if fast.fb.samples_passed != reference.fb.samples_passed {
+            return Err(format!("draw-pixels case {n}: samples passed {} / {}", fast.fb.samples_passed, reference.fb.samples_passed));
+        }
+    }
+    Ok(plain)
+}
+
+#[test]
+fn draw_pixels_fast_path_matches_reference() {
+    let mut plain = 0;
+    for seed in 21..=23 {
+        match compare_draw_pixels(seed, 300, (67, 45)) {
+            Ok(p) => plain += p,
+            Err(e) => panic!("{e}"),
+        }
+    }
+    // The span path's conditions occur in a good share of the cases.
+    assert!(plain > 300, "only {plain} of 900 cases took the span path's state");
+}
+
+/// Mipmapped textures for the textured cases, the same in both contexts:
+/// sizes square and not, powers of two and not, every level random (so a
+/// wrong level or weight shows), of several internal formats.
+fn mipmapped_textures(c: &mut Context, r: &mut Rng) -> Vec<u32> {
+    let specs: [(i32, i32, u32); 6] = [(16, 16, t::GL_RGBA), (32, 8, t::GL_RGB), (6, 5, t::GL_RGBA), (1, 8, t::GL_LUMINANCE), (8, 8, t::GL_ALPHA), (4, 16, 0x190A)];
+    let mut names = Vec::new();
+    for (k, &(w, h, internal)) in specs.iter().enumerate() {
+        let name = 10 + k as u32;
+        c.submit(Command::BindTexture(t::GL_TEXTURE_2D, name));
+        let (mut lw, mut lh, mut level) = (w, h, 0);
+        loop {
+            let data: Vec<u8> = (0..lw * lh * 4).map(|_| r.below(256) as u8).collect();
+            let cmd = unsafe { c.tex_image_command(2, t::GL_TEXTURE_2D, level, internal as i32, [lw, lh, 1], 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE, data.as_ptr()) };
+            c.submit(cmd.expect("a valid glTexImage2D"));
+            if lw == 1 && lh == 1 {
+                break;
+            }
+            (lw, lh, level) = ((lw / 2).max(1), (lh / 2).max(1), level + 1);
+        }
+        names.push(name);
+    }
+    names
+}
+
+/// A textured case: the triangle cases' state with texturing on, a random
+/// mipmapped texture, filters, wrap modes, LOD bias and clamps,
+/// environment, and triangles whose texture coordinates span from a
+/// fraction of a texel to many repeats per pixel (magnification through
+/// the smallest level).
+fn textured_case(r: &mut Rng, names: &[u32], size: (usize, usize)) -> Vec<Command> {
+    let mut v = case(r, names[0], size);
+    let first = v.iter().position(|c| *c == Command::Begin(GL_TRIANGLES)).unwrap();
+    let tris = v.split_off(first);
+    if r.chance(50) {
+        // The common state the textured kernel takes.
+        for cap in [GL_ALPHA_TEST, GL_STENCIL_TEST, GL_COLOR_LOGIC_OP, GL_POLYGON_STIPPLE] {
+            v.push(Command::Disable(cap));
+        }
+        if r.chance(70) {
+            v.push(Command::Disable(GL_BLEND));
+        }
+    }
+    v.push(Command::Enable(t::GL_TEXTURE_2D));
+    v.push(Command::BindTexture(t::GL_TEXTURE_2D, r.pick(names)));
+    let filters = [GL_NEAREST, GL_LINEAR, t::GL_NEAREST_MIPMAP_NEAREST, t::GL_LINEAR_MIPMAP_NEAREST, t::GL_NEAREST_MIPMAP_LINEAR, t::GL_LINEAR_MIPMAP_LINEAR];
+    let p = |v: &mut Vec<Command>, pname: u32, value: f32| v.push(Command::TexParameter(t::GL_TEXTURE_2D, pname, [value, 0.0, 0.0, 0.0]));
+    p(&mut v, t::GL_TEXTURE_MIN_FILTER, r.pick(&filters) as f32);
+    p(&mut v, t::GL_TEXTURE_MAG_FILTER, r.pick(&[GL_NEAREST, GL_LINEAR]) as f32);
+    let wraps = [t::GL_REPEAT, t::GL_REPEAT, t::GL_CLAMP_TO_EDGE, t::GL_CLAMP, t::GL_MIRRORED_REPEAT];
+    p(&mut v, t::GL_TEXTURE_WRAP_S, r.pick(&wraps) as f32);
+    p(&mut v, t::GL_TEXTURE_WRAP_T, r.pick(&wraps) as f32);
+    let lod = r.chance(25);
+    p(&mut v, t::GL_TEXTURE_MIN_LOD, if lod { r.range(-2.0, 2.0) } else { -1000.0 });
+    p(&mut v, t::GL_TEXTURE_MAX_LOD, if lod { r.range(2.0, 6.0) } else { 1000.0 });
+    p(&mut v, t::GL_TEXTURE_BASE_LEVEL, if r.chance(15) { 1.0 } else { 0.0 });
+    p(&mut v, t::GL_TEXTURE_MAX_LEVEL, if r.chance(15) { 2.0 } else { 1000.0 });
+    let bias = if r.chance(25) { r.range(-3.0, 3.0) } else { 0.0 };
+    v.push(Command::TexEnv(t::GL_TEXTURE_FILTER_CONTROL, t::GL_TEXTURE_LOD_BIAS, [bias, 0.0, 0.0, 0.0]));
+    let env = r.pick(&[t::GL_MODULATE, t::GL_MODULATE, GL_REPLACE, t::GL_DECAL, t::GL_BLEND, t::GL_ADD]);
+    v.push(Command::TexEnv(t::GL_TEXTURE_ENV, t::GL_TEXTURE_ENV_MODE, [env as f32, 0.0, 0.0, 0.0]));
+    // Texture coordinates stretched: from magnified to far minified.
+    let stretch = r.pick(&[0.05, 0.5, 1.0, 4.0, 30.0]);
+    let offset = r.range(-5.0, 5.0);
+    v.extend(tris.into_iter().map(|c| match c {
+        Command::TexCoord(u, [s, tc, rr, q]) => {
+            let q = if r.chance(10) { r.range(0.5, 2.0) } else { q };
+            Command::TexCoord(u, [(s * stretch + offset) * q, (tc * stretch - offset) * q, rr, q])
+        }
+        other => other,
+    }));
+    v
+}
+
+/// Textured triangles through the textured kernels
+/// (`render::fragment::textured`) and the reference path: identical
+/// colour, depth, stencil and occlusion counts under every hint.
+fn compare_textured(seed: u64, cases: usize, size: (usize, usize), threads: usize) -> Result<usize, String> {
+    let (W, H) = size;
+    let mut r = Rng(seed);
+    let (mut fast, mut reference) = (context(false, size, threads), context(true, size, 1));
+    let names = mipmapped_textures(&mut fast, &mut Rng(seed ^ 0x7e7));
+    mipmapped_textures(&mut reference, &mut Rng(seed ^ 0x7e7));
+    let mut drawn = 0;
+    for n in 0..cases {
+        let color: Vec<[u8; 4]> = (0..W * H).map(|_| (r.next() as u32).to_ne_bytes()).collect();
+        let depth: Vec<u32> = (0..W * H).map(|_| if r.chance(70) { 0xFF_FFFF } else { r.next() as u32 & 0xFF_FFFF }).collect();
+        let stencil: Vec<u8> = (0..W * H).map(|_| r.below(4) as u8).collect();
+        let cmds = textured_case(&mut r, &names, size);
+        for c in [&mut fast, &mut reference] {
+            c.fb.color.copy_from_slice(&color);
+            c.fb.depth.copy_from_slice(&depth);
+            c.fb.stencil.copy_from_slice(&stencil);
+            for cmd in &cmds {
+                c.execute(cmd);
+            }
+        }
+        drawn += (0..W * H).filter(|&i| reference.fb.color[i] != color[i]).count();
+        for i in 0..W * H {
+            let (a, b) = (fast.fb.color[i], reference.fb.color[i]);
+            if a != b || fast.fb.depth[i] != reference.fb.depth[i] || fast.fb.stencil[i] != reference.fb.stencil[i] {
+                return Err(format!(
+                    "textured case {n} pixel ({}, {}): fast {a:?} z {:#x} / reference {b:?} z {:#x}\nstate: {:?}\ncommands: {cmds:?}",
+                    i % W,
+                    i / W,
+                    fast.fb.depth[i],
+                    reference.fb.depth[i],
+                    fast.derived.render.fragment
+                ));
+            }
+        }
+        if fast.fb.samples_passed != reference.fb.samples_passed {
+            return Err(format!("textured case {n}: samples passed {} / {}", fast.fb.samples_passed, reference.fb.samples_passed));
+        }
+    }
+    Ok(drawn)
+}
+
+#[test]
+fn textured_kernels_match_reference() {
+    let mut drawn = 0;
+    for seed in 31..=33 {
+        match compare_textured(seed, 400, (61, 47), 1) {
+            Ok(d) => drawn += d,
+            Err(e) => panic!("{e}"),
+        }
+    }
+    // Not vacuous: most cases texture many pixels.
+    assert!(drawn > 1200 * 300, "only {drawn} pixels drawn");
+    if let Err(e) = compare_textured(34, 60, (301, 203), 2) {
+        panic!("tiled: {e}");
+    }
+}

@@ -71,6 +71,8 @@ impl PixelShading {
 #[derive(Clone, Debug, PartialEq)]
 pub enum PixelData {
     Color(Vec<[f32; 4]>),
+    /// RGBA / UNSIGNED_BYTE groups as given (`draw_pixels_fast`).
+    Rgba8(Vec<[u8; 4]>),
     ColorIndex(Vec<f64>),
     Depth(Vec<f64>),
     Stencil(Vec<f64>),
@@ -129,6 +131,7 @@ impl Context {
         let (w, h) = (w as usize, h as usize);
         let src = Source::new(&self.pixel_store.unpack, w, h, 1, format, ty, ptr);
         let data = match kind {
+            Kind::Color if format == GL_RGBA && ty == GL_UNSIGNED_BYTE => PixelData::Rgba8(super::draw_pixels_fast::unpack_rgba8(&src, w, h)),
             Kind::Color => PixelData::Color(src.colors(w, h, 1)),
             Kind::Depth => PixelData::Depth(src.values(w, h, 1, true)),
             Kind::ColorIndex => PixelData::ColorIndex(src.values(w, h, 1, false)),
@@ -203,8 +206,8 @@ impl Context {
         let (mut w, mut h) = (r.width, r.height);
         // The ARB_imaging stages (section 3.6.5) on colour groups, when on.
         let imaged = match (&r.data, self.imaging_stages(2)) {
-            (PixelData::Color(c), Some(st)) => {
-                let mut c = c.clone();
+            (PixelData::Color(_) | PixelData::Rgba8(_), Some(st)) => {
+                let mut c = super::draw_pixels_fast::float_colors(&r.data);
                 self.pixel.scale_bias_map(&mut c);
                 Some(self.imaging(st, c, w, h))
             }
@@ -215,6 +218,11 @@ impl Context {
             _ => None,
         };
         let shading = self.pixel_shading();
+        if let (PixelData::Rgba8(b), None, None) = (&r.data, &shading, &imaged) {
+            if self.draw_rgba8_fast(r.width, r.height, b) {
+                return;
+            }
+        }
         let finish = |p: [f32; 4]| match &shading {
             Some(sh) => sh.apply(p),
             None => color_to_u8(Vec4::from_array(p)),
@@ -229,8 +237,8 @@ impl Context {
                     Groups::Color(c.iter().map(|&p| Some(finish(p))).collect())
                 }
             },
-            PixelData::Color(c) => {
-                let mut c = c.clone();
+            PixelData::Color(_) | PixelData::Rgba8(_) => {
+                let mut c = super::draw_pixels_fast::float_colors(&r.data);
                 t.color(&mut c);
                 Groups::Color(c.iter().map(|&p| Some(finish(p))).collect())
             }

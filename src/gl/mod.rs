@@ -14,6 +14,7 @@ pub mod command;
 pub mod context;
 pub mod draw_buffer;
 pub mod draw_pixels;
+pub mod draw_pixels_fast;
 pub mod enable;
 pub mod enums;
 pub mod eval;

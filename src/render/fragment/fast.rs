@@ -65,6 +65,9 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kerne
     if fs.alpha_test {
         return reference::shade_span;
     }
+    if let Some(k) = super::textured::select(fs, t) {
+        return k;
+    }
     let d = if !fs.depth_test {
         D_OFF
     } else if fs.depth_write && fs.depth_func == CompareFunc::Less {

@@ -402,3 +402,5 @@ pub(crate) fn write_color(fs: &FragmentState, dst: &mut [u8; 4], src: [u8; 4]) {
 // After `dispatch!`, which they use (macro scope is textual).
 pub mod fast;
 pub mod reference;
+pub mod pixel_span;
+pub mod textured;

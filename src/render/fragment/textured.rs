@@ -1,0 +1,559 @@
+//! Textured span kernels (GL 1.5 sections 3.8.7 to 3.8.13 and 3.10, then
+//! the per-fragment operations of section 4.1) for the common case: one
+//! texture unit with a 2D texture whose levels are stored as 8-bit RGBA
+//! without border, wrapped by REPEAT or CLAMP_TO_EDGE, any of the six
+//! minification filters, the MODULATE, REPLACE or DECAL environment, fog
+//! or none, no colour sum, no alpha or stencil test.
+//!
+//! Exactness: the kernel computes bit for bit what the reference path
+//! (`reference::triangle_color`, `TextureStage::shade`,
+//! `UnitSampler::sample_general`) computes, in the same operations and
+//! the same order: the planes in f64 as `(a0 + dy cy) + dx cx` with the
+//! row term hoisted, one division by q per fragment, the derivatives
+//! `(S' - s Q') / Q`, ρ from them in f32 with the same sqrt and log2, λ,
+//! the level choice and the bilinear weights `frac(u - 1/2)`, the texels as
+//! `c / 255`, the lerps `a + (b - a) t` (four lanes at once: IEEE
+//! single-precision operations lane by lane, no fused multiply-add), the
+//! environment and fog as `env.rs` and `fog.rs` write them, and the
+//! conversion to 8 bits. What it saves is the general path's overhead, not
+//! arithmetic: no per-fragment dispatch over targets, units, formats,
+//! wrap modes and environments, no `Coord` arrays, no libm `floorf` (the
+//! floor below is exact for every f32), the 1/w of colour and fog shared
+//! with the texture's q when their planes are the same (vertex q = 1), and
+//! the levels resolved once per span. A fragment whose q is zero or not
+//! finite, or whose coordinates are not finite, takes the reference
+//! function itself. `tests/reference_diff.rs` compares both paths on
+//! random mipmapped textures, filters, wraps, environments, fog and
+//! geometry.
+//!
+//! Depth test first (early rejection), as `fast.rs` does: without the
+//! alpha test, a fragment failing the depth test is never textured.
+
+use super::reference;
+use super::{depth_to_fixed, write_color, ColorOp, CompareFunc, FragmentState, SpanPixels};
+use crate::gl::texture::enums::{GL_DECAL, GL_MODULATE, GL_REPLACE};
+use crate::render::fog::Fog;
+use crate::render::setup::{Plane, TriangleSetup};
+use crate::render::texture::{Base, Fast, Filter, Target, Texels, UnitSampler, MAX_LOD_BIAS};
+use glam::{Vec3, Vec4};
+
+type Kernel = super::fast::Kernel;
+
+/// Most levels a texture can have (a 2^15 base; GL_MAX_TEXTURE_SIZE is
+/// smaller).
+const MAX_LEVELS: usize = 16;
+
+/// Depth keys (as in `fast.rs`).
+const D_OFF: u8 = 0;
+const D_LESS: u8 = 1;
+const D_LEQUAL: u8 = 2;
+const D_ANY: u8 = 3;
+
+/// The textured kernel for a triangle, if its state is the common case.
+pub fn select(fs: &FragmentState, t: &TriangleSetup) -> Option<Kernel> {
+    let tp = t.tex.as_ref()?;
+    if fs.alpha_test || fs.stencil_test || fs.color == ColorOp::None || t.secondary.is_some() || !applies(tp) {
+        return None;
+    }
+    let d = if !fs.depth_test {
+        D_OFF
+    } else if fs.depth_write && fs.depth_func == CompareFunc::Less {
+        D_LESS
+    } else if fs.depth_write && fs.depth_func == CompareFunc::Lequal {
+        D_LEQUAL
+    } else {
+        D_ANY
+    };
+    let store = fs.color == ColorOp::Replace && fs.color_mask == [true; 4];
+    Some(match (d, store) {
+        (D_OFF, true) => kernel::<D_OFF, true>,
+        (D_LESS, true) => kernel::<D_LESS, true>,
+        (D_LEQUAL, true) => kernel::<D_LEQUAL, true>,
+        (_, true) => kernel::<D_ANY, true>,
+        (D_OFF, false) => kernel::<D_OFF, false>,
+        (D_LESS, false) => kernel::<D_LESS, false>,
+        (D_LEQUAL, false) => kernel::<D_LEQUAL, false>,
+        _ => kernel::<D_ANY, false>,
+    })
+}
+
+/// The unit and its sampler, when the stage is the common case.
+fn unit(tp: &crate::render::setup::TexPlanes) -> Option<(usize, &UnitSampler)> {
+    let stage = &tp.stage;
+    if stage.active.len() != 1 {
+        return None;
+    }
+    let u = stage.active[0];
+    Some((u, stage.units[u].as_ref()?))
+}
+
+fn applies(tp: &crate::render::setup::TexPlanes) -> bool {
+    let Some((u, s)) = unit(tp) else { return false };
+    let levels_ok = s.faces.len() == 1
+        && !s.faces[0].is_empty()
+        && s.faces[0].len() <= MAX_LEVELS
+        && s.faces[0].iter().all(|l| l.border == 0 && l.width > 0 && l.height > 0 && matches!(l.texels, Texels::Rgba8(_)) && l.texels.len() >= (l.width * l.height) as usize);
+    s.target == Target::T2D
+        && s.base != Base::Depth
+        && s.fast_wrap.is_some()
+        && levels_ok
+        && s.params.min_lod <= s.params.max_lod
+        && matches!(tp.stage.envs[u].mode, GL_MODULATE | GL_REPLACE | GL_DECAL)
+}
+
+/// One level's texels and size.
+#[derive(Clone, Copy)]
+struct Level<'a> {
+    tex: &'a [[u8; 4]],
+    w: i32,
+    h: i32,
+    wf: f32,
+    hf: f32,
+}
+
+/// Below this magnitude an f32 may have a fraction; at and above it every
+/// f32 is an integer.
+const EXACT: f32 = 8388608.0;
+
+/// floor(x) and floor(x) as i32 for |x| < 2^23 (the caller checks).
+#[inline(always)]
+fn floor_i(x: f32) -> (f32, i32) {
+    // SAFETY: |x| < 2^23, so the truncation fits in an i32.
+    let i = unsafe { x.to_int_unchecked::<i32>() };
+    let t = i as f32;
+    // copysign: floor(-0) is -0.
+    if t > x {
+        (t - 1.0, i - 1)
+    } else {
+        (t.copysign(x), i)
+    }
+}
+
+/// floor(x) for every f32 (values of magnitude 2^23 and more, infinities
+/// and NaN stay as they are, as floor leaves them).
+#[inline(always)]
+fn floor(x: f32) -> f32 {
+    if x.abs() < EXACT {
+        floor_i(x).0
+    } else {
+        x
+    }
+}
+
+/// floor(x) as i32 (saturating, NaN to 0, as `as` does).
+#[inline(always)]
+fn floor_to_i32(x: f32) -> i32 {
+    if x.abs() < EXACT {
+        floor_i(x).1
+    } else {
+        x as i32
+    }
+}
+
+/// REPEAT or CLAMP_TO_EDGE of an index into [0, n) (`texture::wrap_fast`);
+/// `P`: both wrap modes are REPEAT and n is a power of two.
+#[inline(always)]
+fn wrap<const P: bool>(i: i32, n: i32, repeat: bool) -> i32 {
+    if P {
+        i & (n - 1)
+    } else if !repeat {
+        i.clamp(0, n - 1)
+    } else if n & (n - 1) == 0 {
+        i & (n - 1)
+    } else {
+        i.rem_euclid(n)
+    }
+}
+
+/// A texel as c / 255 per component (`texture::UNORM8`): the conversion
+/// to f32 is exact and divps rounds the quotient correctly, as the
+/// table's scalar division did.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn texel(p: [u8; 4]) -> Vec4 {
+    use std::arch::x86_64::*;
+    // SAFETY: SSE2 is part of x86_64.
+    unsafe {
+        let z = _mm_setzero_si128();
+        let v = _mm_cvtsi32_si128(i32::from_ne_bytes(p));
+        let v = _mm_unpacklo_epi16(_mm_unpacklo_epi8(v, z), z);
+        Vec4::from(_mm_div_ps(_mm_cvtepi32_ps(v), _mm_set1_ps(255.0)))
+    }
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+#[inline(always)]
+fn texel(p: [u8; 4]) -> Vec4 {
+    use crate::render::texture::UNORM8;
+    Vec4::new(UNORM8[p[0] as usize], UNORM8[p[1] as usize], UNORM8[p[2] as usize], UNORM8[p[3] as usize])
+}
+
+/// `fragment::color_to_u8` on four lanes: max(v, 0) gives 0 for NaN as
+/// the scalar clamp-then-cast does, and the truncation of a value in
+/// [0.5, 255.5] is the cast's.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn to_u8(c: Vec4) -> [u8; 4] {
+    use std::arch::x86_64::*;
+    // SAFETY: SSE2 is part of x86_64.
+    unsafe {
+        let v = _mm_min_ps(_mm_max_ps(c.into(), _mm_setzero_ps()), _mm_set1_ps(1.0));
+        let v = _mm_add_ps(_mm_mul_ps(v, _mm_set1_ps(255.0)), _mm_set1_ps(0.5));
+        let i = _mm_cvttps_epi32(v);
+        let i = _mm_packs_epi32(i, i);
+        (_mm_cvtsi128_si32(_mm_packus_epi16(i, i))).to_ne_bytes()
+    }
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+#[inline(always)]
+fn to_u8(c: Vec4) -> [u8; 4] {
+    super::color_to_u8(c)
+}
+
+#[inline(always)]
+fn lerp(a: Vec4, b: Vec4, t: f32) -> Vec4 {
+    a + (b - a) * Vec4::splat(t)
+}
+
+impl Level<'_> {
+    /// Nearest filtering (`UnitSampler::nearest_2d`).
+    #[inline(always)]
+    fn nearest<const P: bool>(&self, s: f32, t: f32, repeat: [bool; 2]) -> Vec4 {
+        let i = wrap::<P>(floor_to_i32(s * self.wf), self.w, repeat[0]);
+        let j = wrap::<P>(floor_to_i32(t * self.hf), self.h, repeat[1]);
+        texel(self.tex[(j * self.w + i) as usize])
+    }
+
+    /// Bilinear filtering (`UnitSampler::linear_2d`).
+    #[inline(always)]
+    fn linear<const P: bool>(&self, s: f32, t: f32, repeat: [bool; 2]) -> Vec4 {
+        let (a, b) = (s * self.wf - 0.5, t * self.hf - 0.5);
+        let ((fa, i0), (fb, j0)) = if a.abs() < EXACT && b.abs() < EXACT {
+            (floor_i(a), floor_i(b))
+        } else {
+            ((a.floor(), a.floor() as i32), (b.floor(), b.floor() as i32))
+        };
+        let (wa, wb) = (a - fa, b - fb);
+        let (i0w, i1w) = (wrap::<P>(i0, self.w, repeat[0]), wrap::<P>(i0.wrapping_add(1), self.w, repeat[0]));
+        let (j0w, j1w) = (wrap::<P>(j0, self.h, repeat[1]), wrap::<P>(j0.wrapping_add(1), self.h, repeat[1]));
+        let (r0, r1) = ((j0w * self.w) as usize, (j1w * self.w) as usize);
+        let (c0, c1) = (i0w as usize, i1w as usize);
+        let top = lerp(texel(self.tex[r0 + c0]), texel(self.tex[r0 + c1]), wa);
+        let bottom = lerp(texel(self.tex[r1 + c0]), texel(self.tex[r1 + c1]), wa);
+        lerp(top, bottom, wb)
+    }
+
+    #[inline(always)]
+    fn filter<const P: bool>(&self, s: f32, t: f32, linear: bool, repeat: [bool; 2]) -> Vec4 {
+        if linear {
+            self.linear::<P>(s, t, repeat)
+        } else {
+            self.nearest::<P>(s, t, repeat)
+        }
+    }
+}
+
+/// A span's view of the sampler: levels resolved, parameters unpacked.
+struct Sampler<'a> {
+    levels: [Level<'a>; MAX_LEVELS],
+    /// q: the last level.
+    q: usize,
+    repeat: [bool; 2],
+    fast: Fast,
+    min: Filter,
+    mag_linear: bool,
+    c_switch: f32,
+    bias: f32,
+    min_lod: f32,
+    max_lod: f32,
+}
+
+impl<'a> Sampler<'a> {
+    /// All levels have power-of-two sizes and both wrap modes are REPEAT.
+    fn pow2_repeat(&self) -> bool {
+        self.repeat == [true; 2] && self.levels[..=self.q].iter().all(|l| l.w & (l.w - 1) == 0 && l.h & (l.h - 1) == 0)
+    }
+
+    fn new(s: &'a UnitSampler) -> Sampler<'a> {
+        let empty = Level { tex: &[], w: 1, h: 1, wf: 1.0, hf: 1.0 };
+        let mut levels = [empty; MAX_LEVELS];
+        for (l, img) in levels.iter_mut().zip(&s.faces[0]) {
+            if let Texels::Rgba8(tex) = &img.texels {
+                *l = Level { tex: &tex[..], w: img.width, h: img.height, wf: img.width as f32, hf: img.height as f32 };
+            }
+        }
+        let p = &s.params;
+        Sampler {
+            levels,
+            q: s.faces[0].len() - 1,
+            repeat: s.fast_wrap.unwrap_or([true; 2]),
+            fast: s.fast,
+            min: p.min_filter,
+            mag_linear: p.mag_filter == Filter::Linear,
+            c_switch: if p.mag_filter == Filter::Linear && matches!(p.min_filter, Filter::NearestMipmapNearest | Filter::LinearMipmapNearest) { 0.5 } else { 0.0 },
+            bias: (p.lod_bias + s.unit_bias).clamp(-MAX_LOD_BIAS, MAX_LOD_BIAS),
+            min_lod: p.min_lod,
+            max_lod: p.max_lod,
+        }
+    }
+
+    /// `UnitSampler::sample` at (s, t) with derivatives (dsdx, dtdx) and
+    /// (dsdy, dtdy).
+    #[inline(always)]
+    fn sample<const P: bool>(&self, s: f32, t: f32, dx: [f32; 2], dy: [f32; 2]) -> Vec4 {
+        let rep = self.repeat;
+        match self.fast {
+            Fast::Nearest2D { .. } => return self.levels[0].nearest::<P>(s, t, rep),
+            Fast::Linear2D { .. } => return self.levels[0].linear::<P>(s, t, rep),
+            Fast::General => {}
+        }
+        let (n0, n1) = (self.levels[0].wf, self.levels[0].hf);
+        let lx = ((dx[0] * n0).powi(2) + (dx[1] * n1).powi(2)).sqrt();
+        let ly = ((dy[0] * n0).powi(2) + (dy[1] * n1).powi(2)).sqrt();
+        let rho = lx.max(ly);
+        let lambda = (rho.log2() + self.bias).clamp(self.min_lod, self.max_lod);
+        if lambda > self.c_switch && !lambda.is_nan() {
+            let q = self.q;
+            match self.min {
+                Filter::Nearest => self.levels[0].nearest::<P>(s, t, rep),
+                Filter::Linear => self.levels[0].linear::<P>(s, t, rep),
+                f @ (Filter::NearestMipmapNearest | Filter::LinearMipmapNearest) => {
+                    let d = if lambda <= 0.5 { 0 } else { (((lambda + 0.5).ceil() - 1.0) as usize).min(q) };
+                    self.levels[d].filter::<P>(s, t, f == Filter::LinearMipmapNearest, rep)
+                }
+                f => {
+                    let lin = f == Filter::LinearMipmapLinear;
+                    let d1 = floor(lambda);
+                    if d1 as usize >= q || d1 >= q as f32 {
+                        self.levels[q].filter::<P>(s, t, lin, rep)
+                    } else {
+                        let d1i = d1.max(0.0) as usize;
+                        let t1 = self.levels[d1i].filter::<P>(s, t, lin, rep);
+                        let t2 = self.levels[d1i + 1].filter::<P>(s, t, lin, rep);
+                        lerp(t1, t2, lambda - d1)
+                    }
+                }
+            }
+        } else {
+            self.levels[0].filter::<P>(s, t, self.mag_linear, rep)
+        }
+    }
+}
+
+/// The texture environment of `env.rs` for REPLACE, MODULATE and DECAL,
+/// by the texture's base format.
+#[derive(Clone, Copy)]
+enum EnvFn {
+    Replace { color: bool, alpha: bool },
+    Modulate { color: bool, alpha: bool },
+    DecalRgb,
+    DecalRgba,
+    /// DECAL of other formats: the primary colour passes (undefined).
+    Pass,
+}
+
+impl EnvFn {
+    fn new(mode: u32, base: Base) -> EnvFn {
+        let color = base != Base::Alpha;
+        let alpha = matches!(base, Base::Alpha | Base::LuminanceAlpha | Base::Intensity | Base::Rgba);
+        match (mode, base) {
+            (GL_REPLACE, _) => EnvFn::Replace { color, alpha },
+            (GL_MODULATE, _) => EnvFn::Modulate { color, alpha },
+            (_, Base::Rgb) => EnvFn::DecalRgb,
+            (_, Base::Rgba) => EnvFn::DecalRgba,
+            _ => EnvFn::Pass,
+        }
+    }
+
+    #[inline(always)]
+    fn apply(self, prev: Vec4, ct: Vec4) -> Vec4 {
+        let (pc, pa) = (prev.truncate(), prev.w);
+        let (tc, ta) = (ct.truncate(), ct.w);
+        let out: (Vec3, f32) = match self {
+            EnvFn::Replace { color, alpha } => (if color { tc } else { pc }, if alpha { ta } else { pa }),
+            EnvFn::Modulate { color, alpha } => (if color { pc * tc } else { pc }, if alpha { pa * ta } else { pa }),
+            EnvFn::DecalRgb => (tc, pa),
+            EnvFn::DecalRgba => (pc * (1.0 - ta) + tc * ta, pa),
+            EnvFn::Pass => (pc, pa),
+        };
+        out.0.extend(out.1).clamp(Vec4::ZERO, Vec4::ONE)
+    }
+}
+
+/// A plane's row term and x slope.
+#[derive(Clone, Copy)]
+struct Row {
+    r: f64,
+    dx: f64,
+}
+
+impl Row {
+    #[inline(always)]
+    fn new(p: &Plane, cy: f64) -> Row {
+        Row { r: p.a0 + p.dy * cy, dx: p.dx }
+    }
+    #[inline(always)]
+    fn at(self, cx: f64) -> f64 {
+        self.r + self.dx * cx
+    }
+}
+
+fn same_plane(a: &Plane, b: &Plane) -> bool {
+    a.a0.to_bits() == b.a0.to_bits() && a.dx.to_bits() == b.dx.to_bits() && a.dy.to_bits() == b.dy.to_bits()
+}
+
+fn kernel<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    if x0 >= x1 {
+        return;
+    }
+    let Some(tp) = t.tex.as_ref() else { return reference::shade_span(fs, t, px, y, x0, x1) };
+    let Some((u, sampler)) = unit(tp) else { return reference::shade_span(fs, t, px, y, x0, x1) };
+    let smp = Sampler::new(sampler);
+    let env = EnvFn::new(tp.stage.envs[u].mode, sampler.base);
+    // MODULATE of a texture with colour and alpha: one four-lane product.
+    let modulate = matches!(env, EnvFn::Modulate { color: true, alpha: true });
+    match (smp.pow2_repeat(), modulate) {
+        (true, true) => span::<D, STORE, true, true>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (true, false) => span::<D, STORE, true, false>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (false, true) => span::<D, STORE, false, true>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (false, false) => span::<D, STORE, false, false>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn span<const D: u8, const STORE: bool, const P: bool, const M: bool>(
+    fs: &FragmentState,
+    t: &TriangleSetup,
+    px: &mut SpanPixels,
+    y: usize,
+    x0: usize,
+    x1: usize,
+    tp: &crate::render::setup::TexPlanes,
+    u: usize,
+    env: EnvFn,
+    smp: &Sampler,
+) {
+    let cy = y as f64 + 0.5 - t.y0;
+    let p = &tp.planes[u];
+    let (s_row, t_row, q_row) = (Row::new(&p[0], cy), Row::new(&p[1], cy), Row::new(&p[3], cy));
+    let (sdx, sdy, tdx, tdy, qdx, qdy) = (p[0].dx, p[0].dy, p[1].dx, p[1].dy, p[3].dx, p[3].dy);
+    let z_row = Row::new(&t.z, cy);
+    let w_row = Row::new(&t.q, cy);
+    // 1/w of colour and fog is the texture's 1/q when the planes agree.
+    let shared_w = same_plane(&t.q, &p[3]);
+    let color_rows: [Row; 4] = std::array::from_fn(|c| Row::new(&t.color[c], cy));
+    let flat = t.flat.map(|c| Vec4::from_array(c.map(|v| v as f32 / 255.0)));
+    let fog: Option<(Row, Fog)> = t.fog.as_ref().map(|(plane, f)| (Row::new(plane, cy), *f));
+    let n = x1 - x0;
+    let SpanPixels { color, depth, passed: total, .. } = px;
+    let col = &mut color[..n];
+    let dep = &mut depth[..if D != D_OFF { n } else { 0 }];
+    let mut passed = 0u64;
+    for k in 0..n {
+        let cx = (x0 + k) as f64 + 0.5 - t.x0;
+        if D != D_OFF {
+            let z = depth_to_fixed(z_row.at(cx));
+            let stored = dep[k];
+            let pass = match D {
+                D_LESS => z < stored,
+                D_LEQUAL => z <= stored,
+                _ => fs.depth_func.test(z, stored),
+            };
+            if !pass {
+                continue;
+            }
+            if D != D_ANY || fs.depth_write {
+                dep[k] = z;
+            }
+        }
+        passed += 1;
+        // Texture coordinates (reference::textured_color).
+        let q = q_row.at(cx);
+        let src = 'shade: {
+            if q == 0.0 || !q.is_finite() {
+                break 'shade reference::triangle_color(t, cx, cy);
+            }
+            let iq = 1.0 / q;
+            let (s, tt) = (s_row.at(cx) * iq, t_row.at(cx) * iq);
+            let (sf, tf) = (s as f32, tt as f32);
+            if !(sf.is_finite() && tf.is_finite()) {
+                break 'shade reference::triangle_color(t, cx, cy);
+            }
+            let dx = [((sdx - s * qdx) * iq) as f32, ((tdx - tt * qdx) * iq) as f32];
+            let dy = [((sdy - s * qdy) * iq) as f32, ((tdy - tt * qdy) * iq) as f32];
+            let w = if !t.perspective {
+                1.0
+            } else if shared_w {
+                iq
+            } else {
+                1.0 / w_row.at(cx)
+            };
+            let primary = match flat {
+                Some(c) => c,
+                None => Vec4::from_array(std::array::from_fn(|c| (color_rows[c].at(cx) * w) as f32)).clamp(Vec4::ZERO, Vec4::ONE),
+            };
+            let texel = smp.sample::<P>(sf, tf, dx, dy);
+            // (pc tc, pa ta) lane by lane is env.rs's MODULATE.
+            let c = if M { (primary * texel).clamp(Vec4::ZERO, Vec4::ONE) } else { env.apply(primary, texel) };
+            match &fog {
+                Some((row, f)) => to_u8(f.apply(c, (row.at(cx) * w) as f32)),
+                None => to_u8(c),
+            }
+        };
+        if STORE {
+            col[k] = src;
+        } else {
+            write_color(fs, &mut col[k], src);
+        }
+    }
+    *total += passed;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::fragment::color_to_u8;
+    use crate::render::texture::UNORM8;
+
+    fn values() -> Vec<f32> {
+        let mut v = vec![0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 0.9999999, -0.9999999, 1e-30, -1e-30, 8388607.5, -8388607.5, 8388608.0, -8388608.0, 1e20, -1e20, f32::MAX, f32::MIN, f32::INFINITY, f32::NEG_INFINITY, f32::NAN, 2147483520.0, -2147483648.0, 3e9, -3e9];
+        let mut seed = 7u32;
+        for _ in 0..200_000 {
+            seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+            v.push(f32::from_bits(seed));
+            v.push((seed as i32) as f32 / 65536.0);
+            v.push((seed % 4096) as f32 / 64.0 - 32.0);
+        }
+        v
+    }
+
+    /// The floors and the integer conversion agree with std's floor and
+    /// `as` on random bit patterns, fractions and the edge values.
+    #[test]
+    fn floors_match_std() {
+        for x in values() {
+            assert_eq!(floor(x).to_bits(), x.floor().to_bits(), "floor {x}");
+            assert_eq!(floor_to_i32(x), x.floor() as i32, "floor as i32 {x}");
+        }
+    }
+
+    /// The four-lane conversions agree with the scalar ones.
+    #[test]
+    fn lane_conversions_match_scalar() {
+        for p in 0..=255u8 {
+            let t = texel([p, 255 - p, p / 3, 0]);
+            assert_eq!(t.to_array(), [UNORM8[p as usize], UNORM8[255 - p as usize], UNORM8[(p / 3) as usize], 0.0]);
+        }
+        let v = values();
+        for c in v.chunks_exact(4) {
+            let c = Vec4::from_slice(c);
+            assert_eq!(to_u8(c), color_to_u8(c), "{c:?}");
+        }
+        for k in 0..=2550 {
+            let c = Vec4::splat(k as f32 / 2550.0);
+            assert_eq!(to_u8(c), color_to_u8(c), "{c:?}");
+        }
+    }
+}
