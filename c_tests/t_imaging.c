@@ -87,6 +87,14 @@ int main(void)
     /* 0 -> bin 0; 128/255 * 3 = 1.506 -> bin 2; 1 -> bin 3. */
     h_expect(counts[0] == 1 && counts[1] == 0 && counts[2] == 1 && counts[3] == 1,
              "histogram %u %u %u %u", counts[0], counts[1], counts[2], counts[3]);
+    /* A proxy table runs at once, even while a list is compiled. */
+    GLuint list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
+    glColorTable(GL_PROXY_COLOR_TABLE, GL_RGBA8, 64, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glEndList();
+    GLint pw = 0;
+    glGetColorTableParameteriv(GL_PROXY_COLOR_TABLE, GL_COLOR_TABLE_WIDTH, &pw);
+    h_expect(pw == 64, "proxy table width %d", pw);
     h_expect_no_error("imaging");
 
     /* A 2x1 rectangle texture, nearest, sampled at s = 1.5: texel 1. */

@@ -295,6 +295,7 @@ fn errors_queries_and_proxies() {
     let q = |c: &mut Context, p: u32| c.get_color_table_parameter(im::GL_PROXY_COLOR_TABLE, p).unwrap().as_f64()[0];
     assert_eq!((q(&mut c, im::GL_COLOR_TABLE_WIDTH), q(&mut c, im::GL_COLOR_TABLE_FORMAT), q(&mut c, 0x80DE)), (64.0, t::GL_LUMINANCE8 as f64, 8.0));
     assert_eq!(c.take_error(), GL_NO_ERROR);
+    assert_eq!(c.get_color_table_parameter(GL_COLOR_TABLE, im::GL_COLOR_TABLE_RED_SIZE).unwrap().as_f64()[0], 0.0, "no table yet");
     // Sub-tables must fit.
     table(&mut c, GL_COLOR_TABLE, GL_RGBA, &[[0.0; 4]; 4]);
     run(&mut c, ImagingCmd::ColorSubTable { target: GL_COLOR_TABLE, start: 3, count: 2, data: None });

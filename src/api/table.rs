@@ -157,6 +157,26 @@ fn imaging(cmd: ImagingCmd) -> Command {
     Command::Imaging(Box::new(cmd))
 }
 
+/// glColorTable's and glHistogram's command; a proxy target runs at once
+/// and is never compiled into a display list (section 5.4).
+fn imaging_or_proxy(c: &mut Context, cmd: ImagingCmd) -> Option<Command> {
+    use crate::gl::imaging::*;
+    let proxy = match &cmd {
+        ImagingCmd::ColorTable { target, .. } => matches!(*target, GL_PROXY_COLOR_TABLE | GL_PROXY_POST_CONVOLUTION_COLOR_TABLE | GL_PROXY_POST_COLOR_MATRIX_COLOR_TABLE),
+        ImagingCmd::Histogram { target, .. } => *target == GL_PROXY_HISTOGRAM,
+        _ => false,
+    };
+    if !proxy {
+        return Some(imaging(cmd));
+    }
+    if c.in_begin_end() {
+        c.set_error(GL_INVALID_OPERATION);
+    } else {
+        c.imaging_command(&cmd);
+    }
+    None
+}
+
 /// glConvolutionParameter*v's values: one for the border mode, else four;
 /// the integer form's border colour is normalized as colours are (table
 /// 2.9), scale and bias convert plainly.
@@ -535,7 +555,7 @@ super::entry_points! {
     list glCopyTexSubImage3D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 3, sub: true, target, level, internal_format: 0, offset: [xoffset, yoffset, zoffset], rect: [x, y, width, height], border: 0 })) }
     list glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) { |_c| Command::BlendColor([red, green, blue, alpha]) }
     list glBlendEquation(mode: GLenum) { |_c| Command::BlendEquation(mode) }
-    list glColorTable(target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, type_: GLenum, table: *const c_void) { |c| match c.unpack_imaging(width, 1, format, type_, table as *const u8) { Ok(data) => imaging(ImagingCmd::ColorTable { target, internal_format: internalformat, width, data }), Err(e) => Command::Error(e) } }
+    list glColorTable(target: GLenum, internalformat: GLenum, width: GLsizei, format: GLenum, type_: GLenum, table: *const c_void) { |c| match c.unpack_imaging(width, 1, format, type_, table as *const u8) { Ok(data) => imaging_or_proxy(c, ImagingCmd::ColorTable { target, internal_format: internalformat, width, data })?, Err(e) => Command::Error(e) } }
     list glColorTableParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) { |_c| imaging(ImagingCmd::ColorTableParameter { target, pname, v: arr::<GLfloat, 4>(params)? }) }
     list glColorTableParameteriv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| imaging(ImagingCmd::ColorTableParameter { target, pname, v: arr::<GLint, 4>(params)?.map(|x| x as f32) }) }
     list glCopyColorTable(target: GLenum, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei) { |_c| imaging(ImagingCmd::CopyColorTable { target, internal_format: internalformat, x, y, width }) }
@@ -557,7 +577,7 @@ super::entry_points! {
     exec glGetSeparableFilter(target: GLenum, format: GLenum, type_: GLenum, row: *mut c_void, column: *mut c_void, span: *mut c_void) { |c| { let _ = span; if target == GL_SEPARABLE_2D { c.get_convolution_filter(target, format, type_, row as *mut u8, Some(column as *mut u8)) } else { c.set_error(GL_INVALID_ENUM) } } }
     exec glGetConvolutionParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_convolution_parameter(target, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
     exec glGetConvolutionParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_convolution_parameter(target, pname) { write_out(params, &v.as_i32()) } }
-    list glHistogram(target: GLenum, width: GLsizei, internalformat: GLenum, sink: GLboolean) { |_c| imaging(ImagingCmd::Histogram { target, width, internal_format: internalformat, sink: truth(sink) }) }
+    list glHistogram(target: GLenum, width: GLsizei, internalformat: GLenum, sink: GLboolean) { |c| imaging_or_proxy(c, ImagingCmd::Histogram { target, width, internal_format: internalformat, sink: truth(sink) })? }
     list glResetHistogram(target: GLenum) { |_c| imaging(ImagingCmd::ResetHistogram(target)) }
     exec glGetHistogram(target: GLenum, reset: GLboolean, format: GLenum, type_: GLenum, values: *mut c_void) { |c| c.get_histogram(target, truth(reset), format, type_, values as *mut u8) }
     exec glGetHistogramParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_histogram_parameter(target, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }

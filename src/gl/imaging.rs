@@ -228,8 +228,11 @@ pub struct Imaging {
 #[derive(Clone, Debug, PartialEq)]
 pub struct PixelModeParams {
     tables: [([f32; 4], [f32; 4]); 3],
-    filters: [(u32, [f32; 4], [f32; 4], [f32; 4]); 3],
+    filters: [FilterParams; 3],
 }
+
+/// A filter's border mode, border colour, scale and bias.
+type FilterParams = (u32, [f32; 4], [f32; 4], [f32; 4]);
 
 impl Imaging {
     pub fn pixel_mode_params(&self) -> PixelModeParams {
@@ -453,7 +456,8 @@ impl Context {
         };
         let t = if proxy { &self.imaging.proxies[k] } else { &self.imaging.tables[k] };
         let bits = color_format(t.internal_format).map_or([0; 7], |f| f.1);
-        let size = |c: usize| if t.width > 0 || proxy { bits[c] as i64 } else { bits[c] as i64 };
+        // Component sizes of an empty table are 0 (their initial value).
+        let size = |c: usize| if t.width > 0 { bits[c] as i64 } else { 0 };
         Some(match pname {
             GL_COLOR_TABLE_SCALE if !proxy => Value::Floats(t.scale.iter().map(|&x| x as f64).collect()),
             GL_COLOR_TABLE_BIAS if !proxy => Value::Floats(t.bias.iter().map(|&x| x as f64).collect()),
@@ -816,9 +820,9 @@ impl Context {
         if s.minmax {
             let m = &mut im.minmax;
             for c in &px {
-                for k in 0..4 {
-                    m.min[k] = m.min[k].min(c[k]);
-                    m.max[k] = m.max[k].max(c[k]);
+                for (k, &v) in c.iter().enumerate() {
+                    m.min[k] = m.min[k].min(v);
+                    m.max[k] = m.max[k].max(v);
                 }
             }
             sink |= m.sink;

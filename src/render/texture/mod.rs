@@ -18,14 +18,15 @@
 //! depth in every colour channel.
 //!
 //! Fast paths ([`Fast`], chosen once when validation builds the sampler):
-//! a 2D texture stored as 8-bit RGBA, without border, whose minification
+//! a 1D or 2D texture stored as 8-bit RGBA, without border, whose minification
 //! and magnification filters are the same non-mipmap filter and whose S
 //! and T wrap modes are REPEAT or CLAMP_TO_EDGE is sampled by a nearest or
 //! bilinear fetch specialized for that case: no LOD (both filters give the
 //! same answer at every λ), no border colour, no depth comparison, no
 //! per-texel storage dispatch. They compute exactly what the general path
 //! computes (the unit tests compare them on random coordinates);
-//! `SOFTGL_REFERENCE=1` turns them off.
+//! `SOFTGL_REFERENCE=1` turns them off. The same fetches serve each level
+//! of 1D, 2D and cube-map textures under the other filters (`fast_wrap`).
 //!
 //! Addressing (3.8.7): u = s * n (rectangle textures: u = s, their
 //! coordinates are in texels, and ρ is taken from them directly). For
@@ -355,9 +356,10 @@ pub struct UnitSampler {
     /// parameters ([`Fast::General`] when none applies).
     pub fast: Fast,
     /// For the general path's per-level filtering: Some(repeat) when a 2D
-    /// colour texture wraps S and T by REPEAT or CLAMP_TO_EDGE, so 8-bit
-    /// levels without border take the specialized fetches (mipmapped
-    /// filters then pay only for the LOD and the blend of two levels).
+    /// or cube-map colour texture wraps S and T (a 1D one S) by REPEAT or
+    /// CLAMP_TO_EDGE, so 8-bit levels without border take the specialized
+    /// fetches (mipmapped filters then pay only for the LOD and the blend
+    /// of two levels; cube maps only for the face selection).
     pub fast_wrap: Option<[bool; 2]>,
 }
 
@@ -375,11 +377,18 @@ impl Fast {
     /// parameters, if one applies.
     pub fn choose(target: Target, faces: &[Vec<Arc<Image>>], p: &Params) -> Fast {
         let Some(img) = faces.first().and_then(|l| l.first()) else { return Fast::General };
-        let wraps_ok = p.wrap[..2].iter().all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge));
-        if target != Target::T2D || img.border != 0 || !img.texels.is_compact() || img.base == Base::Depth || !wraps_ok || p.min_filter != p.mag_filter {
+        // A 1D texture is a 2D one of height 1 sampled at t = 1/2 (T's wrap
+        // mode plays no part).
+        let n = match target {
+            Target::T1D => 1,
+            Target::T2D => 2,
+            _ => return Fast::General,
+        };
+        let wraps_ok = p.wrap[..n].iter().all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge));
+        if img.border != 0 || !img.texels.is_compact() || img.base == Base::Depth || !wraps_ok || p.min_filter != p.mag_filter {
             return Fast::General;
         }
-        let repeat = [p.wrap[0] == Wrap::Repeat, p.wrap[1] == Wrap::Repeat];
+        let repeat = [p.wrap[0] == Wrap::Repeat, n == 1 || p.wrap[1] == Wrap::Repeat];
         match p.min_filter {
             Filter::Nearest => Fast::Nearest2D { repeat },
             Filter::Linear => Fast::Linear2D { repeat },
@@ -515,8 +524,16 @@ impl UnitSampler {
             return UnitSampler { target, faces, params, unit_bias, base, fast: Fast::General, fast_wrap: None };
         }
         let fast = Fast::choose(target, &faces, &params);
-        let wraps_ok = params.wrap[..2].iter().all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge));
-        let fast_wrap = (target == Target::T2D && base != Base::Depth && wraps_ok).then_some([params.wrap[0] == Wrap::Repeat, params.wrap[1] == Wrap::Repeat]);
+        let wraps_ok = |n: usize| params.wrap[..n].iter().all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge));
+        let repeat = |k: usize| params.wrap[k] == Wrap::Repeat;
+        // Cube map faces are 2D images (sampled after face selection); a 1D
+        // image is a 2D one of height 1 sampled at t = 1/2 (see `filter`).
+        let fast_wrap = match target {
+            _ if base == Base::Depth => None,
+            Target::T2D | Target::Cube if wraps_ok(2) => Some([repeat(0), repeat(1)]),
+            Target::T1D if wraps_ok(1) => Some([repeat(0), true]),
+            _ => None,
+        };
         UnitSampler { target, faces, params, unit_bias, base, fast, fast_wrap }
     }
 
@@ -546,6 +563,16 @@ impl UnitSampler {
         Vec4::from_array(lerp4(r0, r1, wb))
     }
 
+    /// The t a 2D fetch takes: a 1D texture's single row at 1/2.
+    #[inline(always)]
+    fn fast_t(&self, c: &Coord) -> f32 {
+        if self.target == Target::T1D {
+            0.5
+        } else {
+            c.str[1]
+        }
+    }
+
     /// Samples at a fragment's coordinates (3.8.7 - 3.8.9, 3.8.14 for cube maps).
     pub fn sample(&self, c: &Coord) -> Vec4 {
         match self.fast {
@@ -553,13 +580,13 @@ impl UnitSampler {
             Fast::Nearest2D { repeat } => {
                 let img = &self.faces[0][0];
                 if let Texels::Rgba8(tex) = &img.texels {
-                    return Self::nearest_2d(img, tex, c.str[0], c.str[1], repeat);
+                    return Self::nearest_2d(img, tex, c.str[0], self.fast_t(c), repeat);
                 }
             }
             Fast::Linear2D { repeat } => {
                 let img = &self.faces[0][0];
                 if let Texels::Rgba8(tex) = &img.texels {
-                    return Self::linear_2d(img, tex, c.str[0], c.str[1], repeat);
+                    return Self::linear_2d(img, tex, c.str[0], self.fast_t(c), repeat);
                 }
             }
         }
@@ -623,7 +650,11 @@ impl UnitSampler {
     /// per texel (before filtering).
     fn filter(&self, img: &Image, str: [f32; 3], linear: bool) -> [f32; 4] {
         if let (Some(repeat), Texels::Rgba8(tex), 0) = (self.fast_wrap, &img.texels, img.border) {
-            let v = if linear { Self::linear_2d(img, tex, str[0], str[1], repeat) } else { Self::nearest_2d(img, tex, str[0], str[1], repeat) };
+            // A 1D image's single row at t = 1/2: the bilinear fetch then
+            // weighs the row by exactly 1 (whatever t is, the general path
+            // ignores it).
+            let t = if self.target == Target::T1D { 0.5 } else { str[1] };
+            let v = if linear { Self::linear_2d(img, tex, str[0], t, repeat) } else { Self::nearest_2d(img, tex, str[0], t, repeat) };
             return v.to_array();
         }
         let dims = self.dims();
@@ -812,6 +843,46 @@ mod tests {
                 let d = 0.01 * (k % 50) as f32;
                 let c = Coord { str: [u, v, 0.0], dx: [d, 0.0, 0.0], dy: [0.0, d * 0.7, 0.0] };
                 assert_eq!(s.sample(&c), reference.sample(&c), "{filter:?} at {u} {v} d {d}");
+            }
+        }
+    }
+
+    /// 1D textures and cube maps take the per-level fetches; they give
+    /// exactly the reference path's texels, for every filter, at
+    /// coordinates (and cube directions) all around.
+    #[test]
+    fn one_d_and_cube_fetches_match_the_reference() {
+        let mut seed = 4242u32;
+        let mut rnd = move || {
+            seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+            seed
+        };
+        let mut level = |w: i32, h: i32, rnd: &mut dyn FnMut() -> u32| {
+            let texels: Vec<[u8; 4]> = (0..w * h).map(|_| rnd().to_ne_bytes()).collect();
+            Arc::new(Image { width: w, height: h, depth: 1, border: 0, internal_format: 0x8058, base: Base::Rgba, texels: Texels::Rgba8(Arc::new(texels)) })
+        };
+        let one_d = vec![level(8, 1, &mut rnd), level(4, 1, &mut rnd), level(2, 1, &mut rnd), level(1, 1, &mut rnd)];
+        let cube: Vec<Vec<Arc<Image>>> = (0..6).map(|_| vec![level(4, 4, &mut rnd), level(2, 2, &mut rnd), level(1, 1, &mut rnd)]).collect();
+        let filters = [Filter::Nearest, Filter::Linear, Filter::NearestMipmapNearest, Filter::LinearMipmapNearest, Filter::NearestMipmapLinear, Filter::LinearMipmapLinear];
+        for (target, faces) in [(Target::T1D, vec![one_d]), (Target::Cube, cube)] {
+            for min_filter in filters {
+                for wrap in [Wrap::Repeat, Wrap::ClampToEdge] {
+                    // NEAREST/NEAREST and LINEAR/LINEAR 1D textures take the
+                    // whole-sampler fetches, the rest the per-level ones.
+                    let mag_filter = if min_filter == Filter::Nearest { Filter::Nearest } else { Filter::Linear };
+                    let params = Params { min_filter, mag_filter, wrap: [wrap; 3], ..Default::default() };
+                    let s = UnitSampler::new(target, faces.clone(), params, 0.0, Base::Rgba);
+                    assert!(s.fast_wrap.is_some(), "{target:?}");
+                    assert_eq!(s.fast != Fast::General, target == Target::T1D && !min_filter.is_mipmap(), "{target:?} {min_filter:?}");
+                    let reference = UnitSampler { fast: Fast::General, fast_wrap: None, ..s.clone() };
+                    for _ in 0..3000 {
+                        let mut v = || (rnd() % 40000) as f32 / 10000.0 - 2.0;
+                        let str = [v(), v(), v()];
+                        let d = (rnd() % 100) as f32 / 200.0;
+                        let c = Coord { str, dx: [d, 0.0, d * 0.5], dy: [0.0, d * 0.3, 0.0] };
+                        assert_eq!(s.sample(&c), reference.sample(&c), "{target:?} {min_filter:?} {wrap:?} at {str:?} d {d}");
+                    }
+                }
             }
         }
     }
