@@ -239,7 +239,30 @@ unsafe fn configs(dpy: *mut Display, screen: c_int) -> Vec<&'static FbConfig> {
         }
     }
     s.lists.push((dpy as usize, screen, list.clone()));
+    if !s.lists.iter().any(|(d, sc, _)| *d == dpy as usize && *sc != screen) {
+        // The display's first use: forget it when it closes.
+        drop(s);
+        let codes = (x.XAddExtension)(dpy);
+        if !codes.is_null() {
+            (x.XESetCloseDisplay)(dpy, (*codes).extension, Some(display_closed));
+        }
+    }
     list
+}
+
+/// XCloseDisplay's hook: everything softgl keeps for the display goes
+/// (drawables with their framebuffers, shared-memory segments and GCs,
+/// configs, chosen visuals), so that a display opened later at the same
+/// address starts afresh.
+unsafe extern "C" fn display_closed(dpy: *mut Display, _codes: *mut xlib::XExtCodes) -> c_int {
+    let _ = std::panic::catch_unwind(|| {
+        drawable::remove_display(dpy);
+        let mut s = lock();
+        s.lists.retain(|(d, _, _)| *d != dpy as usize);
+        s.visual_double.retain(|(d, _, _)| *d != dpy as usize);
+        s.events.retain(|(d, _, _)| *d != dpy as usize);
+    });
+    0
 }
 
 /// The config a visual stands for (glXChooseVisual's choice of buffering).
@@ -655,8 +678,22 @@ pub unsafe fn create_context(dpy: *mut Display, vis: *mut XVisualInfo, share: *m
     with_share(new_context(dpy, config_of_visual(dpy, vis)), share)
 }
 
+/// glXCreateNewContext: GLXBadFBConfig for something that is not one of
+/// softgl's configs, BadMatch for colour index (no config offers it),
+/// BadValue for another render type.
 pub unsafe fn create_new_context(dpy: *mut Display, config: *const FbConfig, render_type: c_int, share: *mut GlxContext, _direct: Bool) -> *mut GlxContext {
-    if config.is_null() || render_type != GLX_RGBA_TYPE {
+    const X_GLX_CREATE_NEW_CONTEXT: u16 = 24;
+    let err = if config.is_null() || !is_config(config) {
+        Some(xlib::GlxError::Glx(GLX_BAD_FBCONFIG_ERROR))
+    } else if render_type == GLX_COLOR_INDEX_TYPE {
+        Some(xlib::GlxError::BadMatch)
+    } else if render_type != GLX_RGBA_TYPE {
+        Some(xlib::GlxError::BadValue)
+    } else {
+        None
+    };
+    if let Some(e) = err {
+        xlib::report_error(dpy, e, X_GLX_CREATE_NEW_CONTEXT);
         return null_mut();
     }
     with_share(new_context(dpy, Some(&*config)), share)
