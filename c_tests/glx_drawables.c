@@ -561,5 +561,11 @@ int main(int argc, char **argv)
         return 2;
     }
     XCloseDisplay(dpy);
+    if (!strcmp(mode, "shm")) {
+        /* Closing the display frees what softgl kept for it: the window's
+         * segment goes with its drawable. */
+        long left = sysv_mapped();
+        CHECK(left == 0, "after XCloseDisplay %ld bytes of SysV memory are still mapped", left);
+    }
     return failures;
 }

@@ -786,7 +786,7 @@ super::entry_points! {
     free glXDestroyContext(dpy: *mut Display, ctx: GLXContext) { glx::destroy_context(dpy, ctx) }
     free glXMakeCurrent(dpy: *mut Display, drawable: GLXDrawable, ctx: GLXContext) -> Bool { glx::make_current(dpy, drawable, ctx) }
     free glXCopyContext(dpy: *mut Display, src: GLXContext, dst: GLXContext, mask: std::ffi::c_ulong) { glx::copy_context(dpy, src, dst, mask) }
-    free["copies the back buffer to the front and shows it with XPutImage; no MIT-SHM"] glXSwapBuffers(dpy: *mut Display, drawable: GLXDrawable) { glx::swap_buffers(dpy, drawable) }
+    free glXSwapBuffers(dpy: *mut Display, drawable: GLXDrawable) { glx::swap_buffers(dpy, drawable) }
     free glXCreateGLXPixmap(dpy: *mut Display, visual: *mut XVisualInfo, pixmap: XID) -> GLXDrawable { glx::create_glx_pixmap(dpy, visual, pixmap) }
     free glXDestroyGLXPixmap(dpy: *mut Display, pixmap: GLXDrawable) { glx::destroy_pixmap(dpy, pixmap) }
     free glXIsDirect(dpy: *mut Display, ctx: GLXContext) -> Bool { glx::is_direct(dpy, ctx) }
@@ -808,7 +808,7 @@ super::entry_points! {
     free glXDestroyPbuffer(dpy: *mut Display, pbuf: GLXDrawable) { glx::destroy_pbuffer(dpy, pbuf) }
     free glXQueryDrawable(dpy: *mut Display, draw: GLXDrawable, attribute: c_int, value: *mut std::ffi::c_uint) { glx::query_drawable(dpy, draw, attribute, value) }
     free glXCreateNewContext(dpy: *mut Display, config: GLXFBConfig, renderType: c_int, shareList: GLXContext, direct: Bool) -> GLXContext { glx::create_new_context(dpy, config, renderType, shareList, direct) }
-    free["the read drawable must be the draw drawable's framebuffer: reads come from the draw drawable"] glXMakeContextCurrent(dpy: *mut Display, draw: GLXDrawable, read: GLXDrawable, ctx: GLXContext) -> Bool { glx::make_context_current(dpy, draw, read, ctx) }
+    free glXMakeContextCurrent(dpy: *mut Display, draw: GLXDrawable, read: GLXDrawable, ctx: GLXContext) -> Bool { glx::make_context_current(dpy, draw, read, ctx) }
     free glXGetCurrentReadDrawable() -> GLXDrawable { glx::get_current_read_drawable() }
     free["GLX_FBCONFIG_ID, GLX_RENDER_TYPE and GLX_SCREEN"] glXQueryContext(dpy: *mut Display, ctx: GLXContext, attribute: c_int, value: *mut c_int) -> c_int { glx::query_context(dpy, ctx, attribute, value) }
     free glXSelectEvent(dpy: *mut Display, draw: GLXDrawable, event_mask: std::ffi::c_ulong) { glx::select_event(dpy, draw, event_mask) }

@@ -115,7 +115,21 @@ pub struct Xlib {
     pub XScreenCount: unsafe extern "C" fn(*mut Display) -> c_int,
     pub XConnectionNumber: unsafe extern "C" fn(*mut Display) -> c_int,
     pub XNextRequest: unsafe extern "C" fn(*mut Display) -> c_ulong,
+    pub XAddExtension: unsafe extern "C" fn(*mut Display) -> *mut XExtCodes,
+    pub XESetCloseDisplay: unsafe extern "C" fn(*mut Display, c_int, Option<CloseDisplay>) -> Option<CloseDisplay>,
 }
+
+/// XExtCodes (Xlib.h).
+#[repr(C)]
+pub struct XExtCodes {
+    pub extension: c_int,
+    pub major_opcode: c_int,
+    pub first_event: c_int,
+    pub first_error: c_int,
+}
+
+/// A close-display hook (XESetCloseDisplay).
+pub type CloseDisplay = unsafe extern "C" fn(*mut Display, *mut XExtCodes) -> c_int;
 
 /// XErrorEvent (Xlib.h).
 #[repr(C)]
@@ -161,6 +175,8 @@ unsafe fn load() -> Option<Xlib> {
         XScreenCount: sym(lib, b"XScreenCount\0")?,
         XConnectionNumber: sym(lib, b"XConnectionNumber\0")?,
         XNextRequest: sym(lib, b"XNextRequest\0")?,
+        XAddExtension: sym(lib, b"XAddExtension\0")?,
+        XESetCloseDisplay: sym(lib, b"XESetCloseDisplay\0")?,
     })
 }
 
