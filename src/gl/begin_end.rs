@@ -155,26 +155,23 @@ impl Context {
                 }
             }
             GL_TRIANGLE_STRIP => {
+                // verts[n % 2] holds vertex n - 2 and the other slot n - 1:
+                // each new vertex replaces the oldest, with no shifting.
                 if n >= 2 {
-                    let (a, b) = (asm.verts[0], asm.verts[1]);
+                    let (old, prev) = (n % 2, 1 - n % 2);
                     // Odd triangles swap their first two vertices to keep
                     // the strip's orientation; the provoking vertex is the
                     // newest either way.
-                    if n % 2 == 0 {
-                        self.triangle([&a, &b, &v], 2, [true; 3]);
-                    } else {
-                        self.triangle([&b, &a, &v], 2, [true; 3]);
-                    }
-                    asm.verts[0] = b;
-                    asm.verts[1] = v;
+                    let t = if n % 2 == 0 { [&asm.verts[old], &asm.verts[prev], &v] } else { [&asm.verts[prev], &asm.verts[old], &v] };
+                    self.triangle(t, 2, [true; 3]);
+                    asm.verts[old] = v;
                 } else {
                     asm.verts.push(v);
                 }
             }
             GL_TRIANGLE_FAN => {
                 if n >= 2 {
-                    let (a, b) = (asm.verts[0], asm.verts[1]);
-                    self.triangle([&a, &b, &v], 2, [true; 3]);
+                    self.triangle([&asm.verts[0], &asm.verts[1], &v], 2, [true; 3]);
                     asm.verts[1] = v;
                 } else {
                     asm.verts.push(v);
@@ -212,9 +209,8 @@ impl Context {
             }
             GL_LINES => {
                 if n % 2 == 1 {
-                    let a = asm.verts[0];
                     asm.stipple = 0;
-                    self.line(&a, &v, &mut asm.stipple);
+                    self.line(&asm.verts[0], &v, &mut asm.stipple);
                     asm.verts.clear();
                 } else {
                     asm.verts.push(v);
@@ -222,8 +218,7 @@ impl Context {
             }
             GL_LINE_STRIP => {
                 if n >= 1 {
-                    let a = asm.verts[0];
-                    self.line(&a, &v, &mut asm.stipple);
+                    self.line(&asm.verts[0], &v, &mut asm.stipple);
                     asm.verts[0] = v;
                 } else {
                     asm.verts.push(v);
@@ -232,8 +227,7 @@ impl Context {
             GL_LINE_LOOP => {
                 // verts[0]: the first vertex; verts[1]: the latest.
                 if n >= 1 {
-                    let a = asm.verts[1];
-                    self.line(&a, &v, &mut asm.stipple);
+                    self.line(&asm.verts[1], &v, &mut asm.stipple);
                     asm.verts[1] = v;
                 } else {
                     asm.verts.push(v);

@@ -144,9 +144,20 @@ pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3]
         tile::flush(rs, fb);
         return polygon_mode::draw(rs, fb, v, flat_color, edges);
     }
+    // No user clip planes and every vertex well inside: no clipping.
+    if rs.smooth.polygon.is_none() && rs.clip_planes.len() == clip::FIXED_PLANES.len() && v.iter().all(|cv| clip::inside_fixed(cv.pos)) {
+        let pos = v.map(|cv| setup::window_pos(rs, cv.pos));
+        return setup::triangle_at(rs, fb, pos, v, flat_color);
+    }
     let mut poly = clip::Polygon::new();
     match clip::clip_triangle(&rs.clip_planes, v, &mut poly) {
         clip::Outcome::Rejected => {}
+        clip::Outcome::Inside if rs.smooth.polygon.is_none() => {
+            // The common case: positions to window space, attributes read
+            // in place from the clip vertices.
+            let pos = v.map(|cv| setup::window_pos(rs, cv.pos));
+            setup::triangle_at(rs, fb, pos, v, flat_color);
+        }
         clip::Outcome::Inside => {
             let w = [0, 1, 2].map(|i| setup::to_window(rs, v[i]));
             fill_triangle(rs, fb, &w, flat_color);
