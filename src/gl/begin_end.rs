@@ -117,7 +117,8 @@ impl Context {
             Some(f) if self.fog.coord_src == super::fog::GL_FOG_COORD => f.vertex_value(self.current.fog_coord),
             Some(f) => f.vertex_value((self.derived.modelview * obj).z.abs()),
         };
-        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary, back_secondary };
+        let mut v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary, back_secondary, inside: false, win: [0.0; 4], snapped: [0; 2] };
+        v.place(&self.derived.render);
         if asm.mode == GL_POINTS {
             asm.point_size = self.derived_point_size(obj);
         }

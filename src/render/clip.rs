@@ -170,7 +170,7 @@ mod tests {
     use super::*;
 
     fn v(p: [f32; 4]) -> ClipVertex {
-        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE, edge: true, tex: Default::default(), fog: 0.0, secondary: Vec4::ZERO, back_secondary: Vec4::ZERO }
+        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE, edge: true, tex: Default::default(), fog: 0.0, secondary: Vec4::ZERO, back_secondary: Vec4::ZERO, inside: false, win: [0.0; 4], snapped: [0; 2] }
     }
 
     /// `inside_fixed` agrees with the outcodes of FIXED_PLANES and the

@@ -145,9 +145,9 @@ pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3]
         return polygon_mode::draw(rs, fb, v, flat_color, edges);
     }
     // No user clip planes and every vertex well inside: no clipping.
-    if rs.smooth.polygon.is_none() && rs.clip_planes.len() == clip::FIXED_PLANES.len() && v.iter().all(|cv| clip::inside_fixed(cv.pos)) {
-        let pos = v.map(|cv| setup::window_pos(rs, cv.pos));
-        return setup::triangle_at(rs, fb, pos, v, flat_color);
+    // (Their window positions were computed once per vertex: `place`.)
+    if rs.smooth.polygon.is_none() && rs.clip_planes.len() == clip::FIXED_PLANES.len() && v.iter().all(|cv| cv.inside) {
+        return setup::triangle_placed(rs, fb, v, flat_color);
     }
     let mut poly = clip::Polygon::new();
     match clip::clip_triangle(&rs.clip_planes, v, &mut poly) {

@@ -175,12 +175,27 @@ pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &
     triangle_at(rs, fb, pos, w.each_ref(), flat_color)
 }
 
+/// [`triangle`] for clip vertices whose window positions are already
+/// computed (`ClipVertex::place`).
+pub fn triangle_placed(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, v: [&ClipVertex; 3], flat_color: [Vec4; 2]) {
+    let pos = v.map(|cv| cv.win);
+    let fx = v.map(|cv| cv.snapped[0]);
+    let fy = v.map(|cv| cv.snapped[1]);
+    triangle_snapped(rs, fb, pos, fx, fy, v, flat_color)
+}
+
 /// [`triangle`] for window positions `pos` (x, y, z, 1/w) whose other
 /// attributes are read from `attrs`.
 #[inline]
 pub fn triangle_at<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], attrs: [&A; 3], flat_color: [Vec4; 2]) {
     let fx = pos.map(|p| snap(p[0]));
     let fy = pos.map(|p| snap(p[1]));
+    triangle_snapped(rs, fb, pos, fx, fy, attrs, flat_color)
+}
+
+/// [`triangle_at`] with the vertices already snapped to (fx, fy).
+#[inline(always)]
+fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], fx: [i64; 3], fy: [i64; 3], attrs: [&A; 3], flat_color: [Vec4; 2]) {
     let area = (fx[1] - fx[0]) * (fy[2] - fy[0]) - (fx[2] - fx[0]) * (fy[1] - fy[0]);
     if area == 0 {
         return;
@@ -192,6 +207,10 @@ pub fn triangle_at<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer:
     let order = if ccw { [0, 1, 2] } else { [0, 2, 1] };
     let ex = order.map(|i| fx[i]);
     let ey = order.map(|i| fy[i]);
+    // No pixel centre covered: no planes to compute.
+    if !raster::covers_any(ex, ey, rs.draw_rect) {
+        return;
+    }
     let zq = order.map(|i| (pos[i][2], pos[i][3]));
     let v = order.map(|i| attrs[i]);
 
