@@ -126,19 +126,53 @@ fn row_span(edges: &[Edge; 3], py: i64, col0: i64, col1: i64) -> (i64, i64) {
     (lo, hi)
 }
 
-/// Does the triangle cover any pixel centre inside `rect`? A cheap test
-/// before setup: many tiny triangles of a fine mesh cover none.
-#[inline]
-pub fn covers_any(x: [i64; 3], y: [i64; 3], rect: Rect) -> bool {
-    let (row0, row1, col0, col1) = centre_box(x, y, rect);
-    if row0 >= row1 || col0 >= col1 {
-        return false;
+/// The covered runs of a short triangle, found once before setup (which
+/// a triangle covering nothing skips) and shaded without a second scan.
+pub struct Runs {
+    runs: [(u32, u32, u32); Runs::MAX],
+    len: usize,
+}
+
+impl Runs {
+    /// Triangles spanning at most this many rows of pixel centres.
+    pub const MAX: usize = 12;
+
+    /// The runs of triangle (x, y) in `rect` cut by `stipple`, or None when
+    /// it may span more rows (or stipple runs) than fit: take [`triangle`].
+    #[inline]
+    pub fn of(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>) -> Option<Runs> {
+        let (row0, row1, _, _) = centre_box(x, y, rect);
+        if row1 - row0 > Runs::MAX as i64 {
+            return None;
+        }
+        let mut r = Runs { runs: [(0, 0, 0); Runs::MAX], len: 0 };
+        let mut overflow = false;
+        spans(x, y, rect, stipple, |py, lo, hi| {
+            if r.len == Runs::MAX {
+                overflow = true;
+            } else {
+                r.runs[r.len] = (py as u32, lo as u32, hi as u32);
+                r.len += 1;
+            }
+        });
+        (!overflow).then_some(r)
     }
-    let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
-    (row0..row1).any(|py| {
-        let (lo, hi) = row_span(&edges, py, col0, col1);
-        lo < hi
-    })
+
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Shades the runs now, on this thread (as [`triangle`] would).
+    pub fn shade(&self, rs: &RenderState, fb: &mut Framebuffer, setup: &TriangleSetup) {
+        let k = if fb.draw_both { fragment::reference::shade_span } else { kernel(rs, setup) };
+        for &(py, lo, hi) in &self.runs[..self.len] {
+            let (py, lo, hi) = (py as usize, lo as usize, hi as usize);
+            let mut px = SpanPixels::of(fb, py, lo, hi);
+            k(&rs.fragment, setup, &mut px, py, lo, hi);
+            let passed = px.passed;
+            fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+        }
+    }
 }
 
 /// Calls `emit(py, lo, hi)` for every run of covered pixels [lo, hi) of
@@ -206,7 +240,7 @@ pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3]
 mod tests {
     use super::*;
 
-    /// Small triangles (the narrow scan): `spans` and `covers_any` agree
+    /// Small triangles (the narrow scan): `spans` and `Runs` agree
     /// with testing every pixel centre of a window directly.
     #[test]
     fn narrow_spans_match_per_pixel_edge_tests() {
@@ -242,7 +276,10 @@ mod tests {
             spans(x, y, rect, None, |py, lo, hi| got.extend((lo..hi).map(|px| (px as i64, py as i64))));
             got.sort_by_key(|&(px, py)| (py, px));
             assert_eq!(got, expect, "{x:?} {y:?}");
-            assert_eq!(covers_any(x, y, rect), !expect.is_empty(), "{x:?} {y:?}");
+            let runs = Runs::of(x, y, rect, None).expect("a short triangle");
+            let mut got: Vec<_> = runs.runs[..runs.len].iter().flat_map(|&(py, lo, hi)| (lo..hi).map(move |px| (px as i64, py as i64))).collect();
+            got.sort_by_key(|&(px, py)| (py, px));
+            assert_eq!(got, expect, "runs of {x:?} {y:?}");
             if expect.is_empty() { empty += 1 } else { covered += 1 }
         }
         assert!(covered > 1000 && empty > 1000, "{covered} {empty}");

@@ -207,8 +207,11 @@ fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer
     let order = if ccw { [0, 1, 2] } else { [0, 2, 1] };
     let ex = order.map(|i| fx[i]);
     let ey = order.map(|i| fy[i]);
-    // No pixel centre covered: no planes to compute.
-    if !raster::covers_any(ex, ey, rs.draw_rect) {
+    // A short triangle's runs are found first: covering no pixel (most
+    // often through the stipple or between pixel centres), it needs no
+    // planes.
+    let runs = raster::Runs::of(ex, ey, rs.draw_rect, rs.polygon_stipple.as_deref());
+    if runs.as_ref().is_some_and(|r| r.is_empty()) {
         return;
     }
     let zq = order.map(|i| (pos[i][2], pos[i][3]));
@@ -219,10 +222,19 @@ fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer
     let setup = planes_of(rs, zq, v, ex, ey, flat_color[back as usize], back, front_facing);
     if super::tile::binning(rs) && !fb.draw_both && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2] {
         if let Some(setup) = super::tile::bin(rs, ex, ey, setup) {
-            raster::triangle(rs, fb, ex, ey, &setup);
+            shade(rs, fb, ex, ey, &setup, runs);
         }
     } else {
-        raster::triangle(rs, fb, ex, ey, &setup);
+        shade(rs, fb, ex, ey, &setup, runs);
+    }
+}
+
+/// Shades a triangle now: its runs if already found, else by a scan.
+#[inline]
+fn shade(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, ex: [i64; 3], ey: [i64; 3], setup: &TriangleSetup, runs: Option<raster::Runs>) {
+    match runs {
+        Some(r) => r.shade(rs, fb, setup),
+        None => raster::triangle(rs, fb, ex, ey, setup),
     }
 }
 
