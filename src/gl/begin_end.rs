@@ -71,8 +71,12 @@ impl Context {
             }
         }
         SPARE_VERTS.with(|s| s.set(std::mem::take(&mut asm.verts)));
-        // The end of a draw call: shade the triangles binned for tiles.
-        crate::render::flush(&self.derived.render, &mut self.fb);
+        // Binned triangles may stay pending across draw calls: the context
+        // then shades them before anything touches the framebuffer
+        // (`Context::sync_render`).
+        if !self.defer_render {
+            self.sync_render();
+        }
     }
 
     /// glVertex: the vertex takes the current colour (section 2.7).

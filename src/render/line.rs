@@ -201,6 +201,8 @@ pub fn fragments(xa: i64, ya: i64, xb: i64, yb: i64, lo: i64, hi: i64, mut emit:
 /// Draws one segment given in clip coordinates. `flat_color` is the
 /// provoking vertex's colour; `s` is the stipple counter.
 pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &ClipVertex, b: &ClipVertex, flat_color: Vec4, s: &mut u32) {
+    // Drawn now: after the binned triangles.
+    super::tile::sync(rs, fb);
     let r = rs.draw_rect;
     if r.is_empty() {
         return;

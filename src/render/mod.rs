@@ -15,6 +15,7 @@ pub mod line;
 pub mod pixels;
 pub mod point;
 pub mod polygon_mode;
+pub mod pool;
 pub mod raster;
 pub mod setup;
 pub mod smooth;
@@ -106,8 +107,8 @@ impl RenderState {
     }
 }
 
-/// Finishes the binned triangles of the current draw call (see [`tile`]):
-/// called at the end of every draw call.
+/// Shades the binned triangles (see [`tile`]): called before anything
+/// reads or writes the framebuffer.
 pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
     tile::flush(rs, fb)
 }
@@ -177,7 +178,10 @@ pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3]
 /// GL_POLYGON_SMOOTH (`smooth`), else by the exact aliased rules (`setup`).
 pub fn fill_triangle(rs: &RenderState, fb: &mut Framebuffer, w: &[setup::WindowVertex; 3], flat_color: [glam::Vec4; 2]) {
     match rs.smooth.polygon {
-        Some(q) => smooth::triangle(rs, fb, w, flat_color, q),
+        Some(q) => {
+            tile::sync(rs, fb);
+            smooth::triangle(rs, fb, w, flat_color, q)
+        }
         None => setup::triangle(rs, fb, w, flat_color),
     }
 }

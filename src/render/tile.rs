@@ -1,22 +1,27 @@
 //! Binning and tiled, threaded triangle rasterization (DESIGN.md "Tiles and
 //! threads"; issue 9 item 4).
 //!
-//! Filled triangles of a draw call are not shaded at once: setup captures
-//! each one with everything it needs (its planes, fixed-point vertices,
-//! the fragment state, draw rectangle, stipple and the span kernel chosen
-//! for it) into the context's [`Batch`]. At the end of the draw call
-//! (`Context::end`, which glEnd, every array draw, glRect and the
-//! evaluators go through) [`flush`] shades the batch: the screen is cut
-//! into 64x64 tiles, each triangle is listed in the tiles its bounding box
-//! touches, and worker threads take tiles one at a time; within a tile the
-//! triangles run in submission order, so every pixel sees its fragments in
-//! GL's order, and no two threads ever touch the same pixel.
+//! Filled triangles are not shaded at once: setup captures each one with
+//! everything it needs (its planes, fixed-point vertices, the fragment
+//! state, draw rectangle, stipple and the span kernel chosen for it) into
+//! the context's [`Batch`], across draw calls. [`flush`] shades the batch:
+//! the screen is cut into 64x64 tiles, each triangle is listed in the
+//! tiles its bounding box touches, and the persistent workers of
+//! [`super::pool`] with the calling thread take tiles one at a time;
+//! within a tile the triangles run in submission order, so every pixel
+//! sees its fragments in GL's order, and no two threads ever touch the
+//! same pixel.
 //!
-//! Because a batch never outlives the draw call that made it, nothing else
-//! that reads or writes the framebuffer (pixel commands, clears, accum,
-//! points and lines, queries, present, resize, MakeCurrent) can see
-//! unfinished work, and later state changes cannot reach binned triangles
-//! (they carry their own copy of the state).
+//! The batch is flushed before anything else reads or writes the
+//! framebuffer or changes which buffer is drawn: by the context before
+//! every command that is not known to leave the framebuffer alone
+//! (`Context::execute`'s list, every immediate (`exec`/`client`) entry
+//! point and every window-system call: present, MakeCurrent, resize,
+//! queries, pixel commands, clears), and by the renderer before it draws
+//! points, lines, antialiased or polygon-mode triangles or to two colour
+//! buffers at once. Later state changes cannot reach binned triangles:
+//! they carry their own copy of the state (textures are copy-on-write).
+//! A batch is also flushed when it holds [`MAX_BATCH`] triangles.
 //!
 //! `SOFTGL_THREADS=N` (read once per process) sets the thread count; the
 //! default is every core, and 1 shades each triangle immediately with no
@@ -33,6 +38,10 @@ use std::sync::{Arc, Mutex};
 
 /// Tile side in pixels.
 pub const TILE: usize = 64;
+
+/// The most triangles a batch holds before it is shaded (its memory,
+/// about 400 bytes a triangle, stays bounded).
+pub const MAX_BATCH: usize = 32 * 1024;
 
 /// Batches whose triangles' bounding boxes cover fewer pixels than this
 /// are shaded on the calling thread: starting workers would cost more.
@@ -94,10 +103,18 @@ pub fn binning(rs: &RenderState) -> bool {
 /// costs more than it saves for a sphere's strips.
 const SMALL_PIXELS: u64 = 1024;
 
+/// What [`bin`] did with a triangle.
+pub enum BinOutcome {
+    /// Small, and nothing pending: shade it now.
+    ShadeNow(TriangleSetup),
+    /// Queued; `full`: the batch reached [`MAX_BATCH`], flush it.
+    Queued { full: bool },
+}
+
 /// Adds a triangle (positively oriented fixed-point vertices) to the
 /// batch, or hands it back when it is small and nothing is pending, for
 /// the caller to shade at once.
-pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) -> Option<TriangleSetup> {
+pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) -> BinOutcome {
     let r = rs.draw_rect;
     let px = |c: i64| c.div_euclid(ONE);
     let bbox = Rect {
@@ -107,12 +124,12 @@ pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) -> 
         y1: (px(y[0].max(y[1]).max(y[2])) + 2).clamp(r.y0 as i64, r.y1 as i64) as i32,
     };
     if bbox.is_empty() {
-        return None;
+        return BinOutcome::Queued { full: false };
     }
     let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
     let mut b = lock(&rs.batch);
     if b.tris.is_empty() && area < SMALL_PIXELS {
-        return Some(setup);
+        return BinOutcome::ShadeNow(setup);
     }
     let kernel = raster::kernel(rs, &setup);
     let fs = match &b.last_fs {
@@ -125,7 +142,16 @@ pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) -> 
     };
     b.pixels += area;
     b.tris.push(Binned { setup, x, y, fs, stipple: rs.polygon_stipple.clone(), kernel, bbox });
-    None
+    BinOutcome::Queued { full: b.tris.len() >= MAX_BATCH }
+}
+
+/// Shades whatever is binned before the caller touches the framebuffer
+/// itself (nothing to do with one thread: nothing is ever binned then).
+#[inline]
+pub fn sync(rs: &RenderState, fb: &mut Framebuffer) {
+    if binning(rs) {
+        flush(rs, fb);
+    }
 }
 
 /// The framebuffer's planes as raw pointers, for workers that each write
@@ -217,7 +243,7 @@ pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
     let raw = RawPixels::new(fb);
     let next = AtomicUsize::new(0);
     let passed = AtomicU64::new(0);
-    let work = || {
+    let work = &|| {
         let mut local = 0u64;
         loop {
             let k = next.fetch_add(1, Ordering::Relaxed);
@@ -243,11 +269,6 @@ pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
         }
         passed.fetch_add(local, Ordering::Relaxed);
     };
-    std::thread::scope(|s| {
-        for _ in 1..threads {
-            s.spawn(work);
-        }
-        work();
-    });
+    super::pool::run(threads, work);
     fb.samples_passed = fb.samples_passed.wrapping_add(passed.into_inner());
 }

@@ -742,6 +742,7 @@ unsafe fn new_context(dpy: *mut Display, config: Option<&'static FbConfig>) -> *
     }
     let mut gl = Context::new(c.framebuffer_config());
     gl.set_double_buffered(c.double);
+    gl.defer_render = true;
     Box::into_raw(Box::new(GlxContext { gl, config: *c, dpy, draw: 0, read: 0, surface: None, bound: AtomicBool::new(false), destroy_pending: AtomicBool::new(false) }))
 }
 
