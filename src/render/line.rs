@@ -195,8 +195,9 @@ pub fn fragments(xa: i64, ya: i64, xb: i64, yb: i64, lo: i64, hi: i64, mut emit:
     loop {
         let cm = p * ONE + ONE / 2;
         // Minor coordinate of the line at the column centre (floored).
-        let n_at = na as i128 + (dn as i128 * (cm - ma) as i128).div_euclid(dm as i128);
-        let r0 = (n_at as i64).div_euclid(ONE);
+        // (|dn * (cm - ma)| < 2^57: exact in i64, one hardware division.)
+        let n_at = na + (dn * (cm - ma)).div_euclid(dm);
+        let r0 = n_at.div_euclid(ONE);
         // The segment spans this column's diamonds from side to side (both
         // endpoints at least one unit beyond them): see `interior_hit`.
         let interior = ma.min(mb) <= cm - ONE / 2 - 1 && ma.max(mb) >= cm + ONE / 2 + 1;
