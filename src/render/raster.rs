@@ -137,15 +137,21 @@ impl Runs {
     /// Triangles spanning at most this many rows of pixel centres.
     pub const MAX: usize = 12;
 
-    /// The runs of triangle (x, y) in `rect` cut by `stipple`, or None when
-    /// it may span more rows (or stipple runs) than fit: take [`triangle`].
+    pub fn new() -> Runs {
+        Runs { runs: [(0, 0, 0); Runs::MAX], len: 0 }
+    }
+
+    /// Finds the runs of triangle (x, y) in `rect` cut by `stipple`; false
+    /// when it may span more rows (or stipple runs) than fit: then take
+    /// [`triangle`]. (Filled in place: no copy of the array per triangle.)
     #[inline]
-    pub fn of(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>) -> Option<Runs> {
+    pub fn find(&mut self, x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>) -> bool {
         let (row0, row1, _, _) = centre_box(x, y, rect);
         if row1 - row0 > Runs::MAX as i64 {
-            return None;
+            return false;
         }
-        let mut r = Runs { runs: [(0, 0, 0); Runs::MAX], len: 0 };
+        let r = self;
+        r.len = 0;
         let mut overflow = false;
         spans(x, y, rect, stipple, |py, lo, hi| {
             if r.len == Runs::MAX {
@@ -155,7 +161,7 @@ impl Runs {
                 r.len += 1;
             }
         });
-        (!overflow).then_some(r)
+        !overflow
     }
 
     pub fn is_empty(&self) -> bool {
@@ -276,7 +282,8 @@ mod tests {
             spans(x, y, rect, None, |py, lo, hi| got.extend((lo..hi).map(|px| (px as i64, py as i64))));
             got.sort_by_key(|&(px, py)| (py, px));
             assert_eq!(got, expect, "{x:?} {y:?}");
-            let runs = Runs::of(x, y, rect, None).expect("a short triangle");
+            let mut runs = Runs::new();
+            assert!(runs.find(x, y, rect, None), "a short triangle");
             let mut got: Vec<_> = runs.runs[..runs.len].iter().flat_map(|&(py, lo, hi)| (lo..hi).map(move |px| (px as i64, py as i64))).collect();
             got.sort_by_key(|&(px, py)| (py, px));
             assert_eq!(got, expect, "runs of {x:?} {y:?}");

@@ -210,8 +210,9 @@ fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer
     // A short triangle's runs are found first: covering no pixel (most
     // often through the stipple or between pixel centres), it needs no
     // planes.
-    let runs = raster::Runs::of(ex, ey, rs.draw_rect, rs.polygon_stipple.as_deref());
-    if runs.as_ref().is_some_and(|r| r.is_empty()) {
+    let mut found = raster::Runs::new();
+    let runs = found.find(ex, ey, rs.draw_rect, rs.polygon_stipple.as_deref()).then_some(&found);
+    if runs.is_some_and(|r| r.is_empty()) {
         return;
     }
     let zq = order.map(|i| (pos[i][2], pos[i][3]));
@@ -235,7 +236,7 @@ fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer
 
 /// Shades a triangle now: its runs if already found, else by a scan.
 #[inline]
-fn shade(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, ex: [i64; 3], ey: [i64; 3], setup: &TriangleSetup, runs: Option<raster::Runs>) {
+fn shade(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, ex: [i64; 3], ey: [i64; 3], setup: &TriangleSetup, runs: Option<&raster::Runs>) {
     match runs {
         Some(r) => r.shade(rs, fb, setup),
         None => raster::triangle(rs, fb, ex, ey, setup),
