@@ -222,10 +222,14 @@ fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer
     let back = rs.two_side && !front_facing;
     let setup = planes_of(rs, zq, v, ex, ey, flat_color[back as usize], back, front_facing);
     if super::tile::binning(rs) && !fb.draw_both && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2] {
-        match super::tile::bin(rs, ex, ey, setup) {
-            super::tile::BinOutcome::ShadeNow(setup) => shade(rs, fb, ex, ey, &setup, runs),
-            super::tile::BinOutcome::Queued { full: true } => super::tile::flush(rs, fb),
-            super::tile::BinOutcome::Queued { full: false } => {}
+        match super::tile::route(rs, ex, ey) {
+            super::tile::Route::ShadeNow => shade(rs, fb, ex, ey, &setup, runs),
+            super::tile::Route::Nothing => {}
+            super::tile::Route::Bin(bbox) => {
+                if super::tile::push(rs, ex, ey, bbox, setup) {
+                    super::tile::flush(rs, fb);
+                }
+            }
         }
     } else {
         // Drawn now (two colour buffers): after what is binned.

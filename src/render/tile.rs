@@ -33,7 +33,7 @@ use super::raster;
 use super::setup::{TriangleSetup, ONE};
 use super::RenderState;
 use crate::framebuffer::{Framebuffer, Rect};
-use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
 /// Tile side in pixels.
@@ -85,11 +85,21 @@ impl std::fmt::Debug for Batch {
     }
 }
 
+/// A context's batch and whether it holds anything: checked without the
+/// lock, so that the many small triangles and the commands of a scene
+/// that bins nothing cost no locking. Only the thread using the context
+/// changes either.
+#[derive(Default, Debug)]
+pub struct BatchCell {
+    pending: AtomicBool,
+    batch: Mutex<Batch>,
+}
+
 /// A context's batch, shared by clones of its RenderState.
-pub type SharedBatch = Arc<Mutex<Batch>>;
+pub type SharedBatch = Arc<BatchCell>;
 
 fn lock(b: &SharedBatch) -> std::sync::MutexGuard<'_, Batch> {
-    b.lock().unwrap_or_else(|e| e.into_inner())
+    b.batch.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 /// Should this triangle be binned rather than shaded now?
@@ -103,18 +113,20 @@ pub fn binning(rs: &RenderState) -> bool {
 /// costs more than it saves for a sphere's strips.
 const SMALL_PIXELS: u64 = 1024;
 
-/// What [`bin`] did with a triangle.
-pub enum BinOutcome {
+/// Where a triangle goes: shaded now, or queued in the batch.
+pub enum Route {
     /// Small, and nothing pending: shade it now.
-    ShadeNow(TriangleSetup),
-    /// Queued; `full`: the batch reached [`MAX_BATCH`], flush it.
-    Queued { full: bool },
+    ShadeNow,
+    /// Nothing to draw (outside the draw rectangle).
+    Nothing,
+    /// Bin it with this bounding box ([`push`]).
+    Bin(Rect),
 }
 
-/// Adds a triangle (positively oriented fixed-point vertices) to the
-/// batch, or hands it back when it is small and nothing is pending, for
-/// the caller to shade at once.
-pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) -> BinOutcome {
+/// Decides where a triangle (positively oriented fixed-point vertices)
+/// goes, before its setup is moved anywhere.
+#[inline]
+pub fn route(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Route {
     let r = rs.draw_rect;
     let px = |c: i64| c.div_euclid(ONE);
     let bbox = Rect {
@@ -124,13 +136,21 @@ pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) -> 
         y1: (px(y[0].max(y[1]).max(y[2])) + 2).clamp(r.y0 as i64, r.y1 as i64) as i32,
     };
     if bbox.is_empty() {
-        return BinOutcome::Queued { full: false };
+        return Route::Nothing;
     }
     let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
-    let mut b = lock(&rs.batch);
-    if b.tris.is_empty() && area < SMALL_PIXELS {
-        return BinOutcome::ShadeNow(setup);
+    if area < SMALL_PIXELS && !rs.batch.pending.load(Ordering::Relaxed) {
+        return Route::ShadeNow;
     }
+    Route::Bin(bbox)
+}
+
+/// Adds a triangle to the batch ([`Route::Bin`]); true when the batch
+/// reached [`MAX_BATCH`] and should be flushed.
+pub fn push(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rect, setup: TriangleSetup) -> bool {
+    let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
+    let mut b = lock(&rs.batch);
+    rs.batch.pending.store(true, Ordering::Relaxed);
     let kernel = raster::kernel(rs, &setup);
     let fs = match &b.last_fs {
         Some(f) if **f == rs.fragment => f.clone(),
@@ -142,7 +162,7 @@ pub fn bin(rs: &RenderState, x: [i64; 3], y: [i64; 3], setup: TriangleSetup) -> 
     };
     b.pixels += area;
     b.tris.push(Binned { setup, x, y, fs, stipple: rs.polygon_stipple.clone(), kernel, bbox });
-    BinOutcome::Queued { full: b.tris.len() >= MAX_BATCH }
+    b.tris.len() >= MAX_BATCH
 }
 
 /// Shades whatever is binned before the caller touches the framebuffer
@@ -201,8 +221,12 @@ impl RawPixels {
 /// Shades everything binned, in order; returns when the framebuffer holds
 /// the result.
 pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
+    if !rs.batch.pending.load(Ordering::Relaxed) {
+        return;
+    }
     let (tris, pixels) = {
         let mut b = lock(&rs.batch);
+        rs.batch.pending.store(false, Ordering::Relaxed);
         if b.tris.is_empty() {
             return;
         }
