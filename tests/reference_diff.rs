@@ -263,7 +263,7 @@ fn fast_path_matches_reference() {
 }
 
 /// The same through the binned, tiled path with 2 and 3 worker threads,
-/// on a surface large enough (several 64x64 tiles, partial edge tiles)
+/// on a surface large enough (several tiles, partial edge tiles)
 /// that batches go to the workers.
 #[test]
 fn tiled_threaded_path_matches_reference() {

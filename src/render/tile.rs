@@ -5,7 +5,7 @@
 //! everything it needs (its planes, fixed-point vertices, the fragment
 //! state, draw rectangle, stipple and the span kernel chosen for it) into
 //! the context's [`Batch`], across draw calls. [`flush`] shades the batch:
-//! the screen is cut into 64x64 tiles, each triangle is listed in the
+//! the screen is cut into TILE x TILE tiles, each triangle is listed in the
 //! tiles its bounding box touches, and the persistent workers of
 //! [`super::pool`] with the calling thread take tiles one at a time;
 //! within a tile the triangles run in submission order, so every pixel
@@ -36,8 +36,11 @@ use crate::framebuffer::{Framebuffer, Rect};
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
-/// Tile side in pixels.
-pub const TILE: usize = 64;
+/// Tile side in pixels. 128 rather than llvmpipe's 64: each span piece
+/// repeats the span set-up, and at 64 that cost 18% more instructions
+/// than shading untiled (particles at 1920x1080; 8% at 128), while 135
+/// tiles of a 1080p frame still balance two threads.
+pub const TILE: usize = 128;
 
 /// The most triangles a batch holds before it is shaded (its memory,
 /// about 400 bytes a triangle, stays bounded).
