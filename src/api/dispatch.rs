@@ -42,6 +42,9 @@ pub fn with_current<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
 #[inline]
 pub fn outside_begin_end<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
     with_current(|ctx| {
+        // Immediate commands may read or write the framebuffer: shade
+        // what is binned first (render::tile).
+        ctx.sync_render();
         if ctx.in_begin_end() {
             ctx.set_error(GL_INVALID_OPERATION);
             R::zero()
@@ -56,5 +59,16 @@ pub fn outside_begin_end<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
 #[inline]
 pub fn guarded<R: Zero>(f: impl FnOnce() -> R) -> R {
     let _fp = FpGuard::enter();
-    catch_unwind(AssertUnwindSafe(f)).unwrap_or_else(|_| R::zero())
+    catch_unwind(AssertUnwindSafe(|| {
+        // Window-system calls present, resize and switch contexts: the
+        // current context's binned triangles are shaded first
+        // (render::tile).
+        let p = current();
+        if !p.is_null() {
+            // SAFETY: as in with_current.
+            unsafe { (*p).sync_render() };
+        }
+        f()
+    }))
+    .unwrap_or_else(|_| R::zero())
 }

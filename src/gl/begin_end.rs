@@ -71,8 +71,12 @@ impl Context {
             }
         }
         SPARE_VERTS.with(|s| s.set(std::mem::take(&mut asm.verts)));
-        // The end of a draw call: shade the triangles binned for tiles.
-        crate::render::flush(&self.derived.render, &mut self.fb);
+        // Binned triangles may stay pending across draw calls: the context
+        // then shades them before anything touches the framebuffer
+        // (`Context::sync_render`).
+        if !self.defer_render {
+            self.sync_render();
+        }
     }
 
     /// glVertex: the vertex takes the current colour (section 2.7).
@@ -117,7 +121,8 @@ impl Context {
             Some(f) if self.fog.coord_src == super::fog::GL_FOG_COORD => f.vertex_value(self.current.fog_coord),
             Some(f) => f.vertex_value((self.derived.modelview * obj).z.abs()),
         };
-        let v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary, back_secondary };
+        let mut v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary, back_secondary, inside: false, win: [0.0; 4], snapped: [0; 2] };
+        v.place(&self.derived.render);
         if asm.mode == GL_POINTS {
             asm.point_size = self.derived_point_size(obj);
         }
@@ -155,26 +160,23 @@ impl Context {
                 }
             }
             GL_TRIANGLE_STRIP => {
+                // verts[n % 2] holds vertex n - 2 and the other slot n - 1:
+                // each new vertex replaces the oldest, with no shifting.
                 if n >= 2 {
-                    let (a, b) = (asm.verts[0], asm.verts[1]);
+                    let (old, prev) = (n % 2, 1 - n % 2);
                     // Odd triangles swap their first two vertices to keep
                     // the strip's orientation; the provoking vertex is the
                     // newest either way.
-                    if n % 2 == 0 {
-                        self.triangle([&a, &b, &v], 2, [true; 3]);
-                    } else {
-                        self.triangle([&b, &a, &v], 2, [true; 3]);
-                    }
-                    asm.verts[0] = b;
-                    asm.verts[1] = v;
+                    let t = if n % 2 == 0 { [&asm.verts[old], &asm.verts[prev], &v] } else { [&asm.verts[prev], &asm.verts[old], &v] };
+                    self.triangle(t, 2, [true; 3]);
+                    asm.verts[old] = v;
                 } else {
                     asm.verts.push(v);
                 }
             }
             GL_TRIANGLE_FAN => {
                 if n >= 2 {
-                    let (a, b) = (asm.verts[0], asm.verts[1]);
-                    self.triangle([&a, &b, &v], 2, [true; 3]);
+                    self.triangle([&asm.verts[0], &asm.verts[1], &v], 2, [true; 3]);
                     asm.verts[1] = v;
                 } else {
                     asm.verts.push(v);
@@ -212,9 +214,8 @@ impl Context {
             }
             GL_LINES => {
                 if n % 2 == 1 {
-                    let a = asm.verts[0];
                     asm.stipple = 0;
-                    self.line(&a, &v, &mut asm.stipple);
+                    self.line(&asm.verts[0], &v, &mut asm.stipple);
                     asm.verts.clear();
                 } else {
                     asm.verts.push(v);
@@ -222,8 +223,7 @@ impl Context {
             }
             GL_LINE_STRIP => {
                 if n >= 1 {
-                    let a = asm.verts[0];
-                    self.line(&a, &v, &mut asm.stipple);
+                    self.line(&asm.verts[0], &v, &mut asm.stipple);
                     asm.verts[0] = v;
                 } else {
                     asm.verts.push(v);
@@ -232,8 +232,7 @@ impl Context {
             GL_LINE_LOOP => {
                 // verts[0]: the first vertex; verts[1]: the latest.
                 if n >= 1 {
-                    let a = asm.verts[1];
-                    self.line(&a, &v, &mut asm.stipple);
+                    self.line(&asm.verts[1], &v, &mut asm.stipple);
                     asm.verts[1] = v;
                 } else {
                     asm.verts.push(v);

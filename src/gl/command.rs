@@ -156,6 +156,26 @@ pub enum Command {
 }
 
 impl Command {
+    /// Can this command run while binned triangles are pending
+    /// (render::tile)? True for commands that neither read nor write the
+    /// framebuffer nor change which buffer is drawn: vertices, primitives
+    /// (they bin or shade in order themselves), transforms and the state
+    /// binned triangles copy. Every other command shades the batch first.
+    pub fn leaves_framebuffer(&self) -> bool {
+        use Command::*;
+        matches!(
+            self,
+            Begin(_) | End | Vertex(_) | Color(_) | Normal(_) | Index(_) | FogCoord(_) | SecondaryColor(_) | TexCoord(..) | EdgeFlag(_)
+                | Light(..) | LightModel(..) | Material(..) | ColorMaterial(..) | Rect(_)
+                | MatrixMode(_) | LoadIdentity | LoadMatrix(_) | MultMatrix(_) | Ortho(_) | Frustum(_) | Translate(_) | Rotate(..) | Scale(_) | PushMatrix | PopMatrix
+                | Viewport(..) | DepthRange(..) | ShadeModel(_) | CullFace(_) | FrontFace(_) | PointSize(_) | LineWidth(_) | LineStipple(..) | Scissor(..)
+                | AlphaFunc(..) | StencilFunc(..) | StencilOp(..) | DepthFunc(_) | BlendFunc(_) | BlendColor(_) | BlendEquation(_) | LogicOp(_)
+                | ColorMask(_) | DepthMask(_) | StencilMask(_) | ClearColor(_) | ClearDepth(_) | ClearStencil(_) | Enable(_) | Disable(_) | Hint(..)
+                | CallList(_) | CallLists(_) | ListBase(_) | ClipPlane(..) | PolygonMode(..) | PolygonOffset(..) | PolygonStipple(_) | PointParameter(..)
+                | Fog(..) | ActiveTexture(_) | BindTexture(..) | TexEnv(..) | TexGen(..) | EvalCoord(..) | EvalPoint(..) | MapGrid(..) | EvalMesh1(..) | EvalMesh2(..)
+        )
+    }
+
     /// May this command appear between Begin and End (GL 1.5 section 2.6.3)?
     pub fn allowed_in_begin_end(&self) -> bool {
         matches!(
@@ -201,6 +221,9 @@ impl Context {
                 return;
             }
             _ => {}
+        }
+        if !cmd.leaves_framebuffer() {
+            self.sync_render();
         }
         if self.in_begin_end() && !cmd.allowed_in_begin_end() {
             self.set_error(GL_INVALID_OPERATION);

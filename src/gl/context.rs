@@ -59,6 +59,12 @@ pub struct Context {
     pub texture: texture::TextureState,
     /// The framebuffer this context draws into and reads from.
     pub fb: Framebuffer,
+    /// Binned triangles stay pending across draw calls until something
+    /// needs the framebuffer (render::tile, `sync_render`). Set for
+    /// contexts the window-system APIs create, whose every framebuffer
+    /// access goes through the entry points; off (shaded at the end of
+    /// each draw call) for contexts driven directly, as the tests do.
+    pub defer_render: bool,
     /// Where glFlush/glFinish deliver the image (set by the window system).
     pub surface: Option<Box<dyn Present>>,
     /// A window-system drawable's framebuffers, shared with the other
@@ -119,6 +125,7 @@ impl Context {
             raster: Default::default(),
             texture: Default::default(),
             fb: Framebuffer::new(config),
+            defer_render: false,
             surface: None,
             bound: None,
             read_fb: None,
@@ -148,6 +155,14 @@ impl Context {
 
     /// A display-listable command: compiled into the open list, executed,
     /// or both (GL 1.5 section 5.4).
+    /// Shades the triangles binned for tiles (render::tile): before
+    /// anything reads or writes the framebuffer, or changes which buffer
+    /// is drawn. Cheap when nothing is pending.
+    #[inline]
+    pub fn sync_render(&mut self) {
+        crate::render::tile::sync(&self.derived.render, &mut self.fb);
+    }
+
     pub fn submit(&mut self, cmd: Command) {
         match self.lists.compile_mode() {
             None => self.execute(&cmd),
@@ -164,6 +179,7 @@ impl Context {
     /// surface, and on a double-buffered one when the front buffer may have
     /// been drawn into since it was last shown (glDrawBuffer(GL_FRONT)).
     pub fn flush(&mut self) {
+        self.sync_render();
         if self.double_buffered && !self.fb.front_dirty {
             return;
         }
@@ -177,6 +193,7 @@ impl Context {
     /// `framebuffer`) and is presented. No effect on a single-buffered
     /// surface.
     pub fn swap_buffers(&mut self) {
+        self.sync_render();
         if !self.double_buffered {
             return;
         }

@@ -93,6 +93,20 @@ fn outcode(planes: &[Plane], p: &Vec4) -> u32 {
     code
 }
 
+/// Is `p` finite and inside every plane of [`FIXED_PLANES`]? The same
+/// decision as their outcode (each distance is the same single rounding
+/// of the same two terms, the zero terms adding nothing) without the dot
+/// products: most vertices pass it, and a triangle of three such vertices
+/// needs no clipping when there are no user clip planes.
+#[inline(always)]
+pub fn inside_fixed(p: Vec4) -> bool {
+    let [x, y, z, w] = p.to_array();
+    let g = GUARD * w;
+    // With w finite, the guard and depth tests fail for infinite or NaN
+    // x, y or z (a NaN comparison is false).
+    z + w >= 0.0 && w - z >= 0.0 && w - W_MIN >= 0.0 && w < f32::INFINITY && x + g >= 0.0 && g - x >= 0.0 && y + g >= 0.0 && g - y >= 0.0
+}
+
 /// Clips a triangle. Vertices with NaN or infinite coordinates reject it.
 pub fn clip_triangle(planes: &[Plane], v: [&ClipVertex; 3], out: &mut Polygon) -> Outcome {
     if !v.iter().all(|cv| cv.pos.is_finite()) {
@@ -156,7 +170,28 @@ mod tests {
     use super::*;
 
     fn v(p: [f32; 4]) -> ClipVertex {
-        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE, edge: true, tex: Default::default(), fog: 0.0, secondary: Vec4::ZERO, back_secondary: Vec4::ZERO }
+        ClipVertex { pos: Vec4::from_array(p), color: Vec4::ONE, back_color: Vec4::ONE, edge: true, tex: Default::default(), fog: 0.0, secondary: Vec4::ZERO, back_secondary: Vec4::ZERO, inside: false, win: [0.0; 4], snapped: [0; 2] }
+    }
+
+    /// `inside_fixed` agrees with the outcodes of FIXED_PLANES and the
+    /// finiteness test on random, extreme and non-finite positions.
+    #[test]
+    fn inside_fixed_matches_outcodes() {
+        let mut seed = 7u64;
+        let specials = [0.0, -0.0, 1.0, -1.0, W_MIN, 16.0, -16.0, f32::MAX, f32::MIN, 3e37, f32::INFINITY, f32::NEG_INFINITY, f32::NAN, 1e-30];
+        let mut r = |k: u32| {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            let u = (seed >> 40) as usize;
+            if k % 3 == 0 { specials[u % specials.len()] } else { ((u as f32 / (1u64 << 24) as f32) - 0.5) * 40.0 }
+        };
+        let (mut inside, mut outside) = (0, 0);
+        for k in 0..200_000u32 {
+            let p = Vec4::new(r(k), r(k / 2), r(k / 3), r(k / 5));
+            let expect = p.is_finite() && outcode(&FIXED_PLANES, &p) == 0;
+            assert_eq!(inside_fixed(p), expect, "{p:?}");
+            if expect { inside += 1 } else { outside += 1 }
+        }
+        assert!(inside > 1000 && outside > 1000, "{inside} {outside}");
     }
 
     /// Two triangles sharing the edge (a, b), traversed in opposite

@@ -15,6 +15,7 @@ pub mod line;
 pub mod pixels;
 pub mod point;
 pub mod polygon_mode;
+pub mod pool;
 pub mod raster;
 pub mod setup;
 pub mod smooth;
@@ -106,8 +107,8 @@ impl RenderState {
     }
 }
 
-/// Finishes the binned triangles of the current draw call (see [`tile`]):
-/// called at the end of every draw call.
+/// Shades the binned triangles (see [`tile`]): called before anything
+/// reads or writes the framebuffer.
 pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
     tile::flush(rs, fb)
 }
@@ -144,9 +145,20 @@ pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3]
         tile::flush(rs, fb);
         return polygon_mode::draw(rs, fb, v, flat_color, edges);
     }
+    // No user clip planes and every vertex well inside: no clipping.
+    // (Their window positions were computed once per vertex: `place`.)
+    if rs.smooth.polygon.is_none() && rs.clip_planes.len() == clip::FIXED_PLANES.len() && v.iter().all(|cv| cv.inside) {
+        return setup::triangle_placed(rs, fb, v, flat_color);
+    }
     let mut poly = clip::Polygon::new();
     match clip::clip_triangle(&rs.clip_planes, v, &mut poly) {
         clip::Outcome::Rejected => {}
+        clip::Outcome::Inside if rs.smooth.polygon.is_none() => {
+            // The common case: positions to window space, attributes read
+            // in place from the clip vertices.
+            let pos = v.map(|cv| setup::window_pos(rs, cv.pos));
+            setup::triangle_at(rs, fb, pos, v, flat_color);
+        }
         clip::Outcome::Inside => {
             let w = [0, 1, 2].map(|i| setup::to_window(rs, v[i]));
             fill_triangle(rs, fb, &w, flat_color);
@@ -166,7 +178,10 @@ pub fn draw_triangle(rs: &RenderState, fb: &mut Framebuffer, v: [&ClipVertex; 3]
 /// GL_POLYGON_SMOOTH (`smooth`), else by the exact aliased rules (`setup`).
 pub fn fill_triangle(rs: &RenderState, fb: &mut Framebuffer, w: &[setup::WindowVertex; 3], flat_color: [glam::Vec4; 2]) {
     match rs.smooth.polygon {
-        Some(q) => smooth::triangle(rs, fb, w, flat_color, q),
+        Some(q) => {
+            tile::sync(rs, fb);
+            smooth::triangle(rs, fb, w, flat_color, q)
+        }
         None => setup::triangle(rs, fb, w, flat_color),
     }
 }

@@ -35,6 +35,8 @@ pub fn first_pixel(c: f64, w: i64) -> i64 {
 
 /// Draws one point given in clip coordinates.
 pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVertex) {
+    // Drawn now: after the binned triangles.
+    super::tile::sync(rs, fb);
     let r = rs.draw_rect;
     let p = v.pos;
     if r.is_empty() || !p.is_finite() || !(p.w > 0.0) {

@@ -82,21 +82,119 @@ fn span(edges: &[Edge; 3], py: i64, x0: i64, x1: i64) -> (i64, i64) {
     (lo, hi)
 }
 
+/// Bounding boxes at most this many pixel centres wide are scanned by
+/// testing each centre against the edges (a few additions) instead of
+/// solving for the span ends (three divisions per row).
+const NARROW: i64 = 8;
+
+/// The rows and columns of pixel centres within a triangle's bounding
+/// box, cut to `rect`: [row0, row1) x [col0, col1).
+#[inline]
+fn centre_box(x: [i64; 3], y: [i64; 3], rect: Rect) -> (i64, i64, i64, i64) {
+    let half = ONE / 2;
+    let (ymin, ymax) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
+    let (xmin, xmax) = (x[0].min(x[1]).min(x[2]), x[0].max(x[1]).max(x[2]));
+    // Centre p * ONE + half lies in [min, max] for ceil((min - half) / ONE)
+    // <= p <= floor((max - half) / ONE).
+    let row0 = (-floor_div(half - ymin, ONE)).max(rect.y0 as i64);
+    let row1 = (floor_div(ymax - half, ONE) + 1).min(rect.y1 as i64);
+    let col0 = (-floor_div(half - xmin, ONE)).max(rect.x0 as i64);
+    let col1 = (floor_div(xmax - half, ONE) + 1).min(rect.x1 as i64);
+    (row0, row1, col0, col1)
+}
+
+/// The covered pixels [lo, hi) of row `py` (empty when lo >= hi): by the
+/// span solution, or for narrow boxes by testing every centre in
+/// [col0, col1) (a centre inside lies in the triangle's bounding box, and
+/// the covered centres of a row are contiguous: the triangle is convex).
+#[inline(always)]
+fn row_span(edges: &[Edge; 3], py: i64, col0: i64, col1: i64) -> (i64, i64) {
+    if col1 - col0 > NARROW {
+        return span(edges, py, col0, col1);
+    }
+    let mut e = edges.map(|e| e.a * col0 + e.b * py + e.c);
+    let (mut lo, mut hi) = (col1, col0);
+    for px in col0..col1 {
+        if e[0] >= 0 && e[1] >= 0 && e[2] >= 0 {
+            lo = lo.min(px);
+            hi = px + 1;
+        }
+        for i in 0..3 {
+            e[i] += edges[i].a;
+        }
+    }
+    (lo, hi)
+}
+
+/// The covered runs of a short triangle, found once before setup (which
+/// a triangle covering nothing skips) and shaded without a second scan.
+pub struct Runs {
+    runs: [(u32, u32, u32); Runs::MAX],
+    len: usize,
+}
+
+impl Runs {
+    /// Triangles spanning at most this many rows of pixel centres.
+    pub const MAX: usize = 12;
+
+    pub fn new() -> Runs {
+        Runs { runs: [(0, 0, 0); Runs::MAX], len: 0 }
+    }
+
+    /// Finds the runs of triangle (x, y) in `rect` cut by `stipple`; false
+    /// when it may span more rows (or stipple runs) than fit: then take
+    /// [`triangle`]. (Filled in place: no copy of the array per triangle.)
+    #[inline]
+    pub fn find(&mut self, x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>) -> bool {
+        let (row0, row1, _, _) = centre_box(x, y, rect);
+        if row1 - row0 > Runs::MAX as i64 {
+            return false;
+        }
+        let r = self;
+        r.len = 0;
+        let mut overflow = false;
+        spans(x, y, rect, stipple, |py, lo, hi| {
+            if r.len == Runs::MAX {
+                overflow = true;
+            } else {
+                r.runs[r.len] = (py as u32, lo as u32, hi as u32);
+                r.len += 1;
+            }
+        });
+        !overflow
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Shades the runs now, on this thread (as [`triangle`] would).
+    pub fn shade(&self, rs: &RenderState, fb: &mut Framebuffer, setup: &TriangleSetup) {
+        let k = if fb.draw_both { fragment::reference::shade_span } else { kernel(rs, setup) };
+        for &(py, lo, hi) in &self.runs[..self.len] {
+            let (py, lo, hi) = (py as usize, lo as usize, hi as usize);
+            let mut px = SpanPixels::of(fb, py, lo, hi);
+            k(&rs.fragment, setup, &mut px, py, lo, hi);
+            let passed = px.passed;
+            fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+        }
+    }
+}
+
 /// Calls `emit(py, lo, hi)` for every run of covered pixels [lo, hi) of
 /// row py inside `rect`, rows bottom to top, cut by the polygon stipple
 /// (3.5.2) when there is one.
 #[inline]
 pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, mut emit: impl FnMut(usize, usize, usize)) {
     let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
-    // Rows whose centres lie within the vertical extent.
-    let half = ONE / 2;
-    let ymin = y[0].min(y[1]).min(y[2]);
-    let ymax = y[0].max(y[1]).max(y[2]);
-    // A superset is enough: spans are exact.
-    let row0 = floor_div(ymin - half, ONE).max(rect.y0 as i64);
-    let row1 = (floor_div(ymax - half, ONE) + 1).min(rect.y1 as i64);
+    // Rows and columns whose centres lie within the bounding box: a
+    // superset is enough, spans are exact.
+    let (row0, row1, col0, col1) = centre_box(x, y, rect);
+    if col0 >= col1 {
+        return;
+    }
     for py in row0..row1 {
-        let (lo, hi) = span(&edges, py, rect.x0 as i64, rect.x1 as i64);
+        let (lo, hi) = row_span(&edges, py, col0, col1);
         if lo >= hi {
             continue;
         }
@@ -148,6 +246,52 @@ pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3]
 mod tests {
     use super::*;
 
+    /// Small triangles (the narrow scan): `spans` and `Runs` agree
+    /// with testing every pixel centre of a window directly.
+    #[test]
+    fn narrow_spans_match_per_pixel_edge_tests() {
+        let mut seed = 99u64;
+        let mut rnd = |m: i64| {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 33) as i64).rem_euclid(m)
+        };
+        let rect = Rect { x0: 2, y0: 1, x1: 14, y1: 13 };
+        let (mut covered, mut empty) = (0, 0);
+        for _ in 0..20000 {
+            let (bx, by, size) = (rnd(16 * ONE), rnd(16 * ONE), 1 + rnd(12 * ONE));
+            let mut x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
+            let mut y = [by + rnd(size), by + rnd(size), by + rnd(size)];
+            let area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+            if area == 0 {
+                continue;
+            }
+            if area < 0 {
+                x.swap(1, 2);
+                y.swap(1, 2);
+            }
+            let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
+            let mut expect = vec![];
+            for py in rect.y0 as i64..rect.y1 as i64 {
+                for px in rect.x0 as i64..rect.x1 as i64 {
+                    if edges.iter().all(|e| e.a * px + e.b * py + e.c >= 0) {
+                        expect.push((px, py));
+                    }
+                }
+            }
+            let mut got = vec![];
+            spans(x, y, rect, None, |py, lo, hi| got.extend((lo..hi).map(|px| (px as i64, py as i64))));
+            got.sort_by_key(|&(px, py)| (py, px));
+            assert_eq!(got, expect, "{x:?} {y:?}");
+            let mut runs = Runs::new();
+            assert!(runs.find(x, y, rect, None), "a short triangle");
+            let mut got: Vec<_> = runs.runs[..runs.len].iter().flat_map(|&(py, lo, hi)| (lo..hi).map(move |px| (px as i64, py as i64))).collect();
+            got.sort_by_key(|&(px, py)| (py, px));
+            assert_eq!(got, expect, "runs of {x:?} {y:?}");
+            if expect.is_empty() { empty += 1 } else { covered += 1 }
+        }
+        assert!(covered > 1000 && empty > 1000, "{covered} {empty}");
+    }
+
     /// The span solution agrees with testing every pixel centre directly.
     #[test]
     fn spans_match_per_pixel_edge_tests() {
@@ -173,6 +317,9 @@ mod tests {
                     let inside = edges.iter().all(|e| e.a * px + e.b * py + e.c >= 0);
                     let (lo, hi) = span(&edges, py, 0, 32);
                     assert_eq!(inside, px >= lo && px < hi, "pixel {px},{py} of {x:?} {y:?}");
+                    let (c0, c1) = (px - 3, px + 4);
+                    let (lo, hi) = row_span(&edges, py, c0, c1);
+                    assert_eq!(inside, px >= lo && px < hi, "narrow scan: pixel {px},{py} of {x:?} {y:?}");
                 }
             }
         }

@@ -34,15 +34,23 @@ pub struct WindowVertex {
     pub back_secondary: Vec4,
 }
 
+/// Window x, y, z and 1/w of a clip-space position (perspective division
+/// and the viewport transform, 2.11): the same arithmetic as [`to_window`].
 #[inline]
-pub fn to_window(rs: &RenderState, v: &ClipVertex) -> WindowVertex {
-    let q = 1.0 / v.pos.w as f64;
+pub fn window_pos(rs: &RenderState, p: glam::Vec4) -> [f64; 4] {
+    let q = 1.0 / p.w as f64;
     let [sx, sy, sz] = rs.viewport_scale;
     let [ox, oy, oz] = rs.viewport_offset;
+    [ox + sx * (p.x as f64 * q), oy + sy * (p.y as f64 * q), oz + sz * (p.z as f64 * q), q]
+}
+
+#[inline]
+pub fn to_window(rs: &RenderState, v: &ClipVertex) -> WindowVertex {
+    let [x, y, z, q] = window_pos(rs, v.pos);
     WindowVertex {
-        x: ox + sx * (v.pos.x as f64 * q),
-        y: oy + sy * (v.pos.y as f64 * q),
-        z: oz + sz * (v.pos.z as f64 * q),
+        x,
+        y,
+        z,
         q,
         color: v.color,
         back_color: v.back_color,
@@ -50,6 +58,72 @@ pub fn to_window(rs: &RenderState, v: &ClipVertex) -> WindowVertex {
         fog: v.fog,
         secondary: v.secondary,
         back_secondary: v.back_secondary,
+    }
+}
+
+/// The interpolated attributes of a vertex as setup reads them: window
+/// vertices, and clip vertices of triangles that need no clipping, read
+/// in place (no copy of the whole vertex per triangle).
+pub trait Attributes {
+    fn color(&self) -> Vec4;
+    fn back_color(&self) -> Vec4;
+    fn tex(&self, unit: usize) -> Vec4;
+    fn fog(&self) -> f32;
+    fn secondary(&self) -> Vec4;
+    fn back_secondary(&self) -> Vec4;
+}
+
+macro_rules! attributes {
+    ($t:ty) => {
+        impl Attributes for $t {
+            #[inline(always)]
+            fn color(&self) -> Vec4 {
+                self.color
+            }
+            #[inline(always)]
+            fn back_color(&self) -> Vec4 {
+                self.back_color
+            }
+            #[inline(always)]
+            fn tex(&self, unit: usize) -> Vec4 {
+                self.tex[unit]
+            }
+            #[inline(always)]
+            fn fog(&self) -> f32 {
+                self.fog
+            }
+            #[inline(always)]
+            fn secondary(&self) -> Vec4 {
+                self.secondary
+            }
+            #[inline(always)]
+            fn back_secondary(&self) -> Vec4 {
+                self.back_secondary
+            }
+        }
+    };
+}
+attributes!(WindowVertex);
+attributes!(ClipVertex);
+
+/// round(c * 256) as i64: snapping to the subpixel grid, rounding half
+/// away from zero as f64::round does, without its library call.
+#[inline(always)]
+pub fn snap(c: f64) -> i64 {
+    let v = c * ONE as f64;
+    // Window coordinates after clipping are far below 2^52; anything else
+    // (never reached) takes the library's rounding.
+    if !(v.abs() < 4503599627370496.0) {
+        return v.round() as i64;
+    }
+    let t = v as i64; // toward zero, exact for |v| < 2^52
+    let frac = v - t as f64; // exact
+    if frac >= 0.5 {
+        t + 1
+    } else if frac <= -0.5 {
+        t - 1
+    } else {
+        t
     }
 }
 
@@ -97,9 +171,31 @@ pub struct TexPlanes {
 /// Sets up and rasterizes one triangle in window coordinates.
 /// `flat_color` is the provoking vertex's [front, back] colour.
 pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &[WindowVertex; 3], flat_color: [Vec4; 2]) {
-    let snap = |c: f64| (c * ONE as f64).round() as i64;
-    let fx = [snap(w[0].x), snap(w[1].x), snap(w[2].x)];
-    let fy = [snap(w[0].y), snap(w[1].y), snap(w[2].y)];
+    let pos = w.each_ref().map(|v| [v.x, v.y, v.z, v.q]);
+    triangle_at(rs, fb, pos, w.each_ref(), flat_color)
+}
+
+/// [`triangle`] for clip vertices whose window positions are already
+/// computed (`ClipVertex::place`).
+pub fn triangle_placed(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, v: [&ClipVertex; 3], flat_color: [Vec4; 2]) {
+    let pos = v.map(|cv| cv.win);
+    let fx = v.map(|cv| cv.snapped[0]);
+    let fy = v.map(|cv| cv.snapped[1]);
+    triangle_snapped(rs, fb, pos, fx, fy, v, flat_color)
+}
+
+/// [`triangle`] for window positions `pos` (x, y, z, 1/w) whose other
+/// attributes are read from `attrs`.
+#[inline]
+pub fn triangle_at<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], attrs: [&A; 3], flat_color: [Vec4; 2]) {
+    let fx = pos.map(|p| snap(p[0]));
+    let fy = pos.map(|p| snap(p[1]));
+    triangle_snapped(rs, fb, pos, fx, fy, attrs, flat_color)
+}
+
+/// [`triangle_at`] with the vertices already snapped to (fx, fy).
+#[inline(always)]
+fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], fx: [i64; 3], fy: [i64; 3], attrs: [&A; 3], flat_color: [Vec4; 2]) {
     let area = (fx[1] - fx[0]) * (fy[2] - fy[0]) - (fx[2] - fx[0]) * (fy[1] - fy[0]);
     if area == 0 {
         return;
@@ -111,17 +207,43 @@ pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &
     let order = if ccw { [0, 1, 2] } else { [0, 2, 1] };
     let ex = order.map(|i| fx[i]);
     let ey = order.map(|i| fy[i]);
-    let v = order.map(|i| &w[i]);
+    // A short triangle's runs are found first: covering no pixel (most
+    // often through the stipple or between pixel centres), it needs no
+    // planes.
+    let mut found = raster::Runs::new();
+    let runs = found.find(ex, ey, rs.draw_rect, rs.polygon_stipple.as_deref()).then_some(&found);
+    if runs.is_some_and(|r| r.is_empty()) {
+        return;
+    }
+    let zq = order.map(|i| (pos[i][2], pos[i][3]));
+    let v = order.map(|i| attrs[i]);
 
     // Two-sided lighting: a back-facing polygon shows its back colours.
     let back = rs.two_side && !front_facing;
-    let setup = planes(rs, v, ex, ey, flat_color[back as usize], back, front_facing);
+    let setup = planes_of(rs, zq, v, ex, ey, flat_color[back as usize], back, front_facing);
     if super::tile::binning(rs) && !fb.draw_both && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2] {
-        if let Some(setup) = super::tile::bin(rs, ex, ey, setup) {
-            raster::triangle(rs, fb, ex, ey, &setup);
+        match super::tile::route(rs, ex, ey) {
+            super::tile::Route::ShadeNow => shade(rs, fb, ex, ey, &setup, runs),
+            super::tile::Route::Nothing => {}
+            super::tile::Route::Bin(bbox) => {
+                if super::tile::push(rs, ex, ey, bbox, setup) {
+                    super::tile::flush(rs, fb);
+                }
+            }
         }
     } else {
-        raster::triangle(rs, fb, ex, ey, &setup);
+        // Drawn now (two colour buffers): after what is binned.
+        super::tile::sync(rs, fb);
+        shade(rs, fb, ex, ey, &setup, runs);
+    }
+}
+
+/// Shades a triangle now: its runs if already found, else by a scan.
+#[inline]
+fn shade(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, ex: [i64; 3], ey: [i64; 3], setup: &TriangleSetup, runs: Option<&raster::Runs>) {
+    match runs {
+        Some(r) => r.shade(rs, fb, setup),
+        None => raster::triangle(rs, fb, ex, ey, setup),
     }
 }
 
@@ -134,6 +256,14 @@ pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &
 pub const OFFSET_UNIT: f64 = 2.0 / crate::framebuffer::DEPTH_MAX as f64;
 
 pub(crate) fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
+    planes_of(rs, v.map(|w| (w.z, w.q)), v, ex, ey, flat_color, back, front_facing)
+}
+
+/// The planes of a positively oriented triangle: window depth and 1/w
+/// per vertex in `zq`, the other attributes from `v`.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub(crate) fn planes_of<A: Attributes>(rs: &RenderState, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
     let inv = 1.0 / ONE as f64;
     let x = ex.map(|c| c as f64 * inv);
     let y = ey.map(|c| c as f64 * inv);
@@ -143,17 +273,16 @@ pub(crate) fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: 
         let (da1, da2) = (a[1] - a[0], a[2] - a[0]);
         Plane { a0: a[0], dx: (da1 * dy2 - da2 * dy1) / det, dy: (da2 * dx1 - da1 * dx2) / det }
     };
-    let perspective = !(v[0].q == v[1].q && v[1].q == v[2].q);
-    let q = [v[0].q, v[1].q, v[2].q];
+    let q = zq.map(|p| p.1);
+    let perspective = !(q[0] == q[1] && q[1] == q[2]);
     let (flat, color) = if rs.flat {
         (Some(super::fragment::color_to_u8(flat_color)), [Plane::default(); 4])
     } else {
-        let scale = |i: usize| if perspective { q[i] } else { 1.0 };
-        let col = |i: usize| if back { v[i].back_color } else { v[i].color };
-        let c = |ch: usize| plane([0, 1, 2].map(|i| col(i)[ch] as f64 * scale(i)));
-        (None, [c(0), c(1), c(2), c(3)])
+        let s = if perspective { q } else { [1.0; 3] };
+        let c = [0, 1, 2].map(|i| if back { v[i].back_color() } else { v[i].color() }.to_array());
+        (None, std::array::from_fn(|ch| plane([c[0][ch] as f64 * s[0], c[1][ch] as f64 * s[1], c[2][ch] as f64 * s[2]])))
     };
-    let mut z = plane([v[0].z, v[1].z, v[2].z]);
+    let mut z = plane(zq.map(|p| p.0));
     if let Some((factor, units)) = rs.offset_fill {
         // Polygon offset (3.5.5): m * factor + r * units, with m the
         // largest depth slope and r the depth buffer's resolution.
@@ -164,14 +293,14 @@ pub(crate) fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: 
         let mut planes = [[Plane::default(); 4]; super::texture::MAX_UNITS];
         for &u in &stage.active {
             for (c, p) in planes[u].iter_mut().enumerate() {
-                *p = plane([0, 1, 2].map(|i| v[i].tex[u][c] as f64 * q[i]));
+                *p = plane([0, 1, 2].map(|i| v[i].tex(u)[c] as f64 * q[i]));
             }
         }
         Box::new(TexPlanes { stage: stage.clone(), planes })
     });
-    let fog = rs.fog.map(|f| (plane([0, 1, 2].map(|i| v[i].fog as f64 * if perspective { q[i] } else { 1.0 })), f));
+    let fog = rs.fog.map(|f| (plane([0, 1, 2].map(|i| v[i].fog() as f64 * if perspective { q[i] } else { 1.0 })), f));
     let secondary = (rs.color_sum && tex.is_some())
-        .then(|| [0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| if back { v[i].back_secondary } else { v[i].secondary }[ch] as f64 * if perspective { q[i] } else { 1.0 }))));
+        .then(|| [0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| if back { v[i].back_secondary() } else { v[i].secondary() }[ch] as f64 * if perspective { q[i] } else { 1.0 }))));
     TriangleSetup {
         tex,
         fog,

@@ -27,6 +27,14 @@ pub struct ClipVertex {
     /// The back face's secondary colour under two-sided lighting with
     /// texturing (else the same as `secondary`).
     pub back_secondary: Vec4,
+    /// Computed once per vertex by [`ClipVertex::place`] (a strip's vertex
+    /// serves three triangles): the position is finite and inside the
+    /// fixed clip planes (`clip::inside_fixed`), and then `win` holds its
+    /// window x, y, z and 1/w and `snapped` its fixed-point x and y.
+    /// False for vertices made by clipping; never trusted when false.
+    pub inside: bool,
+    pub win: [f64; 4],
+    pub snapped: [i64; 2],
 }
 
 impl ClipVertex {
@@ -43,6 +51,20 @@ impl ClipVertex {
             fog: a.fog + (b.fog - a.fog) * t,
             secondary: a.secondary + (b.secondary - a.secondary) * t,
             back_secondary: a.back_secondary + (b.back_secondary - a.back_secondary) * t,
+            inside: false,
+            win: [0.0; 4],
+            snapped: [0; 2],
+        }
+    }
+
+    /// Fills in `inside`, `win` and `snapped` for the render state's
+    /// viewport.
+    #[inline]
+    pub fn place(&mut self, rs: &super::RenderState) {
+        self.inside = super::clip::inside_fixed(self.pos);
+        if self.inside {
+            self.win = super::setup::window_pos(rs, self.pos);
+            self.snapped = [super::setup::snap(self.win[0]), super::setup::snap(self.win[1])];
         }
     }
 }

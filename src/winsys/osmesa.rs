@@ -202,6 +202,7 @@ pub fn create_context_ext(format: u32, depth: i32, stencil: i32, accum: i32, sha
         return null_mut();
     }
     let mut ctx = Box::new(OsContext { gl: Context::new(config(depth, stencil, accum)), format, buffer: None, row_length: 0, y_up: true });
+    ctx.gl.defer_render = true;
     if !share.is_null() {
         // SAFETY: OSMesa's contract: sharelist is NULL or a live context.
         crate::gl::share::join(&mut ctx.gl, unsafe { &mut (*share).gl });

@@ -380,6 +380,7 @@ pub fn create_context(hdc: Hdc) -> Hglrc {
     let config = Config { depth_bits: DEPTH_BITS as u8, stencil_bits: 8, accum_bits: 16 };
     let mut gl = Context::new(config);
     gl.set_double_buffered(is_double(format));
+    gl.defer_render = true;
     let p = Box::into_raw(Box::new(WglContext { gl, pixel_format: format, dc: None, bound: AtomicBool::new(false) }));
     register(&CONTEXTS, p as usize, true);
     p as Hglrc

@@ -201,8 +201,12 @@ fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentS
     let dep = &mut depth[..if D != D_OFF { n } else { 0 }];
     let sten = &mut stencil[..if S { n } else { 0 }];
     let mut passed = 0u64;
+    // The pixel centre's offset from the planes' origin, stepped by 1:
+    // (x + 1/2 - x0) is a multiple of 1/256 far below 2^44, so each sum
+    // is exact and equal to the reference's per-pixel value.
+    let mut cx = x0 as f64 + 0.5 - t.x0 - 1.0;
     for k in 0..n {
-        let cx = (x0 + k) as f64 + 0.5 - t.x0;
+        cx += 1.0;
         if S {
             let s = sten[k];
             if !st.test(s) {

@@ -657,6 +657,10 @@ unsafe fn new_context(dpy: *mut Display, config: Option<&'static FbConfig>) -> *
     }
     let mut gl = Context::new(c.framebuffer_config());
     gl.set_double_buffered(c.double);
+    // No deferred shading across calls (gl.defer_render stays false): a
+    // GLX drawable's framebuffer is swapped into the context only for the
+    // length of each call (winsys/bound.rs), so binned triangles must be
+    // shaded before the call returns, as the end of each draw call does.
     Box::into_raw(Box::new(GlxContext {
         gl,
         config: *c,
