@@ -504,6 +504,8 @@ fn compare_textured(seed: u64, cases: usize, size: (usize, usize), threads: usiz
             for cmd in &cmds {
                 c.execute(cmd);
             }
+            // The threaded context defers its binned triangles.
+            c.sync_render();
         }
         drawn += (0..W * H).filter(|&i| reference.fb.color[i] != color[i]).count();
         for i in 0..W * H {
