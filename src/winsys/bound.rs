@@ -59,6 +59,10 @@ fn swapped<R>(ctx: &mut Context, draw: &Arc<SharedFramebuffer>, read: Option<&Ar
     ENTERED.with(|e| e.set(true));
     // `f` catches its own panics (api::dispatch), so this always runs.
     let out = f(ctx);
+    // Binned triangles (render::tile) are shaded now, while the drawable's
+    // framebuffer is in place: after the call it may be presented, resized
+    // or drawn by another context.
+    ctx.sync_render();
     ENTERED.with(|e| e.set(false));
     std::mem::swap(&mut ctx.fb, &mut d.fb);
     if let (Some(r), Some(rf)) = (r.as_mut(), ctx.read_fb.as_mut()) {
