@@ -93,6 +93,17 @@ fn lex_less(p: [f64; 2], q: [f64; 2]) -> bool {
 }
 
 /// Computes windings and the selected region; triangulates it unless `boundary_only`.
+/// An integer with the order of `f64::total_cmp`.
+#[inline]
+fn ord_key(x: f64) -> u64 {
+    let b = x.to_bits();
+    if b >> 63 == 1 {
+        !b
+    } else {
+        b | 1 << 63
+    }
+}
+
 /// Buffers kept from one polygon to the next; `region` leaves its result
 /// in `boundary` and `triangles`.
 #[derive(Default)]
@@ -100,6 +111,7 @@ pub struct Scratch {
     dir: Vec<(u32, u32, i64)>,
     edges: Vec<Edge>,
     order: Vec<u32>,
+    keyed: Vec<(u64, u64, u32)>,
     out: Vec<u32>,
     inc: Vec<u32>,
     below: Vec<i64>,
@@ -116,7 +128,7 @@ pub struct Scratch {
 /// triangulates it unless `boundary_only`.
 pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc: &mut Scratch) {
     let nv = verts.len();
-    let Scratch { dir, edges, order, out, inc, below, active1, bedges, inside_above, active2, outs, pool, region } = sc;
+    let Scratch { dir, edges, order, keyed, out, inc, below, active1, bedges, inside_above, active2, outs, pool, region } = sc;
     let Region { boundary, triangles: tris } = region;
     boundary.clear();
     tris.clear();
@@ -149,14 +161,13 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc:
         let l = dx + dy.abs();
         e.key = if l > 0.0 { dy / l } else { 0.0 };
     }
-    edges.sort_unstable_by(|x, y| x.lo.cmp(&y.lo).then(x.key.total_cmp(&y.key)).then(x.hi.cmp(&y.hi)));
-    // Sweep order of vertices.
+    edges.sort_unstable_by_key(|e| (e.lo, ord_key(e.key), e.hi));
+    // Sweep order of vertices (integer keys sort faster than float compares).
+    keyed.clear();
+    keyed.extend(verts.iter().enumerate().map(|(i, v)| (ord_key(v.p[0]), ord_key(v.p[1]), i as u32)));
+    keyed.sort_unstable();
     order.clear();
-    order.extend(0..nv as u32);
-    order.sort_unstable_by(|&i, &j| {
-        let (p, q) = (verts[i as usize].p, verts[j as usize].p);
-        p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1])).then(i.cmp(&j))
-    });
+    order.extend(keyed.iter().map(|k| k.2));
     // Outgoing edges of v: es[out[v]..out[v + 1]] (es sorted by lo); incoming counts.
     let build_out = |es: &[Edge], out: &mut Vec<u32>, inc: &mut Vec<u32>| {
         out.clear();
