@@ -713,3 +713,33 @@ fn null_callback_unsets_vertex_begin_and_combine() {
         gluDeleteTess(t);
     }
 }
+
+/// Polygons with more than 48 edges take the grid path of the pair search
+/// (each edge entered into the cells its segment crosses): the same exact
+/// checks on integer-grid polygons (collinear overlaps, vertices on edges,
+/// duplicates), long thin spikes, and random real coordinates.
+#[test]
+fn exact_coverage_grid_path() {
+    let mut r = Rng(0x5eed_1234_5678_9abd);
+    for i in 0..36 {
+        let n = 50 + r.below(70) as usize;
+        let cs: Vec<Vec<[f64; 3]>> = match i % 3 {
+            0 => vec![(0..n).map(|_| [r.below(12) as f64, r.below(12) as f64, 0.0]).collect()],
+            1 => {
+                // A star with spikes from radius 0.3 to 1: long nearly radial edges.
+                vec![(0..n)
+                    .map(|k| {
+                        let a = k as f64 / n as f64 * std::f64::consts::TAU;
+                        let rr = 0.3 + 0.7 * r.f();
+                        [rr * a.cos(), rr * a.sin(), 0.0]
+                    })
+                    .collect()]
+            }
+            _ => vec![(0..n).map(|_| [r.f() * 10.0, r.f() * 10.0, 0.0]).collect()],
+        };
+        assert!(cs[0].len() > 48);
+        for &rule in &RULES {
+            check_coverage(&cs, rule, &mut r, rule == GLU_TESS_WINDING_ODD, &format!("grid-path polygon {i} rule {rule}"));
+        }
+    }
+}
