@@ -671,3 +671,75 @@ fn big_polygons_are_not_quadratic() {
 fn rule_area_shoelace(cs: &[Vec<[f64; 3]>]) -> f64 {
     cs.iter().map(|c| (0..c.len()).map(|i| { let (a, b) = (c[i], c[(i + 1) % c.len()]); 0.5 * (a[0] * b[1] - a[1] * b[0]) }).sum::<f64>()).sum()
 }
+
+/// GLU 1.3: "If the callback function is NULL, the callback is removed" —
+/// for every kind, not only ERROR (Delphi programs reset callbacks with nil).
+#[test]
+fn null_callback_unsets_vertex_begin_and_combine() {
+    let bow = [[0.0, 0.0, 0.0], [4.0, 4.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0]];
+    OUT.with(|x| *x.borrow_mut() = Out::default());
+    unsafe {
+        let t = gluNewTess();
+        gluTessCallback(t, GLU_TESS_BEGIN, proc_of(cb_begin as extern "system" fn(u32)));
+        gluTessCallback(t, GLU_TESS_VERTEX, proc_of(cb_vertex as extern "system" fn(*mut c_void)));
+        gluTessCallback(t, GLU_TESS_ERROR, proc_of(cb_error as extern "system" fn(u32)));
+        gluTessCallback(t, GLU_TESS_COMBINE, proc_of(cb_combine as extern "system" fn(*const f64, *const *mut c_void, *const f32, *mut *mut c_void)));
+        let run = |t: *mut c_void| {
+            let mut pts = bow;
+            gluTessBeginPolygon(t, std::ptr::null_mut());
+            gluTessBeginContour(t);
+            for q in pts.iter_mut() {
+                gluTessVertex(t, q.as_mut_ptr(), q as *mut [f64; 3] as *mut c_void);
+            }
+            gluTessEndContour(t);
+            gluTessEndPolygon(t);
+            OUT.with(|x| std::mem::take(&mut *x.borrow_mut()))
+        };
+        // All set: two triangles through BEGIN and VERTEX, one COMBINE.
+        let o = run(t);
+        assert_eq!((o.begins.len(), o.prims.iter().map(|p| p.len()).sum::<usize>(), o.combines), (1, 6, 1));
+        assert!(o.errors.is_empty());
+        // VERTEX unset: BEGIN still comes, no vertices.
+        gluTessCallback(t, GLU_TESS_VERTEX, None);
+        let o = run(t);
+        assert_eq!((o.begins.len(), o.prims.iter().map(|p| p.len()).sum::<usize>()), (1, 0));
+        // BEGIN unset too: nothing at all.
+        gluTessCallback(t, GLU_TESS_BEGIN, None);
+        assert!(run(t).begins.is_empty());
+        // COMBINE unset: the crossing needs one.
+        gluTessCallback(t, GLU_TESS_COMBINE, None);
+        let o = run(t);
+        assert_eq!((o.combines, o.errors.clone()), (0, vec![GLU_TESS_NEED_COMBINE_CALLBACK]));
+        gluDeleteTess(t);
+    }
+}
+
+/// Polygons with more than 48 edges take the grid path of the pair search
+/// (each edge entered into the cells its segment crosses): the same exact
+/// checks on integer-grid polygons (collinear overlaps, vertices on edges,
+/// duplicates), long thin spikes, and random real coordinates.
+#[test]
+fn exact_coverage_grid_path() {
+    let mut r = Rng(0x5eed_1234_5678_9abd);
+    for i in 0..36 {
+        let n = 50 + r.below(70) as usize;
+        let cs: Vec<Vec<[f64; 3]>> = match i % 3 {
+            0 => vec![(0..n).map(|_| [r.below(12) as f64, r.below(12) as f64, 0.0]).collect()],
+            1 => {
+                // A star with spikes from radius 0.3 to 1: long nearly radial edges.
+                vec![(0..n)
+                    .map(|k| {
+                        let a = k as f64 / n as f64 * std::f64::consts::TAU;
+                        let rr = 0.3 + 0.7 * r.f();
+                        [rr * a.cos(), rr * a.sin(), 0.0]
+                    })
+                    .collect()]
+            }
+            _ => vec![(0..n).map(|_| [r.f() * 10.0, r.f() * 10.0, 0.0]).collect()],
+        };
+        assert!(cs[0].len() > 48);
+        for &rule in &RULES {
+            check_coverage(&cs, rule, &mut r, rule == GLU_TESS_WINDING_ODD, &format!("grid-path polygon {i} rule {rule}"));
+        }
+    }
+}

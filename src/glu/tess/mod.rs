@@ -18,12 +18,18 @@
 //! with an EDGE_FLAG callback, an edge is flagged iff it is an edge of the
 //! selected region's boundary.
 //!
-//! Cost: edge pairs are found with a uniform grid (about sqrt(n) cells a
-//! side), so typical inputs run in near-linear time (100k vertices: well
-//! under a second); inputs with very many crossings or very many long edges
-//! are quadratic, as their output is. The sweeps look edges up in their
-//! active list linearly, so polygons with a very wide active list (combs with
-//! tens of thousands of teeth) are slower than they need be.
+//! Stages: [`merge`] (near-coincident vertices), [`split`] (the
+//! arrangement: crossings and touching), [`sweep`] (windings, the region,
+//! triangles). Every buffer they use lives in the tessellator object and is
+//! reused by the next polygon.
+//!
+//! Cost: edge pairs are found with a uniform grid of about n cells in which
+//! each edge occupies the cells its segment crosses, so typical inputs run
+//! in near-linear time; inputs with very many crossings are quadratic, as
+//! their output is. The sweeps keep their active edges in a vector (linear
+//! search for the edges ending at a vertex, memmove on insert), so polygons
+//! with tens of thousands of edges active at once (a 100,000-vertex random
+//! star) are quadratic; a balanced tree there would fix it.
 //!
 //! Differences from SGI's libtess worth knowing: COMBINE is called only for
 //! real crossings (not for merging coincident vertices); a NaN coordinate is

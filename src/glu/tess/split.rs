@@ -214,6 +214,7 @@ fn intersect(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &[Seg], i: usize, j: 
     let (a, b, c, d) = (verts[s.a].p, verts[s.b].p, verts[r.a].p, verts[r.b].p);
     let before = out.len();
     // Endpoints lying on the other edge's interior (touching, collinear overlaps).
+    // (Cheap rejections first: no division or square root unless it lies on.)
     let lies_on = |p: [f64; 2], a: [f64; 2], b: [f64; 2]| -> Option<f64> {
         let dx = b[0] - a[0];
         let dy = b[1] - a[1];
@@ -221,12 +222,13 @@ fn intersect(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &[Seg], i: usize, j: 
         if !(l2 > 0.0) {
             return None;
         }
-        let t = ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2;
-        if !(t > 0.0 && t < 1.0) {
+        let dot = (p[0] - a[0]) * dx + (p[1] - a[1]) * dy;
+        if !(dot > 0.0 && dot < l2) {
             return None;
         }
-        let dist = orient(a, b, p).abs() / l2.sqrt();
-        (dist <= EPS).then_some(t)
+        // Distance to the line at most EPS: orient² <= EPS² · l2.
+        let o = orient(a, b, p);
+        (o * o <= EPS * EPS * l2).then(|| dot / l2)
     };
     for &(v, p) in &[(r.a, c), (r.b, d)] {
         if v != s.a && v != s.b {

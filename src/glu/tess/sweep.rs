@@ -93,6 +93,17 @@ fn lex_less(p: [f64; 2], q: [f64; 2]) -> bool {
 }
 
 /// Computes windings and the selected region; triangulates it unless `boundary_only`.
+/// An integer with the order of `f64::total_cmp`.
+#[inline]
+fn ord_key(x: f64) -> u64 {
+    let b = x.to_bits();
+    if b >> 63 == 1 {
+        !b
+    } else {
+        b | 1 << 63
+    }
+}
+
 /// Buffers kept from one polygon to the next; `region` leaves its result
 /// in `boundary` and `triangles`.
 #[derive(Default)]
@@ -100,6 +111,7 @@ pub struct Scratch {
     dir: Vec<(u32, u32, i64)>,
     edges: Vec<Edge>,
     order: Vec<u32>,
+    keyed: Vec<(u64, u64, u32)>,
     out: Vec<u32>,
     inc: Vec<u32>,
     below: Vec<i64>,
@@ -108,6 +120,7 @@ pub struct Scratch {
     inside_above: Vec<bool>,
     active2: Vec<(usize, Option<Reg>)>,
     outs: Vec<(usize, Option<Reg>)>,
+    pool: Pool,
     pub region: Region,
 }
 
@@ -115,7 +128,7 @@ pub struct Scratch {
 /// triangulates it unless `boundary_only`.
 pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc: &mut Scratch) {
     let nv = verts.len();
-    let Scratch { dir, edges, order, out, inc, below, active1, bedges, inside_above, active2, outs, region } = sc;
+    let Scratch { dir, edges, order, keyed, out, inc, below, active1, bedges, inside_above, active2, outs, pool, region } = sc;
     let Region { boundary, triangles: tris } = region;
     boundary.clear();
     tris.clear();
@@ -148,14 +161,13 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc:
         let l = dx + dy.abs();
         e.key = if l > 0.0 { dy / l } else { 0.0 };
     }
-    edges.sort_unstable_by(|x, y| x.lo.cmp(&y.lo).then(x.key.total_cmp(&y.key)).then(x.hi.cmp(&y.hi)));
-    // Sweep order of vertices.
+    edges.sort_unstable_by_key(|e| (e.lo, ord_key(e.key), e.hi));
+    // Sweep order of vertices (integer keys sort faster than float compares).
+    keyed.clear();
+    keyed.extend(verts.iter().enumerate().map(|(i, v)| (ord_key(v.p[0]), ord_key(v.p[1]), i as u32)));
+    keyed.sort_unstable();
     order.clear();
-    order.extend(0..nv as u32);
-    order.sort_unstable_by(|&i, &j| {
-        let (p, q) = (verts[i as usize].p, verts[j as usize].p);
-        p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1])).then(i.cmp(&j))
-    });
+    order.extend(keyed.iter().map(|k| k.2));
     // Outgoing edges of v: es[out[v]..out[v + 1]] (es sorted by lo); incoming counts.
     let build_out = |es: &[Edge], out: &mut Vec<u32>, inc: &mut Vec<u32>| {
         out.clear();
@@ -212,7 +224,7 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc:
     build_out(bedges, out, inc);
     let active = active2;
     active.clear();
-    let mut t = Tri { verts, out: tris };
+    let mut t = Tri { verts, out: tris, pool };
     outs.clear();
     for &v in order.iter() {
         let v = v as usize;
@@ -241,8 +253,9 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc:
             let r_above = r_above.map(|r| t.add(r, v, Side::Lower));
             if outs.is_empty() {
                 match (r_below, r_above) {
-                    (Some(mut b), Some(a)) => {
-                        b.subs.extend(a.subs);
+                    (Some(mut b), Some(mut a)) => {
+                        b.subs.extend(a.subs.drain(..));
+                        t.recycle_subs(a.subs);
                         active[lo - 1].1 = Some(b);
                     }
                     (Some(b), None) => active[lo - 1].1 = Some(b),
@@ -260,12 +273,12 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc:
                 let k = outs.len();
                 for j in 0..k - 1 {
                     if inside_above[outs[j].0] {
-                        outs[j].1 = Some(Reg::start(v));
+                        outs[j].1 = Some(t.start(v));
                     }
                 }
                 outs[k - 1].1 = match r_above {
                     Some(a) => Some(a),
-                    None if inside_above[outs[k - 1].0] => Some(Reg::start(v)),
+                    None if inside_above[outs[k - 1].0] => Some(t.start(v)),
                     None => None,
                 };
                 active.splice(lo..lo, outs.drain(..));
@@ -307,7 +320,7 @@ fn insert_start(active: &mut Vec<(usize, Option<Reg>)>, v: usize, outs: &mut Vec
     let k = outs.len();
     for j in 0..k - 1 {
         if inside_above[outs[j].0] {
-            outs[j].1 = Some(Reg::start(v));
+            outs[j].1 = Some(t.start(v));
         }
     }
     match r {
@@ -318,7 +331,7 @@ fn insert_start(active: &mut Vec<(usize, Option<Reg>)>, v: usize, outs: &mut Vec
         }
         None => {
             if inside_above[outs[k - 1].0] {
-                outs[k - 1].1 = Some(Reg::start(v));
+                outs[k - 1].1 = Some(t.start(v));
             }
         }
     }
@@ -347,18 +360,51 @@ struct Reg {
     subs: Vec<Chain>,
 }
 
-impl Reg {
-    fn start(v: usize) -> Reg {
-        Reg { subs: vec![Chain { verts: vec![v], side: Side::Both }] }
-    }
+/// Spare chain and region vectors, so that regions starting and ending
+/// do not allocate (kept across polygons).
+#[derive(Default)]
+struct Pool {
+    chains: Vec<Vec<usize>>,
+    subs: Vec<Vec<Chain>>,
 }
 
 struct Tri<'a> {
     verts: &'a [Vert],
     out: &'a mut Vec<[usize; 3]>,
+    pool: &'a mut Pool,
 }
 
 impl Tri<'_> {
+    fn chain(&mut self, vs: &[usize], side: Side) -> Chain {
+        let mut verts = self.pool.chains.pop().unwrap_or_default();
+        verts.extend_from_slice(vs);
+        Chain { verts, side }
+    }
+
+    fn reg(&mut self, ch: Chain) -> Reg {
+        let mut subs = self.pool.subs.pop().unwrap_or_default();
+        subs.push(ch);
+        Reg { subs }
+    }
+
+    /// A region starting at v.
+    fn start(&mut self, v: usize) -> Reg {
+        let ch = self.chain(&[v], Side::Both);
+        self.reg(ch)
+    }
+
+    fn recycle_chain(&mut self, mut ch: Chain) {
+        ch.verts.clear();
+        self.pool.chains.push(ch.verts);
+    }
+
+    fn recycle_subs(&mut self, mut subs: Vec<Chain>) {
+        for ch in subs.drain(..) {
+            self.recycle_chain(ch);
+        }
+        self.pool.subs.push(subs);
+    }
+
     fn tri(&mut self, a: usize, b: usize, c: usize) {
         let o = orient(self.verts[a].p, self.verts[b].p, self.verts[c].p);
         // Zero-area triangles (collinear vertices) are kept: they keep the
@@ -411,8 +457,11 @@ impl Tri<'_> {
             // Merge vertices waiting in the region: the others end at v.
             let keep = if s == Side::Lower { r.subs.len() - 1 } else { 0 };
             let kept = r.subs.swap_remove(keep);
+            for ch in &r.subs {
+                self.fan(ch, v);
+            }
             for ch in r.subs.drain(..) {
-                self.fan(&ch, v);
+                self.recycle_chain(ch);
             }
             r.subs.push(kept);
         }
@@ -427,30 +476,34 @@ impl Tri<'_> {
         for ch in &r.subs {
             self.fan(ch, v);
         }
+        self.recycle_subs(r.subs);
     }
 
     /// v starts a hole inside the region: returns the parts below and above.
     fn split(&mut self, r: Reg, v: usize) -> (Reg, Reg) {
         let mut subs = r.subs;
         if subs.len() > 1 {
-            let top = subs.pop().unwrap();
-            let mut it = subs.into_iter();
-            let bottom = it.next().unwrap();
-            for ch in it {
-                self.fan(&ch, v);
+            let top = subs.pop().unwrap_or_else(|| Chain { verts: Vec::new(), side: Side::Both });
+            let bottom = subs.remove(0);
+            for ch in &subs {
+                self.fan(ch, v);
             }
+            self.recycle_subs(subs);
             let lower = self.step(bottom, v, Side::Upper);
             let upper = self.step(top, v, Side::Lower);
-            return (Reg { subs: vec![lower] }, Reg { subs: vec![upper] });
+            return (self.reg(lower), self.reg(upper));
         }
-        let ch = subs.pop().unwrap();
-        let h = *ch.verts.last().unwrap();
+        let Some(ch) = subs.pop() else { return (self.start(v), self.start(v)) };
+        self.recycle_subs(subs);
+        let h = ch.verts.last().copied().unwrap_or(v);
         if ch.side == Side::Upper {
             let lower = self.step(ch, v, Side::Upper);
-            (Reg { subs: vec![lower] }, Reg { subs: vec![Chain { verts: vec![h, v], side: Side::Lower }] })
+            let other = self.chain(&[h, v], Side::Lower);
+            (self.reg(lower), self.reg(other))
         } else {
             let upper = self.step(ch, v, Side::Lower);
-            (Reg { subs: vec![Chain { verts: vec![h, v], side: Side::Upper }] }, Reg { subs: vec![upper] })
+            let other = self.chain(&[h, v], Side::Upper);
+            (self.reg(other), self.reg(upper))
         }
     }
 }
