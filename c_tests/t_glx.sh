@@ -16,6 +16,12 @@
 #      SOFTGL_NO_SHM=1), glXCreateContextAttribsARB, several contexts on one
 #      window (two threads), a separate read drawable, a pbuffer in two
 #      contexts of a share group, a double-buffered GLXPixmap.
+#   6. when wflinfo is installed (waffle-utils), `wflinfo -p glx -a gl`
+#      must report softgl;
+#   7. when freeglut's headers are installed (freeglut3-dev), the freeglut
+#      program c_tests/glut_teapot.c, built against the system's GL and
+#      GLUT as any program would be, runs on softgl (LD_LIBRARY_PATH): its
+#      own pixel checks, a SOFTGL_DUMP frame, and its pixels on the screen.
 # Exit 77 (skip) without Xvfb, the Xlib headers or build/lib/libGL.so.1.
 set -u
 cd "$(dirname "$0")/.." || exit 2
@@ -63,7 +69,7 @@ if [ -z "$disp" ]; then
     echo "SKIP t_glx: no free X display in :90..:99"
     exit 77
 fi
-Xvfb ":$disp" -screen 0 640x480x24 -br -nolisten tcp >"$DIR/xvfb.log" 2>&1 &
+Xvfb ":$disp" -screen 0 640x480x24 -br -noreset -nolisten tcp >"$DIR/xvfb.log" 2>&1 &
 XPID=$!
 GPID=""
 cleanup() {
@@ -152,6 +158,51 @@ if command -v glxgears >/dev/null 2>&1; then
     fi
 else
     echo "  note: glxgears not installed (mesa-utils); not run"
+fi
+
+if command -v wflinfo >/dev/null 2>&1; then
+    out=$(LD_LIBRARY_PATH="$ROOT/build/lib" timeout 20 wflinfo -p glx -a gl 2>&1)
+    rc=$?
+    echo "$out" | grep 'renderer string' | sed 's/^/  wflinfo: /'
+    if [ $rc -ne 0 ] || ! echo "$out" | grep -q 'renderer string: softgl'; then
+        echo "$out" | sed 's/^/    /'
+        echo "  failure: wflinfo does not report softgl (exit status $rc)"
+        fails=$((fails + 1))
+    fi
+else
+    echo "  note: wflinfo not installed (waffle-utils); not run"
+fi
+
+if [ -f /usr/include/GL/freeglut.h ]; then
+    if $CC -std=c99 -O1 -o "$DIR/glut_teapot" c_tests/glut_teapot.c -lglut -lGL >"$DIR/build3.log" 2>&1; then
+        rm -rf "$DIR/dump"
+        mkdir -p "$DIR/dump"
+        before=$("$DIR/glx_window" rootcount)
+        LD_LIBRARY_PATH="$ROOT/build/lib" SOFTGL_DUMP="$DIR/dump" timeout 30 "$DIR/glut_teapot" >"$DIR/glut.log" 2>&1 &
+        GPID=$!
+        sleep 1
+        during=$("$DIR/glx_window" rootcount)
+        wait "$GPID"
+        rc=$?
+        GPID=""
+        sed 's/^/  glut_teapot: /' "$DIR/glut.log"
+        frames=$(ls "$DIR/dump" | grep -c '\.png$')
+        echo "  glut_teapot: $frames SOFTGL_DUMP frames; non-background pixels on the screen: $before before, $during while running"
+        if [ $rc -ne 0 ] || ! grep -q '^renderer softgl' "$DIR/glut.log"; then
+            echo "  failure: glut_teapot (exit status $rc)"
+            fails=$((fails + 1))
+        fi
+        if [ "$frames" -lt 1 ] || [ "${during:-0}" -lt $((${before:-0} + 5000)) ]; then
+            echo "  failure: glut_teapot left no dumped frame or too few pixels on the screen"
+            fails=$((fails + 1))
+        fi
+    else
+        cat "$DIR/build3.log"
+        echo "  failure: glut_teapot.c does not compile against freeglut"
+        fails=$((fails + 1))
+    fi
+else
+    echo "  note: freeglut3-dev not installed; glut_teapot not run"
 fi
 
 if [ $fails -ne 0 ]; then

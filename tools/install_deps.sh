@@ -3,7 +3,8 @@
 # and they are missing: a C compiler, pkg-config, and Mesa's OSMesa and GLU
 # (the LD_PRELOAD test builds a program against Mesa and runs it on softgl),
 # and for the GLX test Xvfb, the Xlib headers, x11-utils and mesa-utils
-# (glxgears), and Free Pascal with its gl/glu units for delphi_samples/.
+# (glxgears), freeglut and waffle-utils (a GLUT program, wflinfo), and
+# Free Pascal with its gl/glu units for delphi_samples/.
 set -eu
 need=""
 command -v cc >/dev/null 2>&1 || need="$need gcc libc6-dev"
@@ -14,6 +15,8 @@ command -v Xvfb >/dev/null 2>&1 || need="$need xvfb"
 [ -f /usr/include/X11/Xlib.h ] || need="$need libx11-dev"
 command -v xdpyinfo >/dev/null 2>&1 || need="$need x11-utils"
 command -v glxgears >/dev/null 2>&1 || need="$need mesa-utils"
+[ -f /usr/include/GL/freeglut.h ] || need="$need freeglut3-dev"
+command -v wflinfo >/dev/null 2>&1 || need="$need waffle-utils"
 command -v fpc >/dev/null 2>&1 || need="$need fp-compiler fp-units-gfx"
 [ -z "$need" ] && exit 0
 if [ "$(id -u)" != 0 ] || ! command -v apt-get >/dev/null 2>&1; then
