@@ -30,10 +30,24 @@ use crate::render::setup::TriangleSetup;
 pub type Kernel = fn(&FragmentState, &TriangleSetup, &mut SpanPixels, usize, usize, usize);
 
 /// Depth keys.
-const D_OFF: u8 = 0;
-const D_LESS: u8 = 1;
-const D_LEQUAL: u8 = 2;
-const D_ANY: u8 = 3;
+pub(super) const D_OFF: u8 = 0;
+pub(super) const D_LESS: u8 = 1;
+pub(super) const D_LEQUAL: u8 = 2;
+pub(super) const D_ANY: u8 = 3;
+
+/// The depth key of a fragment state: off, LESS or LEQUAL with writes (the
+/// common cases, specialized), or any other test.
+pub(super) fn depth_key(fs: &FragmentState) -> u8 {
+    if !fs.depth_test {
+        D_OFF
+    } else if fs.depth_write && fs.depth_func == CompareFunc::Less {
+        D_LESS
+    } else if fs.depth_write && fs.depth_func == CompareFunc::Lequal {
+        D_LEQUAL
+    } else {
+        D_ANY
+    }
+}
 /// Colour sources.
 const CS_FLAT: u8 = 0;
 const CS_AFFINE: u8 = 1;
@@ -68,15 +82,7 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kerne
     if let Some(k) = super::textured::select(fs, t) {
         return k;
     }
-    let d = if !fs.depth_test {
-        D_OFF
-    } else if fs.depth_write && fs.depth_func == CompareFunc::Less {
-        D_LESS
-    } else if fs.depth_write && fs.depth_func == CompareFunc::Lequal {
-        D_LEQUAL
-    } else {
-        D_ANY
-    };
+    let d = depth_key(fs);
     let full = fs.color_mask == [true; 4];
     let co = match fs.color {
         ColorOp::None => CO_NONE,

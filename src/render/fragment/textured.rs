@@ -30,7 +30,8 @@
 //! alpha test, a fragment failing the depth test is never textured.
 
 use super::reference;
-use super::{depth_to_fixed, write_color, ColorOp, CompareFunc, FragmentState, SpanPixels};
+use super::fast::{depth_key, D_ANY, D_LEQUAL, D_LESS, D_OFF};
+use super::{depth_to_fixed, write_color, ColorOp, FragmentState, SpanPixels};
 use crate::gl::texture::enums::{GL_DECAL, GL_MODULATE, GL_REPLACE};
 use crate::render::fog::Fog;
 use crate::render::setup::{Plane, TriangleSetup};
@@ -43,27 +44,13 @@ type Kernel = super::fast::Kernel;
 /// smaller).
 const MAX_LEVELS: usize = 16;
 
-/// Depth keys (as in `fast.rs`).
-const D_OFF: u8 = 0;
-const D_LESS: u8 = 1;
-const D_LEQUAL: u8 = 2;
-const D_ANY: u8 = 3;
-
 /// The textured kernel for a triangle, if its state is the common case.
 pub fn select(fs: &FragmentState, t: &TriangleSetup) -> Option<Kernel> {
     let tp = t.tex.as_ref()?;
     if fs.alpha_test || fs.stencil_test || fs.color == ColorOp::None || t.secondary.is_some() || !applies(tp) {
         return None;
     }
-    let d = if !fs.depth_test {
-        D_OFF
-    } else if fs.depth_write && fs.depth_func == CompareFunc::Less {
-        D_LESS
-    } else if fs.depth_write && fs.depth_func == CompareFunc::Lequal {
-        D_LEQUAL
-    } else {
-        D_ANY
-    };
+    let d = depth_key(fs);
     let store = fs.color == ColorOp::Replace && fs.color_mask == [true; 4];
     Some(match (d, store) {
         (D_OFF, true) => kernel::<D_OFF, true>,
