@@ -5,10 +5,13 @@
 //! are loaded at run time ([`xlib`]); the X server needs no GLX extension
 //! at all (with one, the errors GLX defines are numbered from its base).
 //!
-//! What is offered: every TrueColor visual of depth 24 or 32 on the screen
-//! whose channels are 8 bits wide, as two FBConfigs (single- and
+//! What is offered: for each of the depths 24 and 32 that has TrueColor
+//! visuals with 8-bit channels, two FBConfigs (single- and
 //! double-buffered), each RGBA8 with depth 24, stencil 8, accumulation 16
-//! per channel, no multisampling, window and pixmap drawables. What is
+//! per channel, no multisampling, window, pixmap and pbuffer drawables.
+//! Each config has its own visual when the screen has two of that depth
+//! (then a window's visual names its config); other visuals of the same
+//! format are accepted as the configs of their depth. What is
 //! advertised is what the drawable's framebuffer gets. Contexts come from
 //! glXCreateContext, glXCreateNewContext and glXCreateContextAttribsARB
 //! (GLX_ARB_create_context and _profile: GL 1.0 to 1.5).
@@ -45,7 +48,8 @@
 //! * Pbuffers are offscreen drawables with ids softgl makes (top bits set,
 //!   never an X id); like windows, they own their pixels, which every
 //!   context bound to them sees.
-//! * X visuals have no per-visual buffering in softgl: glXChooseVisual
+//! * A visual that two configs share (one visual of its depth on the
+//!   screen, or a visual softgl did not hand out): glXChooseVisual
 //!   records, per visual, whether the program asked for double buffering,
 //!   and glXGetConfig/glXCreateContext answer with that (double-buffered
 //!   for a visual never chosen).
@@ -138,6 +142,8 @@ pub struct FbConfig {
     /// GLX_FBCONFIG_ID: 1-based, per screen.
     id: c_int,
     visualid: c_ulong,
+    /// The visual's depth (24 or 32).
+    depth: c_int,
     masks: [c_ulong; 3],
     double: bool,
 }
@@ -229,14 +235,27 @@ unsafe fn configs(dpy: *mut Display, screen: c_int) -> Vec<&'static FbConfig> {
         }
         (x.XFree)(vis as *mut c_void);
     }
-    found.sort_by_key(|v| v.depth); // stable: the server's order within a depth
+    // The screen's default visual first within its depth (the one windows
+    // are most often made with), then the server's order.
+    let default_id = (x.XVisualIDFromVisual)((x.XDefaultVisual)(dpy, screen));
+    found.sort_by_key(|v| (v.depth, v.visualid != default_id)); // stable
     let mut list = Vec::new();
-    for v in &found {
-        for double in [false, true] {
+    for depth in [24, 32] {
+        let of_depth: Vec<&XVisualInfo> = found.iter().filter(|v| v.depth == depth).collect();
+        let Some(&first) = of_depth.first() else { continue };
+        // One visual per config when the server has two (a server with GLX
+        // has hundreds): a plain X window's visual then names its config,
+        // as glXQueryDrawable(GLX_FBCONFIG_ID) and programs matching
+        // GLX_VISUAL_ID expect. The double-buffered config takes the first
+        // visual. With a single visual both configs share it (see
+        // `config_of_visual`).
+        let single = of_depth.get(1).copied().unwrap_or(first);
+        for (v, double) in [(single, false), (first, true)] {
             let c = FbConfig {
                 screen,
                 id: list.len() as c_int + 1,
                 visualid: v.visualid,
+                depth,
                 masks: [v.red_mask, v.green_mask, v.blue_mask],
                 double,
             };
@@ -277,8 +296,20 @@ unsafe fn config_of_visual(dpy: *mut Display, vis: *const XVisualInfo) -> Option
     }
     let v = &*vis;
     let list = configs(dpy, v.screen);
+    let mut of_visual: Vec<&'static FbConfig> = list.iter().copied().filter(|c| c.visualid == v.visualid).collect();
+    if let [only] = of_visual[..] {
+        return Some(only);
+    }
+    if of_visual.is_empty() {
+        // Another visual of the same format (a program picking one
+        // itself): it renders like the configs of its depth.
+        let masks = [v.red_mask, v.green_mask, v.blue_mask];
+        of_visual = list.into_iter().filter(|c| c.depth == v.depth && c.masks == masks && v.class == xlib::TrueColor).collect();
+    }
+    // Two configs stand for the visual: buffering as glXChooseVisual was
+    // last asked for it (double if never).
     let double = lock().visual_double.iter().find(|(d, id, _)| *d == dpy as usize && *id == v.visualid).is_none_or(|e| e.2);
-    list.into_iter().find(|c| c.visualid == v.visualid && c.double == double)
+    of_visual.into_iter().find(|c| c.double == double)
 }
 
 /// A fresh XVisualInfo (the caller XFree's it) for a visual id.
