@@ -7,6 +7,15 @@
  *   attribs   glXCreateContextAttribsARB: advertised, found by
  *             glXGetProcAddress, GL 1.0-1.5 contexts work, everything else
  *             is NULL with the error GLX_ARB_create_context names
+ *   share     share lists of the three context-creating calls: a live
+ *             context shares its display lists; a made-up or destroyed
+ *             handle is GLXBadContext, a context of another screen
+ *             BadMatch; glXDestroyContext, glXIsDirect, glXMakeCurrent and
+ *             glXCopyContext of a bad handle are GLXBadContext
+ *   configs   a plain X window's visual names its FBConfig: single- and
+ *             double-buffered visuals differ, glXGetConfig and
+ *             glXQueryDrawable(GLX_FBCONFIG_ID) agree with the config whose
+ *             GLX_VISUAL_ID is the window's visual
  *   multi     several contexts on one window, in one thread and in two:
  *             they all draw into the window's one framebuffer
  *   read      glXMakeContextCurrent with a read drawable other than the
@@ -267,6 +276,186 @@ static void run_attribs(void)
     try_attribs(create, unknown, BadValue, "unknown attribute");
     XSetErrorHandler(old);
     printf("  attribs: %s\n", failures ? "failed" : "ok");
+}
+
+/* ---- share lists ---- */
+
+/* Expects `c` to be NULL with X error `err` for GLX request `minor`. */
+static void expect_error(const void *c, int err, int minor, const char *what)
+{
+    XSync(dpy, False);
+    int major, ev, er;
+    XQueryExtension(dpy, "GLX", &major, &ev, &er);
+    CHECK(c == NULL, "%s: made a context", what);
+    CHECK(last_error == err, "%s: X error %d, expected %d", what, last_error, err);
+    CHECK(last_request == major && last_minor == minor, "%s: error for request %d.%d, expected GLX (%d).%d", what, last_request, last_minor, major, minor);
+    last_error = last_request = last_minor = 0;
+}
+
+static void run_share(void)
+{
+    PFNGLXCREATECONTEXTATTRIBSARBPROC create = (PFNGLXCREATECONTEXTATTRIBSARBPROC)glXGetProcAddress((const GLubyte *)"glXCreateContextAttribsARB");
+    int major, ev;
+    if (!create || !XQueryExtension(dpy, "GLX", &major, &ev, &glx_error_base)) {
+        printf("  share: no glXCreateContextAttribsARB or no GLX extension on the server (GLX errors have no numbers): not run\n");
+        failures++;
+        return;
+    }
+    const int bad_context = glx_error_base + 0;
+    XErrorHandler old = XSetErrorHandler(on_error);
+    last_error = 0;
+
+    /* A live share context: its display list is seen by all three. */
+    Window win = make_window(8, 8);
+    GLXContext a = new_context(NULL);
+    CHECK(a && glXMakeCurrent(dpy, win, a), "context A");
+    GLuint list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
+    glColor3ub(1, 2, 3);
+    glEndList();
+    GLXContext made[3] = {
+        glXCreateContext(dpy, vi, a, True),
+        glXCreateNewContext(dpy, cfg, GLX_RGBA_TYPE, a, True),
+        create(dpy, cfg, a, True, NULL),
+    };
+    XSync(dpy, False);
+    CHECK(last_error == 0, "sharing with a live context: X error %d", last_error);
+    for (int i = 0; i < 3; i++) {
+        CHECK(made[i] && glXMakeCurrent(dpy, win, made[i]), "shared context %d", i);
+        CHECK(glIsList(list), "shared context %d does not see A's display list", i);
+    }
+
+    /* A made-up handle (never dereferenced by softgl) and a destroyed one. */
+    int not_a_context[64] = {0};
+    GLXContext bogus = (GLXContext)not_a_context;
+    GLXContext dead = new_context(NULL);
+    glXDestroyContext(dpy, dead);
+    XSync(dpy, False);
+    CHECK(last_error == 0, "glXDestroyContext of a live context: X error %d", last_error);
+    GLXContext bad[2] = {bogus, dead};
+    const char *names[2] = {"made-up share list", "destroyed share list"};
+    for (int i = 0; i < 2; i++) {
+        char what[80];
+        snprintf(what, sizeof what, "glXCreateContext, %s", names[i]);
+        expect_error(glXCreateContext(dpy, vi, bad[i], True), bad_context, 3, what);
+        snprintf(what, sizeof what, "glXCreateNewContext, %s", names[i]);
+        expect_error(glXCreateNewContext(dpy, cfg, GLX_RGBA_TYPE, bad[i], True), bad_context, 24, what);
+        snprintf(what, sizeof what, "glXCreateContextAttribsARB, %s", names[i]);
+        expect_error(create(dpy, cfg, bad[i], True, NULL), bad_context, 34, what);
+    }
+
+    /* Other calls given a bad handle. */
+    glXDestroyContext(dpy, bogus);
+    expect_error(NULL, bad_context, 4, "glXDestroyContext(made-up)");
+    glXDestroyContext(dpy, dead);
+    expect_error(NULL, bad_context, 4, "glXDestroyContext twice");
+    CHECK(!glXIsDirect(dpy, bogus), "glXIsDirect(made-up) is True");
+    expect_error(NULL, bad_context, 6, "glXIsDirect(made-up)");
+    CHECK(glXIsDirect(dpy, a), "glXIsDirect(A) is False");
+    CHECK(!glXMakeCurrent(dpy, win, dead), "glXMakeCurrent(destroyed) succeeded");
+    expect_error(NULL, bad_context, 5, "glXMakeCurrent(destroyed)");
+    CHECK(!glXMakeContextCurrent(dpy, win, win, bogus), "glXMakeContextCurrent(made-up) succeeded");
+    expect_error(NULL, bad_context, 26, "glXMakeContextCurrent(made-up)");
+    CHECK(glXGetCurrentContext() == made[2], "a failed glXMakeCurrent changed the current context");
+    glXCopyContext(dpy, bogus, a, GL_ALL_ATTRIB_BITS);
+    expect_error(NULL, bad_context, 10, "glXCopyContext(made-up, A)");
+    int value = 0;
+    CHECK(glXQueryContext(dpy, bogus, GLX_FBCONFIG_ID, &value) == GLX_BAD_CONTEXT, "glXQueryContext(made-up)");
+
+    /* A share list of another screen: BadMatch. */
+    if (ScreenCount(dpy) > 1) {
+        int s1 = (DefaultScreen(dpy) + 1) % ScreenCount(dpy);
+        int fattribs[] = {GLX_RENDER_TYPE, GLX_RGBA_BIT, None};
+        int n = 0;
+        GLXFBConfig *cs = glXChooseFBConfig(dpy, s1, fattribs, &n);
+        CHECK(cs && n > 0, "no FBConfig on screen %d", s1);
+        if (cs && n > 0) {
+            GLXContext other = glXCreateNewContext(dpy, cs[0], GLX_RGBA_TYPE, NULL, True);
+            XSync(dpy, False);
+            CHECK(other && last_error == 0, "context on screen %d", s1);
+            expect_error(glXCreateContext(dpy, vi, other, True), BadMatch, 3, "glXCreateContext, share list of another screen");
+            expect_error(glXCreateNewContext(dpy, cfg, GLX_RGBA_TYPE, other, True), BadMatch, 24, "glXCreateNewContext, share list of another screen");
+            expect_error(create(dpy, cfg, other, True, NULL), BadMatch, 34, "glXCreateContextAttribsARB, share list of another screen");
+            glXDestroyContext(dpy, other);
+            XFree(cs);
+        }
+    } else {
+        printf("  note: one screen: share lists of another screen not checked\n");
+    }
+
+    glXMakeCurrent(dpy, None, NULL);
+    for (int i = 0; i < 3; i++)
+        if (made[i])
+            glXDestroyContext(dpy, made[i]);
+    glXDestroyContext(dpy, a);
+    XSync(dpy, False);
+    CHECK(last_error == 0, "destroying the live contexts: X error %d", last_error);
+    XDestroyWindow(dpy, win);
+    XSetErrorHandler(old);
+    printf("  share: %s\n", failures ? "failed" : "ok");
+}
+
+/* ---- a window's visual names its FBConfig ---- */
+
+/* The first config (glXGetFBConfigs order) whose GLX_VISUAL_ID is `id`, as
+ * piglit and toolkits find a visual's config. */
+static GLXFBConfig config_of_visual(VisualID id)
+{
+    int n = 0;
+    GLXFBConfig *cs = glXGetFBConfigs(dpy, DefaultScreen(dpy), &n), found = NULL;
+    for (int i = 0; cs && i < n && !found; i++) {
+        int v = 0;
+        if (glXGetFBConfigAttrib(dpy, cs[i], GLX_VISUAL_ID, &v) == Success && (VisualID)v == id)
+            found = cs[i];
+    }
+    if (cs)
+        XFree(cs);
+    return found;
+}
+
+static void run_configs(void)
+{
+    int single_attribs[] = {GLX_RGBA, GLX_RED_SIZE, 8, GLX_DEPTH_SIZE, 24, None};
+    XVisualInfo *vis[2] = {glXChooseVisual(dpy, DefaultScreen(dpy), single_attribs), vi};
+    CHECK(vis[0] && vis[0]->visualid != vi->visualid, "single- and double-buffered visuals are the same (0x%lx)", vi->visualid);
+    if (!vis[0])
+        return;
+    for (int dbl = 0; dbl < 2; dbl++) {
+        XVisualInfo *v = vis[dbl];
+        int value = -1;
+        CHECK(glXGetConfig(dpy, v, GLX_DOUBLEBUFFER, &value) == 0 && value == dbl, "visual 0x%lx: glXGetConfig(GLX_DOUBLEBUFFER) is %d, expected %d", v->visualid, value, dbl);
+        GLXFBConfig c = config_of_visual(v->visualid);
+        CHECK(c != NULL, "visual 0x%lx: no config has it as GLX_VISUAL_ID", v->visualid);
+        if (!c)
+            continue;
+        int want_id = 0, cdbl = -1;
+        glXGetFBConfigAttrib(dpy, c, GLX_FBCONFIG_ID, &want_id);
+        glXGetFBConfigAttrib(dpy, c, GLX_DOUBLEBUFFER, &cdbl);
+        CHECK(cdbl == dbl, "visual 0x%lx: its config %d has GLX_DOUBLEBUFFER %d", v->visualid, want_id, cdbl);
+        /* A plain X window of that visual, bound with a glXCreateContext
+         * context of the same visual. */
+        XVisualInfo *save = vi;
+        vi = v;
+        Window win = make_window(16, 16);
+        vi = save;
+        GLXContext ctx = glXCreateContext(dpy, v, NULL, True);
+        CHECK(ctx && glXMakeCurrent(dpy, win, ctx), "visual 0x%lx: context", v->visualid);
+        unsigned int id = 0;
+        glXQueryDrawable(dpy, win, GLX_FBCONFIG_ID, &id);
+        CHECK((int)id == want_id, "visual 0x%lx: glXQueryDrawable(window, GLX_FBCONFIG_ID) is %u, expected %d", v->visualid, id, want_id);
+        int ctx_id = 0;
+        glXQueryContext(dpy, ctx, GLX_FBCONFIG_ID, &ctx_id);
+        CHECK(ctx_id == want_id, "visual 0x%lx: glXQueryContext(GLX_FBCONFIG_ID) is %d, expected %d", v->visualid, ctx_id, want_id);
+        GLint db = -1;
+        glGetIntegerv(GL_DOUBLEBUFFER, &db);
+        CHECK(db == dbl, "visual 0x%lx: GL_DOUBLEBUFFER is %d", v->visualid, db);
+        glXMakeCurrent(dpy, None, NULL);
+        if (ctx)
+            glXDestroyContext(dpy, ctx);
+        XDestroyWindow(dpy, win);
+    }
+    XFree(vis[0]);
+    printf("  configs: %s\n", failures ? "failed" : "ok");
 }
 
 /* ---- several contexts on one window ---- */
@@ -546,6 +735,10 @@ int main(int argc, char **argv)
         run_shm();
     else if (!strcmp(mode, "attribs"))
         run_attribs();
+    else if (!strcmp(mode, "share"))
+        run_share();
+    else if (!strcmp(mode, "configs"))
+        run_configs();
     else if (!strcmp(mode, "multi"))
         run_multi();
     else if (!strcmp(mode, "read"))

@@ -69,7 +69,7 @@ if [ -z "$disp" ]; then
     echo "SKIP t_glx: no free X display in :90..:99"
     exit 77
 fi
-Xvfb ":$disp" -screen 0 640x480x24 -br -noreset -nolisten tcp >"$DIR/xvfb.log" 2>&1 &
+Xvfb ":$disp" -screen 0 640x480x24 -screen 1 320x240x24 -br -noreset -nolisten tcp >"$DIR/xvfb.log" 2>&1 &
 XPID=$!
 GPID=""
 cleanup() {
@@ -102,7 +102,7 @@ for mode in visual fbconfig; do
     fi
 done
 
-for mode in shm noshm attribs multi read pbuffer pixmap; do
+for mode in shm noshm attribs share configs multi read pbuffer pixmap; do
     if [ $mode = noshm ]; then
         out=$(SOFTGL_NO_SHM=1 timeout 30 "$DIR/glx_drawables" shm 2>&1)
     else

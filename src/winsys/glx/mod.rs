@@ -30,10 +30,13 @@
 //! * The framebuffer follows the drawable's size (XGetGeometry) at
 //!   MakeCurrent and after each glXSwapBuffers; a resize clears it.
 //! * glXDestroyContext of a current context (in any thread) is deferred
-//!   until it is released; making a context current that another
-//!   thread holds fails (BadAccess, as a False return: softgl reports X
-//!   errors only for bad context attributes and configs and bad drawables
-//!   in glXQueryDrawable/glXDestroyWindow/glXDestroyPbuffer).
+//!   until it is released, but its handle is invalid at once; making a
+//!   context current that another thread holds fails (BadAccess, as a
+//!   False return). X errors softgl reports to the program's handler:
+//!   bad context handles (GLXBadContext, checked against the live ones,
+//!   [`handles`]), bad context attributes, configs, visuals and share
+//!   lists, and bad drawables in glXQueryDrawable, glXDestroyWindow and
+//!   glXDestroyPbuffer.
 //! * The share argument of glXCreateContext/glXCreateNewContext shares
 //!   display lists, textures and buffer objects (gl::share), also between
 //!   threads. glXCopyContext copies the groups glPushAttrib saves.
@@ -61,6 +64,7 @@
 #![allow(clippy::missing_safety_doc)]
 
 pub mod drawable;
+pub mod handles;
 pub mod present;
 pub mod xlib;
 
@@ -692,7 +696,7 @@ unsafe fn new_context(dpy: *mut Display, config: Option<&'static FbConfig>) -> *
     // GLX drawable's framebuffer is swapped into the context only for the
     // length of each call (winsys/bound.rs), so binned triangles must be
     // shaded before the call returns, as the end of each draw call does.
-    Box::into_raw(Box::new(GlxContext {
+    let ctx = Box::into_raw(Box::new(GlxContext {
         gl,
         config: *c,
         dpy,
@@ -702,7 +706,9 @@ unsafe fn new_context(dpy: *mut Display, config: Option<&'static FbConfig>) -> *
         bound_read: None,
         bound: AtomicBool::new(false),
         destroy_pending: AtomicBool::new(false),
-    }))
+    }));
+    handles::add(ctx);
+    ctx
 }
 
 /// Joins a new context to `share`'s objects (display lists, textures,
@@ -714,8 +720,38 @@ unsafe fn with_share(ctx: *mut GlxContext, share: *mut GlxContext) -> *mut GlxCo
     ctx
 }
 
+/// The share-list errors of context creation (GLX 1.4 section 3.3.7,
+/// GLX_ARB_create_context): GLXBadContext for a handle that is neither
+/// NULL nor a live context, BadMatch for a context of another screen. All
+/// of softgl's contexts are direct and in this process, so no other
+/// address-space mismatch exists.
+fn check_share(share: *mut GlxContext, screen: c_int) -> Result<(), xlib::GlxError> {
+    if share.is_null() {
+        return Ok(());
+    }
+    if !handles::is_live(share) {
+        return Err(xlib::GlxError::Glx(GLX_BAD_CONTEXT_ERROR));
+    }
+    // SAFETY: a live handle points to a context that is not freed.
+    if unsafe { (*share).config.screen } != screen {
+        return Err(xlib::GlxError::BadMatch);
+    }
+    Ok(())
+}
+
+/// glXCreateContext: BadValue for a visual softgl cannot render to; the
+/// share-list errors of `check_share`.
 pub unsafe fn create_context(dpy: *mut Display, vis: *mut XVisualInfo, share: *mut GlxContext, _direct: Bool) -> *mut GlxContext {
-    with_share(new_context(dpy, config_of_visual(dpy, vis)), share)
+    const X_GLX_CREATE_CONTEXT: u16 = 3;
+    let Some(config) = config_of_visual(dpy, vis) else {
+        xlib::report_error(dpy, xlib::GlxError::BadValue, X_GLX_CREATE_CONTEXT);
+        return null_mut();
+    };
+    if let Err(e) = check_share(share, config.screen) {
+        xlib::report_error(dpy, e, X_GLX_CREATE_CONTEXT);
+        return null_mut();
+    }
+    with_share(new_context(dpy, Some(config)), share)
 }
 
 /// glXCreateNewContext: GLXBadFBConfig for something that is not one of
@@ -730,7 +766,7 @@ pub unsafe fn create_new_context(dpy: *mut Display, config: *const FbConfig, ren
     } else if render_type != GLX_RGBA_TYPE {
         Some(xlib::GlxError::BadValue)
     } else {
-        None
+        check_share(share, (*config).screen).err()
     };
     if let Some(e) = err {
         xlib::report_error(dpy, e, X_GLX_CREATE_NEW_CONTEXT);
@@ -821,11 +857,13 @@ pub unsafe fn create_context_attribs(dpy: *mut Display, config: *const FbConfig,
     if config.is_null() || !is_config(config) {
         return fail(xlib::GlxError::Glx(GLX_BAD_FBCONFIG_ERROR));
     }
+    if let Err(e) = check_share(share, (*config).screen) {
+        return fail(e);
+    }
     let Some(req) = attribs(list, false) else { return fail(xlib::GlxError::BadValue) };
     if let Err(e) = check_context_attribs(&req) {
         return fail(e);
     }
-    let _ = GLX_BAD_CONTEXT_ERROR; // share contexts are not checked: GLXContext handles are pointers
     with_share(new_context(dpy, Some(&*config)), share)
 }
 
@@ -855,18 +893,42 @@ fn release_current() {
         ctx.read = 0;
         ctx.bound.store(false, Ordering::Release);
         if ctx.destroy_pending.load(Ordering::Acquire) {
+            handles::remove(cur);
             drop(Box::from_raw(cur));
         }
     }
 }
 
 pub unsafe fn make_context_current(dpy: *mut Display, draw: Xid, read: Xid, ctx: *mut GlxContext) -> Bool {
+    const X_GLX_MAKE_CONTEXT_CURRENT: u16 = 26;
+    bind(dpy, draw, read, ctx, X_GLX_MAKE_CONTEXT_CURRENT)
+}
+
+pub unsafe fn make_current(dpy: *mut Display, draw: Xid, ctx: *mut GlxContext) -> Bool {
+    const X_GLX_MAKE_CURRENT: u16 = 5;
+    bind(dpy, draw, draw, ctx, X_GLX_MAKE_CURRENT)
+}
+
+/// glXMakeContextCurrent and glXMakeCurrent (`request` names which, for
+/// errors).
+unsafe fn bind(dpy: *mut Display, draw: Xid, read: Xid, ctx: *mut GlxContext, request: u16) -> Bool {
     if ctx.is_null() {
         if draw != 0 || read != 0 {
             return 0; // BadMatch
         }
         release_current();
         return 1;
+    }
+    if !handles::is_live(ctx) {
+        // Destroyed (or never made). The calling thread's own current
+        // context, destroyed but kept until released, may be bound again
+        // where it already is (a no-op); anything else is GLXBadContext.
+        let cur = current_glx();
+        if cur == ctx && (*cur).dpy == dpy && (*cur).draw == draw && (*cur).read == read {
+            return 1;
+        }
+        xlib::report_error(dpy, xlib::GlxError::Glx(GLX_BAD_CONTEXT_ERROR), request);
+        return 0;
     }
     if draw == 0 || read == 0 || dpy.is_null() {
         return 0;
@@ -915,19 +977,32 @@ pub unsafe fn make_context_current(dpy: *mut Display, draw: Xid, read: Xid, ctx:
     1
 }
 
-pub unsafe fn make_current(dpy: *mut Display, draw: Xid, ctx: *mut GlxContext) -> Bool {
-    make_context_current(dpy, draw, draw, ctx)
-}
 
-pub unsafe fn destroy_context(_dpy: *mut Display, ctx: *mut GlxContext) {
+/// glXDestroyContext: GLXBadContext for a handle softgl never made or
+/// has freed; destroying again a context that is destroyed but still
+/// current does nothing (piglit glx-destroycontext-3), and so does NULL
+/// (as in Mesa: cleanup code passes it, and Xlib's default error handler
+/// would end the program).
+pub unsafe fn destroy_context(dpy: *mut Display, ctx: *mut GlxContext) {
+    const X_GLX_DESTROY_CONTEXT: u16 = 4;
     if ctx.is_null() {
         return;
+    }
+    match handles::state(ctx) {
+        Some(handles::State::Live) => {}
+        Some(_) => return,
+        None => {
+            xlib::report_error(dpy, xlib::GlxError::Glx(GLX_BAD_CONTEXT_ERROR), X_GLX_DESTROY_CONTEXT);
+            return;
+        }
     }
     // Section 3.3.7: a context current to any thread is destroyed when it
     // stops being current (it stays usable until then).
     if current_glx() == ctx || (*ctx).bound.load(Ordering::Acquire) {
+        handles::mark_destroyed(ctx);
         (*ctx).destroy_pending.store(true, Ordering::Release);
     } else {
+        handles::remove(ctx);
         drop(Box::from_raw(ctx));
     }
 }
@@ -950,8 +1025,16 @@ pub unsafe fn swap_buffers(dpy: *mut Display, drawable: Xid) {
 }
 
 
-pub fn is_direct(_dpy: *mut Display, ctx: *mut GlxContext) -> Bool {
-    (!ctx.is_null()) as Bool
+/// glXIsDirect: every softgl context is direct; GLXBadContext (and
+/// False) for a handle that is not a live context.
+pub fn is_direct(dpy: *mut Display, ctx: *mut GlxContext) -> Bool {
+    const X_GLX_IS_DIRECT: u16 = 6;
+    if !handles::is_live(ctx) {
+        // SAFETY: report_error only reads the display.
+        unsafe { xlib::report_error(dpy, xlib::GlxError::Glx(GLX_BAD_CONTEXT_ERROR), X_GLX_IS_DIRECT) };
+        return 0;
+    }
+    1
 }
 
 pub fn get_current_context() -> *mut GlxContext {
@@ -1008,7 +1091,7 @@ pub fn wait_x() {
 
 /// glXQueryContext (GLX 1.4 section 3.3.7).
 pub unsafe fn query_context(_dpy: *mut Display, ctx: *mut GlxContext, attrib: c_int, value: *mut c_int) -> c_int {
-    if ctx.is_null() {
+    if !handles::is_live(ctx) {
         return GLX_BAD_CONTEXT;
     }
     if value.is_null() {
@@ -1063,11 +1146,17 @@ pub unsafe fn query_drawable(dpy: *mut Display, d: Xid, attrib: c_int, value: *m
 
 
 /// glXCopyContext (GLX 1.4 section 3.3.7): the attribute groups of `mask`
-/// (as glPushAttrib saves them, gl::attrib) from `src` to `dst`. Nothing
-/// happens when either is NULL, they are the same, or `dst` is current in
-/// some thread (BadContext / BadAccess; softgl generates no X errors).
-pub unsafe fn copy_context(_dpy: *mut Display, src: *mut GlxContext, dst: *mut GlxContext, mask: c_ulong) {
-    if src.is_null() || dst.is_null() || src == dst || (*dst).bound.load(Ordering::Acquire) {
+/// (as glPushAttrib saves them, gl::attrib) from `src` to `dst`.
+/// GLXBadContext when either is not a live context; nothing happens when
+/// they are the same or `dst` is current in some thread (BadAccess, not
+/// reported).
+pub unsafe fn copy_context(dpy: *mut Display, src: *mut GlxContext, dst: *mut GlxContext, mask: c_ulong) {
+    const X_GLX_COPY_CONTEXT: u16 = 10;
+    if !handles::is_live(src) || !handles::is_live(dst) {
+        xlib::report_error(dpy, xlib::GlxError::Glx(GLX_BAD_CONTEXT_ERROR), X_GLX_COPY_CONTEXT);
+        return;
+    }
+    if src == dst || (*dst).bound.load(Ordering::Acquire) {
         return;
     }
     let saved = (*src).gl.save_attrib(mask as u32);
