@@ -23,6 +23,13 @@
  *   pbuffer   a pbuffer current in two contexts of a share group
  *   pixmap    a double-buffered GLXPixmap keeps a front buffer (what the X
  *             pixmap shows) beside its back buffer
+ *   deferred  with the binned renderer (SOFTGL_THREADS=2), triangles drawn
+ *             by the last GL call before a window-system call reach their
+ *             window: when the context is then made current on another
+ *             drawable, when another context is made current on the
+ *             window, at glXSwapBuffers, and for a display list's triangles
+ *             (winsys/bound.rs shades them before the drawable's
+ *             framebuffer leaves the context at the end of each call)
  *   bench W H N   N glXSwapBuffers of a WxH window: ms per present
  *
  * Run by c_tests/t_glx.sh on its Xvfb. Exit status: number of failures. */
@@ -458,6 +465,92 @@ static void run_configs(void)
     printf("  configs: %s\n", failures ? "failed" : "ok");
 }
 
+/* ---- binned triangles and window-system calls ---- */
+
+/* A quad of colour `rgb` over the middle of a 64x64 drawable, drawn with
+ * glBegin/glEnd (the glEnd call is the last GL call) or glCallList. */
+static void quad(const unsigned char rgb[3], GLuint list)
+{
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 64, 0, 64, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glColor3ubv(rgb);
+    if (list) {
+        glCallList(list);
+        return;
+    }
+    glBegin(GL_QUADS);
+    glVertex2f(16, 16);
+    glVertex2f(48, 16);
+    glVertex2f(48, 48);
+    glVertex2f(16, 48);
+    glEnd();
+}
+
+static void run_deferred(void)
+{
+    static const unsigned char green[3] = {0, 255, 0}, blue[3] = {0, 0, 255}, yellow[3] = {255, 255, 0}, white[3] = {255, 255, 255};
+    Window b = make_window(64, 64), a = make_window(64, 64);
+    /* B would cover A on the screen (both at 0,0). */
+    XUnmapWindow(dpy, b);
+    GLXContext c = new_context(NULL), d = new_context(c);
+    CHECK(c && d, "contexts");
+
+    /* 1. Drawn on A, then made current on B before any flush. */
+    CHECK(glXMakeCurrent(dpy, a, c), "C on A");
+    glClearColor(1, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    quad(green, 0);
+    CHECK(glXMakeCurrent(dpy, b, c), "C on B");
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    expect_gl(32, 32, 0, 0, 0, "B is only cleared (A's quad did not land in B)");
+    CHECK(glXMakeCurrent(dpy, a, c), "C on A again");
+    expect_gl(32, 32, 0, 255, 0, "A's quad, drawn before C moved to B");
+    expect_gl(4, 4, 255, 0, 0, "A's clear");
+
+    /* 2. Drawn on A by C, then D is made current on A. */
+    quad(blue, 0);
+    CHECK(glXMakeCurrent(dpy, a, d), "D on A");
+    expect_gl(32, 32, 0, 0, 255, "D sees C's quad drawn just before the switch");
+
+    /* 3. A display list's triangles (one call, several primitives). */
+    GLuint list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(16, 16);
+    glVertex2f(48, 16);
+    glVertex2f(48, 48);
+    glEnd();
+    glBegin(GL_TRIANGLES);
+    glVertex2f(16, 16);
+    glVertex2f(48, 48);
+    glVertex2f(16, 48);
+    glEnd();
+    glEndList();
+    quad(yellow, list);
+    CHECK(glXMakeCurrent(dpy, b, d), "D on B");
+    CHECK(glXMakeCurrent(dpy, a, c), "C on A (3)");
+    expect_gl(32, 32, 255, 255, 0, "the display list's quad, drawn by D before it moved to B");
+    expect_gl(20, 40, 255, 255, 0, "the display list's second triangle");
+
+    /* 4. glXSwapBuffers right after the draw: the window shows the quad. */
+    quad(white, 0);
+    glXSwapBuffers(dpy, a);
+    XSync(dpy, False);
+    expect_x(a, 32, 32, 64, 255, 255, 255, "window A after glXSwapBuffers right after the draw");
+    expect_x(a, 4, 4, 64, 255, 0, 0, "window A's clear");
+
+    glXMakeCurrent(dpy, None, NULL);
+    glXDestroyContext(dpy, c);
+    glXDestroyContext(dpy, d);
+    XDestroyWindow(dpy, a);
+    XDestroyWindow(dpy, b);
+    printf("  deferred: %s\n", failures ? "failed" : "ok");
+}
+
 /* ---- several contexts on one window ---- */
 
 static Window shared_win;
@@ -707,6 +800,10 @@ static void run_bench(int w, int h, int n)
 int main(int argc, char **argv)
 {
     const char *mode = argc > 1 ? argv[1] : "shm";
+    /* Binning needs two rasterizer threads (with one, triangles are shaded
+     * at once); softgl reads this when the first context is made. */
+    if (!strcmp(mode, "deferred"))
+        setenv("SOFTGL_THREADS", "2", 1);
     dpy = XOpenDisplay(NULL);
     if (!dpy) {
         printf("SKIP glx_drawables: cannot open display\n");
@@ -739,6 +836,8 @@ int main(int argc, char **argv)
         run_share();
     else if (!strcmp(mode, "configs"))
         run_configs();
+    else if (!strcmp(mode, "deferred"))
+        run_deferred();
     else if (!strcmp(mode, "multi"))
         run_multi();
     else if (!strcmp(mode, "read"))

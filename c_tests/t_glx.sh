@@ -13,9 +13,13 @@
 #      GL_RENDERER, keep running, and leave non-black pixels on the screen;
 #   4. when glxinfo is installed, `glxinfo -B` must report softgl;
 #   5. c_tests/glx_drawables.c: MIT-SHM presenting (and XPutImage with
-#      SOFTGL_NO_SHM=1), glXCreateContextAttribsARB, several contexts on one
-#      window (two threads), a separate read drawable, a pbuffer in two
-#      contexts of a share group, a double-buffered GLXPixmap.
+#      SOFTGL_NO_SHM=1), glXCreateContextAttribsARB, share lists (bad
+#      handles are GLXBadContext, another screen's context BadMatch: the
+#      Xvfb has a second screen for that), a window's visual naming its
+#      FBConfig, binned triangles reaching their window across
+#      glXMakeCurrent/glXSwapBuffers, several contexts on one window (two
+#      threads), a separate read drawable, a pbuffer in two contexts of a
+#      share group, a double-buffered GLXPixmap.
 #   6. when wflinfo is installed (waffle-utils), `wflinfo -p glx -a gl`
 #      must report softgl;
 #   7. when freeglut's headers are installed (freeglut3-dev), the freeglut
@@ -102,7 +106,7 @@ for mode in visual fbconfig; do
     fi
 done
 
-for mode in shm noshm attribs share configs multi read pbuffer pixmap; do
+for mode in shm noshm attribs share configs deferred multi read pbuffer pixmap; do
     if [ $mode = noshm ]; then
         out=$(SOFTGL_NO_SHM=1 timeout 30 "$DIR/glx_drawables" shm 2>&1)
     else

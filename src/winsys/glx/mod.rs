@@ -692,10 +692,12 @@ unsafe fn new_context(dpy: *mut Display, config: Option<&'static FbConfig>) -> *
     }
     let mut gl = Context::new(c.framebuffer_config());
     gl.set_double_buffered(c.double);
-    // No deferred shading across calls (gl.defer_render stays false): a
-    // GLX drawable's framebuffer is swapped into the context only for the
-    // length of each call (winsys/bound.rs), so binned triangles must be
-    // shaded before the call returns, as the end of each draw call does.
+    // Binned triangles stay pending across the primitives of one call (a
+    // display list's glBegin/glEnd pairs: glxgears' gears are shaded as
+    // one batch), never across calls: a drawable's framebuffer is in the
+    // context only for the length of each call, and winsys/bound.rs shades
+    // the batch before swapping it back out.
+    gl.defer_render = true;
     let ctx = Box::into_raw(Box::new(GlxContext {
         gl,
         config: *c,
