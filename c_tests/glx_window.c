@@ -11,6 +11,10 @@
  *   glx_window rootcount  prints the number of non-black pixels on the
  *                         root window (a cheap screenshot check for
  *                         glxgears; start Xvfb with -br)
+ *   glx_window screenshot OUT.ppm  writes the root window (the X screen)
+ *                         as a binary PPM and prints "window X Y W H", the
+ *                         top-most mapped window on it (where a program's
+ *                         window is, on a server with no window manager)
  *
  * Scene (GL window coordinates, origin bottom-left): clear to blue, a red
  * triangle (0,0) (W/2,0) (0,H/2).  In X's top-down coordinates the triangle
@@ -41,6 +45,49 @@ static int shift_of(unsigned long m)
         s++;
     }
     return s;
+}
+
+/* The "screenshot" mode: the root window as a PPM, and the top-most
+ * viewable child's geometry. */
+static int screenshot(Display *dpy, const char *path)
+{
+    Window root = DefaultRootWindow(dpy), r, parent, *kids = NULL;
+    unsigned int n = 0, i;
+    XWindowAttributes wa;
+    XImage *img;
+    FILE *f;
+    int x, y;
+    XGetWindowAttributes(dpy, root, &wa);
+    img = XGetImage(dpy, root, 0, 0, wa.width, wa.height, AllPlanes, ZPixmap);
+    if (!img || !(f = fopen(path, "wb"))) {
+        printf("FAIL screenshot: XGetImage of the root window or %s\n", path);
+        return 1;
+    }
+    fprintf(f, "P6\n%d %d\n255\n", wa.width, wa.height);
+    for (y = 0; y < wa.height; y++)
+        for (x = 0; x < wa.width; x++) {
+            unsigned long p = XGetPixel(img, x, y);
+            unsigned char rgb[3] = {(unsigned char)((p & img->red_mask) >> shift_of(img->red_mask)),
+                                    (unsigned char)((p & img->green_mask) >> shift_of(img->green_mask)),
+                                    (unsigned char)((p & img->blue_mask) >> shift_of(img->blue_mask))};
+            fwrite(rgb, 1, 3, f);
+        }
+    fclose(f);
+    XDestroyImage(img);
+    /* Children come bottom to top: the last viewable one is on top. */
+    XQueryTree(dpy, root, &r, &parent, &kids, &n);
+    for (i = n; i-- > 0;) {
+        XWindowAttributes ka;
+        if (XGetWindowAttributes(dpy, kids[i], &ka) && ka.map_state == IsViewable) {
+            printf("window %d %d %d %d\n", ka.x + ka.border_width, ka.y + ka.border_width, ka.width, ka.height);
+            break;
+        }
+    }
+    if (i == (unsigned int)-1)
+        printf("window none\n");
+    if (kids)
+        XFree(kids);
+    return 0;
 }
 
 /* Reads X pixel (x, y) of the window as 8-bit R, G, B. */
@@ -511,6 +558,11 @@ int main(int argc, char **argv)
         printf("%ld\n", count);
         XCloseDisplay(dpy);
         return 0;
+    }
+    if (argc > 2 && strcmp(argv[1], "screenshot") == 0) {
+        rc = screenshot(dpy, argv[2]);
+        XCloseDisplay(dpy);
+        return rc;
     }
     if (argc > 1 && strcmp(argv[1], "fbconfig") == 0)
         rc = run_fbconfig(dpy);
