@@ -780,7 +780,7 @@ super::entry_points! {
     free glXQueryExtensionsString(dpy: *mut Display, screen: c_int) -> *const c_char { glx::query_extensions_string(dpy, screen) }
     free glXQueryServerString(dpy: *mut Display, screen: c_int, name: c_int) -> *const c_char { glx::query_server_string(dpy, screen, name) }
     free glXGetClientString(dpy: *mut Display, name: c_int) -> *const c_char { glx::get_client_string(dpy, name) }
-    free["double buffering is per visual as glXChooseVisual was last asked; no colour-index, stereo or multisample visuals"] glXChooseVisual(dpy: *mut Display, screen: c_int, attribList: *mut c_int) -> *mut XVisualInfo { glx::choose_visual(dpy, screen, attribList) }
+    free["single- and double-buffered configs have visuals of their own where the screen has two per depth (else buffering is as glXChooseVisual was last asked for the visual); no colour-index, stereo or multisample visuals"] glXChooseVisual(dpy: *mut Display, screen: c_int, attribList: *mut c_int) -> *mut XVisualInfo { glx::choose_visual(dpy, screen, attribList) }
     free glXGetConfig(dpy: *mut Display, vis: *mut XVisualInfo, attrib: c_int, value: *mut c_int) -> c_int { glx::get_config(dpy, vis, attrib, value) }
     free glXCreateContext(dpy: *mut Display, vis: *mut XVisualInfo, shareList: GLXContext, direct: Bool) -> GLXContext { glx::create_context(dpy, vis, shareList, direct) }
     free glXDestroyContext(dpy: *mut Display, ctx: GLXContext) { glx::destroy_context(dpy, ctx) }
