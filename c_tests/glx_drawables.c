@@ -12,6 +12,10 @@
  *             handle is GLXBadContext, a context of another screen
  *             BadMatch; glXDestroyContext, glXIsDirect, glXMakeCurrent and
  *             glXCopyContext of a bad handle are GLXBadContext
+ *   bind      glXMakeCurrent/glXMakeContextCurrent errors: BadMatch (a
+ *             context with None, NULL with a drawable), GLXBadDrawable (a
+ *             destroyed or made-up window), BadAccess (current in another
+ *             thread); the current context stays
  *   configs   a plain X window's visual names its FBConfig: single- and
  *             double-buffered visuals differ, glXGetConfig and
  *             glXQueryDrawable(GLX_FBCONFIG_ID) agree with the config whose
@@ -400,6 +404,78 @@ static void run_share(void)
     XDestroyWindow(dpy, win);
     XSetErrorHandler(old);
     printf("  share: %s\n", failures ? "failed" : "ok");
+}
+
+/* ---- glXMakeCurrent's errors ---- */
+
+static pthread_barrier_t bind_barrier;
+static GLXContext bind_ctx;
+static Window bind_win;
+
+static void *thread_holds(void *arg)
+{
+    (void)arg;
+    int ok = glXMakeCurrent(dpy, bind_win, bind_ctx);
+    pthread_barrier_wait(&bind_barrier); /* 1: current here */
+    pthread_barrier_wait(&bind_barrier); /* 2: the main thread has tried */
+    glXMakeCurrent(dpy, None, NULL);
+    return (void *)(long)ok;
+}
+
+static void run_bind(void)
+{
+    int major, ev;
+    if (!XQueryExtension(dpy, "GLX", &major, &ev, &glx_error_base)) {
+        printf("  note: the server has no GLX extension (GLX errors have no numbers): bind not checked\n");
+        return;
+    }
+    const int bad_drawable = glx_error_base + 2;
+    XErrorHandler old = XSetErrorHandler(on_error);
+    last_error = last_request = last_minor = 0;
+    Window win = make_window(16, 16), gone = make_window(16, 16);
+    XDestroyWindow(dpy, gone);
+    XSync(dpy, False);
+    GLXContext c = new_context(NULL), other = new_context(NULL);
+    CHECK(c && other && glXMakeCurrent(dpy, win, c), "context C on a window");
+    XSync(dpy, False);
+    CHECK(last_error == 0, "binding C: X error %d", last_error);
+
+    CHECK(!glXMakeCurrent(dpy, win, NULL), "glXMakeCurrent(window, NULL) succeeded");
+    expect_error(NULL, BadMatch, 5, "glXMakeCurrent(window, NULL)");
+    CHECK(!glXMakeContextCurrent(dpy, None, None, other), "glXMakeContextCurrent(None, None, a GL 1.5 context) succeeded");
+    expect_error(NULL, BadMatch, 26, "glXMakeContextCurrent(None, None, ctx)");
+    CHECK(!glXMakeContextCurrent(dpy, win, None, other), "glXMakeContextCurrent(window, None, ctx) succeeded");
+    expect_error(NULL, BadMatch, 26, "glXMakeContextCurrent(window, None, ctx)");
+    CHECK(!glXMakeCurrent(dpy, gone, other), "glXMakeCurrent(destroyed window) succeeded");
+    expect_error(NULL, bad_drawable, 5, "glXMakeCurrent(destroyed window)");
+    CHECK(!glXMakeContextCurrent(dpy, win, 0x1fffff0, other), "glXMakeContextCurrent(window, made-up read drawable) succeeded");
+    expect_error(NULL, bad_drawable, 26, "glXMakeContextCurrent(window, made-up read drawable)");
+    CHECK(glXGetCurrentContext() == c && glXGetCurrentDrawable() == win, "a failed glXMakeCurrent changed the current context");
+
+    /* BadAccess: `other` is current in another thread. */
+    bind_ctx = other;
+    bind_win = win;
+    pthread_barrier_init(&bind_barrier, NULL, 2);
+    pthread_t t;
+    pthread_create(&t, NULL, thread_holds, NULL);
+    pthread_barrier_wait(&bind_barrier);
+    CHECK(!glXMakeCurrent(dpy, win, other), "glXMakeCurrent of a context current in another thread succeeded");
+    expect_error(NULL, BadAccess, 5, "glXMakeCurrent(context current in another thread)");
+    pthread_barrier_wait(&bind_barrier);
+    void *held = NULL;
+    pthread_join(t, &held);
+    pthread_barrier_destroy(&bind_barrier);
+    CHECK(held != NULL, "the other thread could not make its context current");
+    CHECK(glXMakeCurrent(dpy, win, other), "glXMakeCurrent once the other thread released it");
+    XSync(dpy, False);
+    CHECK(last_error == 0, "binding released context: X error %d", last_error);
+
+    glXMakeCurrent(dpy, None, NULL);
+    glXDestroyContext(dpy, c);
+    glXDestroyContext(dpy, other);
+    XDestroyWindow(dpy, win);
+    XSetErrorHandler(old);
+    printf("  bind: %s\n", failures ? "failed" : "ok");
 }
 
 /* ---- a window's visual names its FBConfig ---- */
@@ -850,6 +926,8 @@ int main(int argc, char **argv)
         run_share();
     else if (!strcmp(mode, "configs"))
         run_configs();
+    else if (!strcmp(mode, "bind"))
+        run_bind();
     else if (!strcmp(mode, "deferred"))
         run_deferred();
     else if (!strcmp(mode, "multi"))

@@ -349,10 +349,19 @@ static int run_visual(Display *dpy)
         CHECK(glGetError() == GL_NO_ERROR, "GL error after glXUseXFont");
     }
 
-    /* A window id that does not exist: False (BadDrawable is caught, the
-     * program is not stopped by Xlib's default error handler), and the
-     * context stays usable. */
-    CHECK(!glXMakeCurrent(dpy, (Window)0x1ffffff0, ctx), "glXMakeCurrent on a bad window succeeded");
+    /* A window id that does not exist: False with GLXBadDrawable (GLX
+     * error 2) for the program's error handler (softgl's own XGetGeometry
+     * error is caught), and the context stays usable. */
+    {
+        int major, ev, er;
+        XErrorHandler old = XSetErrorHandler(note_error);
+        noted_error = 0;
+        CHECK(!glXMakeCurrent(dpy, (Window)0x1ffffff0, ctx), "glXMakeCurrent on a bad window succeeded");
+        XSync(dpy, False);
+        XSetErrorHandler(old);
+        if (XQueryExtension(dpy, "GLX", &major, &ev, &er))
+            CHECK(noted_error == er + 2, "bad window: X error %d, expected GLXBadDrawable (%d)", noted_error, er + 2);
+    }
     CHECK(glXMakeCurrent(dpy, win, ctx), "glXMakeCurrent after a bad window");
 
     /* Destroying a current context defers until it is released. */

@@ -113,7 +113,7 @@ for mode in visual fbconfig; do
     fi
 done
 
-for mode in shm noshm attribs share configs deferred multi read pbuffer pixmap; do
+for mode in shm noshm attribs share bind configs deferred multi read pbuffer pixmap; do
     if [ $mode = noshm ]; then
         out=$(SOFTGL_NO_SHM=1 timeout 30 "$DIR/glx_drawables" shm 2>&1)
     else
@@ -190,7 +190,9 @@ elif command -v glxgears >/dev/null 2>&1; then
         GPID=""
         frames=$(ls "$DIR/gears" | grep -c '^frame-.*\.png$')
         first="$DIR/gears/frame-00000.png"
-        last="$DIR/gears/$(ls "$DIR/gears" | grep '^frame-' | tail -1)"
+        # The newest frame may have been cut short by the kill: the one
+        # before it is whole.
+        last="$DIR/gears/$(ls "$DIR/gears" | grep '^frame-' | tail -2 | head -1)"
         echo "  glxgears: $(grep GL_RENDERER "$DIR/glxgears.log"); $frames SOFTGL_DUMP frames in 2 s; on the screen: $shot"
         if ! grep -q 'GL_RENDERER *= softgl' "$DIR/glxgears.log"; then
             echo "  failure: glxgears does not report softgl"

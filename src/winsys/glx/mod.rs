@@ -31,12 +31,12 @@
 //!   MakeCurrent and after each glXSwapBuffers; a resize clears it.
 //! * glXDestroyContext of a current context (in any thread) is deferred
 //!   until it is released, but its handle is invalid at once; making a
-//!   context current that another thread holds fails (BadAccess, as a
-//!   False return). X errors softgl reports to the program's handler:
-//!   bad context handles (GLXBadContext, checked against the live ones,
-//!   [`handles`]), bad context attributes, configs, visuals and share
-//!   lists, and bad drawables in glXQueryDrawable, glXDestroyWindow and
-//!   glXDestroyPbuffer.
+//!   context current that another thread holds fails with BadAccess. X
+//!   errors softgl reports to the program's handler: bad context handles
+//!   (GLXBadContext, checked against the live ones, [`handles`]), bad
+//!   context attributes, configs, visuals and share lists, the errors of
+//!   glXMakeCurrent/glXMakeContextCurrent (`bind`), and bad drawables in
+//!   glXQueryDrawable, glXDestroyWindow and glXDestroyPbuffer.
 //! * The share argument of glXCreateContext/glXCreateNewContext shares
 //!   display lists, textures and buffer objects (gl::share), also between
 //!   threads. glXCopyContext copies the groups glPushAttrib saves.
@@ -913,10 +913,21 @@ pub unsafe fn make_current(dpy: *mut Display, draw: Xid, ctx: *mut GlxContext) -
 
 /// glXMakeContextCurrent and glXMakeCurrent (`request` names which, for
 /// errors).
+///
+/// Errors (GLX 1.4 section 3.3.7), reported to the program's X error
+/// handler with False returned: BadMatch for a context with a None
+/// drawable or NULL with a drawable, GLXBadContext for a bad handle,
+/// GLXBadDrawable for a drawable that does not exist (any more),
+/// BadAccess for a context current in another thread, BadAlloc when the
+/// buffers cannot be had.
 unsafe fn bind(dpy: *mut Display, draw: Xid, read: Xid, ctx: *mut GlxContext, request: u16) -> Bool {
+    let fail = |e| {
+        xlib::report_error(dpy, e, request);
+        0
+    };
     if ctx.is_null() {
         if draw != 0 || read != 0 {
-            return 0; // BadMatch
+            return fail(xlib::GlxError::BadMatch);
         }
         release_current();
         return 1;
@@ -929,40 +940,54 @@ unsafe fn bind(dpy: *mut Display, draw: Xid, read: Xid, ctx: *mut GlxContext, re
         if cur == ctx && (*cur).dpy == dpy && (*cur).draw == draw && (*cur).read == read {
             return 1;
         }
-        xlib::report_error(dpy, xlib::GlxError::Glx(GLX_BAD_CONTEXT_ERROR), request);
+        return fail(xlib::GlxError::Glx(GLX_BAD_CONTEXT_ERROR));
+    }
+    if dpy.is_null() {
         return 0;
     }
-    if draw == 0 || read == 0 || dpy.is_null() {
-        return 0;
+    if draw == 0 || read == 0 {
+        return fail(xlib::GlxError::BadMatch);
     }
     let c = &mut *ctx;
     let config: &'static FbConfig = match configs(dpy, c.config.screen).into_iter().find(|f| f.id == c.config.id) {
         Some(f) => f,
         None => return 0,
     };
-    let Some(d) = drawable::for_binding(dpy, draw, config) else { return 0 };
-    let r = if read == draw { d.clone() } else { match drawable::for_binding(dpy, read, config) { Some(r) => r, None => return 0 } };
-    let Some(size) = d.size() else { return 0 };
-    let read_size = if read == draw { None } else { match r.size() { Some(s) => Some(s), None => return 0 } };
+    let bad_drawable = xlib::GlxError::Glx(GLX_BAD_DRAWABLE_ERROR);
+    let Some(d) = drawable::for_binding(dpy, draw, config) else { return fail(bad_drawable) };
+    let r = if read == draw {
+        d.clone()
+    } else {
+        match drawable::for_binding(dpy, read, config) {
+            Some(r) => r,
+            None => return fail(bad_drawable),
+        }
+    };
+    let Some(size) = d.size() else { return fail(bad_drawable) };
+    let read_size = if read == draw {
+        None
+    } else {
+        match r.size() {
+            Some(s) => Some(s),
+            None => return fail(bad_drawable),
+        }
+    };
     let prev = current_glx();
     if prev == ctx && c.dpy == dpy && c.draw == draw && c.read == read {
         // Already bound here (freeglut rebinds before every callback): only
         // follow a resize.
         let ok = d.follow_size(size) && read_size.is_none_or(|s| r.follow_size(s));
-        return ok as Bool;
+        return if ok { 1 } else { fail(xlib::GlxError::BadAlloc) };
     }
     if prev != ctx && c.bound.load(Ordering::Acquire) {
-        return 0; // BadAccess: current in another thread
+        return fail(xlib::GlxError::BadAccess); // current in another thread
     }
     release_current();
-    if !d.follow_size(size) || !read_size.is_none_or(|s| r.follow_size(s)) {
-        return 0;
-    }
-    if c.config.double && !d.make_double() {
-        return 0;
+    if !d.follow_size(size) || !read_size.is_none_or(|s| r.follow_size(s)) || (c.config.double && !d.make_double()) {
+        return fail(xlib::GlxError::BadAlloc);
     }
     if !d.ensure_surface() {
-        return 0;
+        return fail(bad_drawable); // gone since it was looked at
     }
     c.gl.surface = if d.kind == Kind::Window || d.kind == Kind::Pixmap { Some(Box::new(OnFlush(d.clone()))) } else { None };
     c.gl.bound = Some(Binding { draw: d.fb.clone(), read: (read != draw).then(|| r.fb.clone()) });

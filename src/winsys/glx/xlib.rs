@@ -260,6 +260,7 @@ pub unsafe fn trap_errors<R>(x: &Xlib, dpy: *mut Display, f: impl FnOnce() -> R)
 pub enum GlxError {
     BadValue,
     BadMatch,
+    BadAccess,
     BadAlloc,
     /// GLXBadContext, GLXBadFBConfig (9), GLXBadProfileARB (13), ...
     Glx(u8),
@@ -281,6 +282,7 @@ pub unsafe fn report_error(dpy: *mut Display, err: GlxError, minor: u16) {
     let code = match err {
         GlxError::BadValue => 2,
         GlxError::BadMatch => 8,
+        GlxError::BadAccess => 10,
         GlxError::BadAlloc => 11,
         GlxError::Glx(n) if has_glx => (first_error + n as c_int) as u8,
         GlxError::Glx(_) => return,
