@@ -34,6 +34,56 @@ fn from_fixed(v: i16) -> f32 {
     v as f32 / ONE
 }
 
+/// GL_ACCUM on one pixel: acc + add per channel, rounded and clamped.
+#[inline(always)]
+fn accum_pixel(acc: [i16; 4], add: [f32; 4]) -> [i16; 4] {
+    std::array::from_fn(|ch| to_fixed(from_fixed(acc[ch]) + add[ch]))
+}
+
+/// GL_ACCUM's rows with SSE2: the four channels of a pixel in one vector,
+/// each step the IEEE single-precision operation the scalar code does
+/// (divide, add, clamp, multiply, round half away from zero), so the
+/// results are the same; finite inputs only (a NaN would clamp and
+/// convert differently), which the caller's table of finite values and
+/// 16-bit accumulation values guarantee.
+mod simd {
+    #[cfg(target_arch = "x86_64")]
+    pub fn accum_row(acc: &mut [[i16; 4]], src: &[[u8; 4]], add: &[f32; 256]) -> bool {
+        use std::arch::x86_64::*;
+        if !add.iter().all(|v| v.is_finite()) {
+            return false;
+        }
+        // SAFETY: SSE2 is part of x86_64; loads and stores are of 8-byte
+        // pixels inside the slices (unaligned forms).
+        unsafe {
+            let one = _mm_set1_ps(super::ONE);
+            let (lo, hi) = (_mm_set1_ps(-1.0), _mm_set1_ps(1.0));
+            let (half, neg_half) = (_mm_set1_ps(0.5), _mm_set1_ps(-0.5));
+            for (a, c) in acc.iter_mut().zip(src) {
+                let p = a.as_mut_ptr() as *mut i64;
+                let raw = _mm_cvtsi64_si128(p.read_unaligned());
+                let ai = _mm_srai_epi32(_mm_unpacklo_epi16(raw, raw), 16);
+                let d = _mm_set_ps(add[c[3] as usize], add[c[2] as usize], add[c[1] as usize], add[c[0] as usize]);
+                let sum = _mm_add_ps(_mm_div_ps(_mm_cvtepi32_ps(ai), one), d);
+                let v = _mm_mul_ps(_mm_min_ps(hi, _mm_max_ps(lo, sum)), one);
+                let t = _mm_cvttps_epi32(v);
+                let frac = _mm_sub_ps(v, _mm_cvtepi32_ps(t));
+                // Comparison masks are -1 where true: t + 1 above half, t - 1 below.
+                let up = _mm_castps_si128(_mm_cmpge_ps(frac, half));
+                let down = _mm_castps_si128(_mm_cmple_ps(frac, neg_half));
+                let r = _mm_add_epi32(_mm_sub_epi32(t, up), down);
+                p.write_unaligned(_mm_cvtsi128_si64(_mm_packs_epi32(r, r)));
+            }
+        }
+        true
+    }
+
+    #[cfg(not(target_arch = "x86_64"))]
+    pub fn accum_row(_acc: &mut [[i16; 4]], _src: &[[u8; 4]], _add: &[f32; 256]) -> bool {
+        false
+    }
+}
+
 /// GL_RETURN's byte for an accumulation value: value * acc, clamped,
 /// to 8 bits.
 #[inline(always)]
@@ -82,11 +132,9 @@ impl Context {
                         for (acc, c) in a.iter_mut().zip(s) {
                             *acc = c.map(|v| load[v as usize]);
                         }
-                    } else {
+                    } else if !simd::accum_row(a, s, &add) {
                         for (acc, c) in a.iter_mut().zip(s) {
-                            for ch in 0..4 {
-                                acc[ch] = to_fixed(from_fixed(acc[ch]) + add[c[ch] as usize]);
-                            }
+                            *acc = accum_pixel(*acc, c.map(|v| add[v as usize]));
                         }
                     }
                 }
@@ -111,6 +159,13 @@ impl Context {
                 };
                 for y in rows {
                     let span = y * width + x0..y * width + x1;
+                    if let (Some(t), [true, true, true, true], false) = (&table, mask, both) {
+                        // The common case: a whole row of whole pixels.
+                        for (out, acc) in fb.color[span.clone()].iter_mut().zip(&fb.accum[span]) {
+                            *out = acc.map(|a| t[a as u16 as usize]);
+                        }
+                        continue;
+                    }
                     for (i, acc) in span.clone().zip(&fb.accum[span]) {
                         let mut out = fb.color[i];
                         for ch in 0..4 {
@@ -169,6 +224,31 @@ mod tests {
         }
         for v in (-1100..=1100).map(|i| i as f32 / 1000.0) {
             assert_eq!(to_fixed(v), (v.clamp(-1.0, 1.0) * ONE).round() as i16, "{v}");
+        }
+    }
+
+    /// The SSE2 row against the scalar pixel on every accumulation value
+    /// near the rounding points and random ones, with large and small
+    /// addends (clamping both ways).
+    #[test]
+    fn simd_accum_row_is_scalar() {
+        let mut seed = 99u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 33) as u32
+        };
+        for value in [0.25f32, 1.0, -1.0, 0.5001, 3.0, -0.003, 1e-6] {
+            let add: [f32; 256] = std::array::from_fn(|c| value * (c as f32 / 255.0));
+            let n = 65536;
+            let acc: Vec<[i16; 4]> = (0..n).map(|i| [i as u16 as i16, next() as i16, (i as i16).wrapping_mul(7), next() as i16]).collect();
+            let src: Vec<[u8; 4]> = (0..n).map(|_| next().to_ne_bytes()).collect();
+            let mut got = acc.clone();
+            if !simd::accum_row(&mut got, &src, &add) {
+                return;
+            }
+            for i in 0..n {
+                assert_eq!(got[i], accum_pixel(acc[i], src[i].map(|v| add[v as usize])), "value {value} acc {:?} src {:?}", acc[i], src[i]);
+            }
         }
     }
 
