@@ -110,7 +110,8 @@ impl Context {
         } else {
             (color + secondary, back_color + back_secondary, Vec4::ZERO, Vec4::ZERO)
         };
-        let mut tex = self.vertex_texcoords(obj);
+        // No texture unit enabled: all zero, without the out-of-line call.
+        let mut tex = if self.texture.vertex.units.is_empty() { [Vec4::ZERO; render::texture::MAX_UNITS] } else { self.vertex_texcoords(obj) };
         if self.select.mode == select::GL_FEEDBACK && !self.texture.vertex.units.iter().any(|u| u.unit == 0) {
             tex[0] = self.feedback_texcoord(obj);
         }
