@@ -304,7 +304,11 @@ fn cases_draw_pixels() {
 /// unpack modes, and FRONT_AND_BACK. Colour, depth, stencil and the
 /// occlusion count must be identical. Returns how many cases met the span
 /// path's conditions.
-fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize)) -> Result<usize, String> {
+/// With `copy`, the rectangle is a glCopyPixels of colour instead (the
+/// span path of `copy_rgba8_fast`): random source rectangles, partly
+/// outside the window and overlapping the destination, from the back or
+/// the front buffer.
+fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize), copy: bool) -> Result<usize, String> {
     let (W, H) = size;
     let mut r = Rng(seed);
     let (mut fast, mut reference) = (context(false, size, 1), context(true, size, 1));
@@ -317,6 +321,8 @@ fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize)) -> Result<
     let mut plain = 0;
     for n in 0..cases {
         let color: Vec<[u8; 4]> = (0..W * H).map(|_| (r.next() as u32).to_ne_bytes()).collect();
+        // The other colour buffer differs when copying (the read buffer shows).
+        let other: Vec<[u8; 4]> = if copy { (0..W * H).map(|_| (r.next() as u32).to_ne_bytes()).collect() } else { color.clone() };
         let depth: Vec<u32> = (0..W * H).map(|_| if r.chance(30) { 0xFF_FFFF } else { r.next() as u32 & 0xFF_FFFF }).collect();
         let stencil: Vec<u8> = (0..W * H).map(|_| r.below(4) as u8).collect();
         let mut cmds = case(&mut r, tex, size);
@@ -352,7 +358,14 @@ fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize)) -> Result<
             c.pixel_store(GL_UNPACK_SKIP_PIXELS, skip_px as f64);
             c.pixel_store(GL_UNPACK_SKIP_ROWS, skip_rows as f64);
         }
-        let draw = unsafe { fast.build_draw_pixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, data.as_ptr()) }.expect("a glDrawPixels command");
+        let draw = if copy {
+            cmds.push(Command::ReadBuffer(if r.chance(20) { GL_FRONT } else { GL_BACK }));
+            let sx = r.below(W as u64 + 10) as i32 - 5;
+            let sy = r.below(H as u64 + 10) as i32 - 5;
+            Command::CopyPixels(sx, sy, w, h, GL_COLOR)
+        } else {
+            unsafe { fast.build_draw_pixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, data.as_ptr()) }.expect("a glDrawPixels command")
+        };
         cmds.push(draw.clone());
         if r.chance(40) {
             // Again over itself: equal depths (LESS, LEQUAL, EQUAL decide).
@@ -364,7 +377,7 @@ fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize)) -> Result<
         }
         for c in [&mut fast, &mut reference] {
             c.fb.color.copy_from_slice(&color);
-            c.fb.other_color.copy_from_slice(&color);
+            c.fb.other_color.copy_from_slice(&other);
             c.fb.depth.copy_from_slice(&depth);
             c.fb.stencil.copy_from_slice(&stencil);
             c.fb.samples_passed = 0;
@@ -400,12 +413,24 @@ fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize)) -> Result<
 fn draw_pixels_fast_path_matches_reference() {
     let mut plain = 0;
     for seed in 21..=23 {
-        match compare_draw_pixels(seed, 300, (67, 45)) {
+        match compare_draw_pixels(seed, 300, (67, 45), false) {
             Ok(p) => plain += p,
             Err(e) => panic!("{e}"),
         }
     }
     // The span path's conditions occur in a good share of the cases.
+    assert!(plain > 300, "only {plain} of 900 cases took the span path's state");
+}
+
+#[test]
+fn copy_pixels_fast_path_matches_reference() {
+    let mut plain = 0;
+    for seed in 31..=33 {
+        match compare_draw_pixels(seed, 300, (67, 45), true) {
+            Ok(p) => plain += p,
+            Err(e) => panic!("{e}"),
+        }
+    }
     assert!(plain > 300, "only {plain} of 900 cases took the span path's state");
 }
 

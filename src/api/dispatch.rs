@@ -13,7 +13,7 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 /// returns zero. A panic is caught, reported as GL_OUT_OF_MEMORY (the only
 /// failure the spec lets an implementation report for itself) and the
 /// command returns zero.
-#[inline]
+#[inline(always)]
 pub fn with_current<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
     let _fp = FpGuard::enter();
     let p = current();
@@ -23,18 +23,38 @@ pub fn with_current<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
     // SAFETY: the pointer was made current by MakeCurrent and stays valid
     // until it is released; GL contexts are used by one thread at a time.
     let ctx = unsafe { &mut *p };
-    // Objects shared with other contexts, and the bound drawables'
-    // framebuffers, are in place for the call.
-    crate::winsys::bound::with_bound(ctx, |ctx| {
-        crate::gl::share::with_shared(ctx, |ctx| match catch_unwind(AssertUnwindSafe(|| f(ctx))) {
-            Ok(r) => r,
-            Err(_) => {
-                let ctx = unsafe { &mut *p };
-                ctx.set_error(crate::gl::enums::GL_OUT_OF_MEMORY);
-                R::zero()
-            }
-        })
-    })
+    // An OSMesa or wgl context with no share group owns its framebuffer
+    // and objects: nothing to swap in, so the call goes straight to `f`
+    // (immediate mode's hot path; no out-of-line wrappers).
+    if ctx.bound.is_none() && ctx.share.is_none() {
+        return caught(p, f);
+    }
+    swapped_in(p, f)
+}
+
+/// [`with_current`] for contexts with a bound drawable or a share group:
+/// objects shared with other contexts, and the bound drawables'
+/// framebuffers, are put in place for the call. Out of line: rare.
+#[inline(never)]
+fn swapped_in<R: Zero>(p: *mut Context, f: impl FnOnce(&mut Context) -> R) -> R {
+    // SAFETY: as in with_current.
+    let ctx = unsafe { &mut *p };
+    crate::winsys::bound::with_bound(ctx, |ctx| crate::gl::share::with_shared(ctx, |ctx| caught(ctx as *mut Context, f)))
+}
+
+/// Runs `f` on the context, catching a panic: GL_OUT_OF_MEMORY and zero.
+#[inline(always)]
+fn caught<R: Zero>(p: *mut Context, f: impl FnOnce(&mut Context) -> R) -> R {
+    // SAFETY: as in with_current; `f`'s borrow has ended when the panic
+    // handler takes the context again.
+    match catch_unwind(AssertUnwindSafe(|| f(unsafe { &mut *p }))) {
+        Ok(r) => r,
+        Err(_) => {
+            let ctx = unsafe { &mut *p };
+            ctx.set_error(crate::gl::enums::GL_OUT_OF_MEMORY);
+            R::zero()
+        }
+    }
 }
 
 /// For commands that execute immediately and are illegal between Begin and

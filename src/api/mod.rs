@@ -136,7 +136,7 @@ macro_rules! entry_point {
                 #[allow(unused_variables)]
                 let build = |$c: &mut $crate::gl::Context| -> Option<$crate::gl::Command> { Some($body) };
                 if let Some(cmd) = build(ctx) {
-                    ctx.submit(cmd);
+                    ctx.submit_direct(cmd);
                 }
             })
         }

@@ -82,7 +82,7 @@ impl Context {
     /// glVertex: the vertex takes the current colour (section 2.7).
     /// Outside Begin/End a vertex has no effect.
     pub fn vertex(&mut self, p: [f32; 4]) {
-        let Some(mut asm) = self.prim.take() else { return };
+        let Some(mode) = self.prim.as_ref().map(|a| a.mode) else { return };
         let obj = Vec4::from_array(p);
         // Primary and secondary colours, front and back (2.14, 3.9).
         let sum_enabled = self.derived.render.color_sum;
@@ -110,7 +110,8 @@ impl Context {
         } else {
             (color + secondary, back_color + back_secondary, Vec4::ZERO, Vec4::ZERO)
         };
-        let mut tex = self.vertex_texcoords(obj);
+        // No texture unit enabled: all zero, without the out-of-line call.
+        let mut tex = if self.texture.vertex.units.is_empty() { [Vec4::ZERO; render::texture::MAX_UNITS] } else { self.vertex_texcoords(obj) };
         if self.select.mode == select::GL_FEEDBACK && !self.texture.vertex.units.iter().any(|u| u.unit == 0) {
             tex[0] = self.feedback_texcoord(obj);
         }
@@ -123,11 +124,13 @@ impl Context {
         };
         let mut v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary, back_secondary, inside: false, win: [0.0; 4], snapped: [0; 2] };
         v.place(&self.derived.render);
-        if asm.mode == GL_POINTS {
-            asm.point_size = self.derived_point_size(obj);
+        if mode == GL_POINTS {
+            let size = self.derived_point_size(obj);
+            if let Some(asm) = self.prim.as_mut() {
+                asm.point_size = size;
+            }
         }
-        self.assemble(&mut asm, v);
-        self.prim = Some(asm);
+        self.assemble(v);
     }
 
     /// The point size after GL 1.4's distance attenuation and clamping
@@ -146,9 +149,30 @@ impl Context {
         size.clamp(p.size_min, p.size_max.max(p.size_min))
     }
 
-    fn assemble(&mut self, asm: &mut Assembly, v: ClipVertex) {
-        let n = asm.count;
-        asm.count += 1;
+    /// Adds a vertex to the primitive being assembled. Only the vertex
+    /// buffer is moved out while primitives are drawn (not the whole
+    /// assembly state, moved out and back per vertex before); inlined into
+    /// `vertex` so the new vertex is built where it is stored.
+    #[inline(always)]
+    fn assemble(&mut self, v: ClipVertex) {
+        let Some(a) = self.prim.as_mut() else { return };
+        let n = a.count;
+        a.count += 1;
+        // A triangle not yet complete: stored, nothing drawn (two of every
+        // three vertices of GL_TRIANGLES).
+        if a.mode == GL_TRIANGLES && a.verts.len() < 2 {
+            a.verts.push(v);
+            return;
+        }
+        let mut asm = Assembly { mode: a.mode, verts: std::mem::take(&mut a.verts), count: a.count, stipple: a.stipple, point_size: a.point_size };
+        self.assemble_into(&mut asm, n, v);
+        if let Some(a) = self.prim.as_mut() {
+            a.verts = asm.verts;
+            a.stipple = asm.stipple;
+        }
+    }
+
+    fn assemble_into(&mut self, asm: &mut Assembly, n: usize, v: ClipVertex) {
         match asm.mode {
             GL_TRIANGLES => {
                 asm.verts.push(v);

@@ -332,6 +332,9 @@ impl Context {
             }
         }
         let shading = self.pixel_shading();
+        if ty == GL_COLOR && shading.is_none() && self.copy_rgba8_fast(x, y, w, h) {
+            return;
+        }
         let (fb, read) = self.read_source(); // glReadBuffer's buffer
         // Read everything first: overlapping copies see the old pixels.
         let at = |i: usize, j: usize| -> Option<usize> {

@@ -141,12 +141,19 @@ impl Poly {
     }
 
     /// The part where coord(axis) >= bound (keep_above) or <= bound.
-    fn clip(&self, axis: usize, bound: f64, keep_above: bool) -> Poly {
+    /// Axis and side are constants (no per-vertex branching on them), the
+    /// next vertex is found without a division; the arithmetic and the
+    /// output order are the plain Sutherland-Hodgman step's, so the pieces
+    /// and their areas are the same to the bit.
+    #[inline(always)]
+    fn clip<const AXIS: usize, const ABOVE: bool>(&self, bound: f64) -> Poly {
         let mut out = Poly { v: [(0.0, 0.0); 12], n: 0 };
-        let c = |p: P| if axis == 0 { p.0 } else { p.1 };
-        let d = |p: P| if keep_above { c(p) - bound } else { bound - c(p) };
-        for i in 0..self.n {
-            let (a, b) = (self.v[i], self.v[(i + 1) % self.n]);
+        let c = |p: P| if AXIS == 0 { p.0 } else { p.1 };
+        let d = |p: P| if ABOVE { c(p) - bound } else { bound - c(p) };
+        let n = self.n;
+        for i in 0..n {
+            let a = self.v[i];
+            let b = if i + 1 == n { self.v[0] } else { self.v[i + 1] };
             let (da, db) = (d(a), d(b));
             if da >= 0.0 {
                 out.push(a);
@@ -155,7 +162,7 @@ impl Poly {
                 let t = da / (da - db);
                 let mut q = (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
                 // Exactly on the bound (no drift out of the slab).
-                if axis == 0 {
+                if AXIS == 0 {
                     q.0 = bound
                 } else {
                     q.1 = bound
@@ -175,8 +182,9 @@ impl Poly {
 
     fn area(&self) -> f64 {
         let mut s = 0.0;
-        for i in 0..self.n {
-            let (a, b) = (self.v[i], self.v[(i + 1) % self.n]);
+        let n = self.n;
+        for i in 0..n {
+            let (a, b) = (self.v[i], if i + 1 == n { self.v[0] } else { self.v[i + 1] });
             s += a.0 * b.1 - b.0 * a.1;
         }
         (s * 0.5).abs()
@@ -185,11 +193,38 @@ impl Poly {
 
 /// Is `p` inside the counter-clockwise convex polygon `poly` (edges
 /// included)?
+#[inline]
 pub fn inside_convex(poly: &[P], p: P) -> bool {
-    (0..poly.len()).all(|i| {
-        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+    let n = poly.len();
+    (0..n).all(|i| {
+        let (a, b) = (poly[i], if i + 1 == n { poly[0] } else { poly[i + 1] });
         (b.0 - a.0) * (p.1 - a.1) - (b.1 - a.1) * (p.0 - a.0) >= 0.0
     })
+}
+
+/// [`inside_convex`]'s edges with their direction vectors computed once
+/// (the same products and sums per test, so the same answers).
+struct Edges {
+    /// (start, b - a) per edge.
+    e: [(P, P); 12],
+    n: usize,
+}
+
+impl Edges {
+    fn of(poly: &[P]) -> Edges {
+        let mut e = [((0.0, 0.0), (0.0, 0.0)); 12];
+        let n = poly.len().min(12);
+        for i in 0..n {
+            let (a, b) = (poly[i], if i + 1 == poly.len() { poly[0] } else { poly[i + 1] });
+            e[i] = (a, (b.0 - a.0, b.1 - a.1));
+        }
+        Edges { e, n }
+    }
+
+    #[inline(always)]
+    fn inside(&self, p: P) -> bool {
+        self.e[..self.n].iter().all(|&(a, d)| d.0 * (p.1 - a.1) - d.1 * (p.0 - a.0) >= 0.0)
+    }
 }
 
 /// The fraction of the 4 x 4 samples of pixel (px, py) inside a shape.
@@ -213,12 +248,13 @@ pub fn convex_pixels(poly: &[P], rect: Rect, quality: Quality, inside: impl Fn(f
         return;
     }
     let shape = Poly::from(poly);
+    let edges = Edges::of(poly);
     let ymin = poly.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
     let ymax = poly.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
     let row0 = (ymin.floor() as i64).max(rect.y0 as i64);
     let row1 = (ymax.ceil() as i64).min(rect.y1 as i64);
     for py in row0..row1 {
-        let slab = shape.clip(1, py as f64, true).clip(1, py as f64 + 1.0, false);
+        let slab = shape.clip::<1, true>(py as f64).clip::<1, false>(py as f64 + 1.0);
         if slab.n < 3 {
             continue;
         }
@@ -231,8 +267,8 @@ pub fn convex_pixels(poly: &[P], rect: Rect, quality: Quality, inside: impl Fn(f
                 // A square whose corners are all inside a convex shape is
                 // covered (by area and by every sample): the interior costs
                 // four corner tests, not a clip or 16 samples.
-                _ if [(0, 0), (1, 0), (0, 1), (1, 1)].iter().all(|&(i, j)| inside_convex(poly, ((px + i) as f64, (py + j) as f64))) => 1.0,
-                Quality::Exact => slab.clip(0, px as f64, true).clip(0, px as f64 + 1.0, false).area().min(1.0),
+                _ if [(0, 0), (1, 0), (0, 1), (1, 1)].iter().all(|&(i, j)| edges.inside(((px + i) as f64, (py + j) as f64))) => 1.0,
+                Quality::Exact => slab.clip::<0, true>(px as f64).clip::<0, false>(px as f64 + 1.0).area().min(1.0),
                 Quality::Sampled => sampled(px, py, &inside),
             };
             if cov > 0.0 {
