@@ -85,8 +85,9 @@ pub fn guarded<R: Zero>(f: impl FnOnce() -> R) -> R {
         // (render::tile).
         let p = current();
         if !p.is_null() {
-            // SAFETY: as in with_current.
-            unsafe { (*p).sync_render() };
+            // SAFETY: as in with_current. A GLX context's triangles belong
+            // to its drawable's framebuffer, swapped in by with_bound.
+            unsafe { crate::winsys::bound::with_bound(&mut *p, |c| c.sync_render()) };
         }
         f()
     }))

@@ -154,9 +154,17 @@ impl UserBuffer {
 
     unsafe fn load_into(&self, fb: &mut Framebuffer) {
         let pb = self.pixel_bytes();
+        let w = self.width.min(fb.width);
         for y in 0..self.height.min(fb.height) {
             let row = self.ptr.add(self.row_offset(y));
-            for x in 0..self.width.min(fb.width) {
+            if self.format == GL_RGBA && self.ty == GL_UNSIGNED_BYTE {
+                // The colour buffer's own layout: a row copy (this runs at
+                // every OSMesaMakeCurrent, which many programs call per frame).
+                let i = fb.index(0, y);
+                std::ptr::copy_nonoverlapping(row, fb.color[i..i + w].as_mut_ptr() as *mut u8, w * 4);
+                continue;
+            }
+            for x in 0..w {
                 let i = fb.index(x, y);
                 fb.color[i] = self.load(row.add(x * pb));
             }
