@@ -85,6 +85,41 @@ pub fn internal_format(f: u32) -> Option<InternalFormat> {
     Some(InternalFormat { base, bits })
 }
 
+/// Is `f` a floating-point internal format (ARB_texture_float)?
+pub fn is_float_format(f: u32) -> bool {
+    float_format(f).is_some()
+}
+
+/// ARB_texture_float's internal formats: (base, component bits).
+fn float_format(f: u32) -> Option<InternalFormat> {
+    use Base::*;
+    let (base, b): (Base, u8) = match f {
+        0x8814 => (Rgba, 32), // RGBA32F
+        0x8815 => (Rgb, 32),  // RGB32F
+        0x8816 => (Alpha, 32),
+        0x8817 => (Intensity, 32),
+        0x8818 => (Luminance, 32),
+        0x8819 => (LuminanceAlpha, 32),
+        0x881A => (Rgba, 16), // RGBA16F
+        0x881B => (Rgb, 16),
+        0x881C => (Alpha, 16),
+        0x881D => (Intensity, 16),
+        0x881E => (Luminance, 16),
+        0x881F => (LuminanceAlpha, 16),
+        _ => return None,
+    };
+    let bits = match base {
+        Rgba => [b, b, b, b, 0, 0, 0],
+        Rgb => [b, b, b, 0, 0, 0, 0],
+        Alpha => [0, 0, 0, b, 0, 0, 0],
+        Intensity => [0, 0, 0, 0, 0, b, 0],
+        Luminance => [0, 0, 0, 0, b, 0, 0],
+        LuminanceAlpha => [0, 0, 0, b, b, 0, 0],
+        Depth => [0; 7],
+    };
+    Some(InternalFormat { base, bits })
+}
+
 /// Is `f` a packed depth/stencil internal format? Its texels are stored
 /// as (depth, depth, depth, stencil index): depth textures sample only
 /// the first component, so the alpha is free to keep the stencil for
@@ -170,6 +205,11 @@ pub fn check_format_type(format: u32, ty: u32) -> Result<Kind, u32> {
 /// `ptr` must point to the whole image as the modes lay it out.
 pub unsafe fn unpack(modes: &PixelModes, w: usize, h: usize, d: usize, format: u32, ty: u32, ptr: *const u8) -> Pixels {
     let src = Source::new(modes, w, h, d, format, ty, ptr);
+    // An empty image reads nothing (its layout may still skip past the
+    // end of client memory, which `Source` then leaves unmapped).
+    if w == 0 || h == 0 || d == 0 {
+        return Pixels::Rgba8(Arc::new(Vec::new()));
+    }
     if ty == GL_UNSIGNED_BYTE && matches!(format, GL_RGBA | GL_BGRA) {
         let mut out = Vec::with_capacity(w * h * d);
         let bgra = format == GL_BGRA;

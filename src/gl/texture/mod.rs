@@ -505,7 +505,7 @@ impl Context {
         let sizes_ok = size[..dims as usize].iter().all(|&s| (0..=limit).contains(&s));
         if !proxy && !pixels.is_null() && sizes_ok && image::check_format_type(format, ty).is_ok() {
             let [w, h, d] = size.map(|s| s as usize);
-            cmd.pixels = Some(Arc::new(image::unpack(&self.pixel_store.unpack, w, h, d, format, ty, pixels)));
+            cmd.pixels = Some(Arc::new(image::unpack(&unpack_modes(&self.pixel_store.unpack, dims), w, h, d, format, ty, pixels)));
         }
         if proxy {
             if self.in_begin_end() {
@@ -529,7 +529,7 @@ impl Context {
         let sizes_ok = size[..dims as usize].iter().all(|&s| (0..=limit).contains(&s));
         if !pixels.is_null() && sizes_ok && image::check_format_type(format, ty).is_ok() {
             let [w, h, d] = size.map(|s| s as usize);
-            cmd.pixels = Some(Arc::new(image::unpack(&self.pixel_store.unpack, w, h, d, format, ty, pixels)));
+            cmd.pixels = Some(Arc::new(image::unpack(&unpack_modes(&self.pixel_store.unpack, dims), w, h, d, format, ty, pixels)));
         }
         super::Command::TexSubImage(Box::new(cmd))
     }
@@ -1221,6 +1221,41 @@ impl Context {
         }
         self.texture.vertex = texgen::VertexTexSetup::new(self);
     }
+}
+
+impl Context {
+    /// glGenerateMipmap (EXT_framebuffer_object section 3.8.8): the bound
+    /// texture's levels above the base one from the base, by
+    /// GENERATE_MIPMAP's filter. INVALID_OPERATION without a base image
+    /// (or for a cube map whose faces are not all there).
+    pub fn generate_mipmap_now(&mut self, target: u32) {
+        let Some(t) = object_target(target).filter(|&t| t != Target::Rect) else { return self.set_error(GL_INVALID_ENUM) };
+        let u = self.texture.active;
+        let base = self.texture.object(u, t).params.base_level.max(0) as usize;
+        let faces = if t == Target::Cube { 6 } else { 1 };
+        let Some(img) = self.texture.object(u, t).image(0, base).cloned() else { return self.set_error(GL_INVALID_OPERATION) };
+        if (1..faces).any(|f| self.texture.object(u, t).image(f, base).is_none()) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let Some(f) = internal_format(img.internal_format) else { return };
+        self.drop_derived_textures();
+        let obj = self.texture.object_mut(u, t);
+        for face in 0..faces {
+            generate_mipmaps(obj, t, face, &f);
+        }
+    }
+}
+
+/// The unpack modes of a texture image: 1D and 2D images ignore
+/// SKIP_IMAGES and IMAGE_HEIGHT (section 3.8.1: they are unpacked as 3D
+/// images of depth 1 "except that UNPACK_SKIP_IMAGES is ignored").
+fn unpack_modes(m: &super::pixels::PixelModes, dims: u8) -> super::pixels::PixelModes {
+    let mut m = m.clone();
+    if dims < 3 {
+        m.skip_images = 0;
+        m.image_height = 0;
+    }
+    m
 }
 
 /// The format and type a copy's framebuffer pixels are given as.
