@@ -29,6 +29,8 @@ use std::sync::Arc;
 pub struct InternalFormat {
     pub base: Base,
     pub bits: [u8; 7],
+    /// ARB_texture_float: components are stored as given, unclamped.
+    pub float: bool,
 }
 
 /// Table 3.16's sized formats and the unsized ones (1-4, base names,
@@ -80,9 +82,9 @@ pub fn internal_format(f: u32) -> Option<InternalFormat> {
         // EXT_packed_depth_stencil: sampled as depth; the stencil index is
         // kept in the texel's alpha (see `is_depth_stencil`).
         GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => (Depth, [0, 0, 0, 0, 0, 0, 24]),
-        _ => return None,
+        _ => return float_format(f),
     };
-    Some(InternalFormat { base, bits })
+    Some(InternalFormat { base, bits, float: false })
 }
 
 /// Is `f` a floating-point internal format (ARB_texture_float)?
@@ -117,7 +119,7 @@ fn float_format(f: u32) -> Option<InternalFormat> {
         LuminanceAlpha => [0, 0, 0, b, b, 0, 0],
         Depth => [0; 7],
     };
-    Some(InternalFormat { base, bits })
+    Some(InternalFormat { base, bits, float: true })
 }
 
 /// Is `f` a packed depth/stencil internal format? Its texels are stored
@@ -258,15 +260,18 @@ pub fn texels(f: &InternalFormat, p: &Pixels, t: &PixelTransfer) -> Texels {
         };
         return Texels::Rgba8(Arc::new(out));
     }
+    // Float formats keep values outside [0, 1] (ARB_texture_float): no
+    // final clamp.
+    let transfer = |c: &mut Vec<[f32; 4]>| if f.float { t.scale_bias_map(c) } else { t.color(c) };
     let rgba: Vec<[f32; 4]> = match p {
         Pixels::Rgba8(v) => {
             let mut c: Vec<[f32; 4]> = v.iter().map(|p| p.map(|x| UNORM8[x as usize])).collect();
-            t.color(&mut c);
+            transfer(&mut c);
             c
         }
         Pixels::Color(v) => {
             let mut c = v.clone();
-            t.color(&mut c);
+            transfer(&mut c);
             c
         }
         Pixels::Index(v) => v.iter().map(|&i| t.index_to_rgba(i)).collect(),
@@ -295,7 +300,7 @@ pub fn store(f: &InternalFormat, rgba: Vec<[f32; 4]>) -> Texels {
     let expanded: Vec<[f32; 4]> = rgba
         .into_iter()
         .map(|p| {
-            let mut c = p.map(|v| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) });
+            let mut c = if f.float { p } else { p.map(|v| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) }) };
             for k in 0..3 {
                 if !m[k] {
                     c[k] = 0.0;
@@ -359,6 +364,7 @@ pub unsafe fn pack(modes: &PixelModes, img: &Image, format: u32, ty: u32, t: &Pi
     let depth_stencil = format == GL_DEPTH_STENCIL;
     let stencil = is_depth_stencil(img.internal_format);
     let lum = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);
+    let float = is_float_format(img.internal_format);
     for k in 0..d {
         for j in 0..h {
             for i in 0..w {
@@ -373,7 +379,12 @@ pub unsafe fn pack(modes: &PixelModes, img: &Image, format: u32, ty: u32, t: &Pi
                     dest.put_normalized_at(i, j, k, t.depth(tx[0] as f64));
                 } else {
                     let mut c = [texel_to_rgba(img.base, tx)];
-                    t.color(&mut c);
+                    if float {
+                        // Float textures read back unclamped.
+                        t.scale_bias_map(&mut c);
+                    } else {
+                        t.color(&mut c);
+                    }
                     if lum {
                         // glGetTexImage's luminance is R (not R + G + B as
                         // for glReadPixels).

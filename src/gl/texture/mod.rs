@@ -1045,6 +1045,12 @@ impl Context {
             GL_TEXTURE_DEPTH_SIZE => v(bits[6] as i64),
             GL_TEXTURE_STENCIL_SIZE => v(img.map_or(0, |i| if matches!(i.internal_format, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8) { 8 } else { 0 })),
             GL_TEXTURE_COMPRESSED => Some(Value::Bools(vec![false])),
+            // ARB_texture_float's component types (GL_NONE when absent).
+            GL_TEXTURE_RED_TYPE..=GL_TEXTURE_DEPTH_TYPE => {
+                let k = [0, 1, 2, 3, 4, 5, 6][(pname - GL_TEXTURE_RED_TYPE) as usize];
+                let float = img.is_some_and(|i| image::is_float_format(i.internal_format));
+                v(if bits[k] == 0 { 0 } else if float { 0x1406 } else { 0x8C17 })
+            }
             GL_TEXTURE_COMPRESSED_IMAGE_SIZE => {
                 self.set_error(GL_INVALID_OPERATION);
                 None
