@@ -1834,6 +1834,8 @@ typedef void (APIENTRYP PFNGLGETBUFFERPOINTERVPROC) (GLenum target, GLenum pname
 #define GL_RENDERBUFFER                                  0x8D41
 #define GL_RENDERBUFFER_EXT                              0x8D41
 #define GL_READ_FRAMEBUFFER                              0x8CA8
+#define GL_READ_FRAMEBUFFER_EXT                          0x8CA8
+#define GL_DRAW_FRAMEBUFFER_EXT                          0x8CA9
 #define GL_DRAW_FRAMEBUFFER                              0x8CA9
 #define GL_FRAMEBUFFER_BINDING                           0x8CA6
 #define GL_FRAMEBUFFER_BINDING_EXT                       0x8CA6
@@ -1925,6 +1927,31 @@ GLAPI void APIENTRY glFramebufferRenderbufferEXT (GLenum target, GLenum attachme
 GLAPI void APIENTRY glGetFramebufferAttachmentParameterivEXT (GLenum target, GLenum attachment, GLenum pname, GLint *params);
 GLAPI void APIENTRY glGenerateMipmapEXT (GLenum target);
 GLAPI void APIENTRY glBlitFramebufferEXT (GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0, GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter);
+
+/* GL_ARB_texture_float */
+#ifndef GL_ARB_texture_float
+#define GL_ARB_texture_float 1
+#define GL_TEXTURE_RED_TYPE_ARB                 0x8C10
+#define GL_TEXTURE_GREEN_TYPE_ARB               0x8C11
+#define GL_TEXTURE_BLUE_TYPE_ARB                0x8C12
+#define GL_TEXTURE_ALPHA_TYPE_ARB               0x8C13
+#define GL_TEXTURE_LUMINANCE_TYPE_ARB           0x8C14
+#define GL_TEXTURE_INTENSITY_TYPE_ARB           0x8C15
+#define GL_TEXTURE_DEPTH_TYPE_ARB               0x8C16
+#define GL_UNSIGNED_NORMALIZED_ARB              0x8C17
+#define GL_RGBA32F_ARB                          0x8814
+#define GL_RGB32F_ARB                           0x8815
+#define GL_ALPHA32F_ARB                         0x8816
+#define GL_INTENSITY32F_ARB                     0x8817
+#define GL_LUMINANCE32F_ARB                     0x8818
+#define GL_LUMINANCE_ALPHA32F_ARB               0x8819
+#define GL_RGBA16F_ARB                          0x881A
+#define GL_RGB16F_ARB                           0x881B
+#define GL_ALPHA16F_ARB                         0x881C
+#define GL_INTENSITY16F_ARB                     0x881D
+#define GL_LUMINANCE16F_ARB                     0x881E
+#define GL_LUMINANCE_ALPHA16F_ARB               0x881F
+#endif
 
 #ifdef __cplusplus
 }
