@@ -63,6 +63,16 @@ fn scalar_param(_c: &mut Context, _count: usize, pname: GLenum) -> Option<GLenum
     Some(pname)
 }
 
+/// glSamplerParameter's vector forms: four values for the border colour
+/// (integers normalized), one otherwise.
+unsafe fn sampler_params_f(p: *const GLfloat, pname: GLenum) -> Option<[f32; 4]> {
+    if pname == TBORDER { arr::<GLfloat, 4>(p) } else { arr::<GLfloat, 1>(p).map(|v| [v[0], 0.0, 0.0, 0.0]) }
+}
+
+unsafe fn sampler_params_i(p: *const GLint, pname: GLenum) -> Option<[f32; 4]> {
+    if pname == TBORDER { arr::<GLint, 4>(p).map(|v| v.map(|x| x.normalized())) } else { arr::<GLint, 1>(p).map(|v| [v[0] as f32, 0.0, 0.0, 0.0]) }
+}
+
 /// Stores query results (NULL: nothing).
 unsafe fn write_out<T: Copy>(p: *mut T, v: &[T]) {
     if !p.is_null() {
@@ -736,6 +746,21 @@ super::entry_points! {
     exec glFramebufferRenderbufferEXT(target: GLenum, attachment: GLenum, renderbuffertarget: GLenum, renderbuffer: GLuint) { |c| c.framebuffer_renderbuffer(target, attachment, renderbuffertarget, renderbuffer) }
     exec glGetFramebufferAttachmentParameterivEXT(target: GLenum, attachment: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_framebuffer_attachment_parameter(target, attachment, pname) { write_out(params, &[v]) } }
     exec glGenerateMipmapEXT(target: GLenum) { |c| c.generate_mipmap(target) }
+    // ---- GL_ARB_sampler_objects ----
+    exec glGenSamplers(count: GLsizei, samplers: *mut GLuint) { |c| if let Some(v) = c.gen_samplers(count) { write_out(samplers, &v) } }
+    exec glDeleteSamplers(count: GLsizei, samplers: *const GLuint) { |c| if count < 0 { c.set_error(GL_INVALID_VALUE) } else { c.delete_samplers(&slice(samplers, count as i64)) } }
+    exec glIsSampler(sampler: GLuint) -> GLboolean { |c| gl_bool(c.is_sampler(sampler)) }
+    exec glBindSampler(unit: GLuint, sampler: GLuint) { |c| c.bind_sampler(unit, sampler) }
+    exec glSamplerParameteri(sampler: GLuint, pname: GLenum, param: GLint) { |c| c.sampler_parameter(sampler, pname, [param as f32, 0.0, 0.0, 0.0]) }
+    exec glSamplerParameterf(sampler: GLuint, pname: GLenum, param: GLfloat) { |c| c.sampler_parameter(sampler, pname, [param, 0.0, 0.0, 0.0]) }
+    exec glSamplerParameteriv(sampler: GLuint, pname: GLenum, param: *const GLint) { |c| if let Some(v) = sampler_params_i(param, pname) { c.sampler_parameter(sampler, pname, v) } }
+    exec glSamplerParameterfv(sampler: GLuint, pname: GLenum, param: *const GLfloat) { |c| if let Some(v) = sampler_params_f(param, pname) { c.sampler_parameter(sampler, pname, v) } }
+    exec glGetSamplerParameteriv(sampler: GLuint, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_sampler_parameter(sampler, pname) { write_out(params, &v.as_i32()) } }
+    exec glGetSamplerParameterfv(sampler: GLuint, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_sampler_parameter(sampler, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    // ---- GL_ARB_texture_storage ----
+    exec glTexStorage1D(target: GLenum, levels: GLsizei, internalformat: GLenum, width: GLsizei) { |c| c.tex_storage(1, target, levels, internalformat, [width, 1, 1]) }
+    exec glTexStorage2D(target: GLenum, levels: GLsizei, internalformat: GLenum, width: GLsizei, height: GLsizei) { |c| c.tex_storage(2, target, levels, internalformat, [width, height, 1]) }
+    exec glTexStorage3D(target: GLenum, levels: GLsizei, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei) { |c| c.tex_storage(3, target, levels, internalformat, [width, height, depth]) }
     exec glBlitFramebufferEXT(srcX0: GLint, srcY0: GLint, srcX1: GLint, srcY1: GLint, dstX0: GLint, dstY0: GLint, dstX1: GLint, dstY1: GLint, mask: GLbitfield, filter: GLenum) { |c| c.blit_framebuffer([srcX0, srcY0, srcX1, srcY1], [dstX0, dstY0, dstX1, dstY1], mask, filter) }
 
     // ---- glu.h ----

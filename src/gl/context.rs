@@ -86,6 +86,8 @@ pub struct Context {
     pub sized_once: bool,
     /// Framebuffer and renderbuffer objects (framebuffer_object).
     pub fbo: super::framebuffer_object::FboState,
+    /// Sampler objects and their unit bindings (texture::sampler).
+    pub samplers: super::texture::sampler::Samplers,
 }
 
 impl Context {
@@ -136,6 +138,7 @@ impl Context {
             share: None,
             sized_once: false,
             fbo: Default::default(),
+            samplers: Default::default(),
         }
     }
 

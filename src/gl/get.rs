@@ -77,6 +77,9 @@ impl Context {
         if let Some(v) = self.fbo_get(pname) {
             return Some(v);
         }
+        if let Some(v) = self.sampler_get(pname) {
+            return Some(v);
+        }
         if let Some(v) = self.get_array_value(pname) {
             return Some(v);
         }
@@ -289,9 +292,9 @@ impl Context {
 /// and the GL 1.2 imaging subset (ARB_imaging, `imaging`). The string ends
 /// in a space, as Mesa's does: programs that print it name by name
 /// (piglit's glinfo) rely on the separator after the last name.
-const EXTENSIONS: &[u8] = b"GL_ARB_depth_texture GL_ARB_framebuffer_object GL_ARB_imaging GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_point_parameters \
+const EXTENSIONS: &[u8] = b"GL_ARB_depth_texture GL_ARB_framebuffer_object GL_ARB_imaging GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_point_parameters GL_ARB_sampler_objects \
 GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine \
-GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_ARB_texture_float GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_ARB_texture_rectangle GL_ARB_texture_rg GL_ARB_transpose_matrix \
+GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_ARB_texture_float GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_ARB_texture_rectangle GL_ARB_texture_rg GL_ARB_texture_storage GL_ARB_transpose_matrix \
 GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_vertex_array GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_func_separate \
 GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_framebuffer_blit GL_EXT_framebuffer_object GL_EXT_multi_draw_arrays \
 GL_EXT_packed_depth_stencil GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_secondary_color GL_EXT_separate_specular_color GL_EXT_shadow_funcs GL_EXT_stencil_wrap \

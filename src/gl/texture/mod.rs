@@ -17,6 +17,7 @@
 
 pub mod enums;
 pub mod image;
+pub mod sampler;
 pub mod texgen;
 
 use self::enums::*;
@@ -119,6 +120,9 @@ pub struct TexObject {
     pub params: Params,
     pub generate_mipmap: bool,
     pub priority: f32,
+    /// Made by glTexStorage (ARB_texture_storage): its images may be
+    /// replaced in content only.
+    pub immutable: bool,
 }
 
 impl TexObject {
@@ -129,7 +133,7 @@ impl TexObject {
             params.wrap = [Wrap::ClampToEdge; 3];
             params.min_filter = Filter::Linear;
         }
-        TexObject { target, images: vec![None; 6 * MAX_LEVELS], params, generate_mipmap: false, priority: 1.0 }
+        TexObject { target, images: vec![None; 6 * MAX_LEVELS], params, generate_mipmap: false, priority: 1.0, immutable: false }
     }
 
     fn image(&self, face: usize, level: usize) -> Option<&Arc<Image>> {
@@ -139,7 +143,12 @@ impl TexObject {
     /// Section 3.8.10: the levels base..=q of each face when the texture is
     /// complete for its target (cube completeness for cube maps).
     pub fn complete(&self, target: Target) -> Option<Vec<Vec<Arc<Image>>>> {
-        let p = &self.params;
+        self.complete_with(target, &self.params)
+    }
+
+    /// Completeness under parameters `p` (a sampler object's, in place of
+    /// the texture's own).
+    pub fn complete_with(&self, target: Target, p: &Params) -> Option<Vec<Vec<Arc<Image>>>> {
         if p.base_level < 0 || p.base_level as usize >= MAX_LEVELS || p.base_level > p.max_level {
             return None;
         }
@@ -614,6 +623,12 @@ impl Context {
 
     /// glTexImage1D/2D/3D (section 3.8.1).
     pub fn tex_image(&mut self, cmd: &TexImageCmd) {
+        // glTexStorage's images are immutable in size and format.
+        if let Some((t, _, false)) = image_target(cmd.target, cmd.dims) {
+            if self.texture.object(self.texture.active, t).immutable {
+                return self.set_error(GL_INVALID_OPERATION);
+            }
+        }
         match self.imaging_texture(cmd.dims, cmd.pixels.as_deref(), cmd.size) {
             None => self.tex_image_transferred(cmd, false),
             Some(None) => {}
@@ -1001,6 +1016,8 @@ impl Context {
             GL_GENERATE_MIPMAP => Value::Bools(vec![obj.generate_mipmap]),
             GL_TEXTURE_COMPARE_MODE => Value::Ints(vec![if p.compare_mode { GL_COMPARE_R_TO_TEXTURE } else { GL_NONE } as i64]),
             GL_TEXTURE_COMPARE_FUNC => Value::Ints(vec![p.compare_func.to_gl() as i64]),
+            // ARB_texture_storage.
+            0x912F => Value::Bools(vec![obj.immutable]),
             GL_DEPTH_TEXTURE_MODE => Value::Ints(vec![match p.depth_mode {
                 Base::Intensity => GL_INTENSITY,
                 Base::Alpha => GL_ALPHA,
@@ -1217,9 +1234,14 @@ impl Context {
                 stage.envs[u] = ts.units[u].env;
                 let Some(t) = ts.unit_target(u) else { continue };
                 let obj = ts.object(u, t);
-                if let Some(faces) = obj.complete(t) {
+                // A bound sampler object's state replaces the texture's.
+                let params = match self.samplers.objects.get(&self.samplers.bound[u]) {
+                    Some(s) => sampler::apply(&obj.params, s),
+                    None => obj.params.clone(),
+                };
+                if let Some(faces) = obj.complete_with(t, &params) {
                     let base = faces[0][0].base;
-                    stage.units[u] = Some(UnitSampler::new(t, faces, obj.params.clone(), ts.units[u].lod_bias, base));
+                    stage.units[u] = Some(UnitSampler::new(t, faces, params, ts.units[u].lod_bias, base));
                     stage.active.push(u);
                 }
             }
@@ -1230,6 +1252,53 @@ impl Context {
 }
 
 impl Context {
+    /// glTexStorage1D/2D/3D (ARB_texture_storage): every level of the bound
+    /// texture (every face of a cube map) at once, sized internal formats
+    /// only, made immutable (TEXTURE_IMMUTABLE_FORMAT).
+    pub fn tex_storage(&mut self, dims: u8, target: u32, levels: i32, ifmt: u32, size: [i32; 3]) {
+        let t = match (dims, target) {
+            (1, GL_TEXTURE_1D) => Target::T1D,
+            (2, GL_TEXTURE_2D) => Target::T2D,
+            (2, GL_TEXTURE_CUBE_MAP) => Target::Cube,
+            (2, GL_TEXTURE_RECTANGLE) => Target::Rect,
+            (3, GL_TEXTURE_3D) => Target::T3D,
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+        let unsized_format = matches!(ifmt, 1..=4 | GL_ALPHA | GL_LUMINANCE | GL_LUMINANCE_ALPHA | GL_INTENSITY | GL_RGB | GL_RGBA | GL_RED | GL_RG | GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL)
+            || (0x84E9..=0x84EE).contains(&ifmt);
+        let Some(f) = internal_format(ifmt).filter(|_| !unsized_format) else { return self.set_error(GL_INVALID_ENUM) };
+        let n = &size[..dims as usize];
+        if levels < 1 || n.iter().any(|&s| s < 1) {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let largest = if t == Target::T3D { size.iter().copied().max().unwrap_or(1) } else { n.iter().copied().max().unwrap_or(1) };
+        if levels > log2_floor(largest) + 1 || (t == Target::Rect && levels > 1) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let u = self.texture.active;
+        if self.texture.units[u].bound[target_index(t)] == 0 || self.texture.object(u, t).immutable {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let (format, ty) = if f.base == Base::Depth { (GL_DEPTH_COMPONENT, GL_FLOAT) } else { (GL_RGBA, GL_UNSIGNED_BYTE) };
+        let faces: Vec<u32> = if t == Target::Cube { (0..6).map(|i| GL_TEXTURE_CUBE_MAP_POSITIVE_X + i).collect() } else { vec![target] };
+        let mut s = size;
+        for level in 0..levels {
+            for &face in &faces {
+                let cmd = TexImageCmd { dims, target: face, level, internal_format: ifmt as i32, size: s, border: 0, format, ty, pixels: None };
+                self.tex_image(&cmd);
+            }
+            for (k, v) in s.iter_mut().enumerate() {
+                if k < dims as usize {
+                    *v = (*v / 2).max(1);
+                }
+            }
+        }
+        let obj = self.texture.object_mut(u, t);
+        obj.immutable = true;
+        // The levels are exactly those given.
+        obj.params.max_level = obj.params.max_level.min(levels - 1);
+    }
+
     /// glGenerateMipmap (EXT_framebuffer_object section 3.8.8): the bound
     /// texture's levels above the base one from the base, by
     /// GENERATE_MIPMAP's filter. INVALID_OPERATION without a base image
