@@ -712,14 +712,7 @@ impl Context {
             return None;
         };
         let b = if draw { self.fbo.draw_binding } else { self.fbo.read_binding };
-        let Some(o) = self.fbo_object(b) else {
-            // The window's buffers (ARB_framebuffer_object).
-            if matches!(attachment, GL_FRONT | GL_BACK | GL_FRONT_LEFT_ | GL_BACK_LEFT_ | GL_DEPTH_ | GL_STENCIL_) && pname == GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE {
-                return Some(GL_FRAMEBUFFER_DEFAULT as i32);
-            }
-            self.set_error(GL_INVALID_OPERATION);
-            return None;
-        };
+        let Some(o) = self.fbo_object(b) else { return self.default_attachment_parameter(attachment, pname) };
         let a = match attachment {
             GL_COLOR_ATTACHMENT0 => o.color,
             GL_DEPTH_ATTACHMENT => o.depth,
@@ -781,6 +774,36 @@ impl Context {
                     _ => s,
                 }
             }
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return None;
+            }
+        })
+    }
+
+    /// GetFramebufferAttachmentParameteriv on the window's framebuffer
+    /// (ARB_framebuffer_object): its colour, depth and stencil buffers.
+    fn default_attachment_parameter(&mut self, attachment: u32, pname: u32) -> Option<i32> {
+        let cfg = self.window_fb().config;
+        let (present, sizes) = match attachment {
+            GL_FRONT | GL_FRONT_LEFT_ | GL_LEFT_ => (true, [8, 8, 8, 8, 0, 0]),
+            GL_BACK | GL_BACK_LEFT_ => (self.double_buffered, [8, 8, 8, 8, 0, 0]),
+            GL_DEPTH_ => (cfg.depth_bits > 0, [0, 0, 0, 0, cfg.depth_bits as i32, 0]),
+            GL_STENCIL_ => (cfg.stencil_bits > 0, [0, 0, 0, 0, 0, cfg.stencil_bits as i32]),
+            _ => {
+                self.set_error(if (GL_COLOR_ATTACHMENT0..=GL_COLOR_ATTACHMENT15).contains(&attachment) || attachment == GL_DEPTH_ATTACHMENT || attachment == GL_STENCIL_ATTACHMENT { GL_INVALID_OPERATION } else { GL_INVALID_ENUM });
+                return None;
+            }
+        };
+        Some(match pname {
+            GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE => if present { GL_FRAMEBUFFER_DEFAULT as i32 } else { 0 },
+            _ if !present => {
+                self.set_error(GL_INVALID_OPERATION);
+                return None;
+            }
+            GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING => GL_LINEAR as i32,
+            GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => GL_UNSIGNED_NORMALIZED as i32,
+            GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE..=GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => sizes[(pname - GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE) as usize],
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;
@@ -1097,5 +1120,6 @@ fn rb_sizes(k: RbKind) -> ([i32; 4], i32, i32) {
 
 const GL_FRONT_LEFT_: u32 = 0x0400;
 const GL_BACK_LEFT_: u32 = 0x0402;
+const GL_LEFT_: u32 = 0x0406;
 const GL_DEPTH_: u32 = 0x1801;
 const GL_STENCIL_: u32 = 0x1802;
