@@ -1821,6 +1821,9 @@ typedef void (APIENTRYP PFNGLGETBUFFERPOINTERVPROC) (GLenum target, GLenum pname
 #define GL_MAX_RECTANGLE_TEXTURE_SIZE           0x84F8
 #endif
 
+/* Extensions beyond GL 1.5 (their entry points are exported; see the
+ * README's coverage table). */
+
 /* GL_ARB_framebuffer_object (its core names) and GL_EXT_framebuffer_object,
  * GL_EXT_framebuffer_blit */
 #ifndef GL_ARB_framebuffer_object
