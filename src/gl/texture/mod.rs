@@ -1256,12 +1256,17 @@ impl Context {
     /// texture (every face of a cube map) at once, sized internal formats
     /// only, made immutable (TEXTURE_IMMUTABLE_FORMAT).
     pub fn tex_storage(&mut self, dims: u8, target: u32, levels: i32, ifmt: u32, size: [i32; 3]) {
-        let t = match (dims, target) {
-            (1, GL_TEXTURE_1D) => Target::T1D,
-            (2, GL_TEXTURE_2D) => Target::T2D,
-            (2, GL_TEXTURE_CUBE_MAP) => Target::Cube,
-            (2, GL_TEXTURE_RECTANGLE) => Target::Rect,
-            (3, GL_TEXTURE_3D) => Target::T3D,
+        let (t, proxy) = match (dims, target) {
+            (1, GL_TEXTURE_1D) => (Target::T1D, false),
+            (2, GL_TEXTURE_2D) => (Target::T2D, false),
+            (2, GL_TEXTURE_CUBE_MAP) => (Target::Cube, false),
+            (2, GL_TEXTURE_RECTANGLE) => (Target::Rect, false),
+            (3, GL_TEXTURE_3D) => (Target::T3D, false),
+            (1, GL_PROXY_TEXTURE_1D) => (Target::T1D, true),
+            (2, GL_PROXY_TEXTURE_2D) => (Target::T2D, true),
+            (2, GL_PROXY_TEXTURE_CUBE_MAP) => (Target::Cube, true),
+            (2, GL_PROXY_TEXTURE_RECTANGLE) => (Target::Rect, true),
+            (3, GL_PROXY_TEXTURE_3D) => (Target::T3D, true),
             _ => return self.set_error(GL_INVALID_ENUM),
         };
         let unsized_format = matches!(ifmt, 1..=4 | GL_ALPHA | GL_LUMINANCE | GL_LUMINANCE_ALPHA | GL_INTENSITY | GL_RGB | GL_RGBA | GL_RED | GL_RG | GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL)
@@ -1276,11 +1281,13 @@ impl Context {
             return self.set_error(GL_INVALID_OPERATION);
         }
         let u = self.texture.active;
-        if self.texture.units[u].bound[target_index(t)] == 0 || self.texture.object(u, t).immutable {
+        if !proxy && (self.texture.units[u].bound[target_index(t)] == 0 || self.texture.object(u, t).immutable) {
             return self.set_error(GL_INVALID_OPERATION);
         }
         let (format, ty) = if f.base == Base::Depth { (GL_DEPTH_COMPONENT, GL_FLOAT) } else { (GL_RGBA, GL_UNSIGNED_BYTE) };
-        let faces: Vec<u32> = if t == Target::Cube { (0..6).map(|i| GL_TEXTURE_CUBE_MAP_POSITIVE_X + i).collect() } else { vec![target] };
+        // A proxy target only answers whether the levels would fit (its
+        // level queries), as glTexImage's proxies do.
+        let faces: Vec<u32> = if t == Target::Cube && !proxy { (0..6).map(|i| GL_TEXTURE_CUBE_MAP_POSITIVE_X + i).collect() } else { vec![target] };
         let mut s = size;
         for level in 0..levels {
             for &face in &faces {
@@ -1292,6 +1299,9 @@ impl Context {
                     *v = (*v / 2).max(1);
                 }
             }
+        }
+        if proxy {
+            return;
         }
         let obj = self.texture.object_mut(u, t);
         obj.immutable = true;
