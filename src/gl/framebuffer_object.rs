@@ -774,6 +774,12 @@ impl Context {
                     _ => s,
                 }
             }
+            // ARB_framebuffer_object: with nothing attached, only the type
+            // and name may be asked (INVALID_OPERATION for the others).
+            (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL..=GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER | GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING..=GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, Attachment::None) => {
+                self.set_error(GL_INVALID_OPERATION);
+                return None;
+            }
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;

@@ -123,6 +123,8 @@ pub struct TexObject {
     /// Made by glTexStorage (ARB_texture_storage): its images may be
     /// replaced in content only.
     pub immutable: bool,
+    /// glTexStorage's level count: completeness clamps MAX_LEVEL to it.
+    pub immutable_levels: i32,
 }
 
 impl TexObject {
@@ -133,7 +135,7 @@ impl TexObject {
             params.wrap = [Wrap::ClampToEdge; 3];
             params.min_filter = Filter::Linear;
         }
-        TexObject { target, images: vec![None; 6 * MAX_LEVELS], params, generate_mipmap: false, priority: 1.0, immutable: false }
+        TexObject { target, images: vec![None; 6 * MAX_LEVELS], params, generate_mipmap: false, priority: 1.0, immutable: false, immutable_levels: 0 }
     }
 
     fn image(&self, face: usize, level: usize) -> Option<&Arc<Image>> {
@@ -149,6 +151,14 @@ impl TexObject {
     /// Completeness under parameters `p` (a sampler object's, in place of
     /// the texture's own).
     pub fn complete_with(&self, target: Target, p: &Params) -> Option<Vec<Vec<Arc<Image>>>> {
+        // Immutable storage: the levels that exist bound MAX_LEVEL.
+        let clamped;
+        let p = if self.immutable_levels > 0 {
+            clamped = Params { max_level: p.max_level.min(self.immutable_levels - 1), ..p.clone() };
+            &clamped
+        } else {
+            p
+        };
         if p.base_level < 0 || p.base_level as usize >= MAX_LEVELS || p.base_level > p.max_level {
             return None;
         }
@@ -1272,6 +1282,10 @@ impl Context {
         let unsized_format = matches!(ifmt, 1..=4 | GL_ALPHA | GL_LUMINANCE | GL_LUMINANCE_ALPHA | GL_INTENSITY | GL_RGB | GL_RGBA | GL_RED | GL_RG | GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL)
             || (0x84E9..=0x84EE).contains(&ifmt);
         let Some(f) = internal_format(ifmt).filter(|_| !unsized_format) else { return self.set_error(GL_INVALID_ENUM) };
+        // Depth formats exist for 1D, 2D, cube map and rectangle textures.
+        if f.base == Base::Depth && t == Target::T3D {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
         let n = &size[..dims as usize];
         if levels < 1 || n.iter().any(|&s| s < 1) {
             return self.set_error(GL_INVALID_VALUE);
@@ -1305,8 +1319,7 @@ impl Context {
         }
         let obj = self.texture.object_mut(u, t);
         obj.immutable = true;
-        // The levels are exactly those given.
-        obj.params.max_level = obj.params.max_level.min(levels - 1);
+        obj.immutable_levels = levels;
     }
 
     /// glGenerateMipmap (EXT_framebuffer_object section 3.8.8): the bound
