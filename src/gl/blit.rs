@@ -9,7 +9,6 @@
 
 use super::context::Context;
 use super::enums::*;
-use super::framebuffer_object::GL_INVALID_FRAMEBUFFER_OPERATION;
 use crate::framebuffer::Framebuffer;
 
 const GL_NEAREST: u32 = 0x2600;
@@ -43,6 +42,9 @@ impl Context {
             return;
         }
         self.sync_render();
+        // The window's draw buffer (FRONT, BACK, FRONT_AND_BACK) is selected
+        // lazily: select it now.
+        self.sync_draw_buffer();
         let s = {
             let (fb, color): (&Framebuffer, &[[u8; 4]]) = self.read_source();
             // Depth and stencil blits need both framebuffers to have them
@@ -53,7 +55,6 @@ impl Context {
         if (mask & DEPTH != 0 && s.depth.is_empty() != self.fb.depth.is_empty()) || (mask & STENCIL != 0 && s.stencil.is_empty() != self.fb.stencil.is_empty()) {
             return self.set_error(GL_INVALID_OPERATION);
         }
-        let _ = GL_INVALID_FRAMEBUFFER_OPERATION;
         let clip = self.scissored_surface();
         let (dx0, dx1) = (dst[0].min(dst[2]), dst[0].max(dst[2]));
         let (dy0, dy1) = (dst[1].min(dst[3]), dst[1].max(dst[3]));
@@ -66,6 +67,7 @@ impl Context {
         let sy = |y: i32| src[1] as f64 + (y as f64 + 0.5 - dst[1] as f64) * (src[3] - src[1]) as f64 / (dst[3] - dst[1]) as f64;
         let color_on = mask & COLOR != 0 && self.color_buffer.draw_buffer != 0 && !s.color.is_empty();
         let fbw = self.fb.width;
+        let mut colors: Vec<(usize, [u8; 4])> = Vec::new();
         for y in dy0.max(clip.y0)..dy1.min(clip.y1) {
             let fy = sy(y);
             for x in dx0.max(clip.x0)..dx1.min(clip.x1) {
@@ -77,7 +79,7 @@ impl Context {
                 }
                 let k = fy as usize * s.width + fx as usize;
                 if color_on {
-                    self.fb.color[d] = if filter == GL_LINEAR { bilinear(&s, fx, fy) } else { s.color[k] };
+                    colors.push((d, if filter == GL_LINEAR { bilinear(&s, fx, fy) } else { s.color[k] }));
                 }
                 if mask & DEPTH != 0 && !s.depth.is_empty() {
                     self.fb.depth[d] = s.depth[k];
@@ -85,6 +87,12 @@ impl Context {
                 if mask & STENCIL != 0 && !s.stencil.is_empty() {
                     self.fb.stencil[d] = s.stencil[k];
                 }
+            }
+        }
+        // Every colour buffer drawing writes (both for FRONT_AND_BACK).
+        for buf in self.fb.draw_colors() {
+            for &(d, c) in &colors {
+                buf[d] = c;
             }
         }
     }
