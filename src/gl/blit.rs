@@ -58,13 +58,17 @@ impl Context {
         let clip = self.scissored_surface();
         let (dx0, dx1) = (dst[0].min(dst[2]), dst[0].max(dst[2]));
         let (dy0, dy1) = (dst[1].min(dst[3]), dst[1].max(dst[3]));
-        if dx0 == dx1 || dy0 == dy1 {
+        // An empty source or destination rectangle copies nothing.
+        if dx0 == dx1 || dy0 == dy1 || src[0] == src[2] || src[1] == src[3] {
             return;
         }
         // Destination pixel centre -> source coordinate, per axis:
         // s = src0 + (d + 0.5 - dst0) * (src1 - src0) / (dst1 - dst0).
-        let sx = |x: i32| src[0] as f64 + (x as f64 + 0.5 - dst[0] as f64) * (src[2] - src[0]) as f64 / (dst[2] - dst[0]) as f64;
-        let sy = |y: i32| src[1] as f64 + (y as f64 + 0.5 - dst[1] as f64) * (src[3] - src[1]) as f64 / (dst[3] - dst[1]) as f64;
+        // (In f64: the corners may be anywhere in the i32 range.)
+        let [s0, s1, s2, s3] = src.map(|v| v as f64);
+        let [d0, d1, d2, d3] = dst.map(|v| v as f64);
+        let sx = |x: i32| s0 + (x as f64 + 0.5 - d0) * (s2 - s0) / (d2 - d0);
+        let sy = |y: i32| s1 + (y as f64 + 0.5 - d1) * (s3 - s1) / (d3 - d1);
         let color_on = mask & COLOR != 0 && self.color_buffer.draw_buffer != 0 && !s.color.is_empty();
         let fbw = self.fb.width;
         let mut colors: Vec<(usize, [u8; 4])> = Vec::new();
