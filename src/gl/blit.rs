@@ -69,7 +69,8 @@ impl Context {
         let [d0, d1, d2, d3] = dst.map(|v| v as f64);
         let sx = |x: i32| s0 + (x as f64 + 0.5 - d0) * (s2 - s0) / (d2 - d0);
         let sy = |y: i32| s1 + (y as f64 + 0.5 - d1) * (s3 - s1) / (d3 - d1);
-        let color_on = mask & COLOR != 0 && self.color_buffer.draw_buffer != 0 && !s.color.is_empty();
+        // No read colour buffer (an object without one): colour is skipped.
+        let color_on = mask & COLOR != 0 && self.color_buffer.draw_buffer != 0 && !s.color.is_empty() && !self.fbo_read_color_missing();
         let fbw = self.fb.width;
         let mut colors: Vec<(usize, [u8; 4])> = Vec::new();
         for y in dy0.max(clip.y0)..dy1.min(clip.y1) {

@@ -697,12 +697,23 @@ impl Context {
         match self.fbo_object(self.fbo.read_binding) {
             None => true,
             Some(o) => {
-                let ok = self.framebuffer_status(o, None) == GL_FRAMEBUFFER_COMPLETE && (o.color != Attachment::None || self.pixel_read_buffer == 0);
+                // A missing read colour buffer is the reading command's
+                // INVALID_OPERATION (GL 3.0 section 4.3.2), not this.
+                let ok = self.framebuffer_status(o, None) == GL_FRAMEBUFFER_COMPLETE;
                 if !ok {
                     self.set_error(GL_INVALID_FRAMEBUFFER_OPERATION);
                 }
                 ok
             }
+        }
+    }
+
+    /// Does the read framebuffer lack the colour buffer glReadPixels would
+    /// read (an object's NONE read buffer or empty colour attachment)?
+    pub fn fbo_read_color_missing(&self) -> bool {
+        match self.fbo_object(self.fbo.read_binding) {
+            None => false,
+            Some(o) => o.color == Attachment::None || self.pixel_read_buffer == 0,
         }
     }
 
