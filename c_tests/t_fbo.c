@@ -9,6 +9,7 @@
  *   (with a depth renderbuffer) are read back from the object, leave the
  *   window untouched, are what glGetTexImage returns, and are what a quad
  *   textured with it shows in the window.
+ *   glFinish while the object is bound delivers the window to OSMesa.
  * - glBlitFramebuffer from the object to the window, scaled 2x (NEAREST).
  * - glGenerateMipmapEXT: the 1x1 level of a 2x2 image is its mean.
  * - RGBA32F: values outside [0,1] and 1/3 come back from glGetTexImage
@@ -198,6 +199,13 @@ static void render_to_texture(void)
     glDisable(GL_DEPTH_TEST);
 
     h_expect_pixel(3, 3, 255, 0, 0, 255, 0, "FBO left half red");
+    /* glFinish with the object bound presents the window (all green), not
+     * the object, into the OSMesa buffer. */
+    glFinish();
+    {
+        const unsigned char *b = h_buffer() + (3 * W + 3) * 4;
+        h_expect(b[0] == 0 && b[1] == 255 && b[2] == 0, "OSMesa buffer after glFinish: %d,%d,%d", b[0], b[1], b[2]);
+    }
     h_expect_pixel(TW - 3, TH - 3, 0, 0, 255, 255, 0, "FBO right half blue (yellow failed the depth test)");
     glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
     pixel_projection(W, H);
