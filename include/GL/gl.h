@@ -1821,6 +1821,164 @@ typedef void (APIENTRYP PFNGLGETBUFFERPOINTERVPROC) (GLenum target, GLenum pname
 #define GL_MAX_RECTANGLE_TEXTURE_SIZE           0x84F8
 #endif
 
+/* Extensions beyond GL 1.5 (their entry points are exported; see the
+ * README's coverage table). */
+
+/* GL_ARB_framebuffer_object (its core names) and GL_EXT_framebuffer_object,
+ * GL_EXT_framebuffer_blit */
+#ifndef GL_ARB_framebuffer_object
+#define GL_ARB_framebuffer_object 1
+#define GL_EXT_framebuffer_object 1
+#define GL_EXT_framebuffer_blit 1
+#define GL_INVALID_FRAMEBUFFER_OPERATION                 0x0506
+#define GL_INVALID_FRAMEBUFFER_OPERATION_EXT             0x0506
+#define GL_FRAMEBUFFER                                   0x8D40
+#define GL_FRAMEBUFFER_EXT                               0x8D40
+#define GL_RENDERBUFFER                                  0x8D41
+#define GL_RENDERBUFFER_EXT                              0x8D41
+#define GL_READ_FRAMEBUFFER                              0x8CA8
+#define GL_READ_FRAMEBUFFER_EXT                          0x8CA8
+#define GL_DRAW_FRAMEBUFFER_EXT                          0x8CA9
+#define GL_DRAW_FRAMEBUFFER                              0x8CA9
+#define GL_FRAMEBUFFER_BINDING                           0x8CA6
+#define GL_FRAMEBUFFER_BINDING_EXT                       0x8CA6
+#define GL_DRAW_FRAMEBUFFER_BINDING                      0x8CA6
+#define GL_RENDERBUFFER_BINDING                          0x8CA7
+#define GL_RENDERBUFFER_BINDING_EXT                      0x8CA7
+#define GL_READ_FRAMEBUFFER_BINDING                      0x8CAA
+#define GL_MAX_COLOR_ATTACHMENTS                         0x8CDF
+#define GL_MAX_COLOR_ATTACHMENTS_EXT                     0x8CDF
+#define GL_MAX_RENDERBUFFER_SIZE                         0x84E8
+#define GL_MAX_RENDERBUFFER_SIZE_EXT                     0x84E8
+#define GL_MAX_SAMPLES                                   0x8D57
+#define GL_COLOR_ATTACHMENT0                             0x8CE0
+#define GL_COLOR_ATTACHMENT0_EXT                         0x8CE0
+#define GL_DEPTH_ATTACHMENT                              0x8D00
+#define GL_DEPTH_ATTACHMENT_EXT                          0x8D00
+#define GL_STENCIL_ATTACHMENT                            0x8D20
+#define GL_STENCIL_ATTACHMENT_EXT                        0x8D20
+#define GL_DEPTH_STENCIL_ATTACHMENT                      0x821A
+#define GL_FRAMEBUFFER_COMPLETE                          0x8CD5
+#define GL_FRAMEBUFFER_COMPLETE_EXT                      0x8CD5
+#define GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT             0x8CD6
+#define GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_EXT         0x8CD6
+#define GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT     0x8CD7
+#define GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_EXT 0x8CD7
+#define GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT         0x8CD9
+#define GL_FRAMEBUFFER_INCOMPLETE_FORMATS_EXT            0x8CDA
+#define GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER            0x8CDB
+#define GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER_EXT        0x8CDB
+#define GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER            0x8CDC
+#define GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER_EXT        0x8CDC
+#define GL_FRAMEBUFFER_UNSUPPORTED                       0x8CDD
+#define GL_FRAMEBUFFER_UNSUPPORTED_EXT                   0x8CDD
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE            0x8CD0
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT        0x8CD0
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME            0x8CD1
+#define GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT        0x8CD1
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL          0x8CD2
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT      0x8CD2
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE  0x8CD3
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_EXT 0x8CD3
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER          0x8CD4
+#define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER_EXT      0x8CD4
+#define GL_RENDERBUFFER_WIDTH                            0x8D42
+#define GL_RENDERBUFFER_WIDTH_EXT                        0x8D42
+#define GL_RENDERBUFFER_HEIGHT                           0x8D43
+#define GL_RENDERBUFFER_HEIGHT_EXT                       0x8D43
+#define GL_RENDERBUFFER_INTERNAL_FORMAT                  0x8D44
+#define GL_RENDERBUFFER_INTERNAL_FORMAT_EXT              0x8D44
+#define GL_RENDERBUFFER_SAMPLES                          0x8CAB
+#define GL_STENCIL_INDEX8                                0x8D48
+#define GL_STENCIL_INDEX8_EXT                            0x8D48
+#endif
+GLAPI GLboolean APIENTRY glIsRenderbuffer (GLuint renderbuffer);
+GLAPI void APIENTRY glBindRenderbuffer (GLenum target, GLuint renderbuffer);
+GLAPI void APIENTRY glDeleteRenderbuffers (GLsizei n, const GLuint *renderbuffers);
+GLAPI void APIENTRY glGenRenderbuffers (GLsizei n, GLuint *renderbuffers);
+GLAPI void APIENTRY glRenderbufferStorage (GLenum target, GLenum internalformat, GLsizei width, GLsizei height);
+GLAPI void APIENTRY glGetRenderbufferParameteriv (GLenum target, GLenum pname, GLint *params);
+GLAPI GLboolean APIENTRY glIsFramebuffer (GLuint framebuffer);
+GLAPI void APIENTRY glBindFramebuffer (GLenum target, GLuint framebuffer);
+GLAPI void APIENTRY glDeleteFramebuffers (GLsizei n, const GLuint *framebuffers);
+GLAPI void APIENTRY glGenFramebuffers (GLsizei n, GLuint *framebuffers);
+GLAPI GLenum APIENTRY glCheckFramebufferStatus (GLenum target);
+GLAPI void APIENTRY glFramebufferTexture1D (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+GLAPI void APIENTRY glFramebufferTexture2D (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+GLAPI void APIENTRY glFramebufferTexture3D (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level, GLint zoffset);
+GLAPI void APIENTRY glFramebufferRenderbuffer (GLenum target, GLenum attachment, GLenum renderbuffertarget, GLuint renderbuffer);
+GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv (GLenum target, GLenum attachment, GLenum pname, GLint *params);
+GLAPI void APIENTRY glGenerateMipmap (GLenum target);
+GLAPI void APIENTRY glBlitFramebuffer (GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0, GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter);
+GLAPI void APIENTRY glFramebufferTextureLayer (GLenum target, GLenum attachment, GLuint texture, GLint level, GLint layer);
+GLAPI void APIENTRY glRenderbufferStorageMultisample (GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height);
+GLAPI GLboolean APIENTRY glIsRenderbufferEXT (GLuint renderbuffer);
+GLAPI void APIENTRY glBindRenderbufferEXT (GLenum target, GLuint renderbuffer);
+GLAPI void APIENTRY glDeleteRenderbuffersEXT (GLsizei n, const GLuint *renderbuffers);
+GLAPI void APIENTRY glGenRenderbuffersEXT (GLsizei n, GLuint *renderbuffers);
+GLAPI void APIENTRY glRenderbufferStorageEXT (GLenum target, GLenum internalformat, GLsizei width, GLsizei height);
+GLAPI void APIENTRY glGetRenderbufferParameterivEXT (GLenum target, GLenum pname, GLint *params);
+GLAPI GLboolean APIENTRY glIsFramebufferEXT (GLuint framebuffer);
+GLAPI void APIENTRY glBindFramebufferEXT (GLenum target, GLuint framebuffer);
+GLAPI void APIENTRY glDeleteFramebuffersEXT (GLsizei n, const GLuint *framebuffers);
+GLAPI void APIENTRY glGenFramebuffersEXT (GLsizei n, GLuint *framebuffers);
+GLAPI GLenum APIENTRY glCheckFramebufferStatusEXT (GLenum target);
+GLAPI void APIENTRY glFramebufferTexture1DEXT (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+GLAPI void APIENTRY glFramebufferTexture2DEXT (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+GLAPI void APIENTRY glFramebufferTexture3DEXT (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level, GLint zoffset);
+GLAPI void APIENTRY glFramebufferRenderbufferEXT (GLenum target, GLenum attachment, GLenum renderbuffertarget, GLuint renderbuffer);
+GLAPI void APIENTRY glGetFramebufferAttachmentParameterivEXT (GLenum target, GLenum attachment, GLenum pname, GLint *params);
+GLAPI void APIENTRY glGenerateMipmapEXT (GLenum target);
+GLAPI void APIENTRY glBlitFramebufferEXT (GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0, GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter);
+
+/* GL_ARB_texture_float */
+#ifndef GL_ARB_texture_float
+#define GL_ARB_texture_float 1
+#define GL_TEXTURE_RED_TYPE_ARB                 0x8C10
+#define GL_TEXTURE_GREEN_TYPE_ARB               0x8C11
+#define GL_TEXTURE_BLUE_TYPE_ARB                0x8C12
+#define GL_TEXTURE_ALPHA_TYPE_ARB               0x8C13
+#define GL_TEXTURE_LUMINANCE_TYPE_ARB           0x8C14
+#define GL_TEXTURE_INTENSITY_TYPE_ARB           0x8C15
+#define GL_TEXTURE_DEPTH_TYPE_ARB               0x8C16
+#define GL_UNSIGNED_NORMALIZED_ARB              0x8C17
+#define GL_RGBA32F_ARB                          0x8814
+#define GL_RGB32F_ARB                           0x8815
+#define GL_ALPHA32F_ARB                         0x8816
+#define GL_INTENSITY32F_ARB                     0x8817
+#define GL_LUMINANCE32F_ARB                     0x8818
+#define GL_LUMINANCE_ALPHA32F_ARB               0x8819
+#define GL_RGBA16F_ARB                          0x881A
+#define GL_RGB16F_ARB                           0x881B
+#define GL_ALPHA16F_ARB                         0x881C
+#define GL_INTENSITY16F_ARB                     0x881D
+#define GL_LUMINANCE16F_ARB                     0x881E
+#define GL_LUMINANCE_ALPHA16F_ARB               0x881F
+#endif
+
+/* GL_ARB_sampler_objects, GL_ARB_texture_storage */
+#ifndef GL_ARB_sampler_objects
+#define GL_ARB_sampler_objects 1
+#define GL_SAMPLER_BINDING                      0x8919
+#endif
+#ifndef GL_ARB_texture_storage
+#define GL_ARB_texture_storage 1
+#define GL_TEXTURE_IMMUTABLE_FORMAT             0x912F
+#endif
+GLAPI void APIENTRY glGenSamplers (GLsizei count, GLuint *samplers);
+GLAPI void APIENTRY glDeleteSamplers (GLsizei count, const GLuint *samplers);
+GLAPI GLboolean APIENTRY glIsSampler (GLuint sampler);
+GLAPI void APIENTRY glBindSampler (GLuint unit, GLuint sampler);
+GLAPI void APIENTRY glSamplerParameteri (GLuint sampler, GLenum pname, GLint param);
+GLAPI void APIENTRY glSamplerParameterf (GLuint sampler, GLenum pname, GLfloat param);
+GLAPI void APIENTRY glSamplerParameteriv (GLuint sampler, GLenum pname, const GLint *param);
+GLAPI void APIENTRY glSamplerParameterfv (GLuint sampler, GLenum pname, const GLfloat *param);
+GLAPI void APIENTRY glGetSamplerParameteriv (GLuint sampler, GLenum pname, GLint *params);
+GLAPI void APIENTRY glGetSamplerParameterfv (GLuint sampler, GLenum pname, GLfloat *params);
+GLAPI void APIENTRY glTexStorage1D (GLenum target, GLsizei levels, GLenum internalformat, GLsizei width);
+GLAPI void APIENTRY glTexStorage2D (GLenum target, GLsizei levels, GLenum internalformat, GLsizei width, GLsizei height);
+GLAPI void APIENTRY glTexStorage3D (GLenum target, GLsizei levels, GLenum internalformat, GLsizei width, GLsizei height, GLsizei depth);
+
 #ifdef __cplusplus
 }
 #endif

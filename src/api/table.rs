@@ -63,6 +63,16 @@ fn scalar_param(_c: &mut Context, _count: usize, pname: GLenum) -> Option<GLenum
     Some(pname)
 }
 
+/// glSamplerParameter's vector forms: four values for the border colour
+/// (integers normalized), one otherwise.
+unsafe fn sampler_params_f(p: *const GLfloat, pname: GLenum) -> Option<[f32; 4]> {
+    if pname == TBORDER { arr::<GLfloat, 4>(p) } else { arr::<GLfloat, 1>(p).map(|v| [v[0], 0.0, 0.0, 0.0]) }
+}
+
+unsafe fn sampler_params_i(p: *const GLint, pname: GLenum) -> Option<[f32; 4]> {
+    if pname == TBORDER { arr::<GLint, 4>(p).map(|v| v.map(|x| x.normalized())) } else { arr::<GLint, 1>(p).map(|v| [v[0] as f32, 0.0, 0.0, 0.0]) }
+}
+
 /// Stores query results (NULL: nothing).
 unsafe fn write_out<T: Copy>(p: *mut T, v: &[T]) {
     if !p.is_null() {
@@ -440,7 +450,7 @@ super::entry_points! {
     list glTexParameteri(target: GLenum, pname: GLenum, param: GLint) { |_c| { Command::TexParameter(target, pname, [param as f32, 0.0, 0.0, 0.0]) } }
     list glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| { let border = pname == TBORDER; let v = slice(params, if border { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexParameter(target, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| if border { x.normalized() } else { x as f32 }))) } }
     exec glGenTextures(n: GLsizei, textures: *mut GLuint) { |c| if let Some(v) = c.gen_textures(n) { write_out(textures, &v) } }
-    exec glDeleteTextures(n: GLsizei, textures: *const GLuint) { |c| { if n < 0 { return c.set_error(GL_INVALID_VALUE); } c.delete_textures(&slice(textures, n as i64)) } }
+    exec glDeleteTextures(n: GLsizei, textures: *const GLuint) { |c| { if n < 0 { return c.set_error(GL_INVALID_VALUE); } let names = slice(textures, n as i64); c.fbo_textures_deleted(&names); c.delete_textures(&names) } }
     list glBindTexture(target: GLenum, texture: GLuint) { |_c| Command::BindTexture(target, texture) }
     list glPrioritizeTextures(n: GLsizei, textures: *const GLuint, priorities: *const GLclampf) { |c| { if n < 0 { c.set_error(GL_INVALID_VALUE); return None; } Command::PrioritizeTextures(slice(textures, n as i64).into_iter().zip(slice(priorities, n as i64)).collect()) } }
     exec glAreTexturesResident(n: GLsizei, textures: *const GLuint, residences: *mut GLboolean) -> GLboolean { |c| { if n < 0 { c.set_error(GL_INVALID_VALUE); return 0; } let _ = residences; match c.are_textures_resident(&slice(textures, n as i64)) { Some(_) => 1, None => 0 } } }
@@ -536,7 +546,7 @@ super::entry_points! {
     exec glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_parameter(target, pname) { write_out(params, &v.as_i32()) } }
     exec glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_tex_level_parameter(target, level, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
     exec glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_level_parameter(target, level, pname) { write_out(params, &v.as_i32()) } }
-    exec glGetTexImage(target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| c.get_tex_image(target, level, format, type_, pixels as *mut u8) }
+    exec glGetTexImage(target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| { c.fbo_store(); c.get_tex_image(target, level, format, type_, pixels as *mut u8) } }
     exec glGetPixelMapfv(map: GLenum, values: *mut GLfloat) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, v), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetPixelMapuiv(map: GLenum, values: *mut GLuint) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 32)).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetPixelMapusv(map: GLenum, values: *mut GLushort) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 16) as u16).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
@@ -697,6 +707,61 @@ super::entry_points! {
     exec glUnmapBuffer(target: GLenum) -> GLboolean { |c| gl_bool(c.unmap_buffer(target)) }
     exec glGetBufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_buffer_parameter(target, pname) { write_out(params, &[v as GLint]) } }
     exec glGetBufferPointerv(target: GLenum, pname: GLenum, params: *mut *mut c_void) { |c| if let Some(p) = c.get_buffer_pointer(target, pname) { write_out(params, &[p as *mut c_void]) } }
+
+    // ---- GL_ARB_framebuffer_object (core names) and GL_EXT_framebuffer_object ----
+    exec glIsRenderbuffer(renderbuffer: GLuint) -> GLboolean { |c| gl_bool(c.is_renderbuffer(renderbuffer)) }
+    exec glBindRenderbuffer(target: GLenum, renderbuffer: GLuint) { |c| c.bind_renderbuffer(target, renderbuffer) }
+    exec glDeleteRenderbuffers(n: GLsizei, renderbuffers: *const GLuint) { |c| if n < 0 { c.set_error(GL_INVALID_VALUE) } else { c.delete_renderbuffers(&slice(renderbuffers, n as i64)) } }
+    exec glGenRenderbuffers(n: GLsizei, renderbuffers: *mut GLuint) { |c| if let Some(v) = c.gen_renderbuffers(n) { write_out(renderbuffers, &v) } }
+    exec glRenderbufferStorage(target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei) { |c| c.renderbuffer_storage(target, 0, internalformat, width, height) }
+    exec glGetRenderbufferParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_renderbuffer_parameter(target, pname) { write_out(params, &[v]) } }
+    exec glIsFramebuffer(framebuffer: GLuint) -> GLboolean { |c| gl_bool(c.is_framebuffer(framebuffer)) }
+    exec glBindFramebuffer(target: GLenum, framebuffer: GLuint) { |c| c.bind_framebuffer(target, framebuffer) }
+    exec glDeleteFramebuffers(n: GLsizei, framebuffers: *const GLuint) { |c| if n < 0 { c.set_error(GL_INVALID_VALUE) } else { c.delete_framebuffers(&slice(framebuffers, n as i64)) } }
+    exec glGenFramebuffers(n: GLsizei, framebuffers: *mut GLuint) { |c| if let Some(v) = c.gen_framebuffers(n) { write_out(framebuffers, &v) } }
+    exec glCheckFramebufferStatus(target: GLenum) -> GLenum { |c| c.check_framebuffer_status(target) }
+    exec glFramebufferTexture1D(target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint) { |c| c.framebuffer_texture(1, target, attachment, textarget, texture, level, 0) }
+    exec glFramebufferTexture2D(target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint) { |c| c.framebuffer_texture(2, target, attachment, textarget, texture, level, 0) }
+    exec glFramebufferTexture3D(target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint, zoffset: GLint) { |c| c.framebuffer_texture(3, target, attachment, textarget, texture, level, zoffset) }
+    exec glFramebufferRenderbuffer(target: GLenum, attachment: GLenum, renderbuffertarget: GLenum, renderbuffer: GLuint) { |c| c.framebuffer_renderbuffer(target, attachment, renderbuffertarget, renderbuffer) }
+    exec glGetFramebufferAttachmentParameteriv(target: GLenum, attachment: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_framebuffer_attachment_parameter(target, attachment, pname) { write_out(params, &[v]) } }
+    exec glGenerateMipmap(target: GLenum) { |c| c.generate_mipmap(target) }
+    exec glFramebufferTextureLayer(target: GLenum, attachment: GLenum, texture: GLuint, level: GLint, layer: GLint) { |c| c.framebuffer_texture(0, target, attachment, 0, texture, level, layer) }
+    exec glRenderbufferStorageMultisample(target: GLenum, samples: GLsizei, internalformat: GLenum, width: GLsizei, height: GLsizei) { |c| c.renderbuffer_storage(target, samples, internalformat, width, height) }
+    exec glBlitFramebuffer(srcX0: GLint, srcY0: GLint, srcX1: GLint, srcY1: GLint, dstX0: GLint, dstY0: GLint, dstX1: GLint, dstY1: GLint, mask: GLbitfield, filter: GLenum) { |c| c.blit_framebuffer([srcX0, srcY0, srcX1, srcY1], [dstX0, dstY0, dstX1, dstY1], mask, filter) }
+    exec glIsRenderbufferEXT(renderbuffer: GLuint) -> GLboolean { |c| gl_bool(c.is_renderbuffer(renderbuffer)) }
+    exec glBindRenderbufferEXT(target: GLenum, renderbuffer: GLuint) { |c| c.bind_renderbuffer(target, renderbuffer) }
+    exec glDeleteRenderbuffersEXT(n: GLsizei, renderbuffers: *const GLuint) { |c| if n < 0 { c.set_error(GL_INVALID_VALUE) } else { c.delete_renderbuffers(&slice(renderbuffers, n as i64)) } }
+    exec glGenRenderbuffersEXT(n: GLsizei, renderbuffers: *mut GLuint) { |c| if let Some(v) = c.gen_renderbuffers(n) { write_out(renderbuffers, &v) } }
+    exec glRenderbufferStorageEXT(target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei) { |c| c.renderbuffer_storage(target, 0, internalformat, width, height) }
+    exec glGetRenderbufferParameterivEXT(target: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_renderbuffer_parameter(target, pname) { write_out(params, &[v]) } }
+    exec glIsFramebufferEXT(framebuffer: GLuint) -> GLboolean { |c| gl_bool(c.is_framebuffer(framebuffer)) }
+    exec glBindFramebufferEXT(target: GLenum, framebuffer: GLuint) { |c| c.bind_framebuffer(target, framebuffer) }
+    exec glDeleteFramebuffersEXT(n: GLsizei, framebuffers: *const GLuint) { |c| if n < 0 { c.set_error(GL_INVALID_VALUE) } else { c.delete_framebuffers(&slice(framebuffers, n as i64)) } }
+    exec glGenFramebuffersEXT(n: GLsizei, framebuffers: *mut GLuint) { |c| if let Some(v) = c.gen_framebuffers(n) { write_out(framebuffers, &v) } }
+    exec glCheckFramebufferStatusEXT(target: GLenum) -> GLenum { |c| c.check_framebuffer_status(target) }
+    exec glFramebufferTexture1DEXT(target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint) { |c| c.framebuffer_texture(1, target, attachment, textarget, texture, level, 0) }
+    exec glFramebufferTexture2DEXT(target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint) { |c| c.framebuffer_texture(2, target, attachment, textarget, texture, level, 0) }
+    exec glFramebufferTexture3DEXT(target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint, zoffset: GLint) { |c| c.framebuffer_texture(3, target, attachment, textarget, texture, level, zoffset) }
+    exec glFramebufferRenderbufferEXT(target: GLenum, attachment: GLenum, renderbuffertarget: GLenum, renderbuffer: GLuint) { |c| c.framebuffer_renderbuffer(target, attachment, renderbuffertarget, renderbuffer) }
+    exec glGetFramebufferAttachmentParameterivEXT(target: GLenum, attachment: GLenum, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_framebuffer_attachment_parameter(target, attachment, pname) { write_out(params, &[v]) } }
+    exec glGenerateMipmapEXT(target: GLenum) { |c| c.generate_mipmap(target) }
+    // ---- GL_ARB_sampler_objects ----
+    exec glGenSamplers(count: GLsizei, samplers: *mut GLuint) { |c| if let Some(v) = c.gen_samplers(count) { write_out(samplers, &v) } }
+    exec glDeleteSamplers(count: GLsizei, samplers: *const GLuint) { |c| if count < 0 { c.set_error(GL_INVALID_VALUE) } else { c.delete_samplers(&slice(samplers, count as i64)) } }
+    exec glIsSampler(sampler: GLuint) -> GLboolean { |c| gl_bool(c.is_sampler(sampler)) }
+    exec glBindSampler(unit: GLuint, sampler: GLuint) { |c| c.bind_sampler(unit, sampler) }
+    exec glSamplerParameteri(sampler: GLuint, pname: GLenum, param: GLint) { |c| c.sampler_parameter(sampler, pname, [param as f32, 0.0, 0.0, 0.0]) }
+    exec glSamplerParameterf(sampler: GLuint, pname: GLenum, param: GLfloat) { |c| c.sampler_parameter(sampler, pname, [param, 0.0, 0.0, 0.0]) }
+    exec glSamplerParameteriv(sampler: GLuint, pname: GLenum, param: *const GLint) { |c| if let Some(v) = sampler_params_i(param, pname) { c.sampler_parameter(sampler, pname, v) } }
+    exec glSamplerParameterfv(sampler: GLuint, pname: GLenum, param: *const GLfloat) { |c| if let Some(v) = sampler_params_f(param, pname) { c.sampler_parameter(sampler, pname, v) } }
+    exec glGetSamplerParameteriv(sampler: GLuint, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_sampler_parameter(sampler, pname) { write_out(params, &v.as_i32()) } }
+    exec glGetSamplerParameterfv(sampler: GLuint, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_sampler_parameter(sampler, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
+    // ---- GL_ARB_texture_storage ----
+    exec glTexStorage1D(target: GLenum, levels: GLsizei, internalformat: GLenum, width: GLsizei) { |c| c.tex_storage(1, target, levels, internalformat, [width, 1, 1]) }
+    exec glTexStorage2D(target: GLenum, levels: GLsizei, internalformat: GLenum, width: GLsizei, height: GLsizei) { |c| c.tex_storage(2, target, levels, internalformat, [width, height, 1]) }
+    exec glTexStorage3D(target: GLenum, levels: GLsizei, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei) { |c| c.tex_storage(3, target, levels, internalformat, [width, height, depth]) }
+    exec glBlitFramebufferEXT(srcX0: GLint, srcY0: GLint, srcX1: GLint, srcY1: GLint, dstX0: GLint, dstY0: GLint, dstX1: GLint, dstY1: GLint, mask: GLbitfield, filter: GLenum) { |c| c.blit_framebuffer([srcX0, srcY0, srcX1, srcY1], [dstX0, dstY0, dstX1, dstY1], mask, filter) }
 
     // ---- glu.h ----
     free gluErrorString(error: GLenum) -> *const GLubyte { glu::strings::error_string(error) }

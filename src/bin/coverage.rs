@@ -29,6 +29,12 @@ fn groups() -> (Vec<String>, HashMap<String, String>) {
                     order.push(group.clone());
                 }
             }
+            // gl.h's entry points of extensions beyond GL 1.5 come after
+            // this marker.
+            if line.starts_with("/* Extensions beyond GL 1.5") {
+                group = "GL extensions".to_string();
+                order.push(group.clone());
+            }
             if line.starts_with("GLAPI ") {
                 if let Some(name) = line.split('(').next().and_then(|s| s.split_whitespace().last()) {
                     map.insert(name.to_string(), group.clone());

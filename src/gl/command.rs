@@ -408,9 +408,11 @@ impl Context {
             TexParameter(t, p, v) => self.tex_parameter(*t, *p, *v),
             TexEnv(t, p, v) => self.tex_env(*t, *p, *v),
             TexGen(c, p, v) => self.tex_gen(*c, *p, *v),
-            TexImage(cmd) => self.tex_image(cmd),
-            TexSubImage(cmd) => self.tex_sub_image(cmd),
-            CopyTex(cmd) => self.copy_tex(cmd),
+            // An attached image may change: framebuffer objects' staging
+            // copies are written back first and reloaded after.
+            TexImage(cmd) => self.with_fbo_stored(|c| c.tex_image(cmd)),
+            TexSubImage(cmd) => self.with_fbo_stored(|c| c.tex_sub_image(cmd)),
+            CopyTex(cmd) => self.with_fbo_stored(|c| c.copy_tex(cmd)),
             PrioritizeTextures(p) => self.prioritize_textures(p),
             Imaging(cmd) => self.imaging_command(cmd),
         }

@@ -84,6 +84,10 @@ pub struct Context {
     /// The viewport and scissor are set to the surface size at the first
     /// MakeCurrent only (GL 1.5 section 2.11.1; GLX/WGL say the same).
     pub sized_once: bool,
+    /// Framebuffer and renderbuffer objects (framebuffer_object).
+    pub fbo: super::framebuffer_object::FboState,
+    /// Sampler objects and their unit bindings (texture::sampler).
+    pub samplers: super::texture::sampler::Samplers,
 }
 
 impl Context {
@@ -133,6 +137,8 @@ impl Context {
             derived: validate::Derived::default(),
             share: None,
             sized_once: false,
+            fbo: Default::default(),
+            samplers: Default::default(),
         }
     }
 
@@ -180,12 +186,13 @@ impl Context {
     /// been drawn into since it was last shown (glDrawBuffer(GL_FRONT)).
     pub fn flush(&mut self) {
         self.sync_render();
-        if self.double_buffered && !self.fb.front_dirty {
+        if self.double_buffered && !self.window_fb().front_dirty {
             return;
         }
-        self.fb.front_dirty = false;
+        self.window_fb_mut().front_dirty = false;
+        let fb = self.fbo.parked.as_ref().unwrap_or(&self.fb);
         if let Some(s) = self.surface.as_mut() {
-            s.present(&self.fb);
+            s.present(fb);
         }
     }
 
@@ -197,9 +204,10 @@ impl Context {
         if !self.double_buffered {
             return;
         }
-        self.fb.swap_buffers();
+        self.window_fb_mut().swap_buffers();
+        let fb = self.fbo.parked.as_ref().unwrap_or(&self.fb);
         if let Some(s) = self.surface.as_mut() {
-            s.present(&self.fb);
+            s.present(fb);
         }
     }
 

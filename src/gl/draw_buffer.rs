@@ -14,6 +14,7 @@
 use super::context::Context;
 use super::enums::*;
 use super::validate::DIRTY_FRAGMENT;
+use super::framebuffer_object::{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT15, MAX_COLOR_ATTACHMENTS};
 use crate::framebuffer::DrawTarget;
 
 pub const GL_NONE: u32 = 0;
@@ -29,11 +30,17 @@ pub const GL_AUX0: u32 = 0x0409;
 fn is_buffer_name(mode: u32) -> bool {
     matches!(mode, GL_NONE | GL_FRONT_LEFT..=GL_BACK_RIGHT | GL_FRONT | GL_BACK | GL_LEFT | GL_RIGHT | GL_FRONT_AND_BACK)
         || (GL_AUX0..GL_AUX0 + 4).contains(&mode)
+        || (GL_COLOR_ATTACHMENT0..=GL_COLOR_ATTACHMENT15).contains(&mode)
 }
 
 impl Context {
     /// Does the surface have the buffer(s) `mode` names?
-    fn buffer_exists(&self, mode: u32) -> bool {
+    fn buffer_exists(&self, mode: u32, fbo: bool) -> bool {
+        if fbo {
+            // A framebuffer object's buffers are its colour attachments
+            // (EXT_framebuffer_object section 4.2.1).
+            return mode == GL_NONE || (GL_COLOR_ATTACHMENT0..GL_COLOR_ATTACHMENT0 + MAX_COLOR_ATTACHMENTS).contains(&mode);
+        }
         match mode {
             GL_NONE | GL_FRONT_LEFT | GL_FRONT | GL_LEFT | GL_FRONT_AND_BACK => true,
             GL_BACK_LEFT | GL_BACK => self.double_buffered,
@@ -46,7 +53,7 @@ impl Context {
         if !is_buffer_name(mode) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        if !self.buffer_exists(mode) {
+        if !self.buffer_exists(mode, self.fbo.draw_binding != 0) {
             return self.set_error(GL_INVALID_OPERATION);
         }
         self.color_buffer.draw_buffer = mode;
@@ -55,10 +62,12 @@ impl Context {
 
     pub fn read_buffer(&mut self, mode: u32) {
         // NONE and FRONT_AND_BACK name no single buffer to read.
-        if !is_buffer_name(mode) || mode == GL_NONE || mode == GL_FRONT_AND_BACK {
+        let fbo = self.fbo.read_binding != 0;
+        // NONE is a valid read buffer for a framebuffer object.
+        if !is_buffer_name(mode) || (mode == GL_NONE && !fbo) || mode == GL_FRONT_AND_BACK {
             return self.set_error(GL_INVALID_ENUM);
         }
-        if !self.buffer_exists(mode) {
+        if !self.buffer_exists(mode, fbo) {
             return self.set_error(GL_INVALID_OPERATION);
         }
         self.pixel_read_buffer = mode;
@@ -89,8 +98,17 @@ impl Context {
     /// the draw framebuffer unless the window system set another) and its
     /// colour buffer glReadBuffer names: what glReadPixels, glCopyPixels
     /// and glCopyTexImage read.
+    ///
+    /// With framebuffer objects bound: the read object's staging buffer
+    /// (the draw one's when they are the same), or the window's parked
+    /// framebuffer when only the draw framebuffer is an object.
     pub fn read_source(&self) -> (&crate::framebuffer::Framebuffer, &[[u8; 4]]) {
-        let fb = self.read_fb.as_ref().unwrap_or(&self.fb);
+        let (r, d) = (self.fbo.read_binding, self.fbo.draw_binding);
+        if r != 0 {
+            let fb = if r == d { &self.fb } else { self.fbo.read_staging.as_ref().unwrap_or(&self.fb) };
+            return (fb, &fb.color);
+        }
+        let fb = self.read_fb.as_ref().or(self.fbo.parked.as_ref()).unwrap_or(&self.fb);
         (fb, fb.read_color(matches!(self.pixel_read_buffer, GL_BACK | GL_BACK_LEFT)))
     }
 }

@@ -383,6 +383,13 @@ impl<'a> Source<'a> {
 /// Writes a normalized value as a non-packed type (table 4.7).
 #[inline]
 fn put_normalized(out: &mut [u8], ty: u32, v: f64) {
+    // FLOAT keeps the value: callers have clamped what must be clamped
+    // (pixel transfer's final conversion), and float textures read back
+    // unclamped (ARB_texture_float).
+    if !matches!(ty, GL_UNSIGNED_BYTE | GL_BYTE | GL_UNSIGNED_SHORT | GL_SHORT | GL_UNSIGNED_INT | GL_INT) {
+        out[..4].copy_from_slice(&(v as f32).to_ne_bytes());
+        return;
+    }
     let v = v.clamp(if matches!(ty, GL_BYTE | GL_SHORT | GL_INT) { -1.0 } else { 0.0 }, 1.0);
     match ty {
         GL_UNSIGNED_BYTE => out[0] = (v * 255.0).round() as u8,

@@ -83,13 +83,20 @@ impl Context {
             Ok(k) => k,
             Err(e) => return self.set_error(e),
         };
+        // A framebuffer object must be complete for reading.
+        if !self.read_framebuffer_complete() {
+            return;
+        }
+        let (rfb, _) = self.read_source();
         let missing = match kind {
-            Kind::Depth => !self.fb.has_depth(),
-            Kind::Stencil => !self.fb.has_stencil(),
-            Kind::DepthStencil => !self.fb.has_depth() || !self.fb.has_stencil(),
+            Kind::Depth => !rfb.has_depth(),
+            Kind::Stencil => !rfb.has_stencil(),
+            Kind::DepthStencil => !rfb.has_depth() || !rfb.has_stencil(),
             // An RGBA context has no colour indices.
             Kind::ColorIndex => true,
-            Kind::Color => false,
+            // A framebuffer object read without a colour attachment or
+            // with READ_BUFFER NONE.
+            Kind::Color => self.fbo_read_color_missing(),
         };
         if missing {
             return self.set_error(GL_INVALID_OPERATION);

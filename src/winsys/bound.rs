@@ -4,7 +4,9 @@
 //! under the drawables' mutexes, taken in address order so that two
 //! contexts bound to the same pair the other way round cannot deadlock).
 //! Outside calls the framebuffers sit in the drawables, where the window
-//! system (SwapBuffers, resizes) and other contexts find them.
+//! system (SwapBuffers, resizes) and other contexts find them. While a
+//! framebuffer object is bound, the window's framebuffer is parked beside
+//! `fb` (`Context::window_fb_mut`), and that is what is exchanged.
 
 use crate::framebuffer::shared::SharedFramebuffer;
 use crate::gl::{validate::DIRTY_ALL, Context};
@@ -48,10 +50,10 @@ fn swapped<R>(ctx: &mut Context, draw: &Arc<SharedFramebuffer>, read: Option<&Ar
         // draw-buffer selection are this context's again.
         d.last_user = me;
         ctx.dirty |= DIRTY_ALL;
-        std::mem::swap(&mut ctx.fb, &mut d.fb);
+        std::mem::swap(ctx.window_fb_mut(), &mut d.fb);
         ctx.sync_draw_buffer();
     } else {
-        std::mem::swap(&mut ctx.fb, &mut d.fb);
+        std::mem::swap(ctx.window_fb_mut(), &mut d.fb);
     }
     if let (Some(r), Some(rf)) = (r.as_mut(), ctx.read_fb.as_mut()) {
         std::mem::swap(rf, &mut r.fb);
@@ -64,7 +66,9 @@ fn swapped<R>(ctx: &mut Context, draw: &Arc<SharedFramebuffer>, read: Option<&Ar
     // or drawn by another context.
     ctx.sync_render();
     ENTERED.with(|e| e.set(false));
-    std::mem::swap(&mut ctx.fb, &mut d.fb);
+    // A framebuffer object's staging buffer stays in `fb` (gl::framebuffer_object):
+    // the drawable gets back its own.
+    std::mem::swap(ctx.window_fb_mut(), &mut d.fb);
     if let (Some(r), Some(rf)) = (r.as_mut(), ctx.read_fb.as_mut()) {
         std::mem::swap(rf, &mut r.fb);
     }

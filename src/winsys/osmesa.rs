@@ -294,13 +294,14 @@ pub unsafe fn make_current(ctx: *mut OsContext, buffer: *mut c_void, ty: u32, wi
     if !prev.is_null() {
         (*prev).gl.flush();
     }
-    if os.gl.fb.resize(width as usize, height as usize).is_err() {
+    // The window's framebuffer, also while a framebuffer object is bound.
+    if os.gl.window_fb_mut().resize(width as usize, height as usize).is_err() {
         return false;
     }
     let (w, h) = (width as usize, height as usize);
     let row_pixels = if os.row_length > 0 { (os.row_length as usize).max(w) } else { w };
     let ub = UserBuffer { ptr: buffer as *mut u8, format: os.format, ty, width: w, height: h, row_pixels, y_up: os.y_up };
-    ub.load_into(&mut os.gl.fb);
+    ub.load_into(os.gl.window_fb_mut());
     os.buffer = Some(ub);
     os.gl.surface = Some(Box::new(ub));
     os.gl.surface_resized(width, height);
@@ -384,7 +385,7 @@ pub unsafe fn get_depth_buffer(ctx: *mut OsContext, w: *mut GLint, h: *mut GLint
             *p = v
         }
     };
-    let ok = !ctx.is_null() && (*ctx).gl.fb.has_depth() && (*ctx).buffer.is_some();
+    let ok = !ctx.is_null() && (*ctx).gl.window_fb().has_depth() && (*ctx).buffer.is_some();
     if !ok {
         put(w, 0);
         put(h, 0);
@@ -394,7 +395,7 @@ pub unsafe fn get_depth_buffer(ctx: *mut OsContext, w: *mut GLint, h: *mut GLint
         }
         return false;
     }
-    let fb = &mut (*ctx).gl.fb;
+    let fb = (*ctx).gl.window_fb_mut();
     put(w, fb.width as GLint);
     put(h, fb.height as GLint);
     put(bpv, 4);

@@ -406,8 +406,9 @@ fn release_current() {
 
 /// Resizes the context's framebuffer to the DC's size if it differs.
 fn follow_size(c: &mut WglContext, w: usize, h: usize) -> bool {
-    if (w, h) != (c.gl.fb.width, c.gl.fb.height) {
-        if c.gl.fb.resize(w, h).is_err() {
+    let fb = c.gl.window_fb_mut();
+    if (w, h) != (fb.width, fb.height) {
+        if fb.resize(w, h).is_err() {
             return false;
         }
         c.gl.surface_resized(w as GLint, h as GLint);
@@ -444,7 +445,7 @@ pub fn make_current(hdc: Hdc, hglrc: Hglrc) -> Bool {
         return 0; // ERROR_BUSY: current in another thread
     }
     release_current();
-    if c.gl.fb.resize(w, h).is_err() {
+    if c.gl.window_fb_mut().resize(w, h).is_err() {
         return 0;
     }
     // glFlush shows the front buffer (single-buffered, or drawn with

@@ -226,3 +226,6 @@ pub const GL_RG8: u32 = 0x822B;
 pub const GL_RG16: u32 = 0x822C;
 pub const GL_COMPRESSED_RED: u32 = 0x8225;
 pub const GL_COMPRESSED_RG: u32 = 0x8226;
+// ARB_texture_float's level queries.
+pub const GL_TEXTURE_RED_TYPE: u32 = 0x8C10;
+pub const GL_TEXTURE_DEPTH_TYPE: u32 = 0x8C16;

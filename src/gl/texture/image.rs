@@ -29,6 +29,8 @@ use std::sync::Arc;
 pub struct InternalFormat {
     pub base: Base,
     pub bits: [u8; 7],
+    /// ARB_texture_float: components are stored as given, unclamped.
+    pub float: bool,
 }
 
 /// Table 3.16's sized formats and the unsized ones (1-4, base names,
@@ -80,9 +82,44 @@ pub fn internal_format(f: u32) -> Option<InternalFormat> {
         // EXT_packed_depth_stencil: sampled as depth; the stencil index is
         // kept in the texel's alpha (see `is_depth_stencil`).
         GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => (Depth, [0, 0, 0, 0, 0, 0, 24]),
+        _ => return float_format(f),
+    };
+    Some(InternalFormat { base, bits, float: false })
+}
+
+/// Is `f` a floating-point internal format (ARB_texture_float)?
+pub fn is_float_format(f: u32) -> bool {
+    float_format(f).is_some()
+}
+
+/// ARB_texture_float's internal formats: (base, component bits).
+fn float_format(f: u32) -> Option<InternalFormat> {
+    use Base::*;
+    let (base, b): (Base, u8) = match f {
+        0x8814 => (Rgba, 32), // RGBA32F
+        0x8815 => (Rgb, 32),  // RGB32F
+        0x8816 => (Alpha, 32),
+        0x8817 => (Intensity, 32),
+        0x8818 => (Luminance, 32),
+        0x8819 => (LuminanceAlpha, 32),
+        0x881A => (Rgba, 16), // RGBA16F
+        0x881B => (Rgb, 16),
+        0x881C => (Alpha, 16),
+        0x881D => (Intensity, 16),
+        0x881E => (Luminance, 16),
+        0x881F => (LuminanceAlpha, 16),
         _ => return None,
     };
-    Some(InternalFormat { base, bits })
+    let bits = match base {
+        Rgba => [b, b, b, b, 0, 0, 0],
+        Rgb => [b, b, b, 0, 0, 0, 0],
+        Alpha => [0, 0, 0, b, 0, 0, 0],
+        Intensity => [0, 0, 0, 0, 0, b, 0],
+        Luminance => [0, 0, 0, 0, b, 0, 0],
+        LuminanceAlpha => [0, 0, 0, b, b, 0, 0],
+        Depth => [0; 7],
+    };
+    Some(InternalFormat { base, bits, float: true })
 }
 
 /// Is `f` a packed depth/stencil internal format? Its texels are stored
@@ -170,6 +207,11 @@ pub fn check_format_type(format: u32, ty: u32) -> Result<Kind, u32> {
 /// `ptr` must point to the whole image as the modes lay it out.
 pub unsafe fn unpack(modes: &PixelModes, w: usize, h: usize, d: usize, format: u32, ty: u32, ptr: *const u8) -> Pixels {
     let src = Source::new(modes, w, h, d, format, ty, ptr);
+    // An empty image reads nothing (its layout may still skip past the
+    // end of client memory, which `Source` then leaves unmapped).
+    if w == 0 || h == 0 || d == 0 {
+        return Pixels::Rgba8(Arc::new(Vec::new()));
+    }
     if ty == GL_UNSIGNED_BYTE && matches!(format, GL_RGBA | GL_BGRA) {
         let mut out = Vec::with_capacity(w * h * d);
         let bgra = format == GL_BGRA;
@@ -218,15 +260,18 @@ pub fn texels(f: &InternalFormat, p: &Pixels, t: &PixelTransfer) -> Texels {
         };
         return Texels::Rgba8(Arc::new(out));
     }
+    // Float formats keep values outside [0, 1] (ARB_texture_float): no
+    // final clamp.
+    let transfer = |c: &mut Vec<[f32; 4]>| if f.float { t.scale_bias_map(c) } else { t.color(c) };
     let rgba: Vec<[f32; 4]> = match p {
         Pixels::Rgba8(v) => {
             let mut c: Vec<[f32; 4]> = v.iter().map(|p| p.map(|x| UNORM8[x as usize])).collect();
-            t.color(&mut c);
+            transfer(&mut c);
             c
         }
         Pixels::Color(v) => {
             let mut c = v.clone();
-            t.color(&mut c);
+            transfer(&mut c);
             c
         }
         Pixels::Index(v) => v.iter().map(|&i| t.index_to_rgba(i)).collect(),
@@ -255,7 +300,7 @@ pub fn store(f: &InternalFormat, rgba: Vec<[f32; 4]>) -> Texels {
     let expanded: Vec<[f32; 4]> = rgba
         .into_iter()
         .map(|p| {
-            let mut c = p.map(|v| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) });
+            let mut c = if f.float { p } else { p.map(|v| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) }) };
             for k in 0..3 {
                 if !m[k] {
                     c[k] = 0.0;
@@ -319,6 +364,7 @@ pub unsafe fn pack(modes: &PixelModes, img: &Image, format: u32, ty: u32, t: &Pi
     let depth_stencil = format == GL_DEPTH_STENCIL;
     let stencil = is_depth_stencil(img.internal_format);
     let lum = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);
+    let float = is_float_format(img.internal_format);
     for k in 0..d {
         for j in 0..h {
             for i in 0..w {
@@ -333,7 +379,12 @@ pub unsafe fn pack(modes: &PixelModes, img: &Image, format: u32, ty: u32, t: &Pi
                     dest.put_normalized_at(i, j, k, t.depth(tx[0] as f64));
                 } else {
                     let mut c = [texel_to_rgba(img.base, tx)];
-                    t.color(&mut c);
+                    if float {
+                        // Float textures read back unclamped.
+                        t.scale_bias_map(&mut c);
+                    } else {
+                        t.color(&mut c);
+                    }
                     if lum {
                         // glGetTexImage's luminance is R (not R + G + B as
                         // for glReadPixels).

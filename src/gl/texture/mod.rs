@@ -17,6 +17,7 @@
 
 pub mod enums;
 pub mod image;
+pub mod sampler;
 pub mod texgen;
 
 use self::enums::*;
@@ -119,6 +120,11 @@ pub struct TexObject {
     pub params: Params,
     pub generate_mipmap: bool,
     pub priority: f32,
+    /// Made by glTexStorage (ARB_texture_storage): its images may be
+    /// replaced in content only.
+    pub immutable: bool,
+    /// glTexStorage's level count: completeness clamps MAX_LEVEL to it.
+    pub immutable_levels: i32,
 }
 
 impl TexObject {
@@ -129,7 +135,7 @@ impl TexObject {
             params.wrap = [Wrap::ClampToEdge; 3];
             params.min_filter = Filter::Linear;
         }
-        TexObject { target, images: vec![None; 6 * MAX_LEVELS], params, generate_mipmap: false, priority: 1.0 }
+        TexObject { target, images: vec![None; 6 * MAX_LEVELS], params, generate_mipmap: false, priority: 1.0, immutable: false, immutable_levels: 0 }
     }
 
     fn image(&self, face: usize, level: usize) -> Option<&Arc<Image>> {
@@ -139,7 +145,20 @@ impl TexObject {
     /// Section 3.8.10: the levels base..=q of each face when the texture is
     /// complete for its target (cube completeness for cube maps).
     pub fn complete(&self, target: Target) -> Option<Vec<Vec<Arc<Image>>>> {
-        let p = &self.params;
+        self.complete_with(target, &self.params)
+    }
+
+    /// Completeness under parameters `p` (a sampler object's, in place of
+    /// the texture's own).
+    pub fn complete_with(&self, target: Target, p: &Params) -> Option<Vec<Vec<Arc<Image>>>> {
+        // Immutable storage: the levels that exist bound MAX_LEVEL.
+        let clamped;
+        let p = if self.immutable_levels > 0 {
+            clamped = Params { max_level: p.max_level.min(self.immutable_levels - 1), ..p.clone() };
+            &clamped
+        } else {
+            p
+        };
         if p.base_level < 0 || p.base_level as usize >= MAX_LEVELS || p.base_level > p.max_level {
             return None;
         }
@@ -505,7 +524,7 @@ impl Context {
         let sizes_ok = size[..dims as usize].iter().all(|&s| (0..=limit).contains(&s));
         if !proxy && !pixels.is_null() && sizes_ok && image::check_format_type(format, ty).is_ok() {
             let [w, h, d] = size.map(|s| s as usize);
-            cmd.pixels = Some(Arc::new(image::unpack(&self.pixel_store.unpack, w, h, d, format, ty, pixels)));
+            cmd.pixels = Some(Arc::new(image::unpack(&unpack_modes(&self.pixel_store.unpack, dims), w, h, d, format, ty, pixels)));
         }
         if proxy {
             if self.in_begin_end() {
@@ -529,7 +548,7 @@ impl Context {
         let sizes_ok = size[..dims as usize].iter().all(|&s| (0..=limit).contains(&s));
         if !pixels.is_null() && sizes_ok && image::check_format_type(format, ty).is_ok() {
             let [w, h, d] = size.map(|s| s as usize);
-            cmd.pixels = Some(Arc::new(image::unpack(&self.pixel_store.unpack, w, h, d, format, ty, pixels)));
+            cmd.pixels = Some(Arc::new(image::unpack(&unpack_modes(&self.pixel_store.unpack, dims), w, h, d, format, ty, pixels)));
         }
         super::Command::TexSubImage(Box::new(cmd))
     }
@@ -614,6 +633,12 @@ impl Context {
 
     /// glTexImage1D/2D/3D (section 3.8.1).
     pub fn tex_image(&mut self, cmd: &TexImageCmd) {
+        // glTexStorage's images are immutable in size and format.
+        if let Some((t, _, false)) = image_target(cmd.target, cmd.dims) {
+            if self.texture.object(self.texture.active, t).immutable {
+                return self.set_error(GL_INVALID_OPERATION);
+            }
+        }
         match self.imaging_texture(cmd.dims, cmd.pixels.as_deref(), cmd.size) {
             None => self.tex_image_transferred(cmd, false),
             Some(None) => {}
@@ -1001,6 +1026,8 @@ impl Context {
             GL_GENERATE_MIPMAP => Value::Bools(vec![obj.generate_mipmap]),
             GL_TEXTURE_COMPARE_MODE => Value::Ints(vec![if p.compare_mode { GL_COMPARE_R_TO_TEXTURE } else { GL_NONE } as i64]),
             GL_TEXTURE_COMPARE_FUNC => Value::Ints(vec![p.compare_func.to_gl() as i64]),
+            // ARB_texture_storage.
+            0x912F => Value::Bools(vec![obj.immutable]),
             GL_DEPTH_TEXTURE_MODE => Value::Ints(vec![match p.depth_mode {
                 Base::Intensity => GL_INTENSITY,
                 Base::Alpha => GL_ALPHA,
@@ -1045,6 +1072,12 @@ impl Context {
             GL_TEXTURE_DEPTH_SIZE => v(bits[6] as i64),
             GL_TEXTURE_STENCIL_SIZE => v(img.map_or(0, |i| if matches!(i.internal_format, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8) { 8 } else { 0 })),
             GL_TEXTURE_COMPRESSED => Some(Value::Bools(vec![false])),
+            // ARB_texture_float's component types (GL_NONE when absent).
+            GL_TEXTURE_RED_TYPE..=GL_TEXTURE_DEPTH_TYPE => {
+                let k = [0, 1, 2, 3, 4, 5, 6][(pname - GL_TEXTURE_RED_TYPE) as usize];
+                let float = img.is_some_and(|i| image::is_float_format(i.internal_format));
+                v(if bits[k] == 0 { 0 } else if float { 0x1406 } else { 0x8C17 })
+            }
             GL_TEXTURE_COMPRESSED_IMAGE_SIZE => {
                 self.set_error(GL_INVALID_OPERATION);
                 None
@@ -1211,9 +1244,14 @@ impl Context {
                 stage.envs[u] = ts.units[u].env;
                 let Some(t) = ts.unit_target(u) else { continue };
                 let obj = ts.object(u, t);
-                if let Some(faces) = obj.complete(t) {
+                // A bound sampler object's state replaces the texture's.
+                let params = match self.samplers.objects.get(&self.samplers.bound[u]) {
+                    Some(s) => sampler::apply(&obj.params, s),
+                    None => obj.params.clone(),
+                };
+                if let Some(faces) = obj.complete_with(t, &params) {
                     let base = faces[0][0].base;
-                    stage.units[u] = Some(UnitSampler::new(t, faces, obj.params.clone(), ts.units[u].lod_bias, base));
+                    stage.units[u] = Some(UnitSampler::new(t, faces, params, ts.units[u].lod_bias, base));
                     stage.active.push(u);
                 }
             }
@@ -1221,6 +1259,101 @@ impl Context {
         }
         self.texture.vertex = texgen::VertexTexSetup::new(self);
     }
+}
+
+impl Context {
+    /// glTexStorage1D/2D/3D (ARB_texture_storage): every level of the bound
+    /// texture (every face of a cube map) at once, sized internal formats
+    /// only, made immutable (TEXTURE_IMMUTABLE_FORMAT).
+    pub fn tex_storage(&mut self, dims: u8, target: u32, levels: i32, ifmt: u32, size: [i32; 3]) {
+        let (t, proxy) = match (dims, target) {
+            (1, GL_TEXTURE_1D) => (Target::T1D, false),
+            (2, GL_TEXTURE_2D) => (Target::T2D, false),
+            (2, GL_TEXTURE_CUBE_MAP) => (Target::Cube, false),
+            (2, GL_TEXTURE_RECTANGLE) => (Target::Rect, false),
+            (3, GL_TEXTURE_3D) => (Target::T3D, false),
+            (1, GL_PROXY_TEXTURE_1D) => (Target::T1D, true),
+            (2, GL_PROXY_TEXTURE_2D) => (Target::T2D, true),
+            (2, GL_PROXY_TEXTURE_CUBE_MAP) => (Target::Cube, true),
+            (2, GL_PROXY_TEXTURE_RECTANGLE) => (Target::Rect, true),
+            (3, GL_PROXY_TEXTURE_3D) => (Target::T3D, true),
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+        let unsized_format = matches!(ifmt, 1..=4 | GL_ALPHA | GL_LUMINANCE | GL_LUMINANCE_ALPHA | GL_INTENSITY | GL_RGB | GL_RGBA | GL_RED | GL_RG | GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL)
+            || (0x84E9..=0x84EE).contains(&ifmt);
+        let Some(f) = internal_format(ifmt).filter(|_| !unsized_format) else { return self.set_error(GL_INVALID_ENUM) };
+        // Depth formats exist for 1D, 2D, cube map and rectangle textures.
+        if f.base == Base::Depth && t == Target::T3D {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let n = &size[..dims as usize];
+        if levels < 1 || n.iter().any(|&s| s < 1) {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let largest = if t == Target::T3D { size.iter().copied().max().unwrap_or(1) } else { n.iter().copied().max().unwrap_or(1) };
+        if levels > log2_floor(largest) + 1 || (t == Target::Rect && levels > 1) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let u = self.texture.active;
+        if !proxy && (self.texture.units[u].bound[target_index(t)] == 0 || self.texture.object(u, t).immutable) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let (format, ty) = if f.base == Base::Depth { (GL_DEPTH_COMPONENT, GL_FLOAT) } else { (GL_RGBA, GL_UNSIGNED_BYTE) };
+        // A proxy target only answers whether the levels would fit (its
+        // level queries), as glTexImage's proxies do.
+        let faces: Vec<u32> = if t == Target::Cube && !proxy { (0..6).map(|i| GL_TEXTURE_CUBE_MAP_POSITIVE_X + i).collect() } else { vec![target] };
+        let mut s = size;
+        for level in 0..levels {
+            for &face in &faces {
+                let cmd = TexImageCmd { dims, target: face, level, internal_format: ifmt as i32, size: s, border: 0, format, ty, pixels: None };
+                self.tex_image(&cmd);
+            }
+            for (k, v) in s.iter_mut().enumerate() {
+                if k < dims as usize {
+                    *v = (*v / 2).max(1);
+                }
+            }
+        }
+        if proxy {
+            return;
+        }
+        let obj = self.texture.object_mut(u, t);
+        obj.immutable = true;
+        obj.immutable_levels = levels;
+    }
+
+    /// glGenerateMipmap (EXT_framebuffer_object section 3.8.8): the bound
+    /// texture's levels above the base one from the base, by
+    /// GENERATE_MIPMAP's filter. INVALID_OPERATION without a base image
+    /// (or for a cube map whose faces are not all there).
+    pub fn generate_mipmap_now(&mut self, target: u32) {
+        let Some(t) = object_target(target).filter(|&t| t != Target::Rect) else { return self.set_error(GL_INVALID_ENUM) };
+        let u = self.texture.active;
+        let base = self.texture.object(u, t).params.base_level.max(0) as usize;
+        let faces = if t == Target::Cube { 6 } else { 1 };
+        let Some(img) = self.texture.object(u, t).image(0, base).cloned() else { return self.set_error(GL_INVALID_OPERATION) };
+        if (1..faces).any(|f| self.texture.object(u, t).image(f, base).is_none()) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let Some(f) = internal_format(img.internal_format) else { return };
+        self.drop_derived_textures();
+        let obj = self.texture.object_mut(u, t);
+        for face in 0..faces {
+            generate_mipmaps(obj, t, face, &f);
+        }
+    }
+}
+
+/// The unpack modes of a texture image: 1D and 2D images ignore
+/// SKIP_IMAGES and IMAGE_HEIGHT (section 3.8.1: they are unpacked as 3D
+/// images of depth 1 "except that UNPACK_SKIP_IMAGES is ignored").
+fn unpack_modes(m: &super::pixels::PixelModes, dims: u8) -> super::pixels::PixelModes {
+    let mut m = m.clone();
+    if dims < 3 {
+        m.skip_images = 0;
+        m.image_height = 0;
+    }
+    m
 }
 
 /// The format and type a copy's framebuffer pixels are given as.
