@@ -545,7 +545,7 @@ fn textured_kernels_match_reference() {
 }
 
 /// The commands of a case for the SIMD span kernels
-/// (`render::fragment::simd`): no stencil or alpha test, depth off or
+/// (`render::fragment::simd`): no alpha test, any stencil test, depth off or
 /// LESS / LEQUAL with writes (sometimes other functions or no writes, which
 /// stay scalar), blending off / OVER / ADD (sometimes another), flat,
 /// constant, smooth and perspective colour under every hint, colours
@@ -562,7 +562,15 @@ fn simd_case(r: &mut Rng, (W, H): (usize, usize)) -> Vec<Command> {
     if r.chance(20) {
         v.push(Command::DepthRange(r.unit() as f64, r.unit() as f64));
     }
-    en(&mut v, GL_STENCIL_TEST, false);
+    // Stencil: any function, operations and masks (shadow volumes: depth
+    // test without writes, colour masked off, INCR_WRAP / DECR_WRAP).
+    en(&mut v, GL_STENCIL_TEST, r.chance(40));
+    v.push(Command::StencilFunc(r.pick(&FUNCS), r.below(300) as i32 - 20, if r.chance(50) { 0xFF } else { r.below(256) as u32 }));
+    v.push(Command::StencilOp(r.pick(&STENCIL_OPS), r.pick(&STENCIL_OPS), r.pick(&STENCIL_OPS)));
+    v.push(Command::StencilMask(if r.chance(60) { 0xFF } else { r.below(256) as u32 }));
+    if r.chance(15) {
+        v.push(Command::ColorMask([false; 4]));
+    }
     en(&mut v, GL_ALPHA_TEST, false);
     en(&mut v, GL_FOG, false);
     en(&mut v, t::GL_TEXTURE_2D, false);
@@ -574,7 +582,9 @@ fn simd_case(r: &mut Rng, (W, H): (usize, usize)) -> Vec<Command> {
         _ => [GL_ONE, GL_ONE, GL_ONE, GL_ONE],
     }));
     v.push(Command::BlendEquation(0x8006));
-    v.push(Command::ColorMask(if r.chance(90) { [true; 4] } else { [r.chance(50), r.chance(50), r.chance(50), r.chance(50)] }));
+    if r.chance(85) {
+        v.push(Command::ColorMask(if r.chance(90) { [true; 4] } else { [r.chance(50), r.chance(50), r.chance(50), r.chance(50)] }));
+    }
     en(&mut v, GL_SCISSOR_TEST, r.chance(15));
     v.push(Command::Scissor(r.below(W as u64) as i32 - 5, r.below(H as u64) as i32 - 5, r.below(W as u64) as i32, r.below(H as u64) as i32));
     v.push(Command::MatrixMode(GL_PROJECTION));
@@ -644,12 +654,14 @@ fn compare_simd(seed: u64, cases: usize, size: (usize, usize)) -> Result<usize, 
     for n in 0..cases {
         let color: Vec<[u8; 4]> = (0..W * H).map(|_| (r.next() as u32).to_ne_bytes()).collect();
         let depth: Vec<u32> = (0..W * H).map(|_| if r.chance(40) { 0xFF_FFFF } else { r.next() as u32 & 0xFF_FFFF }).collect();
+        let stencil: Vec<u8> = (0..W * H).map(|_| if r.chance(50) { r.below(4) as u8 } else { r.next() as u8 }).collect();
         let cmds = simd_case(&mut r, size);
         for (k, c) in ctx.iter_mut().enumerate() {
             // Selection runs on this thread (one thread, nothing deferred).
             simd::force_level_on_this_thread(levels[k]);
             c.fb.color.copy_from_slice(&color);
             c.fb.depth.copy_from_slice(&depth);
+            c.fb.stencil.copy_from_slice(&stencil);
             for cmd in &cmds {
                 c.execute(cmd);
             }
@@ -659,15 +671,17 @@ fn compare_simd(seed: u64, cases: usize, size: (usize, usize)) -> Result<usize, 
         let [best_fb, sse2_fb, scalar_fb, reference_fb] = [&ctx[0].fb, &ctx[1].fb, &ctx[2].fb, &ctx[3].fb];
         for (name, fb) in [("sse2", sse2_fb), ("best", best_fb)] {
             for i in 0..W * H {
-                if fb.color[i] != scalar_fb.color[i] || fb.depth[i] != scalar_fb.depth[i] {
+                if fb.color[i] != scalar_fb.color[i] || fb.depth[i] != scalar_fb.depth[i] || fb.stencil[i] != scalar_fb.stencil[i] {
                     return Err(format!(
-                        "simd case {n} pixel ({}, {}): {name} {:?} z {:#x} / scalar {:?} z {:#x}\nstate: {:?}\ncommands: {cmds:?}",
+                        "simd case {n} pixel ({}, {}): {name} {:?} z {:#x} s {} / scalar {:?} z {:#x} s {}\nstate: {:?}\ncommands: {cmds:?}",
                         i % W,
                         i / W,
                         fb.color[i],
                         fb.depth[i],
+                        fb.stencil[i],
                         scalar_fb.color[i],
                         scalar_fb.depth[i],
+                        scalar_fb.stencil[i],
                         ctx[0].derived.render.fragment
                     ));
                 }
@@ -682,7 +696,7 @@ fn compare_simd(seed: u64, cases: usize, size: (usize, usize)) -> Result<usize, 
         for i in 0..W * H {
             let (a, b, e) = (simd_fb.color[i], scalar_fb.color[i], reference_fb.color[i]);
             let off = (0..4).map(|ch| a[ch].abs_diff(e[ch])).max().unwrap();
-            if a != b || simd_fb.depth[i] != scalar_fb.depth[i] || simd_fb.depth[i] != reference_fb.depth[i] || off > if nicest { 0 } else { 1 } {
+            if a != b || simd_fb.depth[i] != scalar_fb.depth[i] || simd_fb.depth[i] != reference_fb.depth[i] || simd_fb.stencil[i] != reference_fb.stencil[i] || off > if nicest { 0 } else { 1 } {
                 return Err(format!(
                     "simd case {n} pixel ({}, {}): simd {a:?} z {:#x} / scalar {b:?} z {:#x} / reference {e:?} z {:#x}\nstate: {:?}\ncommands: {cmds:?}",
                     i % W,

@@ -104,6 +104,17 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kerne
     } else {
         CS_AFFINE
     };
+    // The SIMD kernels (simd.rs) where the CPU has them, for the common
+    // opaque, blended and stencil cases; they compute what `kernel` does.
+    // Under the stencil test colours stay exact (no stepping), as before.
+    let simd_cs = match cs {
+        _ if co == CO_NONE => CS_FLAT,
+        CS_STEPPED if fs.stencil_test => CS_AFFINE,
+        _ => cs,
+    };
+    if let Some(k) = super::simd::pick(fs.stencil_test, d, simd_cs, co) {
+        return k;
+    }
     if fs.stencil_test {
         // Stencil passes are rarer: general colour, specialized depth.
         return match (d, co) {
@@ -116,11 +127,6 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kerne
             (D_LEQUAL, _) => kernel::<true, D_LEQUAL, CS_GENERAL, CO_GENERAL>,
             _ => kernel::<true, D_ANY, CS_GENERAL, CO_GENERAL>,
         };
-    }
-    // The SIMD kernels (simd.rs) where the CPU has them, for the common
-    // opaque and blended cases; they compute the same values as `kernel`.
-    if let Some(k) = super::simd::pick(d, if co == CO_NONE { CS_FLAT } else { cs }, co) {
-        return k;
     }
     match d {
         D_OFF => pick_cs::<D_OFF>(cs, co),

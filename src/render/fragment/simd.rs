@@ -34,7 +34,7 @@
 
 use super::fast::Kernel;
 #[allow(unused_imports)]
-use super::fast::{CO_ADD, CO_NONE, CO_OVER, CO_STORE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_PERSPECTIVE, CS_STEPPED, D_LEQUAL, D_LESS, D_OFF};
+use super::fast::{CO_ADD, CO_NONE, CO_OVER, CO_STORE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_PERSPECTIVE, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
 use std::cell::Cell;
 use std::sync::atomic::{AtomicU8, Ordering};
 
@@ -93,9 +93,10 @@ pub fn force_level_on_this_thread(level: Option<Level>) {
     LEVEL_HERE.with(|c| c.set(level.map_or(0, |l| l as u8)));
 }
 
-/// The SIMD kernel for depth key `d`, colour source `cs` and colour write
-/// `co` (fast.rs's keys; no stencil, no alpha test), if there is one.
-pub(super) fn pick(d: u8, cs: u8, co: u8) -> Option<Kernel> {
+/// The SIMD kernel for the stencil test `s` (on / off), depth key `d`,
+/// colour source `cs` and colour write `co` (fast.rs's keys; no alpha
+/// test), if there is one.
+pub(super) fn pick(s: bool, d: u8, cs: u8, co: u8) -> Option<Kernel> {
     let mut l = level();
     match LEVEL_HERE.with(|c| c.get()) {
         1 => l = Level::Scalar,
@@ -105,20 +106,24 @@ pub(super) fn pick(d: u8, cs: u8, co: u8) -> Option<Kernel> {
     if l == Level::Scalar {
         return None;
     }
-    pick_at(l, d, cs, co)
+    if s {
+        pick_at::<true>(l, d, cs, co)
+    } else {
+        pick_at::<false>(l, d, cs, co)
+    }
 }
 
 #[cfg(not(target_arch = "x86_64"))]
-fn pick_at(_: Level, _: u8, _: u8, _: u8) -> Option<Kernel> {
+fn pick_at<const S: bool>(_: Level, _: u8, _: u8, _: u8) -> Option<Kernel> {
     None
 }
 
 #[cfg(target_arch = "x86_64")]
-fn pick_at(l: Level, d: u8, cs: u8, co: u8) -> Option<Kernel> {
+fn pick_at<const S: bool>(l: Level, d: u8, cs: u8, co: u8) -> Option<Kernel> {
     use x86::{avx2, sse2};
     macro_rules! by_level {
         ($d:ident, $cs:ident, $co:ident) => {
-            Some(if l == Level::Avx2 { avx2::<$d, $cs, $co> } else { sse2::<$d, $cs, $co> })
+            Some(if l == Level::Avx2 { avx2::<S, $d, $cs, $co> } else { sse2::<S, $d, $cs, $co> })
         };
     }
     macro_rules! by_co {
@@ -134,7 +139,7 @@ fn pick_at(l: Level, d: u8, cs: u8, co: u8) -> Option<Kernel> {
     macro_rules! by_cs {
         ($d:ident) => {
             match (cs, co) {
-                (_, CO_NONE) if $d != D_OFF => by_level!($d, CS_FLAT, CO_NONE),
+                (_, CO_NONE) if $d != D_OFF || S => by_level!($d, CS_FLAT, CO_NONE),
                 (CS_STEPPED, CO_STORE) => by_level!($d, CS_STEPPED, CO_STORE),
                 (CS_FLAT, _) => by_co!($d, CS_FLAT),
                 (CS_CONSTANT, _) => by_co!($d, CS_CONSTANT),
@@ -148,35 +153,78 @@ fn pick_at(l: Level, d: u8, cs: u8, co: u8) -> Option<Kernel> {
         D_OFF => by_cs!(D_OFF),
         D_LESS => by_cs!(D_LESS),
         D_LEQUAL => by_cs!(D_LEQUAL),
-        _ => None,
+        _ => by_cs!(D_ANY),
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 mod x86 {
-    use super::super::fast::{self, CO_ADD, CO_NONE, CO_OVER, CS_AFFINE, CS_CONSTANT, CS_PERSPECTIVE, CS_STEPPED, D_LESS, D_OFF};
-    use super::super::{color_to_u8, FragmentState, SpanPixels};
+    use super::super::fast::{self, CO_ADD, CO_NONE, CO_OVER, CS_AFFINE, CS_CONSTANT, CS_PERSPECTIVE, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
+    use super::super::{color_to_u8, CompareFunc, FragmentState, SpanPixels, StencilOp, StencilTest};
     use crate::framebuffer::DEPTH_MAX;
     use crate::render::setup::TriangleSetup;
     use std::arch::x86_64::*;
 
     /// The SSE2 kernel (x86_64's baseline: no detection needed).
-    pub(super) fn sse2<const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    pub(super) fn sse2<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
         // SAFETY: SSE2 is part of x86_64.
-        unsafe { span::<false, D, CS, CO>(fs, t, px, y, x0, x1) }
+        unsafe { span::<false, S, D, CS, CO>(fs, t, px, y, x0, x1) }
     }
 
     /// The AVX2 kernel: depth and colour planes evaluated four f64 lanes
     /// at a time. Only selected when the CPU has AVX2 (`super::detect`).
-    pub(super) fn avx2<const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    pub(super) fn avx2<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
         // SAFETY: `pick_at` hands this out only at Level::Avx2, which
         // `detect` returns only when the CPU reports AVX2.
-        unsafe { span_avx2::<D, CS, CO>(fs, t, px, y, x0, x1) }
+        unsafe { span_avx2::<S, D, CS, CO>(fs, t, px, y, x0, x1) }
     }
 
     #[target_feature(enable = "avx2")]
-    unsafe fn span_avx2<const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
-        span::<true, D, CS, CO>(fs, t, px, y, x0, x1)
+    unsafe fn span_avx2<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+        span::<true, S, D, CS, CO>(fs, t, px, y, x0, x1)
+    }
+
+    /// `func(a, b)` of four i32 lanes (callers flip the sign bit of u32s).
+    #[inline(always)]
+    unsafe fn compare(func: CompareFunc, a: __m128i, b: __m128i) -> __m128i {
+        let ones = _mm_set1_epi32(-1);
+        match func {
+            CompareFunc::Never => _mm_setzero_si128(),
+            CompareFunc::Less => _mm_cmplt_epi32(a, b),
+            CompareFunc::Equal => _mm_cmpeq_epi32(a, b),
+            CompareFunc::Lequal => _mm_xor_si128(_mm_cmpgt_epi32(a, b), ones),
+            CompareFunc::Greater => _mm_cmpgt_epi32(a, b),
+            CompareFunc::Notequal => _mm_xor_si128(_mm_cmpeq_epi32(a, b), ones),
+            CompareFunc::Gequal => _mm_xor_si128(_mm_cmplt_epi32(a, b), ones),
+            CompareFunc::Always => ones,
+        }
+    }
+
+    /// `StencilTest::apply(op, s)` on four i32 lanes holding stencil bytes.
+    #[inline(always)]
+    unsafe fn stencil_op(st: &StencilTest, op: StencilOp, s: __m128i) -> __m128i {
+        let max = _mm_set1_epi32(st.max as i32);
+        let one = _mm_set1_epi32(1);
+        let v = match op {
+            StencilOp::Keep => return s,
+            StencilOp::Zero => _mm_setzero_si128(),
+            StencilOp::Replace => _mm_set1_epi32(st.reference as i32),
+            // s >= max ? max : s + 1 (s <= 255: no wrap in i32).
+            StencilOp::Incr => {
+                let up = _mm_add_epi32(s, one);
+                select(_mm_cmplt_epi32(s, max), up, max)
+            }
+            // saturating_sub(1): s > 0 ? s - 1 : 0.
+            StencilOp::Decr => {
+                let down = _mm_sub_epi32(s, one);
+                _mm_and_si128(_mm_cmpgt_epi32(s, _mm_setzero_si128()), down)
+            }
+            StencilOp::Invert => _mm_andnot_si128(s, max),
+            StencilOp::IncrWrap => _mm_and_si128(_mm_add_epi32(s, one), max),
+            StencilOp::DecrWrap => _mm_and_si128(_mm_sub_epi32(s, one), max),
+        };
+        let wm = _mm_set1_epi32(st.write_mask as i32);
+        _mm_or_si128(_mm_andnot_si128(wm, s), _mm_and_si128(v, wm))
     }
 
     /// Depth of four pixels at cx, cx + 1, cx + 2, cx + 3 in 24-bit fixed
@@ -300,7 +348,7 @@ mod x86 {
     /// Pixels [x0, x1) of row y, four at a time; the scalar kernel when a
     /// stepped colour leaves i32.
     #[inline(always)]
-    unsafe fn span<const AVX: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    unsafe fn span<const AVX: bool, const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
         if x0 >= x1 {
             return;
         }
@@ -329,16 +377,19 @@ mod x86 {
             let last = (n - 1) as i64;
             let fits = |v: i64| v >= i32::MIN as i64 && v <= i32::MAX as i64;
             if !(0..4).all(|c| fits(fixed[c]) && fits(fixed[c] + dx[c] * last)) {
-                return fast::kernel::<false, D, CS, CO>(fs, t, px, y, x0, x1);
+                return fast::kernel::<S, D, CS, CO>(fs, t, px, y, x0, x1);
             }
             // Wrapping: lanes past the end may leave i32; they are unused.
             let lane = |k: i64| _mm_setr_epi32((fixed[0] + dx[0] * k) as i32, (fixed[1] + dx[1] * k) as i32, (fixed[2] + dx[2] * k) as i32, (fixed[3] + dx[3] * k) as i32);
             step = [lane(0), lane(1), lane(2), lane(3)];
             step4 = _mm_setr_epi32((dx[0] * 4) as i32, (dx[1] * 4) as i32, (dx[2] * 4) as i32, (dx[3] * 4) as i32);
         }
-        let SpanPixels { color, depth, passed: total, .. } = px;
+        let SpanPixels { color, depth, stencil, passed: total, .. } = px;
         let col: *mut u8 = if CO != CO_NONE { color[..n].as_mut_ptr().cast() } else { std::ptr::null_mut() };
         let dep: *mut u32 = if D != D_OFF { depth[..n].as_mut_ptr() } else { std::ptr::null_mut() };
+        let sten: *mut u8 = if S { stencil[..n].as_mut_ptr() } else { std::ptr::null_mut() };
+        let st = &fs.stencil;
+        let (sref, svmask) = (_mm_set1_epi32(st.masked_ref as i32), _mm_set1_epi32(st.value_mask as i32));
         let sign = _mm_set1_epi32(i32::MIN);
         let lanes = _mm_setr_epi32(0, 1, 2, 3);
         let mut passed = 0u64;
@@ -347,11 +398,18 @@ mod x86 {
         while i < n {
             let left = n - i;
             // The last partial group works on a stack copy of its pixels.
-            let (mut zbuf, mut cbuf) = ([0u32; 4], [0u32; 4]);
-            let (zp, cp): (*mut u32, *mut u8) = if left >= 4 {
-                (if D != D_OFF { dep.add(i) } else { zbuf.as_mut_ptr() }, if CO != CO_NONE { col.add(4 * i) } else { cbuf.as_mut_ptr().cast() })
+            let (mut zbuf, mut cbuf, mut sbuf) = ([0u32; 4], [0u32; 4], [0u8; 4]);
+            let (zp, cp, sp): (*mut u32, *mut u8, *mut u8) = if left >= 4 {
+                (
+                    if D != D_OFF { dep.add(i) } else { zbuf.as_mut_ptr() },
+                    if CO != CO_NONE { col.add(4 * i) } else { cbuf.as_mut_ptr().cast() },
+                    if S { sten.add(i) } else { sbuf.as_mut_ptr() },
+                )
             } else {
                 for k in 0..left {
+                    if S {
+                        sbuf[k] = *sten.add(i + k);
+                    }
                     if D != D_OFF {
                         zbuf[k] = *dep.add(i + k);
                     }
@@ -359,16 +417,41 @@ mod x86 {
                         cbuf[k] = u32::from_ne_bytes(*col.add(4 * (i + k)).cast::<[u8; 4]>());
                     }
                 }
-                (zbuf.as_mut_ptr(), cbuf.as_mut_ptr().cast())
+                (zbuf.as_mut_ptr(), cbuf.as_mut_ptr().cast(), sbuf.as_mut_ptr())
             };
             let mut m = if left >= 4 { _mm_set1_epi32(-1) } else { _mm_cmpgt_epi32(_mm_set1_epi32(left as i32), lanes) };
+            // Stencil (section 4.1.5): the four bytes as i32 lanes.
+            let (mut s_in, mut s_new) = (_mm_setzero_si128(), _mm_setzero_si128());
+            if S {
+                let z = _mm_setzero_si128();
+                s_in = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(sp.cast::<i32>().read_unaligned()), z), z);
+                let pass = _mm_and_si128(compare(st.func, sref, _mm_and_si128(s_in, svmask)), m);
+                let fail = _mm_andnot_si128(pass, m);
+                s_new = select(fail, stencil_op(st, st.fail, s_in), s_in);
+                m = pass;
+            }
             if D != D_OFF {
                 let z = depth4::<AVX>(zr, zdx, cx);
                 let stored = _mm_loadu_si128(zp.cast());
                 let (zs, ss) = (_mm_xor_si128(z, sign), _mm_xor_si128(stored, sign));
-                let pass = if D == D_LESS { _mm_cmplt_epi32(zs, ss) } else { _mm_xor_si128(_mm_cmpgt_epi32(zs, ss), _mm_set1_epi32(-1)) };
+                let pass = match D {
+                    D_LESS => _mm_cmplt_epi32(zs, ss),
+                    D_LEQUAL => _mm_xor_si128(_mm_cmpgt_epi32(zs, ss), _mm_set1_epi32(-1)),
+                    _ => compare(fs.depth_func, zs, ss),
+                };
+                if S {
+                    let zfail = _mm_andnot_si128(pass, m);
+                    s_new = select(zfail, stencil_op(st, st.zfail, s_in), s_new);
+                }
                 m = _mm_and_si128(m, pass);
-                _mm_storeu_si128(zp.cast(), select(m, z, stored));
+                if D != D_ANY || fs.depth_write {
+                    _mm_storeu_si128(zp.cast(), select(m, z, stored));
+                }
+            }
+            if S {
+                s_new = select(m, stencil_op(st, st.zpass, s_in), s_new);
+                let bytes = _mm_packus_epi16(_mm_packs_epi32(s_new, s_new), s_new);
+                sp.cast::<i32>().write_unaligned(_mm_cvtsi128_si32(bytes));
             }
             let bits = _mm_movemask_ps(_mm_castsi128_ps(m));
             passed += bits.count_ones() as u64;
@@ -400,6 +483,9 @@ mod x86 {
             }
             if left < 4 {
                 for k in 0..left {
+                    if S {
+                        *sten.add(i + k) = sbuf[k];
+                    }
                     if D != D_OFF {
                         *dep.add(i + k) = zbuf[k];
                     }
