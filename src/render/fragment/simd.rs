@@ -258,6 +258,31 @@ mod x86 {
         _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(z, _mm256_set1_pd(DEPTH_MAX as f64)), _mm256_set1_pd(0.5)))
     }
 
+    /// `1 / (qr + qdx * c)` for c = cx .. cx + 3: four correctly rounded
+    /// divisions, as the scalar kernel's per pixel.
+    #[inline(always)]
+    unsafe fn recip4<const AVX: bool>(qr: f64, qdx: f64, cx: f64) -> [f64; 4] {
+        let mut w = [0.0f64; 4];
+        if AVX {
+            recip4_avx(qr, qdx, cx, &mut w);
+        } else {
+            let (qr, qdx, one) = (_mm_set1_pd(qr), _mm_set1_pd(qdx), _mm_set1_pd(1.0));
+            let lo = _mm_div_pd(one, _mm_add_pd(qr, _mm_mul_pd(qdx, _mm_set_pd(cx + 1.0, cx))));
+            let hi = _mm_div_pd(one, _mm_add_pd(qr, _mm_mul_pd(qdx, _mm_set_pd(cx + 3.0, cx + 2.0))));
+            _mm_storeu_pd(w.as_mut_ptr(), lo);
+            _mm_storeu_pd(w.as_mut_ptr().add(2), hi);
+        }
+        w
+    }
+
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    unsafe fn recip4_avx(qr: f64, qdx: f64, cx: f64, w: &mut [f64; 4]) {
+        let c = _mm256_add_pd(_mm256_set1_pd(cx), _mm256_setr_pd(0.0, 1.0, 2.0, 3.0));
+        let q = _mm256_add_pd(_mm256_set1_pd(qr), _mm256_mul_pd(_mm256_set1_pd(qdx), c));
+        _mm256_storeu_pd(w.as_mut_ptr(), _mm256_div_pd(_mm256_set1_pd(1.0), q));
+    }
+
     /// `color_to_u8` of four f32 channels, as i32 lanes in [0, 255].
     #[inline(always)]
     unsafe fn to_u8_lanes(c: __m128) -> __m128i {
@@ -395,10 +420,10 @@ mod x86 {
         let mut passed = 0u64;
         let mut cx = cx0;
         let mut i = 0;
+        // The last partial group works on a stack copy of its pixels.
+        let (mut zbuf, mut cbuf, mut sbuf) = ([0u32; 4], [0u32; 4], [0u8; 4]);
         while i < n {
             let left = n - i;
-            // The last partial group works on a stack copy of its pixels.
-            let (mut zbuf, mut cbuf, mut sbuf) = ([0u32; 4], [0u32; 4], [0u8; 4]);
             let (zp, cp, sp): (*mut u32, *mut u8, *mut u8) = if left >= 4 {
                 (
                     if D != D_OFF { dep.add(i) } else { zbuf.as_mut_ptr() },
@@ -468,8 +493,9 @@ mod x86 {
                         plane_color::<AVX, false>(&cr, &cdx, cx + 3.0, 1.0),
                     ),
                     CS_PERSPECTIVE => {
-                        let p = |c: f64| plane_color::<AVX, true>(&cr, &cdx, c, 1.0 / (qr + qdx * c));
-                        pack4(p(cx), p(cx + 1.0), p(cx + 2.0), p(cx + 3.0))
+                        let w = recip4::<AVX>(qr, qdx, cx);
+                        let p = |k: usize| plane_color::<AVX, true>(&cr, &cdx, cx + k as f64, w[k]);
+                        pack4(p(0), p(1), p(2), p(3))
                     }
                     _ => flat,
                 };
