@@ -36,7 +36,7 @@ use super::fast::Kernel;
 #[allow(unused_imports)]
 use super::fast::{CO_ADD, CO_NONE, CO_OVER, CO_STORE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_PERSPECTIVE, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
 use std::cell::Cell;
-use std::sync::atomic::{AtomicU8, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU8, Ordering};
 
 /// Instruction sets the kernels use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -47,6 +47,10 @@ pub enum Level {
 }
 
 static LEVEL: AtomicU8 = AtomicU8::new(0);
+/// Set once any thread has called `force_level_on_this_thread`: until
+/// then `pick` skips the thread-local (a `__tls_get_addr` call in the
+/// shared library, about 60 instructions per triangle).
+static LEVEL_FORCED: AtomicBool = AtomicBool::new(false);
 
 thread_local! {
     /// Tests: the level for triangles selected on this thread (0: `level()`).
@@ -90,6 +94,7 @@ fn detect() -> Level {
 /// detected one), or `level()` again with `None`: for differential tests.
 #[doc(hidden)]
 pub fn force_level_on_this_thread(level: Option<Level>) {
+    LEVEL_FORCED.store(true, Ordering::Relaxed);
     LEVEL_HERE.with(|c| c.set(level.map_or(0, |l| l as u8)));
 }
 
@@ -98,7 +103,7 @@ pub fn force_level_on_this_thread(level: Option<Level>) {
 /// test), if there is one.
 pub(super) fn pick(s: bool, d: u8, cs: u8, co: u8) -> Option<Kernel> {
     let mut l = level();
-    match LEVEL_HERE.with(|c| c.get()) {
+    match if LEVEL_FORCED.load(Ordering::Relaxed) { LEVEL_HERE.with(|c| c.get()) } else { 0 } {
         1 => l = Level::Scalar,
         2 if l != Level::Scalar => l = Level::Sse2,
         _ => {}
@@ -374,8 +379,10 @@ mod x86 {
     /// stepped colour leaves i32.
     #[inline(always)]
     unsafe fn span<const AVX: bool, const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
-        if x0 >= x1 {
-            return;
+        if x1 < x0 + 4 {
+            // Fewer than four pixels: the set-up and the stack copy of a
+            // partial group cost more than the scalar loop (small triangles).
+            return fast::kernel::<S, D, CS, CO>(fs, t, px, y, x0, x1);
         }
         let n = x1 - x0;
         let cy = y as f64 + 0.5 - t.y0;
