@@ -375,6 +375,99 @@ mod x86 {
         _mm_or_si128(_mm_and_si128(m, a), _mm_andnot_si128(m, b))
     }
 
+    /// A span's constants, for [`group`].
+    struct Ctx<'a> {
+        fs: &'a FragmentState,
+        st: &'a StencilTest,
+        zr: f64,
+        zdx: f64,
+        cr: [f64; 4],
+        cdx: [f64; 4],
+        qr: f64,
+        qdx: f64,
+        flat: __m128i,
+        sref: __m128i,
+        svmask: __m128i,
+        sign: __m128i,
+    }
+
+    /// Four pixels at cx .. cx + 3 whose depth, colour and stencil are at
+    /// zp, cp, sp, the lanes in `m` only; returns how many passed.
+    #[inline(always)]
+    unsafe fn group<const AVX: bool, const S: bool, const D: u8, const CS: u8, const CO: u8>(
+        c: &Ctx,
+        zp: *mut u32,
+        cp: *mut u8,
+        sp: *mut u8,
+        mut m: __m128i,
+        cx: f64,
+        step: &[__m128i; 4],
+    ) -> u32 {
+        // Stencil (section 4.1.5): the four bytes as i32 lanes.
+        let (mut s_in, mut s_new) = (_mm_setzero_si128(), _mm_setzero_si128());
+        if S {
+            let z = _mm_setzero_si128();
+            s_in = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(sp.cast::<i32>().read_unaligned()), z), z);
+            let pass = _mm_and_si128(compare(c.st.func, c.sref, _mm_and_si128(s_in, c.svmask)), m);
+            let fail = _mm_andnot_si128(pass, m);
+            s_new = select(fail, stencil_op(c.st, c.st.fail, s_in), s_in);
+            m = pass;
+        }
+        if D != D_OFF {
+            let z = depth4::<AVX>(c.zr, c.zdx, cx);
+            let stored = _mm_loadu_si128(zp.cast());
+            let (zs, ss) = (_mm_xor_si128(z, c.sign), _mm_xor_si128(stored, c.sign));
+            let pass = match D {
+                D_LESS => _mm_cmplt_epi32(zs, ss),
+                D_LEQUAL => _mm_xor_si128(_mm_cmpgt_epi32(zs, ss), _mm_set1_epi32(-1)),
+                _ => compare(c.fs.depth_func, zs, ss),
+            };
+            if S {
+                let zfail = _mm_andnot_si128(pass, m);
+                s_new = select(zfail, stencil_op(c.st, c.st.zfail, s_in), s_new);
+            }
+            m = _mm_and_si128(m, pass);
+            if D != D_ANY || c.fs.depth_write {
+                _mm_storeu_si128(zp.cast(), select(m, z, stored));
+            }
+        }
+        if S {
+            s_new = select(m, stencil_op(c.st, c.st.zpass, s_in), s_new);
+            let bytes = _mm_packus_epi16(_mm_packs_epi32(s_new, s_new), s_new);
+            sp.cast::<i32>().write_unaligned(_mm_cvtsi128_si32(bytes));
+        }
+        let bits = _mm_movemask_ps(_mm_castsi128_ps(m));
+        let count = bits.count_ones();
+        if CO != CO_NONE && bits != 0 {
+            let src = match CS {
+                CS_STEPPED => {
+                    let s = pack4(_mm_srai_epi32::<16>(step[0]), _mm_srai_epi32::<16>(step[1]), _mm_srai_epi32::<16>(step[2]), _mm_srai_epi32::<16>(step[3]));
+                    s
+                }
+                CS_AFFINE => pack4(
+                    plane_color::<AVX, false>(&c.cr, &c.cdx, cx, 1.0),
+                    plane_color::<AVX, false>(&c.cr, &c.cdx, cx + 1.0, 1.0),
+                    plane_color::<AVX, false>(&c.cr, &c.cdx, cx + 2.0, 1.0),
+                    plane_color::<AVX, false>(&c.cr, &c.cdx, cx + 3.0, 1.0),
+                ),
+                CS_PERSPECTIVE => {
+                    let w = recip4::<AVX>(c.qr, c.qdx, cx);
+                    let p = |k: usize| plane_color::<AVX, true>(&c.cr, &c.cdx, cx + k as f64, w[k]);
+                    pack4(p(0), p(1), p(2), p(3))
+                }
+                _ => c.flat,
+            };
+            let dst = _mm_loadu_si128(cp.cast());
+            let new = match CO {
+                CO_OVER => over(src, dst),
+                CO_ADD => add(src, dst),
+                _ => src,
+            };
+            _mm_storeu_si128(cp.cast(), select(m, new, dst));
+        }
+        count
+    }
+
     /// Pixels [x0, x1) of row y, four at a time; the scalar kernel when a
     /// stepped colour leaves i32.
     #[inline(always)]
@@ -426,107 +519,17 @@ mod x86 {
         let lanes = _mm_setr_epi32(0, 1, 2, 3);
         let mut passed = 0u64;
         let mut cx = cx0;
-        let mut i = 0;
-        // The last partial group works on a stack copy of its pixels.
+        let ctx = Ctx { fs, st, zr, zdx, cr, cdx, qr, qdx, flat, sref, svmask, sign };
+        // Pointers for the buffers a kernel does not touch (never read).
         let (mut zbuf, mut cbuf, mut sbuf) = ([0u32; 4], [0u32; 4], [0u8; 4]);
-        while i < n {
-            let left = n - i;
-            let (zp, cp, sp): (*mut u32, *mut u8, *mut u8) = if left >= 4 {
-                (
-                    if D != D_OFF { dep.add(i) } else { zbuf.as_mut_ptr() },
-                    if CO != CO_NONE { col.add(4 * i) } else { cbuf.as_mut_ptr().cast() },
-                    if S { sten.add(i) } else { sbuf.as_mut_ptr() },
-                )
-            } else {
-                for k in 0..left {
-                    if S {
-                        sbuf[k] = *sten.add(i + k);
-                    }
-                    if D != D_OFF {
-                        zbuf[k] = *dep.add(i + k);
-                    }
-                    if CO != CO_NONE {
-                        cbuf[k] = u32::from_ne_bytes(*col.add(4 * (i + k)).cast::<[u8; 4]>());
-                    }
-                }
-                (zbuf.as_mut_ptr(), cbuf.as_mut_ptr().cast(), sbuf.as_mut_ptr())
-            };
-            let mut m = if left >= 4 { _mm_set1_epi32(-1) } else { _mm_cmpgt_epi32(_mm_set1_epi32(left as i32), lanes) };
-            // Stencil (section 4.1.5): the four bytes as i32 lanes.
-            let (mut s_in, mut s_new) = (_mm_setzero_si128(), _mm_setzero_si128());
-            if S {
-                let z = _mm_setzero_si128();
-                s_in = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(sp.cast::<i32>().read_unaligned()), z), z);
-                let pass = _mm_and_si128(compare(st.func, sref, _mm_and_si128(s_in, svmask)), m);
-                let fail = _mm_andnot_si128(pass, m);
-                s_new = select(fail, stencil_op(st, st.fail, s_in), s_in);
-                m = pass;
-            }
-            if D != D_OFF {
-                let z = depth4::<AVX>(zr, zdx, cx);
-                let stored = _mm_loadu_si128(zp.cast());
-                let (zs, ss) = (_mm_xor_si128(z, sign), _mm_xor_si128(stored, sign));
-                let pass = match D {
-                    D_LESS => _mm_cmplt_epi32(zs, ss),
-                    D_LEQUAL => _mm_xor_si128(_mm_cmpgt_epi32(zs, ss), _mm_set1_epi32(-1)),
-                    _ => compare(fs.depth_func, zs, ss),
-                };
-                if S {
-                    let zfail = _mm_andnot_si128(pass, m);
-                    s_new = select(zfail, stencil_op(st, st.zfail, s_in), s_new);
-                }
-                m = _mm_and_si128(m, pass);
-                if D != D_ANY || fs.depth_write {
-                    _mm_storeu_si128(zp.cast(), select(m, z, stored));
-                }
-            }
-            if S {
-                s_new = select(m, stencil_op(st, st.zpass, s_in), s_new);
-                let bytes = _mm_packus_epi16(_mm_packs_epi32(s_new, s_new), s_new);
-                sp.cast::<i32>().write_unaligned(_mm_cvtsi128_si32(bytes));
-            }
-            let bits = _mm_movemask_ps(_mm_castsi128_ps(m));
-            passed += bits.count_ones() as u64;
-            if CO != CO_NONE && bits != 0 {
-                let src = match CS {
-                    CS_STEPPED => {
-                        let s = pack4(_mm_srai_epi32::<16>(step[0]), _mm_srai_epi32::<16>(step[1]), _mm_srai_epi32::<16>(step[2]), _mm_srai_epi32::<16>(step[3]));
-                        s
-                    }
-                    CS_AFFINE => pack4(
-                        plane_color::<AVX, false>(&cr, &cdx, cx, 1.0),
-                        plane_color::<AVX, false>(&cr, &cdx, cx + 1.0, 1.0),
-                        plane_color::<AVX, false>(&cr, &cdx, cx + 2.0, 1.0),
-                        plane_color::<AVX, false>(&cr, &cdx, cx + 3.0, 1.0),
-                    ),
-                    CS_PERSPECTIVE => {
-                        let w = recip4::<AVX>(qr, qdx, cx);
-                        let p = |k: usize| plane_color::<AVX, true>(&cr, &cdx, cx + k as f64, w[k]);
-                        pack4(p(0), p(1), p(2), p(3))
-                    }
-                    _ => flat,
-                };
-                let dst = _mm_loadu_si128(cp.cast());
-                let new = match CO {
-                    CO_OVER => over(src, dst),
-                    CO_ADD => add(src, dst),
-                    _ => src,
-                };
-                _mm_storeu_si128(cp.cast(), select(m, new, dst));
-            }
-            if left < 4 {
-                for k in 0..left {
-                    if S {
-                        *sten.add(i + k) = sbuf[k];
-                    }
-                    if D != D_OFF {
-                        *dep.add(i + k) = zbuf[k];
-                    }
-                    if CO != CO_NONE {
-                        *col.add(4 * (i + k)).cast::<[u8; 4]>() = cbuf[k].to_ne_bytes();
-                    }
-                }
-            }
+        let pick = |i: usize, zb: *mut u32, cb: *mut u8, sb: *mut u8| -> (*mut u32, *mut u8, *mut u8) {
+            (if D != D_OFF { dep.add(i) } else { zb }, if CO != CO_NONE { col.add(4 * i) } else { cb }, if S { sten.add(i) } else { sb })
+        };
+        let full = n & !3;
+        let mut i = 0;
+        while i < full {
+            let (zp, cp, sp) = pick(i, zbuf.as_mut_ptr(), cbuf.as_mut_ptr().cast(), sbuf.as_mut_ptr());
+            passed += group::<AVX, S, D, CS, CO>(&ctx, zp, cp, sp, _mm_set1_epi32(-1), cx, &step) as u64;
             if CS == CS_STEPPED {
                 for s in step.iter_mut() {
                     *s = _mm_add_epi32(*s, step4);
@@ -534,6 +537,34 @@ mod x86 {
             }
             cx += 4.0;
             i += 4;
+        }
+        let left = n - i;
+        if left > 0 {
+            // The last partial group works on a stack copy of its pixels.
+            for k in 0..left {
+                if S {
+                    sbuf[k] = *sten.add(i + k);
+                }
+                if D != D_OFF {
+                    zbuf[k] = *dep.add(i + k);
+                }
+                if CO != CO_NONE {
+                    cbuf[k] = u32::from_ne_bytes(*col.add(4 * (i + k)).cast::<[u8; 4]>());
+                }
+            }
+            let m = _mm_cmpgt_epi32(_mm_set1_epi32(left as i32), lanes);
+            passed += group::<AVX, S, D, CS, CO>(&ctx, zbuf.as_mut_ptr(), cbuf.as_mut_ptr().cast(), sbuf.as_mut_ptr(), m, cx, &step) as u64;
+            for k in 0..left {
+                if S {
+                    *sten.add(i + k) = sbuf[k];
+                }
+                if D != D_OFF {
+                    *dep.add(i + k) = zbuf[k];
+                }
+                if CO != CO_NONE {
+                    *col.add(4 * (i + k)).cast::<[u8; 4]>() = cbuf[k].to_ne_bytes();
+                }
+            }
         }
         let _ = fs;
         *total += passed;
