@@ -17,6 +17,12 @@
 //! 2^-20 of it (blend.rs), so both round to the same integer
 //! `(x + 127) / 255`.
 //!
+//! SIMD: where the CPU has SSE2 or AVX2, [`select`] hands out the
+//! kernels of [`super::simd`] instead for the common keys (depth off /
+//! LESS / LEQUAL / any, stencil, flat / constant / affine / perspective /
+//! stepped colour, store / OVER / ADD / none); they compute these kernels'
+//! values four pixels at a time, and call them for spans under four pixels.
+//!
 //! Early rejection: without the alpha test the stencil and depth tests run
 //! before any colour work, so a rejected fragment never interpolates or
 //! samples. With the alpha test (which needs the colour first) the

@@ -440,10 +440,7 @@ mod x86 {
         let count = bits.count_ones();
         if CO != CO_NONE && bits != 0 {
             let src = match CS {
-                CS_STEPPED => {
-                    let s = pack4(_mm_srai_epi32::<16>(step[0]), _mm_srai_epi32::<16>(step[1]), _mm_srai_epi32::<16>(step[2]), _mm_srai_epi32::<16>(step[3]));
-                    s
-                }
+                CS_STEPPED => pack4(_mm_srai_epi32::<16>(step[0]), _mm_srai_epi32::<16>(step[1]), _mm_srai_epi32::<16>(step[2]), _mm_srai_epi32::<16>(step[3])),
                 CS_AFFINE => pack4(
                     plane_color::<AVX, false>(&c.cr, &c.cdx, cx, 1.0),
                     plane_color::<AVX, false>(&c.cr, &c.cdx, cx + 1.0, 1.0),
@@ -566,7 +563,6 @@ mod x86 {
                 }
             }
         }
-        let _ = fs;
         *total += passed;
     }
 
