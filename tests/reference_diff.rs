@@ -568,3 +568,188 @@ fn textured_kernels_match_reference() {
         panic!("tiled: {e}");
     }
 }
+
+/// The commands of a case for the SIMD span kernels
+/// (`render::fragment::simd`): no alpha test, any stencil test, depth off or
+/// LESS / LEQUAL with writes (sometimes other functions or no writes, which
+/// stay scalar), blending off / OVER / ADD (sometimes another), flat,
+/// constant, smooth and perspective colour under every hint, colours
+/// outside [0, 1], spans of every length (tails of 1 to 3 pixels) and huge
+/// triangles whose stepped colours leave i32.
+fn simd_case(r: &mut Rng, (W, H): (usize, usize)) -> Vec<Command> {
+    let mut v = Vec::new();
+    let en = |v: &mut Vec<Command>, cap: u32, on: bool| v.push(if on { Command::Enable(cap) } else { Command::Disable(cap) });
+    v.push(Command::ShadeModel(if r.chance(25) { GL_FLAT } else { GL_SMOOTH }));
+    v.push(Command::Hint(GL_PERSPECTIVE_CORRECTION_HINT, r.pick(&[GL_NICEST, GL_FASTEST, GL_DONT_CARE])));
+    en(&mut v, GL_DEPTH_TEST, r.chance(75));
+    v.push(Command::DepthFunc(if r.chance(85) { r.pick(&[GL_LESS, GL_LEQUAL]) } else { r.pick(&FUNCS) }));
+    v.push(Command::DepthMask(r.chance(90)));
+    if r.chance(20) {
+        v.push(Command::DepthRange(r.unit() as f64, r.unit() as f64));
+    }
+    // Stencil: any function, operations and masks (shadow volumes: depth
+    // test without writes, colour masked off, INCR_WRAP / DECR_WRAP).
+    en(&mut v, GL_STENCIL_TEST, r.chance(40));
+    v.push(Command::StencilFunc(r.pick(&FUNCS), r.below(300) as i32 - 20, if r.chance(50) { 0xFF } else { r.below(256) as u32 }));
+    // Test-only stencil passes (all KEEP) often: the kernels skip the writes.
+    v.push(if r.chance(25) { Command::StencilOp(GL_KEEP, GL_KEEP, GL_KEEP) } else { Command::StencilOp(r.pick(&STENCIL_OPS), r.pick(&STENCIL_OPS), r.pick(&STENCIL_OPS)) });
+    v.push(Command::StencilMask(if r.chance(60) { 0xFF } else { r.below(256) as u32 }));
+    if r.chance(15) {
+        v.push(Command::ColorMask([false; 4]));
+    }
+    en(&mut v, GL_ALPHA_TEST, false);
+    en(&mut v, GL_FOG, false);
+    en(&mut v, t::GL_TEXTURE_2D, false);
+    en(&mut v, GL_COLOR_LOGIC_OP, false);
+    en(&mut v, GL_BLEND, r.chance(60));
+    v.push(Command::BlendFunc(match r.below(5) {
+        0 | 1 => [GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA],
+        2 | 3 => [GL_SRC_ALPHA, GL_ONE, GL_SRC_ALPHA, GL_ONE],
+        _ => [GL_ONE, GL_ONE, GL_ONE, GL_ONE],
+    }));
+    v.push(Command::BlendEquation(0x8006));
+    if r.chance(85) {
+        v.push(Command::ColorMask(if r.chance(90) { [true; 4] } else { [r.chance(50), r.chance(50), r.chance(50), r.chance(50)] }));
+    }
+    en(&mut v, GL_SCISSOR_TEST, r.chance(15));
+    v.push(Command::Scissor(r.below(W as u64) as i32 - 5, r.below(H as u64) as i32 - 5, r.below(W as u64) as i32, r.below(H as u64) as i32));
+    v.push(Command::MatrixMode(GL_PROJECTION));
+    v.push(Command::LoadIdentity);
+    let perspective = r.chance(40);
+    if perspective {
+        v.push(Command::Frustum([-1.0, 1.0, -1.0, 1.0, 1.0, 10.0]));
+    }
+    v.push(Command::MatrixMode(GL_MODELVIEW));
+    v.push(Command::LoadIdentity);
+    let constant = r.chance(20);
+    let fixed_color = [r.unit(), r.unit(), r.unit(), r.unit()];
+    let n = 1 + r.below(4);
+    let first = v.len();
+    v.push(Command::Begin(GL_TRIANGLES));
+    for _ in 0..n {
+        let scale = match r.below(12) {
+            0 => 1000.0,
+            1 => 3.0,
+            2 => 0.05,
+            3 => 0.2,
+            _ => 1.2,
+        };
+        for _ in 0..3 {
+            let c = if constant {
+                fixed_color
+            } else if r.chance(10) {
+                // Out of [0, 1]: the clamps and saturations.
+                [r.range(-2.0, 3.0), r.range(-2.0, 3.0), r.range(-2.0, 3.0), r.range(-2.0, 3.0)]
+            } else {
+                [r.unit(), r.unit(), r.unit(), r.unit()]
+            };
+            v.push(Command::Color(c));
+            let (x, y) = (r.range(-scale, scale), r.range(-scale, scale));
+            if perspective {
+                let z = r.range(-9.0, -1.2);
+                v.push(Command::Vertex([x * -z, y * -z, z, 1.0]));
+            } else {
+                v.push(Command::Vertex([x, y, r.range(-1.2, 1.2), 1.0]));
+            }
+        }
+    }
+    v.push(Command::End);
+    if r.chance(35) {
+        // The same triangles again: equal depths (LESS and LEQUAL differ).
+        let again = v[first..].to_vec();
+        v.push(Command::DepthFunc(r.pick(&[GL_LEQUAL, GL_LESS])));
+        v.push(Command::ShadeModel(r.pick(&[GL_FLAT, GL_SMOOTH])));
+        v.extend(again);
+    }
+    v
+}
+
+/// The SIMD span kernels against the scalar kernels (bit for bit under
+/// every hint: the stepped colour included) and against the reference
+/// path (exact under GL_NICEST, within the stepped colour's 1/255
+/// otherwise). Returns how many pixels the cases changed.
+fn compare_simd(seed: u64, cases: usize, size: (usize, usize)) -> Result<usize, String> {
+    use softgl::render::fragment::simd;
+    let (W, H) = size;
+    let mut r = Rng(seed);
+    use simd::Level;
+    // The best SIMD level, SSE2, scalar, and the reference path.
+    let levels = [None, Some(Level::Sse2), Some(Level::Scalar), None];
+    let mut ctx = [context(false, size, 1), context(false, size, 1), context(false, size, 1), context(true, size, 1)];
+    let mut drawn = 0;
+    for n in 0..cases {
+        let color: Vec<[u8; 4]> = (0..W * H).map(|_| (r.next() as u32).to_ne_bytes()).collect();
+        let depth: Vec<u32> = (0..W * H).map(|_| if r.chance(40) { 0xFF_FFFF } else { r.next() as u32 & 0xFF_FFFF }).collect();
+        let stencil: Vec<u8> = (0..W * H).map(|_| if r.chance(50) { r.below(4) as u8 } else { r.next() as u8 }).collect();
+        let cmds = simd_case(&mut r, size);
+        for (k, c) in ctx.iter_mut().enumerate() {
+            // Selection runs on this thread (one thread, nothing deferred).
+            simd::force_level_on_this_thread(levels[k]);
+            c.fb.color.copy_from_slice(&color);
+            c.fb.depth.copy_from_slice(&depth);
+            c.fb.stencil.copy_from_slice(&stencil);
+            for cmd in &cmds {
+                c.execute(cmd);
+            }
+            c.sync_render();
+        }
+        simd::force_level_on_this_thread(None);
+        let [best_fb, sse2_fb, scalar_fb, reference_fb] = [&ctx[0].fb, &ctx[1].fb, &ctx[2].fb, &ctx[3].fb];
+        for (name, fb) in [("sse2", sse2_fb), ("best", best_fb)] {
+            for i in 0..W * H {
+                if fb.color[i] != scalar_fb.color[i] || fb.depth[i] != scalar_fb.depth[i] || fb.stencil[i] != scalar_fb.stencil[i] {
+                    return Err(format!(
+                        "simd case {n} pixel ({}, {}): {name} {:?} z {:#x} s {} / scalar {:?} z {:#x} s {}\nstate: {:?}\ncommands: {cmds:?}",
+                        i % W,
+                        i / W,
+                        fb.color[i],
+                        fb.depth[i],
+                        fb.stencil[i],
+                        scalar_fb.color[i],
+                        scalar_fb.depth[i],
+                        scalar_fb.stencil[i],
+                        ctx[0].derived.render.fragment
+                    ));
+                }
+            }
+            if fb.samples_passed != scalar_fb.samples_passed {
+                return Err(format!("simd case {n}: {name} samples passed {} / scalar {}", fb.samples_passed, scalar_fb.samples_passed));
+            }
+        }
+        let simd_fb = best_fb;
+        drawn += (0..W * H).filter(|&i| reference_fb.color[i] != color[i]).count();
+        let nicest = cmds.contains(&Command::Hint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST));
+        for i in 0..W * H {
+            let (a, b, e) = (simd_fb.color[i], scalar_fb.color[i], reference_fb.color[i]);
+            let off = (0..4).map(|ch| a[ch].abs_diff(e[ch])).max().unwrap();
+            if a != b || simd_fb.depth[i] != scalar_fb.depth[i] || simd_fb.depth[i] != reference_fb.depth[i] || simd_fb.stencil[i] != reference_fb.stencil[i] || off > if nicest { 0 } else { 1 } {
+                return Err(format!(
+                    "simd case {n} pixel ({}, {}): simd {a:?} z {:#x} / scalar {b:?} z {:#x} / reference {e:?} z {:#x}\nstate: {:?}\ncommands: {cmds:?}",
+                    i % W,
+                    i / W,
+                    simd_fb.depth[i],
+                    scalar_fb.depth[i],
+                    reference_fb.depth[i],
+                    ctx[0].derived.render.fragment
+                ));
+            }
+        }
+        if simd_fb.samples_passed != reference_fb.samples_passed || simd_fb.samples_passed != scalar_fb.samples_passed {
+            return Err(format!("simd case {n}: samples passed {} / {} / {}", simd_fb.samples_passed, scalar_fb.samples_passed, reference_fb.samples_passed));
+        }
+    }
+    Ok(drawn)
+}
+
+#[test]
+fn simd_kernels_match_scalar_and_reference() {
+    eprintln!("SIMD level: {:?}", softgl::render::fragment::simd::level());
+    let mut drawn = 0;
+    for (seed, size) in [(41, (61, 47)), (42, (64, 33)), (43, (7, 5)), (44, (130, 9))] {
+        match compare_simd(seed, 500, size) {
+            Ok(d) => drawn += d,
+            Err(e) => panic!("{e}"),
+        }
+    }
+    assert!(drawn > 2000 * 100, "only {drawn} pixels drawn");
+}

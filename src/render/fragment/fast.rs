@@ -17,6 +17,12 @@
 //! 2^-20 of it (blend.rs), so both round to the same integer
 //! `(x + 127) / 255`.
 //!
+//! SIMD: where the CPU has SSE2 or AVX2, [`select`] hands out the
+//! kernels of [`super::simd`] instead for the common keys (depth off /
+//! LESS / LEQUAL / any, stencil, flat / constant / affine / perspective /
+//! stepped colour, store / OVER / ADD / none); they compute these kernels'
+//! values four pixels at a time, and call them for spans under four pixels.
+//!
 //! Early rejection: without the alpha test the stencil and depth tests run
 //! before any colour work, so a rejected fragment never interpolates or
 //! samples. With the alpha test (which needs the colour first) the
@@ -49,20 +55,20 @@ pub(super) fn depth_key(fs: &FragmentState) -> u8 {
     }
 }
 /// Colour sources.
-const CS_FLAT: u8 = 0;
-const CS_AFFINE: u8 = 1;
-const CS_PERSPECTIVE: u8 = 2;
-const CS_GENERAL: u8 = 3;
+pub(super) const CS_FLAT: u8 = 0;
+pub(super) const CS_AFFINE: u8 = 1;
+pub(super) const CS_PERSPECTIVE: u8 = 2;
+pub(super) const CS_GENERAL: u8 = 3;
 /// Affine colour whose planes are constant: evaluated once per span.
-const CS_CONSTANT: u8 = 4;
+pub(super) const CS_CONSTANT: u8 = 4;
 /// Affine colour stepped in 16.16 fixed point (hint not GL_NICEST).
-const CS_STEPPED: u8 = 5;
+pub(super) const CS_STEPPED: u8 = 5;
 /// Colour writes.
-const CO_NONE: u8 = 0;
-const CO_STORE: u8 = 1;
-const CO_OVER: u8 = 2;
-const CO_ADD: u8 = 3;
-const CO_GENERAL: u8 = 4;
+pub(super) const CO_NONE: u8 = 0;
+pub(super) const CO_STORE: u8 = 1;
+pub(super) const CO_OVER: u8 = 2;
+pub(super) const CO_ADD: u8 = 3;
+pub(super) const CO_GENERAL: u8 = 4;
 
 fn blend_is(b: &Blend, src: BlendFactor, dst: BlendFactor) -> bool {
     b.equation == BlendEquation::Add && b.src_rgb == src && b.src_alpha == src && b.dst_rgb == dst && b.dst_alpha == dst
@@ -104,6 +110,17 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kerne
     } else {
         CS_AFFINE
     };
+    // The SIMD kernels (simd.rs) where the CPU has them, for the common
+    // opaque, blended and stencil cases; they compute what `kernel` does.
+    // Under the stencil test colours stay exact (no stepping), as before.
+    let simd_cs = match cs {
+        _ if co == CO_NONE => CS_FLAT,
+        CS_STEPPED if fs.stencil_test => CS_AFFINE,
+        _ => cs,
+    };
+    if let Some(k) = super::simd::pick(fs.stencil_test, d, simd_cs, co) {
+        return k;
+    }
     if fs.stencil_test {
         // Stencil passes are rarer: general colour, specialized depth.
         return match (d, co) {
@@ -170,7 +187,24 @@ fn add(s: [u8; 4], d: [u8; 4]) -> [u8; 4] {
     std::array::from_fn(|ch| div255(s[ch] as u32 * a + d[ch] as u32 * 255).min(255) as u8)
 }
 
-fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+/// The 16.16 fixed-point start `255 * c * 2^16 + 2^15` and step of a
+/// stepped colour at the span's first pixel centre `cx0` (shared with the
+/// SIMD kernels so that both step from the same integers).
+#[inline(always)]
+pub(super) fn stepped_start(cr: &[f64; 4], cdx: &[f64; 4], cx0: f64) -> ([i64; 4], [i64; 4]) {
+    const FX: f64 = 65536.0 * 255.0;
+    let mut fixed: [i64; 4] = [0; 4];
+    let mut fixed_dx: [i64; 4] = [0; 4];
+    for c in 0..4 {
+        // Clamped so that huge off-screen planes cannot overflow.
+        let v = ((cr[c] + cdx[c] * cx0) * FX).clamp(-1e12, 1e12);
+        fixed[c] = v as i64 + 32768;
+        fixed_dx[c] = (cdx[c] * FX).clamp(-1e8, 1e8) as i64;
+    }
+    (fixed, fixed_dx)
+}
+
+pub(super) fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     if x0 >= x1 {
         return;
     }
@@ -188,18 +222,7 @@ fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentS
         flat = color_to_u8(glam::Vec4::from_array(std::array::from_fn(|c| cr[c] as f32)));
     }
     // Fixed-point stepping: 255 * c in 16.16 with the rounding half added.
-    const FX: f64 = 65536.0 * 255.0;
-    let mut fixed: [i64; 4] = [0; 4];
-    let mut fixed_dx: [i64; 4] = [0; 4];
-    if CS == CS_STEPPED {
-        let cx0 = x0 as f64 + 0.5 - t.x0;
-        for c in 0..4 {
-            // Clamped so that huge off-screen planes cannot overflow.
-            let v = ((cr[c] + cdx[c] * cx0) * FX).clamp(-1e12, 1e12);
-            fixed[c] = v as i64 + 32768;
-            fixed_dx[c] = (cdx[c] * FX).clamp(-1e8, 1e8) as i64;
-        }
-    }
+    let (fixed, fixed_dx) = if CS == CS_STEPPED { stepped_start(&cr, &cdx, x0 as f64 + 0.5 - t.x0) } else { ([0; 4], [0; 4]) };
     let st = &fs.stencil;
     let n = x1 - x0;
     let SpanPixels { color, depth, stencil, passed: total, .. } = px;

@@ -404,3 +404,4 @@ pub mod fast;
 pub mod reference;
 pub mod pixel_span;
 pub mod textured;
+pub mod simd;
