@@ -46,7 +46,9 @@
 //! glu.h describes them; callbacks have the signatures glu.h gives them.
 #![allow(clippy::missing_safety_doc)]
 
+pub mod blocks;
 pub mod merge;
+pub mod simple;
 pub mod split;
 pub mod sweep;
 
@@ -127,7 +129,8 @@ pub struct Tess {
     /// contour's first index.
     input: Vec<InVertex>,
     starts: Vec<usize>,
-    scratch: Scratch,
+    /// Boxed: taken out and put back around every polygon, a pointer move.
+    scratch: Option<Box<Scratch>>,
     busy: bool,
     delete_pending: bool,
 }
@@ -144,7 +147,7 @@ pub fn new_tess() -> *mut c_void {
         polygon_data: std::ptr::null_mut(),
         input: Vec::new(),
         starts: Vec::new(),
-        scratch: Scratch::default(),
+        scratch: None,
         busy: false,
         delete_pending: false,
     }))
@@ -358,7 +361,7 @@ pub unsafe fn end_polygon(tp: *mut c_void) {
     t.state = State::Dormant;
     let input = std::mem::take(&mut t.input);
     let starts = std::mem::take(&mut t.starts);
-    let mut scratch = std::mem::take(&mut t.scratch);
+    let mut scratch = t.scratch.take().unwrap_or_default();
     let job = Job { cb: t.cb, pdata: t.polygon_data, rule: t.rule, boundary_only: t.boundary_only, normal: t.normal };
     t.busy = true;
     // Callbacks run with `busy` set; a panic in our code is caught by the
@@ -384,7 +387,7 @@ pub unsafe fn end_polygon(tp: *mut c_void) {
     if !t.delete_pending {
         t.input = input;
         t.starts = starts;
-        t.scratch = scratch;
+        t.scratch = Some(scratch);
     }
     drop(reset);
 }
@@ -416,6 +419,7 @@ struct Scratch {
     grid: Grid,
     split: split::Scratch,
     sweep: sweep::Scratch,
+    simple: simple::Scratch,
 }
 
 /// One polygon's tessellation, with a copy of the callbacks it uses.
@@ -629,8 +633,17 @@ impl Job {
                 }
             }
         }
+        let Scratch { p2, verts, p3, data, id, segs, grid, split, sweep: sw, simple: si } = sc;
+        // Already a planar arrangement (checked as it goes): one sweep.
+        verts.clear();
+        verts.extend(p2.iter().map(|&p| Vert { p }));
+        if simple::tessellate(verts, contours.starts, self.rule, self.boundary_only, si, &mut sw.pool, &mut sw.region) {
+            data.clear();
+            data.extend(all().map(|v| v.data));
+            self.emit(&sw.region, data);
+            return;
+        }
         // Merge near-coincident vertices.
-        let Scratch { p2, verts, p3, data, id, segs, grid, split, sweep: sw } = sc;
         verts.clear();
         p3.clear();
         data.clear();
@@ -665,10 +678,14 @@ impl Job {
             return;
         }
         sweep::region(verts, segs, self.rule, self.boundary_only, sw);
+        self.emit(&sw.region, data);
+    }
+
+    fn emit(&self, r: &sweep::Region, data: &[*mut c_void]) {
         if self.boundary_only {
-            self.emit_loops(&sw.region.boundary, data);
+            self.emit_loops(&r.boundary, data);
         } else {
-            self.emit_triangles(&sw.region, data);
+            self.emit_triangles(r, data);
         }
     }
 

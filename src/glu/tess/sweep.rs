@@ -120,7 +120,7 @@ pub struct Scratch {
     inside_above: Vec<bool>,
     active2: Vec<(usize, Option<Reg>)>,
     outs: Vec<(usize, Option<Reg>)>,
-    pool: Pool,
+    pub(super) pool: Pool,
     pub region: Region,
 }
 
@@ -253,11 +253,7 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc:
             let r_above = r_above.map(|r| t.add(r, v, Side::Lower));
             if outs.is_empty() {
                 match (r_below, r_above) {
-                    (Some(mut b), Some(mut a)) => {
-                        b.subs.extend(a.subs.drain(..));
-                        t.recycle_subs(a.subs);
-                        active[lo - 1].1 = Some(b);
-                    }
+                    (Some(b), Some(a)) => active[lo - 1].1 = Some(t.merge(b, a)),
                     (Some(b), None) => active[lo - 1].1 = Some(b),
                     (None, Some(a)) => t.close(a, v),
                     (None, None) => {}
@@ -339,7 +335,7 @@ fn insert_start(active: &mut Vec<(usize, Option<Reg>)>, v: usize, outs: &mut Vec
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Side {
+pub(super) enum Side {
     Lower,
     Upper,
     Both,
@@ -356,22 +352,22 @@ struct Chain {
 /// An interior region between two active edges: its chains from bottom to
 /// top; more than one while merge vertices wait for the next vertex.
 #[derive(Debug)]
-struct Reg {
+pub(super) struct Reg {
     subs: Vec<Chain>,
 }
 
 /// Spare chain and region vectors, so that regions starting and ending
 /// do not allocate (kept across polygons).
 #[derive(Default)]
-struct Pool {
+pub(super) struct Pool {
     chains: Vec<Vec<usize>>,
     subs: Vec<Vec<Chain>>,
 }
 
-struct Tri<'a> {
-    verts: &'a [Vert],
-    out: &'a mut Vec<[usize; 3]>,
-    pool: &'a mut Pool,
+pub(super) struct Tri<'a> {
+    pub(super) verts: &'a [Vert],
+    pub(super) out: &'a mut Vec<[usize; 3]>,
+    pub(super) pool: &'a mut Pool,
 }
 
 impl Tri<'_> {
@@ -388,7 +384,7 @@ impl Tri<'_> {
     }
 
     /// A region starting at v.
-    fn start(&mut self, v: usize) -> Reg {
+    pub(super) fn start(&mut self, v: usize) -> Reg {
         let ch = self.chain(&[v], Side::Both);
         self.reg(ch)
     }
@@ -452,7 +448,7 @@ impl Tri<'_> {
     }
 
     /// v arrives on one side of the region.
-    fn add(&mut self, mut r: Reg, v: usize, s: Side) -> Reg {
+    pub(super) fn add(&mut self, mut r: Reg, v: usize, s: Side) -> Reg {
         if r.subs.len() > 1 {
             // Merge vertices waiting in the region: the others end at v.
             let keep = if s == Side::Lower { r.subs.len() - 1 } else { 0 };
@@ -471,8 +467,20 @@ impl Tri<'_> {
         r
     }
 
+    /// Two regions become one at a merge vertex (`b` below `a`).
+    pub(super) fn merge(&mut self, mut b: Reg, mut a: Reg) -> Reg {
+        b.subs.append(&mut a.subs);
+        self.recycle_subs(a.subs);
+        b
+    }
+
+    /// Drops a region without output (its vectors go back to the pool).
+    pub(super) fn discard(&mut self, r: Reg) {
+        self.recycle_subs(r.subs);
+    }
+
     /// v ends the region.
-    fn close(&mut self, r: Reg, v: usize) {
+    pub(super) fn close(&mut self, r: Reg, v: usize) {
         for ch in &r.subs {
             self.fan(ch, v);
         }
@@ -480,7 +488,7 @@ impl Tri<'_> {
     }
 
     /// v starts a hole inside the region: returns the parts below and above.
-    fn split(&mut self, r: Reg, v: usize) -> (Reg, Reg) {
+    pub(super) fn split(&mut self, r: Reg, v: usize) -> (Reg, Reg) {
         let mut subs = r.subs;
         if subs.len() > 1 {
             let top = subs.pop().unwrap_or_else(|| Chain { verts: Vec::new(), side: Side::Both });
