@@ -18,18 +18,24 @@
 //! with an EDGE_FLAG callback, an edge is flagged iff it is an edge of the
 //! selected region's boundary.
 //!
-//! Stages: [`merge`] (near-coincident vertices), [`split`] (the
-//! arrangement: crossings and touching), [`sweep`] (windings, the region,
-//! triangles). Every buffer they use lives in the tessellator object and is
-//! reused by the next polygon.
+//! Stages: [`simple`] first, the fast path for input that is already a
+//! planar arrangement (no near-coincident vertices, no edges crossing or
+//! touching: outlines, glyphs, polygons with holes), which checks that as
+//! it sweeps and does windings and triangles in that one sweep; it gives
+//! up, having output nothing, on anything else. Then the general path:
+//! [`merge`] (near-coincident vertices), [`split`] (the arrangement:
+//! crossings and touching), [`sweep`] (windings, the region, triangles).
+//! Every buffer they use lives in the tessellator object and is reused by
+//! the next polygon.
 //!
-//! Cost: edge pairs are found with a uniform grid of about n cells in which
-//! each edge occupies the cells its segment crosses, so typical inputs run
-//! in near-linear time; inputs with very many crossings are quadratic, as
-//! their output is. The sweeps keep their active edges in a vector (linear
-//! search for the edges ending at a vertex, memmove on insert), so polygons
-//! with tens of thousands of edges active at once (a 100,000-vertex random
-//! star) are quadratic; a balanced tree there would fix it.
+//! Cost: the fast path is O(n log n) plus O(sqrt n) per vertex for its
+//! active list ([`blocks`]). The general path finds edge pairs with a
+//! uniform grid of about n cells in which each edge occupies the cells its
+//! segment crosses, so typical inputs run in near-linear time; inputs with
+//! very many crossings are quadratic, as their output is. Its sweeps keep
+//! their active edges in a vector (linear search for the edges ending at a
+//! vertex, memmove on insert), so self-intersecting polygons with tens of
+//! thousands of edges active at once are still quadratic there.
 //!
 //! Differences from SGI's libtess worth knowing: COMBINE is called only for
 //! real crossings (not for merging coincident vertices); a NaN coordinate is
