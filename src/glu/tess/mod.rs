@@ -472,7 +472,13 @@ impl Combiner for Comb<'_> {
         let lerp = |a: [f64; 3], b: [f64; 3], t: f64| [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])];
         let q1 = lerp(self.p3[e[0]], self.p3[e[1]], t);
         let q2 = lerp(self.p3[e[2]], self.p3[e[3]], s);
-        let coords = [0.5 * q1[0] + 0.5 * q2[0], 0.5 * q1[1] + 0.5 * q2[1], 0.5 * q1[2] + 0.5 * q2[2]];
+        // A convex combination of the four vertices: clamped to their box,
+        // since halving subnormals rounds (the fuzz target found z one
+        // subnormal ulp above every input z).
+        let coords: [f64; 3] = std::array::from_fn(|k| {
+            let (lo, hi) = e.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &i| (lo.min(self.p3[i][k]), hi.max(self.p3[i][k])));
+            (0.5 * q1[k] + 0.5 * q2[k]).max(lo).min(hi)
+        });
         // Delphi programs declare `coords` as a dynamic array (the Persian
         // book's tesswind does): the compiled callback then adds and drops
         // a reference in the array header just before the pointer. Give it
