@@ -747,7 +747,7 @@ fn exact_coverage_grid_path() {
 /// The bench's worst case: a random 100,000-vertex star (radii in [0.3, 1]),
 /// where a vertical line crosses tens of thousands of edges, so a flat
 /// active list makes the sweep quadratic (4-4.6 s before the blocked list;
-/// about 0.6 s after on the 2-core build machine).
+/// 0.15-0.6 s after, on the shared 2-core build machine).
 #[test]
 fn random_star_with_many_active_edges_is_not_quadratic() {
     let mut r = Rng(0x2545_f491_4f6c_dd1d);
