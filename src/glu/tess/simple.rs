@@ -201,6 +201,10 @@ fn sweep(
                 if i0 == i1 || i1 == i2 {
                     return false;
                 }
+                // The two new edges are adjacent too (nearly overlapping?).
+                if interact(verts, v, l, v, u) {
+                    return false;
+                }
                 if pos > 0 {
                     let b = active.get(pos - 1);
                     if interact(verts, b.lo, b.hi, v, l) {
@@ -357,7 +361,7 @@ mod tests {
 
     #[test]
     fn leaves_the_rest_to_the_general_path() {
-        let cases: [&[[f64; 2]]; 5] = [
+        let cases: [&[[f64; 2]]; 6] = [
             // A bow tie (crossing edges).
             &[[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]],
             // A vertex on another edge (pinch).
@@ -368,6 +372,10 @@ mod tests {
             &[[0.0, 0.0], [1.0, 0.0], [1.0, 1e-14], [1.0, 1.0], [0.0, 1.0]],
             // A spike folding back on its own edge.
             &[[0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [1.0, 1.0]],
+            // Two edges leaving a vertex nearly overlapping: the upper one
+            // ends (both its vertex's edges come from the left) within EPS
+            // of the lower one.
+            &[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.5, 1.0], [1.0, 1e-14]],
         ];
         for (i, c) in cases.iter().enumerate() {
             assert!(run(&[c], Rule::Odd).is_none(), "case {i}");
