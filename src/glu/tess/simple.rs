@@ -139,7 +139,8 @@ pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_
         let p = verts[k.2 as usize].p;
         for q in &sc.keyed[r + 1..] {
             let q = verts[q.2 as usize].p;
-            if !(q[0] - p[0] <= EPS) {
+            // (Past EPS in x, or NaN: the window ends.)
+            if !matches!((q[0] - p[0]).partial_cmp(&EPS), Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)) {
                 break;
             }
             if (q[1] - p[1]).abs() <= EPS {
