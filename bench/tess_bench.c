@@ -1,7 +1,11 @@
 /* tess_bench: softgl's GLU tessellator against Mesa's libGLU (the SGI
  * tessellator), in one process.
  *
- *   tess_bench [--softgl PATH] [--glu PATH] [--reps N] [--quick] [--only SET;SET] [--out FILE.md]
+ *   tess_bench [--softgl PATH] [--glu PATH] [--reps N] [--quick] [--only SET;SET] [--lib softgl|libGLU] [--out FILE.md]
+ *
+ * --only runs the named sets; --lib runs one library alone (for profiling:
+ * `valgrind --tool=callgrind --toggle-collect=time_set tess_bench --only
+ * 'random simple' --lib softgl --reps 1` counts only the timed pass).
  *
  * Both libraries are loaded with dlopen by path (RTLD_LOCAL, so neither's
  * symbols leak into the other) and driven through the same function
@@ -489,7 +493,8 @@ static double now(void)
     return ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-static double time_set(Glu *g, Set *s)
+/* noinline: the symbol callgrind's --toggle-collect=time_set needs */
+__attribute__((noinline)) static double time_set(Glu *g, Set *s)
 {
     void *t = make_tess(g, 0);
     double t0 = now();
@@ -516,7 +521,7 @@ static int listed(const char *list, const char *name)
 int main(int argc, char **argv)
 {
     Glu glus[2];
-    const char *out = NULL, *only = NULL;
+    const char *out = NULL, *only = NULL, *lib = NULL;
     int reps = 7, quick = 0, i, k, have[2];
     Set sets[12];
     int nsets = 0;
@@ -533,15 +538,16 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) out = argv[++i];
         else if (!strcmp(argv[i], "--quick")) quick = 1;
         else if (!strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
+        else if (!strcmp(argv[i], "--lib") && i + 1 < argc) lib = argv[++i];
         else {
-            fprintf(stderr, "usage: %s [--softgl PATH] [--glu PATH] [--reps N] [--quick] [--only SET;SET] [--out FILE.md]\n", argv[0]);
+            fprintf(stderr, "usage: %s [--softgl PATH] [--glu PATH] [--reps N] [--quick] [--only SET;SET] [--lib softgl|libGLU] [--out FILE.md]\n", argv[0]);
             return 2;
         }
     }
     if (quick) reps = 3;
     if (reps < 1) reps = 1;
-    for (i = 0; i < 2; i++) have[i] = load(&glus[i]);
-    if (!have[0]) return 1;
+    for (i = 0; i < 2; i++) have[i] = (!lib || !strcmp(lib, glus[i].name)) && load(&glus[i]);
+    if (!have[0] && !have[1]) return 1;
 
     memset(sets, 0, sizeof sets);
 #define SET(nm, wh) (sets[nsets].name = nm, sets[nsets].what = wh, &sets[nsets++])
@@ -592,8 +598,8 @@ int main(int argc, char **argv)
         for (i = 0; i < 2; i++) {
             if (!have[i]) continue;
             check(&glus[i], s, &res[i]);
-            res[i].us = calloc(reps, sizeof(double));
         }
+        for (i = 0; i < 2; i++) res[i].us = calloc(reps, sizeof(double)); /* zeros for a library left out */
         for (rep = 0; rep < reps; rep++)
             for (i = 0; i < 2; i++) {
                 int j = rep % 2 ? 1 - i : i;
@@ -602,7 +608,7 @@ int main(int argc, char **argv)
         if (have[1]) {
             snprintf(b_us, sizeof b_us, "%.2f", median(res[1].us, reps));
             snprintf(b_fail, sizeof b_fail, "%d / %d", res[1].failures, res[1].wrong);
-            snprintf(ratio, sizeof ratio, "%.2fx", median(res[1].us, reps) / median(res[0].us, reps));
+            if (have[0]) snprintf(ratio, sizeof ratio, "%.2fx", median(res[1].us, reps) / median(res[0].us, reps));
             snprintf(tris, sizeof tris, "%ld / %ld", res[0].tris, res[1].tris);
         } else {
             snprintf(tris, sizeof tris, "%ld / -", res[0].tris);

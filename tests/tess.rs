@@ -743,3 +743,69 @@ fn exact_coverage_grid_path() {
         }
     }
 }
+
+/// The bench's worst case: a random 100,000-vertex star (radii in [0.3, 1]),
+/// where a vertical line crosses tens of thousands of edges, so a flat
+/// active list makes the sweep quadratic (4-4.6 s before the blocked list;
+/// 0.15-0.6 s after, on the shared 2-core build machine).
+#[test]
+fn random_star_with_many_active_edges_is_not_quadratic() {
+    let mut r = Rng(0x2545_f491_4f6c_dd1d);
+    let n = 100_000;
+    let star: Vec<[f64; 3]> = (0..n)
+        .map(|i| {
+            let a = (i as f64 + 0.8 * (r.f() - 0.5)) / n as f64 * std::f64::consts::TAU;
+            let rr = 0.3 + 0.7 * r.f();
+            [rr * a.cos(), rr * a.sin(), 0.0]
+        })
+        .collect();
+    let cs = vec![star];
+    let t0 = std::time::Instant::now();
+    let out = tess(&cs, &Opts { rule: GLU_TESS_WINDING_ODD, flags: false, combine: true, boundary: false, normal: None });
+    let dt = t0.elapsed().as_secs_f64();
+    let ntri: usize = out.prims.iter().map(|p| p.len() / 3).sum();
+    assert_eq!(ntri, n - 2);
+    let area: f64 = out.prims.iter().flat_map(|p| p.chunks(3)).map(tri_area).sum();
+    let want = rule_area_shoelace(&cs);
+    assert!((area - want).abs() < 1e-9 * want.abs(), "{area} vs {want}");
+    assert!(dt < 3.0, "{dt} s");
+}
+
+/// Simple polygons with a vertex close to another edge, at distances
+/// either side of the merge distance (2^-42 of the extent): the one-sweep
+/// fast path takes the far ones and leaves the near ones to the general
+/// path; both must cover exactly, under every rule, with edge flags.
+#[test]
+fn near_touching_vertices_either_side_of_the_merge_distance() {
+    let mut r = Rng(0x5851_f42d_4c95_7f2d);
+    for &d in &[1e-3, 1e-8, 1e-11, 1e-12, 3e-13, 2e-13, 1e-13, 1e-15, 0.0, -1e-15, -1e-12] {
+        // A notch whose tip reaches down to y = d above the bottom edge.
+        let notch = vec![[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [4.0, 3.0, 0.0], [2.5, 3.0, 0.0], [2.0, d, 0.0], [1.5, 3.0, 0.0], [0.0, 3.0, 0.0]];
+        // The same with a hole next to the tip, and reversed.
+        let hole = vec![[2.6, 0.5, 0.0], [2.6, 1.0, 0.0], [3.5, 1.0, 0.0], [3.5, 0.5, 0.0]];
+        let mut rev = notch.clone();
+        rev.reverse();
+        for cs in [vec![notch.clone()], vec![notch.clone(), hole.clone()], vec![rev.clone(), hole.clone()]] {
+            for &rule in &RULES {
+                check_coverage(&cs, rule, &mut r, true, &format!("d = {d} rule {rule}"));
+            }
+        }
+    }
+}
+
+/// COMBINE's coordinates stay inside the box of the four vertices it
+/// combines, even where halving rounds: a fuzz finding had z one subnormal
+/// ulp above every input z (all z = 3 ulps: 0.5 * 3 ulps rounds to 2).
+#[test]
+fn combined_coordinates_stay_in_the_box_with_subnormal_z() {
+    let z = f64::from_bits(3);
+    for k in 0..8 {
+        let s = 1.0 + k as f64 * 0.37;
+        let bow = vec![[0.0, 0.0, z], [4.0 * s, 4.0, z], [4.0 * s, 0.0, z], [0.0, 4.0, z]];
+        let out = tess(&[bow], &Opts { rule: GLU_TESS_WINDING_ODD, flags: false, combine: true, boundary: false, normal: None });
+        assert!(out.combines > 0);
+        for p in out.prims.iter().flatten() {
+            assert_eq!(p.0[2].to_bits(), z.to_bits(), "z {:e} from inputs all at {:e}", p.0[2], z);
+        }
+    }
+}

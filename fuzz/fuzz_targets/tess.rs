@@ -52,6 +52,8 @@ struct Check {
     lo: [f64; 3],
     hi: [f64; 3],
     arena: Vec<Box<[f64; 3]>>,
+    /// The output's vertices in order (for the coverage check).
+    out: Vec<[f64; 3]>,
 }
 
 thread_local! {
@@ -82,6 +84,8 @@ extern "system" fn cb_vertex(d: *mut c_void) {
         assert!(c.in_prim.is_some(), "VERTEX outside BEGIN/END");
         assert!(c.known.contains(&(d as usize)), "VERTEX with a pointer never given: {d:p}");
         c.prim_verts += 1;
+        // Every known pointer points at an [f64; 3] (input or COMBINE's).
+        c.out.push(unsafe { *(d as *const [f64; 3]) });
     });
 }
 extern "system" fn cb_vertex_data(d: *mut c_void, pd: *mut c_void) {
@@ -189,9 +193,12 @@ impl Bytes<'_> {
 /// One polygon: contours of points.
 type Polygon = Vec<Vec<[f64; 3]>>;
 
-/// Decodes contours until the input ends or a polygon break; returns None at end of input.
-fn decode_polygon(b: &mut Bytes, budget: &mut usize) -> Polygon {
+/// Decodes contours until the input ends or a polygon break. The flag
+/// says whether every vertex is a grid point in the plane z = 0 (then the
+/// output's coverage is checked exactly).
+fn decode_polygon(b: &mut Bytes, budget: &mut usize) -> (Polygon, bool) {
     let mut poly: Polygon = vec![Vec::new()];
+    let mut planar_grid = true;
     let mut last = [0.0f64; 3];
     while !b.done() && *budget > 0 {
         let op = b.u8();
@@ -205,20 +212,27 @@ fn decode_polygon(b: &mut Bytes, budget: &mut usize) -> Polygon {
             }
             1..=3 => {
                 let g = b.u8();
+                planar_grid &= op & 0x80 == 0;
                 [(g & 15) as f64, (g >> 4) as f64, if op & 0x80 != 0 { (op >> 3 & 3) as f64 } else { 0.0 }]
             }
-            4 => [b.f64(), b.f64(), if op & 0x80 != 0 { b.f64() } else { 0.0 }],
+            4 => {
+                planar_grid = false;
+                [b.f64(), b.f64(), if op & 0x80 != 0 { b.f64() } else { 0.0 }]
+            }
             5 => {
+                planar_grid = false;
                 let (i, j) = (b.u8(), b.u8());
                 [SPECIAL[(i & 15) as usize], SPECIAL[(j & 15) as usize], if op & 0x80 != 0 { SPECIAL[(i >> 4) as usize] } else { 0.0 }]
             }
             6 => {
+                planar_grid = false;
                 let g = b.u8();
                 let s = SCALES[(op >> 3 & 7) as usize];
                 [(g & 15) as f64 * s, (g >> 4) as f64 * s, 0.0]
             }
             _ => {
                 // Near-duplicate of the last vertex: a few ulps or 2^-k away.
+                planar_grid = false;
                 let k = b.u8();
                 let d = |x: f64, s: u8| if s & 1 == 0 { x + x.abs().max(1.0) * (2f64).powi(-(s as i32 >> 1) - 10) } else { f64::from_bits(x.to_bits().wrapping_add((s >> 1) as u64)) };
                 [d(last[0], k & 0x3f), d(last[1], op >> 3), last[2]]
@@ -228,7 +242,89 @@ fn decode_polygon(b: &mut Bytes, budget: &mut usize) -> Polygon {
         poly.last_mut().unwrap().push(p);
         *budget -= 1;
     }
-    poly
+    (poly, planar_grid)
+}
+
+fn inside(rule: u32, w: i64) -> bool {
+    match rule {
+        GLU_TESS_WINDING_ODD => w % 2 != 0,
+        GLU_TESS_WINDING_NONZERO => w != 0,
+        GLU_TESS_WINDING_POSITIVE => w > 0,
+        GLU_TESS_WINDING_NEGATIVE => w < 0,
+        _ => w.abs() >= 2,
+    }
+}
+
+/// The area `rule` selects (windings times `sign`), by vertical slabs
+/// between all vertex and crossing abscissae (as tests/tess.rs).
+fn rule_area(contours: &Polygon, rule: u32, sign: i64) -> f64 {
+    let mut edges = Vec::new();
+    for c in contours {
+        for i in 0..c.len() {
+            let (a, b) = (c[i], c[(i + 1) % c.len()]);
+            if a[0] != b[0] {
+                edges.push(if a[0] < b[0] { (a, b, sign) } else { (b, a, -sign) });
+            }
+        }
+    }
+    let mut xs: Vec<f64> = contours.iter().flatten().map(|v| v[0]).collect();
+    let o = |p: [f64; 3], q: [f64; 3], r: [f64; 3]| (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+    for i in 0..edges.len() {
+        for j in i + 1..edges.len() {
+            let ((a, b, _), (c, d, _)) = (edges[i], edges[j]);
+            let (d1, d2, d3, d4) = (o(c, d, a), o(c, d, b), o(a, b, c), o(a, b, d));
+            if (d1 > 0.0 && d2 < 0.0 || d1 < 0.0 && d2 > 0.0) && (d3 > 0.0 && d4 < 0.0 || d3 < 0.0 && d4 > 0.0) {
+                xs.push(a[0] + d1 / (d1 - d2) * (b[0] - a[0]));
+            }
+        }
+    }
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    let mut area = 0.0;
+    for s in xs.windows(2) {
+        let (x0, x1) = (s[0], s[1]);
+        let xm = 0.5 * (x0 + x1);
+        let mut span: Vec<(f64, f64, f64, i64)> = Vec::new();
+        for &(a, b, d) in &edges {
+            if a[0] <= x0 && b[0] >= x1 {
+                let y = |x: f64| a[1] + (b[1] - a[1]) * (x - a[0]) / (b[0] - a[0]);
+                span.push((y(xm), y(x0), y(x1), d));
+            }
+        }
+        span.sort_by(|p, q| p.0.total_cmp(&q.0));
+        let mut w = 0;
+        for k in 0..span.len() {
+            w += span[k].3;
+            if k + 1 < span.len() && inside(rule, w) {
+                area += (x1 - x0) * ((span[k + 1].1 + span[k + 1].2) - (span[k].1 + span[k].2)) * 0.5;
+            }
+        }
+    }
+    area
+}
+
+/// The output triangles (`out`, in threes) cover the area the rule selects
+/// and all turn one way: counter-clockwise about +z, or with the automatic
+/// normal, the way that makes the polygon's signed area positive.
+fn check_coverage(poly: &Polygon, rule: u32, auto_normal: bool, out: &[[f64; 3]]) {
+    let signed: f64 = poly.iter().map(|c| (0..c.len()).map(|i| o2(c[i], c[(i + 1) % c.len()])).sum::<f64>()).sum();
+    if auto_normal && signed == 0.0 {
+        return; // the orientation is the fallback normal's: not checked
+    }
+    let sign = if auto_normal && signed < 0.0 { -1.0 } else { 1.0 };
+    let mut area = 0.0;
+    for t in out.chunks(3) {
+        let a = 0.5 * sign * ((t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]));
+        assert!(a >= -1e-9, "triangle {t:?} turns the wrong way (area {a})");
+        area += a;
+    }
+    let want = rule_area(poly, rule, sign as i64);
+    assert!((area - want).abs() <= 1e-9 * want.max(1.0), "covered area {area}, the rule selects {want} (rule {rule}, polygon {poly:?})");
+}
+
+/// Twice the signed area contribution of edge a→b (shoelace).
+fn o2(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[1] - a[1] * b[0]
 }
 
 fn clamp_coord(x: f64) -> f64 {
@@ -281,10 +377,11 @@ fuzz_target!(|data: &[u8]| {
         if let Some(n) = normal {
             gluTessNormal(t, n[0], n[1], n[2]);
         }
-        for (k, poly) in polys.iter().enumerate() {
+        for (k, (poly, planar_grid)) in polys.iter().enumerate() {
             // Each polygon may change the rule and boundary mode of the same object.
             let opt = if k == 0 { f0 } else { f0.rotate_left(k as u32 * 3) ^ f1 };
             let boundary = opt & 8 != 0;
+            let rule = RULES[(opt & 7) as usize % 5];
             gluTessProperty(t, GLU_TESS_WINDING_RULE, RULES[(opt & 7) as usize % 5] as f64);
             gluTessProperty(t, GLU_TESS_BOUNDARY_ONLY, boundary as u8 as f64);
             let mut store: Polygon = poly.clone();
@@ -315,6 +412,16 @@ fuzz_target!(|data: &[u8]| {
                 }
             }
             gluTessEndPolygon(t);
+            // Exact coverage on grid polygons in the plane z = 0 (small
+            // enough for the quadratic reference): the output's area and
+            // orientation against an independent winding computation.
+            let nv: usize = store.iter().map(|c| c.len()).sum();
+            let z_normal = normal.map_or(true, |n| n[0] == 0.0 && n[1] == 0.0 && n[2] > 0.0 && n[2].is_finite());
+            // (TESS_FUZZ_NO_COVERAGE=1 turns it off: docs/glu-fuzz.md, planted bugs.)
+            let coverage = std::env::var_os("TESS_FUZZ_NO_COVERAGE").is_none();
+            if coverage && *planar_grid && !boundary && !sloppy && combine_cb && fail_at.is_none() && z_normal && nv <= 64 {
+                with(|c| check_coverage(&store, rule, normal.is_none(), &c.out));
+            }
             with(|c| {
                 assert!(c.in_prim.is_none(), "BEGIN without END");
                 if c.combine_failed || c.errors.contains(&GLU_TESS_NEED_COMBINE_CALLBACK) {

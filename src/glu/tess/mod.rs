@@ -18,18 +18,24 @@
 //! with an EDGE_FLAG callback, an edge is flagged iff it is an edge of the
 //! selected region's boundary.
 //!
-//! Stages: [`merge`] (near-coincident vertices), [`split`] (the
-//! arrangement: crossings and touching), [`sweep`] (windings, the region,
-//! triangles). Every buffer they use lives in the tessellator object and is
-//! reused by the next polygon.
+//! Stages: [`simple`] first, the fast path for input that is already a
+//! planar arrangement (no near-coincident vertices, no edges crossing or
+//! touching: outlines, glyphs, polygons with holes), which checks that as
+//! it sweeps and does windings and triangles in that one sweep; it gives
+//! up, having output nothing, on anything else. Then the general path:
+//! [`merge`] (near-coincident vertices), [`split`] (the arrangement:
+//! crossings and touching), [`sweep`] (windings, the region, triangles).
+//! Every buffer they use lives in the tessellator object and is reused by
+//! the next polygon.
 //!
-//! Cost: edge pairs are found with a uniform grid of about n cells in which
-//! each edge occupies the cells its segment crosses, so typical inputs run
-//! in near-linear time; inputs with very many crossings are quadratic, as
-//! their output is. The sweeps keep their active edges in a vector (linear
-//! search for the edges ending at a vertex, memmove on insert), so polygons
-//! with tens of thousands of edges active at once (a 100,000-vertex random
-//! star) are quadratic; a balanced tree there would fix it.
+//! Cost: the fast path is O(n log n) plus O(sqrt n) per vertex for its
+//! active list ([`blocks`]). The general path finds edge pairs with a
+//! uniform grid of about n cells in which each edge occupies the cells its
+//! segment crosses, so typical inputs run in near-linear time; inputs with
+//! very many crossings are quadratic, as their output is. Its sweeps keep
+//! their active edges in a vector (linear search for the edges ending at a
+//! vertex, memmove on insert), so self-intersecting polygons with tens of
+//! thousands of edges active at once are still quadratic there.
 //!
 //! Differences from SGI's libtess worth knowing: COMBINE is called only for
 //! real crossings (not for merging coincident vertices); a NaN coordinate is
@@ -46,7 +52,9 @@
 //! glu.h describes them; callbacks have the signatures glu.h gives them.
 #![allow(clippy::missing_safety_doc)]
 
+pub mod blocks;
 pub mod merge;
+pub mod simple;
 pub mod split;
 pub mod sweep;
 
@@ -127,7 +135,8 @@ pub struct Tess {
     /// contour's first index.
     input: Vec<InVertex>,
     starts: Vec<usize>,
-    scratch: Scratch,
+    /// Boxed: taken out and put back around every polygon, a pointer move.
+    scratch: Option<Box<Scratch>>,
     busy: bool,
     delete_pending: bool,
 }
@@ -144,7 +153,7 @@ pub fn new_tess() -> *mut c_void {
         polygon_data: std::ptr::null_mut(),
         input: Vec::new(),
         starts: Vec::new(),
-        scratch: Scratch::default(),
+        scratch: None,
         busy: false,
         delete_pending: false,
     }))
@@ -358,7 +367,7 @@ pub unsafe fn end_polygon(tp: *mut c_void) {
     t.state = State::Dormant;
     let input = std::mem::take(&mut t.input);
     let starts = std::mem::take(&mut t.starts);
-    let mut scratch = std::mem::take(&mut t.scratch);
+    let mut scratch = t.scratch.take().unwrap_or_default();
     let job = Job { cb: t.cb, pdata: t.polygon_data, rule: t.rule, boundary_only: t.boundary_only, normal: t.normal };
     t.busy = true;
     // Callbacks run with `busy` set; a panic in our code is caught by the
@@ -384,7 +393,7 @@ pub unsafe fn end_polygon(tp: *mut c_void) {
     if !t.delete_pending {
         t.input = input;
         t.starts = starts;
-        t.scratch = scratch;
+        t.scratch = Some(scratch);
     }
     drop(reset);
 }
@@ -416,6 +425,7 @@ struct Scratch {
     grid: Grid,
     split: split::Scratch,
     sweep: sweep::Scratch,
+    simple: simple::Scratch,
 }
 
 /// One polygon's tessellation, with a copy of the callbacks it uses.
@@ -462,7 +472,13 @@ impl Combiner for Comb<'_> {
         let lerp = |a: [f64; 3], b: [f64; 3], t: f64| [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])];
         let q1 = lerp(self.p3[e[0]], self.p3[e[1]], t);
         let q2 = lerp(self.p3[e[2]], self.p3[e[3]], s);
-        let coords = [0.5 * q1[0] + 0.5 * q2[0], 0.5 * q1[1] + 0.5 * q2[1], 0.5 * q1[2] + 0.5 * q2[2]];
+        // A convex combination of the four vertices: clamped to their box,
+        // since halving subnormals rounds (the fuzz target found z one
+        // subnormal ulp above every input z).
+        let coords: [f64; 3] = std::array::from_fn(|k| {
+            let (lo, hi) = e.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &i| (lo.min(self.p3[i][k]), hi.max(self.p3[i][k])));
+            (0.5 * q1[k] + 0.5 * q2[k]).max(lo).min(hi)
+        });
         // Delphi programs declare `coords` as a dynamic array (the Persian
         // book's tesswind does): the compiled callback then adds and drops
         // a reference in the array header just before the pointer. Give it
@@ -629,8 +645,17 @@ impl Job {
                 }
             }
         }
+        let Scratch { p2, verts, p3, data, id, segs, grid, split, sweep: sw, simple: si } = sc;
+        // Already a planar arrangement (checked as it goes): one sweep.
+        verts.clear();
+        verts.extend(p2.iter().map(|&p| Vert { p }));
+        if simple::tessellate(verts, contours.starts, self.rule, self.boundary_only, si, &mut sw.pool, &mut sw.region) {
+            data.clear();
+            data.extend(all().map(|v| v.data));
+            self.emit(&sw.region, data);
+            return;
+        }
         // Merge near-coincident vertices.
-        let Scratch { p2, verts, p3, data, id, segs, grid, split, sweep: sw } = sc;
         verts.clear();
         p3.clear();
         data.clear();
@@ -665,10 +690,14 @@ impl Job {
             return;
         }
         sweep::region(verts, segs, self.rule, self.boundary_only, sw);
+        self.emit(&sw.region, data);
+    }
+
+    fn emit(&self, r: &sweep::Region, data: &[*mut c_void]) {
         if self.boundary_only {
-            self.emit_loops(&sw.region.boundary, data);
+            self.emit_loops(&r.boundary, data);
         } else {
-            self.emit_triangles(&sw.region, data);
+            self.emit_triangles(r, data);
         }
     }
 

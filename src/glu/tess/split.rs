@@ -39,14 +39,27 @@ pub struct Scratch {
     cell_segs: Vec<u32>,
     stamp: Vec<u32>,
     out: Vec<Seg>,
+    /// Split points grouped by segment: (parameter, vertex).
+    by_seg: Vec<(f64, u32)>,
+    /// Vertices split at in the last pass, and the pieces meeting there.
+    hot: Vec<bool>,
+    inc: Vec<(u32, u32)>,
 }
 
 /// Splits `segs` in place at every crossing and at every vertex lying on
 /// another edge. Repeats (a few passes at most) because rounded crossing
 /// points can create new near-crossings. Returns false if the combiner aborted.
+///
+/// Only the first pass tests all candidate pairs. A later one tests the
+/// pieces that meet at a vertex where the previous pass split: pieces lie
+/// within rounding of their parent edges, so pieces of edges that neither
+/// crossed nor came within EPS cannot meet, and what rounding can do near
+/// a new vertex (a piece folding onto another, a sliver between three
+/// nearly concurrent edges) shows as a vertex within EPS of a piece that
+/// shares another vertex with it.
 pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, comb: &mut dyn Combiner, sc: &mut Scratch) -> bool {
+    candidate_pairs(verts, segs, sc);
     for _pass in 0..4 {
-        candidate_pairs(verts, segs, sc);
         sc.splits.clear();
         for k in 0..sc.pairs.len() {
             let (i, j) = sc.pairs[k];
@@ -57,26 +70,92 @@ pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, co
         if sc.splits.is_empty() {
             return true;
         }
-        sc.splits.sort_unstable_by(|x, y| x.0.cmp(&y.0).then(x.1.total_cmp(&y.1)));
+        // Split points per segment in order of their parameter: a counting
+        // sort by segment, then insertion sorts (a segment has few).
+        let n = segs.len();
+        sc.seg_start.clear();
+        sc.seg_start.resize(n + 1, 0);
+        for x in &sc.splits {
+            sc.seg_start[x.0 as usize + 1] += 1;
+        }
+        for i in 0..n {
+            sc.seg_start[i + 1] += sc.seg_start[i];
+        }
+        sc.by_seg.clear();
+        sc.by_seg.resize(sc.splits.len(), (0.0, 0));
+        sc.stamp.clear();
+        sc.stamp.extend_from_slice(&sc.seg_start[..n]);
+        for x in &sc.splits {
+            let f = &mut sc.stamp[x.0 as usize];
+            sc.by_seg[*f as usize] = (x.1, x.2);
+            *f += 1;
+        }
         sc.out.clear();
-        let mut k = 0;
         for (i, s) in segs.iter().enumerate() {
+            let g = &mut sc.by_seg[sc.seg_start[i] as usize..sc.seg_start[i + 1] as usize];
+            if g.len() > 16 {
+                g.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
+            } else {
+                for k in 1..g.len() {
+                    let mut j = k;
+                    while j > 0 && g[j - 1].0.total_cmp(&g[j].0).is_gt() {
+                        g.swap(j - 1, j);
+                        j -= 1;
+                    }
+                }
+            }
             let mut cur = s.a;
-            while k < sc.splits.len() && sc.splits[k].0 as usize == i {
-                let v = sc.splits[k].2 as usize;
+            for &(_, v) in g.iter() {
+                let v = v as usize;
                 if v != cur && v != s.b {
                     sc.out.push(Seg { a: cur, b: v });
                     cur = v;
                 }
-                k += 1;
             }
             if cur != s.b {
                 sc.out.push(Seg { a: cur, b: s.b });
             }
         }
         std::mem::swap(segs, &mut sc.out);
+        incident_pairs(verts.len(), segs, sc);
     }
     true
+}
+
+/// The next pass's pairs: the pieces meeting at each vertex the last pass
+/// split at (chained lists per vertex: `seg_start` heads, `stamp` links).
+fn incident_pairs(nv: usize, segs: &[Seg], sc: &mut Scratch) {
+    const NONE: u32 = u32::MAX;
+    sc.hot.clear();
+    sc.hot.resize(nv, false);
+    for x in &sc.splits {
+        sc.hot[x.2 as usize] = true;
+    }
+    // (vertex, segment) incidences at hot vertices, as linked lists.
+    sc.seg_start.clear();
+    sc.seg_start.resize(nv, NONE);
+    sc.inc.clear();
+    for (i, s) in segs.iter().enumerate() {
+        for v in [s.a, s.b] {
+            if sc.hot[v] {
+                sc.inc.push((i as u32, sc.seg_start[v]));
+                sc.seg_start[v] = sc.inc.len() as u32 - 1;
+            }
+        }
+    }
+    sc.pairs.clear();
+    for v in 0..nv {
+        let mut a = sc.seg_start[v];
+        while a != NONE {
+            let mut b = sc.inc[a as usize].1;
+            while b != NONE {
+                let (i, j) = (sc.inc[a as usize].0, sc.inc[b as usize].0);
+                sc.pairs.push((i.min(j), i.max(j)));
+                b = sc.inc[b as usize].1;
+            }
+            a = sc.inc[a as usize].1;
+        }
+    }
 }
 
 /// Below this many edges, all pairs are tested (cheaper than a grid).

@@ -108,7 +108,6 @@ fn ord_key(x: f64) -> u64 {
 /// in `boundary` and `triangles`.
 #[derive(Default)]
 pub struct Scratch {
-    dir: Vec<(u32, u32, i64)>,
     edges: Vec<Edge>,
     order: Vec<u32>,
     keyed: Vec<(u64, u64, u32)>,
@@ -120,7 +119,7 @@ pub struct Scratch {
     inside_above: Vec<bool>,
     active2: Vec<(usize, Option<Reg>)>,
     outs: Vec<(usize, Option<Reg>)>,
-    pool: Pool,
+    pub(super) pool: Pool,
     pub region: Region,
 }
 
@@ -128,40 +127,72 @@ pub struct Scratch {
 /// triangulates it unless `boundary_only`.
 pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc: &mut Scratch) {
     let nv = verts.len();
-    let Scratch { dir, edges, order, keyed, out, inc, below, active1, bedges, inside_above, active2, outs, pool, region } = sc;
+    let Scratch { edges, order, keyed, out, inc, below, active1, bedges, inside_above, active2, outs, pool, region } = sc;
     let Region { boundary, triangles: tris } = region;
     boundary.clear();
     tris.clear();
-    // Net multiplicity per undirected edge: sort the directed edges by
-    // their ends, add up runs.
-    dir.clear();
-    dir.extend(
-        segs.iter()
-            .filter(|s| s.a != s.b)
-            .map(|s| if lex_less(verts[s.a].p, verts[s.b].p) { (s.a as u32, s.b as u32, 1) } else { (s.b as u32, s.a as u32, -1) }),
-    );
-    dir.sort_unstable_by_key(|e| (e.0, e.1));
+    // Edges grouped by their left end (a counting sort: no comparisons),
+    // each vertex's group ordered counter-clockwise from straight down by a
+    // pseudo-angle of the direction (monotone in the angle on the half plane
+    // lo→hi spans), then by hi, so that traversals of the same undirected
+    // edge are adjacent and add up to its net multiplicity.
+    out.clear();
+    out.resize(nv + 1, 0);
+    for s in segs.iter().filter(|s| s.a != s.b) {
+        let lo = if lex_less(verts[s.a].p, verts[s.b].p) { s.a } else { s.b };
+        out[lo + 1] += 1;
+    }
+    for v in 0..nv {
+        out[v + 1] += out[v];
+    }
     edges.clear();
-    for (k, e) in dir.iter().enumerate() {
-        if k > 0 && dir[k - 1].0 == e.0 && dir[k - 1].1 == e.1 {
-            if let Some(l) = edges.last_mut() {
-                l.w += e.2;
-            }
-        } else {
-            edges.push(Edge { lo: e.0 as usize, hi: e.1 as usize, w: e.2, key: 0.0 });
+    edges.resize(out[nv] as usize, Edge { lo: 0, hi: 0, w: 0, key: 0.0 });
+    {
+        let fill = &mut *inc; // reused as the per-vertex fill cursor
+        fill.clear();
+        fill.extend_from_slice(&out[..nv]);
+        for s in segs.iter().filter(|s| s.a != s.b) {
+            let (lo, hi, w) = if lex_less(verts[s.a].p, verts[s.b].p) { (s.a, s.b, 1) } else { (s.b, s.a, -1) };
+            let (a, b) = (verts[lo].p, verts[hi].p);
+            let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+            let l = dx + dy.abs();
+            let key = if l > 0.0 { dy / l } else { 0.0 };
+            edges[fill[lo] as usize] = Edge { lo, hi, w, key };
+            fill[lo] += 1;
         }
     }
-    edges.retain(|e| e.w != 0);
-    // Each vertex's outgoing edges counter-clockwise from straight down:
-    // sorted by lo, then by a pseudo-angle of the direction (monotone in
-    // the angle on the half plane lo→hi spans).
-    for e in edges.iter_mut() {
-        let (a, b) = (verts[e.lo].p, verts[e.hi].p);
-        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-        let l = dx + dy.abs();
-        e.key = if l > 0.0 { dy / l } else { 0.0 };
+    // Per group: insertion sort (groups are small), then merge runs of the
+    // same hi and drop edges whose traversals cancel.
+    let mut kept = 0;
+    for v in 0..nv {
+        let (g0, g1) = (out[v] as usize, out[v + 1] as usize);
+        let g = &mut edges[g0..g1];
+        if g.len() > 16 {
+            g.sort_unstable_by_key(|e| (ord_key(e.key), e.hi));
+        } else {
+            for i in 1..g.len() {
+                let mut j = i;
+                while j > 0 && (ord_key(g[j - 1].key), g[j - 1].hi) > (ord_key(g[j].key), g[j].hi) {
+                    g.swap(j - 1, j);
+                    j -= 1;
+                }
+            }
+        }
+        let mut i = g0;
+        while i < g1 {
+            let mut e = edges[i];
+            i += 1;
+            while i < g1 && edges[i].hi == e.hi {
+                e.w += edges[i].w;
+                i += 1;
+            }
+            if e.w != 0 {
+                edges[kept] = e;
+                kept += 1;
+            }
+        }
     }
-    edges.sort_unstable_by_key(|e| (e.lo, ord_key(e.key), e.hi));
+    edges.truncate(kept);
     // Sweep order of vertices (integer keys sort faster than float compares).
     keyed.clear();
     keyed.extend(verts.iter().enumerate().map(|(i, v)| (ord_key(v.p[0]), ord_key(v.p[1]), i as u32)));
@@ -195,14 +226,12 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc:
             let pos = locate(active, v, inc[v], verts, |x| edges[x.0].hi, |x| (edges[x.0].lo, edges[x.0].hi));
             let mut w = if pos > 0 { active[pos - 1].1 } else { 0 };
             let (o0, o1) = (out[v] as usize, out[v + 1] as usize);
-            active.splice(
-                pos..pos,
-                (o0..o1).map(|e| {
-                    below[e] = w;
-                    w += edges[e].w;
-                    (e, w)
-                }),
-            );
+            // (Inserts one by one: usually one or two, cheaper than a splice.)
+            for (k, e) in (o0..o1).enumerate() {
+                below[e] = w;
+                w += edges[e].w;
+                active.insert(pos + k, (e, w));
+            }
         }
     }
     // The boundary: edges whose two sides differ; "inside above" per edge.
@@ -253,11 +282,7 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc:
             let r_above = r_above.map(|r| t.add(r, v, Side::Lower));
             if outs.is_empty() {
                 match (r_below, r_above) {
-                    (Some(mut b), Some(mut a)) => {
-                        b.subs.extend(a.subs.drain(..));
-                        t.recycle_subs(a.subs);
-                        active[lo - 1].1 = Some(b);
-                    }
+                    (Some(b), Some(a)) => active[lo - 1].1 = Some(t.merge(b, a)),
                     (Some(b), None) => active[lo - 1].1 = Some(b),
                     (None, Some(a)) => t.close(a, v),
                     (None, None) => {}
@@ -281,7 +306,7 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc:
                     None if inside_above[outs[k - 1].0] => Some(t.start(v)),
                     None => None,
                 };
-                active.splice(lo..lo, outs.drain(..));
+                insert_all(active, lo, outs);
             }
         } else {
             insert_start(active, v, outs, bedges, inside_above, verts, &mut t);
@@ -296,7 +321,14 @@ fn locate<T>(active: &mut Vec<T>, v: usize, inc: u32, verts: &[Vert], hi_of: imp
     if inc > 0 {
         let first = active.iter().position(|x| hi_of(x) == v);
         if let Some(first) = first {
-            active.retain(|x| hi_of(x) != v);
+            // Normally the `inc` entries ending at v are contiguous: one
+            // drain; otherwise (floating-point doubt) remove them all.
+            let run = active[first..].iter().take_while(|x| hi_of(x) == v).count();
+            if run == inc as usize {
+                active.drain(first..first + run);
+            } else {
+                active.retain(|x| hi_of(x) != v);
+            }
             return first.min(active.len());
         }
     }
@@ -335,11 +367,19 @@ fn insert_start(active: &mut Vec<(usize, Option<Reg>)>, v: usize, outs: &mut Vec
             }
         }
     }
-    active.splice(pos..pos, outs.drain(..));
+    insert_all(active, pos, outs);
+}
+
+/// Moves `outs` into `active` at `pos` (usually one or two: inserts one by
+/// one, cheaper than a splice).
+fn insert_all<T>(active: &mut Vec<T>, pos: usize, outs: &mut Vec<T>) {
+    for (k, x) in outs.drain(..).enumerate() {
+        active.insert(pos + k, x);
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Side {
+pub(super) enum Side {
     Lower,
     Upper,
     Both,
@@ -356,22 +396,22 @@ struct Chain {
 /// An interior region between two active edges: its chains from bottom to
 /// top; more than one while merge vertices wait for the next vertex.
 #[derive(Debug)]
-struct Reg {
+pub(super) struct Reg {
     subs: Vec<Chain>,
 }
 
 /// Spare chain and region vectors, so that regions starting and ending
 /// do not allocate (kept across polygons).
 #[derive(Default)]
-struct Pool {
+pub(super) struct Pool {
     chains: Vec<Vec<usize>>,
     subs: Vec<Vec<Chain>>,
 }
 
-struct Tri<'a> {
-    verts: &'a [Vert],
-    out: &'a mut Vec<[usize; 3]>,
-    pool: &'a mut Pool,
+pub(super) struct Tri<'a> {
+    pub(super) verts: &'a [Vert],
+    pub(super) out: &'a mut Vec<[usize; 3]>,
+    pub(super) pool: &'a mut Pool,
 }
 
 impl Tri<'_> {
@@ -388,7 +428,7 @@ impl Tri<'_> {
     }
 
     /// A region starting at v.
-    fn start(&mut self, v: usize) -> Reg {
+    pub(super) fn start(&mut self, v: usize) -> Reg {
         let ch = self.chain(&[v], Side::Both);
         self.reg(ch)
     }
@@ -452,7 +492,7 @@ impl Tri<'_> {
     }
 
     /// v arrives on one side of the region.
-    fn add(&mut self, mut r: Reg, v: usize, s: Side) -> Reg {
+    pub(super) fn add(&mut self, mut r: Reg, v: usize, s: Side) -> Reg {
         if r.subs.len() > 1 {
             // Merge vertices waiting in the region: the others end at v.
             let keep = if s == Side::Lower { r.subs.len() - 1 } else { 0 };
@@ -471,8 +511,20 @@ impl Tri<'_> {
         r
     }
 
+    /// Two regions become one at a merge vertex (`b` below `a`).
+    pub(super) fn merge(&mut self, mut b: Reg, mut a: Reg) -> Reg {
+        b.subs.append(&mut a.subs);
+        self.recycle_subs(a.subs);
+        b
+    }
+
+    /// Drops a region without output (its vectors go back to the pool).
+    pub(super) fn discard(&mut self, r: Reg) {
+        self.recycle_subs(r.subs);
+    }
+
     /// v ends the region.
-    fn close(&mut self, r: Reg, v: usize) {
+    pub(super) fn close(&mut self, r: Reg, v: usize) {
         for ch in &r.subs {
             self.fan(ch, v);
         }
@@ -480,7 +532,7 @@ impl Tri<'_> {
     }
 
     /// v starts a hole inside the region: returns the parts below and above.
-    fn split(&mut self, r: Reg, v: usize) -> (Reg, Reg) {
+    pub(super) fn split(&mut self, r: Reg, v: usize) -> (Reg, Reg) {
         let mut subs = r.subs;
         if subs.len() > 1 {
             let top = subs.pop().unwrap_or_else(|| Chain { verts: Vec::new(), side: Side::Both });

@@ -1,0 +1,389 @@
+//! The fast path for polygons whose contours are already a planar
+//! arrangement: no two vertices within EPS, no edge crossing or touching
+//! another, every contour at least a triangle. That is most real input
+//! (outlines, glyphs, polygons with holes), and for it the general path's
+//! merging, splitting and winding sweep find nothing to do.
+//!
+//! One sweep does everything: it checks the preconditions as it goes
+//! (Shamos and Hoey: if two edges cross, two crossing edges are adjacent in
+//! the active list at some event before the leftmost crossing, so testing
+//! every pair that becomes adjacent finds one; the test is conservative,
+//! "within EPS" counts as touching), computes each edge's winding from the
+//! edge below it, and triangulates with [`sweep`]'s monotone chains. It
+//! gives up (returns false, having output nothing) at the first sign of
+//! anything the general path handles: near-coincident vertices, edges
+//! that cross, touch or overlap, an edge with the selected region on both
+//! sides or neither (an empty selection, or same-direction nested
+//! contours under NONZERO), or a vertex where the active list is not as a
+//! planar arrangement would have it (floating-point doubt).
+//!
+//! Edge e is the contour edge from vertex e to its successor; vertex ids
+//! are input indices (nothing is merged). The active list is a
+//! [`BlockList`], so polygons with tens of thousands of edges active at
+//! once stay O(n sqrt n) in the worst case.
+
+use super::blocks::BlockList;
+use super::sweep::{orient, Pool, Reg, Region, Rule, Side, Tri, Vert, EPS};
+
+/// An active edge: its ends in sweep order, the winding number above it,
+/// and the region above it (if that region is selected).
+struct Entry {
+    lo: u32,
+    hi: u32,
+    w: i32,
+    reg: Option<Reg>,
+}
+
+/// Buffers kept from one polygon to the next.
+#[derive(Default)]
+pub struct Scratch {
+    keyed: Vec<(u64, u64, u32)>,
+    rank: Vec<u32>,
+    next: Vec<u32>,
+    prev: Vec<u32>,
+    active: BlockList<Entry>,
+}
+
+#[inline]
+fn ord_key(x: f64) -> u64 {
+    let b = x.to_bits();
+    if b >> 63 == 1 {
+        !b
+    } else {
+        b | 1 << 63
+    }
+}
+
+/// Does p lie within EPS of the open segment a-b? (As the splitter tests.)
+#[inline]
+fn lies_on(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> bool {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let l2 = dx * dx + dy * dy;
+    let dot = (p[0] - a[0]) * dx + (p[1] - a[1]) * dy;
+    if !(dot > 0.0 && dot < l2) {
+        return false;
+    }
+    let o = orient(a, b, p);
+    o * o <= EPS * EPS * l2
+}
+
+/// Do edges (a, b) and (c, d) (vertex ids) cross, touch or come within
+/// EPS, other than at a shared endpoint?
+fn interact(v: &[Vert], a: u32, b: u32, c: u32, d: u32) -> bool {
+    let (pa, pb, pc, pd) = (v[a as usize].p, v[b as usize].p, v[c as usize].p, v[d as usize].p);
+    // Boxes apart by more than EPS: nothing to test (the common case).
+    if pa[0].max(pb[0]) + EPS < pc[0].min(pd[0])
+        || pc[0].max(pd[0]) + EPS < pa[0].min(pb[0])
+        || pa[1].max(pb[1]) + EPS < pc[1].min(pd[1])
+        || pc[1].max(pd[1]) + EPS < pa[1].min(pb[1])
+    {
+        return false;
+    }
+    if (c != a && c != b && lies_on(pc, pa, pb))
+        || (d != a && d != b && lies_on(pd, pa, pb))
+        || (a != c && a != d && lies_on(pa, pc, pd))
+        || (b != c && b != d && lies_on(pb, pc, pd))
+    {
+        return true;
+    }
+    if a == c || a == d || b == c || b == d {
+        return false;
+    }
+    let (d1, d2, d3, d4) = (orient(pc, pd, pa), orient(pc, pd, pb), orient(pa, pb, pc), orient(pa, pb, pd));
+    // Touching with a zero orientation is within EPS, found above; only
+    // strict sign changes are left.
+    ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
+}
+
+/// Tessellates contours `starts` (first indices; the last runs to the end)
+/// of `verts` into `region` (boundary always, triangles unless
+/// `boundary_only`). False (and `region` to be ignored) if the input is not
+/// a planar arrangement this path can take.
+pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: bool, sc: &mut Scratch, pool: &mut Pool, region: &mut Region) -> bool {
+    let n = verts.len();
+    region.boundary.clear();
+    region.triangles.clear();
+    if n < 3 || n >= u32::MAX as usize / 2 {
+        return false;
+    }
+    // Successors and predecessors along the contours.
+    sc.next.clear();
+    sc.prev.clear();
+    sc.next.resize(n, 0);
+    sc.prev.resize(n, 0);
+    for (k, &s) in starts.iter().enumerate() {
+        let e = starts.get(k + 1).copied().unwrap_or(n);
+        if e == s {
+            continue; // empty contours add nothing
+        }
+        if e < s + 3 {
+            return false;
+        }
+        for i in s..e {
+            let j = if i + 1 < e { i + 1 } else { s };
+            sc.next[i] = j as u32;
+            sc.prev[j] = i as u32;
+        }
+    }
+    // Sweep order; near-coincident vertices are adjacent in it up to the
+    // few within EPS in x, which the window below visits.
+    sc.keyed.clear();
+    sc.keyed.extend(verts.iter().enumerate().map(|(i, v)| (ord_key(v.p[0]), ord_key(v.p[1]), i as u32)));
+    sc.keyed.sort_unstable();
+    sc.rank.clear();
+    sc.rank.resize(n, 0);
+    for (r, k) in sc.keyed.iter().enumerate() {
+        sc.rank[k.2 as usize] = r as u32;
+    }
+    for (r, k) in sc.keyed.iter().enumerate() {
+        let p = verts[k.2 as usize].p;
+        for q in &sc.keyed[r + 1..] {
+            let q = verts[q.2 as usize].p;
+            // (Past EPS in x, or NaN: the window ends.)
+            if !matches!((q[0] - p[0]).partial_cmp(&EPS), Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)) {
+                break;
+            }
+            if (q[1] - p[1]).abs() <= EPS {
+                return false;
+            }
+        }
+    }
+    let Scratch { keyed, rank, next, prev, active } = sc;
+    active.clear_with(drop);
+    let mut t = Tri { verts, out: &mut region.triangles, pool };
+    let ok = sweep(verts, keyed, rank, next, prev, rule, boundary_only, active, &mut t, &mut region.boundary);
+    // Regions left behind after giving up: back to the pool.
+    active.clear_with(|e| {
+        if let Some(r) = e.reg {
+            t.discard(r);
+        }
+    });
+    ok
+}
+
+#[allow(clippy::too_many_arguments)]
+fn sweep(
+    verts: &[Vert],
+    keyed: &[(u64, u64, u32)],
+    rank: &[u32],
+    next: &[u32],
+    prev: &[u32],
+    rule: Rule,
+    boundary_only: bool,
+    active: &mut BlockList<Entry>,
+    t: &mut Tri,
+    boundary: &mut Vec<(usize, usize)>,
+) -> bool {
+    let at = |i: u32| verts[i as usize].p;
+    // v is above (left of) the entry's edge.
+    let above = |e: &Entry, pv: [f64; 2]| orient(at(e.lo), at(e.hi), pv);
+    for k in keyed {
+        let v = k.2;
+        let pv = at(v);
+        let (p, q) = (prev[v as usize], next[v as usize]);
+        // Edge p→v and edge v→q; "out" when v is its left end.
+        let a_out = rank[p as usize] > rank[v as usize];
+        let b_out = rank[q as usize] > rank[v as usize];
+        match (a_out, b_out) {
+            (true, true) => {
+                // Both edges start here: lower and upper by direction.
+                let pos = active.partition_point(|e| above(e, pv) >= 0.0);
+                let o = orient(pv, at(p), at(q));
+                if o == 0.0 {
+                    return false;
+                }
+                // o > 0: q is left of v→p, so v→p is the lower edge.
+                let (l, u) = if o > 0.0 { (p, q) } else { (q, p) };
+                // Windings: +1 for an edge traversed from its left end.
+                let dir = |far: u32| if far == q { 1 } else { -1 };
+                let w0 = if pos > 0 { active.get(pos - 1).w } else { 0 };
+                let (w1, w2) = (w0 + dir(l), w0 + dir(l) + dir(u));
+                let (i0, i1, i2) = (rule.inside(w0 as i64), rule.inside(w1 as i64), rule.inside(w2 as i64));
+                if i0 == i1 || i1 == i2 {
+                    return false;
+                }
+                // The two new edges are adjacent too (nearly overlapping?).
+                if interact(verts, v, l, v, u) {
+                    return false;
+                }
+                if pos > 0 {
+                    let b = active.get(pos - 1);
+                    if interact(verts, b.lo, b.hi, v, l) {
+                        return false;
+                    }
+                }
+                if pos < active.len() {
+                    let a = active.get(pos);
+                    if interact(verts, a.lo, a.hi, v, u) {
+                        return false;
+                    }
+                }
+                push_boundary(boundary, v, l, i1);
+                push_boundary(boundary, v, u, i2);
+                let (mut rl, mut ru) = (None, None);
+                if !boundary_only {
+                    let r = if pos > 0 { active.get_mut(pos - 1).reg.take() } else { None };
+                    if i1 {
+                        rl = Some(t.start(v as usize));
+                    }
+                    match r {
+                        Some(r) => {
+                            let (lower, upper) = t.split(r, v as usize);
+                            active.get_mut(pos - 1).reg = Some(lower);
+                            ru = Some(upper);
+                        }
+                        None if i2 => ru = Some(t.start(v as usize)),
+                        None => {}
+                    }
+                }
+                active.insert(pos, Entry { lo: v, hi: u, w: w2, reg: ru });
+                active.insert(pos, Entry { lo: v, hi: l, w: w1, reg: rl });
+            }
+            (false, false) => {
+                // Both edges end here: they must be adjacent entries.
+                let pos = active.partition_point(|e| above(e, pv) > 0.0);
+                if pos + 1 >= active.len() || active.get(pos).hi != v || active.get(pos + 1).hi != v {
+                    return false;
+                }
+                let r_below = if pos > 0 { active.get_mut(pos - 1).reg.take() } else { None };
+                let r_above = active.get_mut(pos + 1).reg.take();
+                let inner = active.remove(pos).reg;
+                active.remove(pos);
+                if let Some(r) = inner {
+                    t.close(r, v as usize);
+                }
+                let r_below = r_below.map(|r| t.add(r, v as usize, Side::Upper));
+                let r_above = r_above.map(|r| t.add(r, v as usize, Side::Lower));
+                match (r_below, r_above) {
+                    (Some(b), Some(a)) => active.get_mut(pos - 1).reg = Some(t.merge(b, a)),
+                    (Some(b), None) => active.get_mut(pos - 1).reg = Some(b),
+                    (None, Some(a)) => t.close(a, v as usize),
+                    (None, None) => {}
+                }
+                if pos > 0 && pos < active.len() {
+                    let (b, a) = (active.get(pos - 1), active.get(pos));
+                    if interact(verts, b.lo, b.hi, a.lo, a.hi) {
+                        return false;
+                    }
+                }
+            }
+            _ => {
+                // One edge ends, the other continues to the right.
+                let far = if a_out { p } else { q };
+                let pos = active.partition_point(|e| above(e, pv) > 0.0);
+                if pos >= active.len() || active.get(pos).hi != v || (pos + 1 < active.len() && active.get(pos + 1).hi == v) {
+                    return false;
+                }
+                let w0 = if pos > 0 { active.get(pos - 1).w } else { 0 };
+                let w1 = w0 + if far == q { 1 } else { -1 };
+                let i1 = rule.inside(w1 as i64);
+                if rule.inside(w0 as i64) == i1 {
+                    return false;
+                }
+                if pos > 0 {
+                    let b = active.get(pos - 1);
+                    if interact(verts, b.lo, b.hi, v, far) {
+                        return false;
+                    }
+                }
+                if pos + 1 < active.len() {
+                    let a = active.get(pos + 1);
+                    if interact(verts, a.lo, a.hi, v, far) {
+                        return false;
+                    }
+                }
+                push_boundary(boundary, v, far, i1);
+                let mut reg = None;
+                if !boundary_only {
+                    if pos > 0 {
+                        if let Some(r) = active.get_mut(pos - 1).reg.take() {
+                            active.get_mut(pos - 1).reg = Some(t.add(r, v as usize, Side::Upper));
+                        }
+                    }
+                    reg = match active.get_mut(pos).reg.take() {
+                        Some(a) => Some(t.add(a, v as usize, Side::Lower)),
+                        None if i1 => Some(t.start(v as usize)),
+                        None => None,
+                    };
+                }
+                *active.get_mut(pos) = Entry { lo: v, hi: far, w: w1, reg };
+            }
+        }
+    }
+    true
+}
+
+/// The boundary edge lo→hi (lo left of hi), directed with the region on its left.
+#[inline]
+fn push_boundary(boundary: &mut Vec<(usize, usize)>, lo: u32, hi: u32, inside_above: bool) {
+    boundary.push(if inside_above { (lo as usize, hi as usize) } else { (hi as usize, lo as usize) });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(contours: &[&[[f64; 2]]], rule: Rule) -> Option<Region> {
+        let verts: Vec<Vert> = contours.iter().flat_map(|c| c.iter().map(|&p| Vert { p })).collect();
+        let mut starts = Vec::new();
+        let mut n = 0;
+        for c in contours {
+            starts.push(n);
+            n += c.len();
+        }
+        let (mut sc, mut pool, mut region) = (Scratch::default(), Pool::default(), Region::default());
+        tessellate(&verts, &starts, rule, false, &mut sc, &mut pool, &mut region).then_some(region)
+    }
+
+    fn area(r: &Region, v: &[[f64; 2]]) -> f64 {
+        r.triangles.iter().map(|t| 0.5 * orient(v[t[0]], v[t[1]], v[t[2]])).sum()
+    }
+
+    #[test]
+    fn takes_planar_input() {
+        let sq = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let hole = [[0.25, 0.25], [0.25, 0.75], [0.75, 0.75], [0.75, 0.25]];
+        let r = run(&[&sq], Rule::Odd).expect("a square");
+        assert_eq!(r.triangles.len(), 2);
+        assert!((area(&r, &sq) - 1.0).abs() < 1e-15);
+        let all: Vec<[f64; 2]> = sq.iter().chain(hole.iter()).copied().collect();
+        for rule in [Rule::Odd, Rule::NonZero, Rule::Positive] {
+            let r = run(&[&sq, &hole], rule).expect("a square with a hole");
+            assert!((area(&r, &all) - 0.75).abs() < 1e-15);
+            assert_eq!(r.boundary.len(), 8);
+        }
+        // Nested the same way round: NONZERO has an edge with the region on both sides.
+        let inner: Vec<[f64; 2]> = hole.iter().rev().copied().collect();
+        assert!(run(&[&sq, &inner], Rule::NonZero).is_none());
+        assert!(run(&[&sq, &inner], Rule::Odd).is_some());
+        // Nothing selected: left to the general path.
+        assert!(run(&[&sq], Rule::Negative).is_none());
+    }
+
+    #[test]
+    fn leaves_the_rest_to_the_general_path() {
+        let cases: [&[[f64; 2]]; 6] = [
+            // A bow tie (crossing edges).
+            &[[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]],
+            // A vertex on another edge (pinch).
+            &[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [1.0, 0.0], [0.0, 2.0]],
+            // A vertex within EPS of another edge.
+            &[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [1.0, 1e-14], [0.0, 2.0]],
+            // Near-coincident vertices.
+            &[[0.0, 0.0], [1.0, 0.0], [1.0, 1e-14], [1.0, 1.0], [0.0, 1.0]],
+            // A spike folding back on its own edge.
+            &[[0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [1.0, 1.0]],
+            // Two edges leaving a vertex nearly overlapping: the upper one
+            // ends (both its vertex's edges come from the left) within EPS
+            // of the lower one.
+            &[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.5, 1.0], [1.0, 1e-14]],
+        ];
+        for (i, c) in cases.iter().enumerate() {
+            assert!(run(&[c], Rule::Odd).is_none(), "case {i}");
+        }
+        // Two triangles crossing each other (each simple).
+        let a = [[0.0, 0.0], [2.0, 0.0], [1.0, 2.0]];
+        let b = [[0.0, 1.0], [2.0, 1.0], [1.0, -1.0]];
+        assert!(run(&[&a, &b], Rule::Odd).is_none());
+    }
+}
