@@ -482,13 +482,23 @@ static void run_bind(void)
 
 /* The first config (glXGetFBConfigs order) whose GLX_VISUAL_ID is `id`, as
  * piglit and toolkits find a visual's config. */
-static GLXFBConfig config_of_visual(VisualID id)
+/* The config a chosen visual stands for: its GLX_VISUAL_ID, and (RGB and
+ * RGBA configs share visuals) the alpha, depth and buffering glXGetConfig
+ * reports for the visual. */
+static GLXFBConfig config_of_visual(XVisualInfo *vis)
 {
+    static const int same[] = {GLX_ALPHA_SIZE, GLX_DEPTH_SIZE, GLX_DOUBLEBUFFER};
     int n = 0;
     GLXFBConfig *cs = glXGetFBConfigs(dpy, DefaultScreen(dpy), &n), found = NULL;
     for (int i = 0; cs && i < n && !found; i++) {
-        int v = 0;
-        if (glXGetFBConfigAttrib(dpy, cs[i], GLX_VISUAL_ID, &v) == Success && (VisualID)v == id)
+        int v = 0, ok = glXGetFBConfigAttrib(dpy, cs[i], GLX_VISUAL_ID, &v) == Success && (VisualID)v == vis->visualid;
+        for (int k = 0; k < 3 && ok; k++) {
+            int want = -1, have = -2;
+            glXGetConfig(dpy, vis, same[k], &want);
+            glXGetFBConfigAttrib(dpy, cs[i], same[k], &have);
+            ok = want == have;
+        }
+        if (ok)
             found = cs[i];
     }
     if (cs)
@@ -521,7 +531,7 @@ static void run_configs(void)
         XVisualInfo *v = vis[dbl];
         int value = -1;
         CHECK(glXGetConfig(dpy, v, GLX_DOUBLEBUFFER, &value) == 0 && value == dbl, "visual 0x%lx: glXGetConfig(GLX_DOUBLEBUFFER) is %d, expected %d", v->visualid, value, dbl);
-        GLXFBConfig c = config_of_visual(v->visualid);
+        GLXFBConfig c = config_of_visual(v);
         CHECK(c != NULL, "visual 0x%lx: no config has it as GLX_VISUAL_ID", v->visualid);
         if (!c)
             continue;
