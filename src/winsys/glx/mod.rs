@@ -6,18 +6,18 @@
 //! at all (with one, the errors GLX defines are numbered from its base).
 //!
 //! What is offered: for each of the depths 24 and 32 that has TrueColor
-//! visuals with 8-bit channels, five FBConfigs: RGBA8 single- and
-//! double-buffered, RGB8 (ALPHA_SIZE 0) single- and double-buffered, each
-//! with depth 24 and stencil 8, and RGB8 double-buffered without depth
-//! or stencil; all with accumulation 16 per channel, no multisampling,
+//! visuals with 8-bit channels, FBConfigs RGBA8 single- and
+//! double-buffered with depth 24 and stencil 8; for depth 24 also RGB8
+//! (ALPHA_SIZE 0) single- and double-buffered with depth and stencil, and
+//! RGB8 double-buffered without depth or stencil; all with accumulation 16 per channel, no multisampling,
 //! window, pixmap and pbuffer drawables. Single- and double-buffered
 //! configs have their own visuals when the screen has two of that depth;
 //! other visuals of the same format are accepted as the configs of their
 //! depth. What is advertised is what the drawable's framebuffer gets (an
 //! RGB framebuffer reads alpha as 1.0, see framebuffer::Config).
-//! glXChooseFBConfig sorts by GLX 1.4 table 3.5 and glXChooseVisual
-//! prefers the smallest buffer for a size asked as zero (section 3.3.2),
-//! so a program that does not ask for alpha gets an RGB config. Contexts come from
+//! glXChooseFBConfig sorts by GLX 1.4 table 3.5, so a program that does
+//! not ask for alpha gets an RGB config first. glXChooseVisual picks among
+//! the RGBA configs only (see `choose_visual`). Contexts come from
 //! glXCreateContext, glXCreateNewContext and glXCreateContextAttribsARB
 //! (GLX_ARB_create_context and _profile: GL 1.0 to 1.5).
 //!
@@ -270,6 +270,11 @@ unsafe fn configs(dpy: *mut Display, screen: c_int) -> Vec<&'static FbConfig> {
         for depth in [24, 32] {
             let of_depth: Vec<&XVisualInfo> = found.iter().filter(|v| v.depth == depth).collect();
             let Some(&first) = of_depth.first() else { continue };
+            // RGB configs only on depth 24: a config's GLX_BUFFER_SIZE may
+            // not be below its visual's depth (piglit glx-fbconfig-sanity).
+            if !group[0].0 && depth != 24 {
+                continue;
+            }
             // One visual per single/double pair when the server has two
             // (a server with GLX has hundreds): a plain X window's visual
             // then names its config, as glXQueryDrawable(GLX_FBCONFIG_ID)
@@ -479,18 +484,18 @@ pub unsafe fn choose_visual(dpy: *mut Display, screen: c_int, list: *mut c_int) 
         return null_mut();
     }
     let double = req.iter().any(|&(a, v)| a == GLX_DOUBLEBUFFER && v != 0);
-    // Sizes may be given twice; the last one counts.
     let mut want: Vec<(c_int, c_int)> = req.into_iter().filter(|&(a, _)| a != GLX_RGBA && a != GLX_USE_GL).collect();
     want.retain(|&(a, _)| a != GLX_DOUBLEBUFFER);
     want.push((GLX_DOUBLEBUFFER, double as c_int));
-    let mut found: Vec<&'static FbConfig> = configs(dpy, screen).into_iter().filter(|c| want.iter().all(|&(a, v)| matches(c, a, v))).collect();
-    // Section 3.3.2: for a size asked as zero the smallest buffer is
-    // preferred, otherwise the largest (ours differ only in alpha, depth
-    // and stencil). The sort is stable: ties keep the list's order.
-    let asked = |a: c_int| want.iter().rev().find(|&&(b, _)| b == a).map_or(0, |&(_, v)| v);
-    let prefs: Vec<(c_int, bool)> = [GLX_ALPHA_SIZE, GLX_DEPTH_SIZE, GLX_STENCIL_SIZE].into_iter().map(|a| (a, asked(a) == 0)).collect();
-    found.sort_by_key(|c| prefs.iter().map(|&(a, smaller)| { let v = c.attrib(a).unwrap_or(0); if smaller { v } else { -v } }).collect::<Vec<_>>());
-    let Some(c) = found.first() else { return null_mut() };
+    // Only the RGBA configs with depth and stencil: the others share their
+    // visuals, and a visual stands for the first config that has it
+    // (piglit and programs look a visual's config up by GLX_VISUAL_ID).
+    // Section 3.3.2 would prefer no alpha for GLX_ALPHA_SIZE 0, but the X
+    // server has no spare visuals to give RGB configs their own; the RGB
+    // configs are reached through glXChooseFBConfig.
+    let Some(c) = configs(dpy, screen).into_iter().find(|c| c.alpha && c.depth_stencil && want.iter().all(|&(a, v)| matches(c, a, v))) else {
+        return null_mut();
+    };
     remember_visual(dpy, c);
     visual_info(dpy, screen, c.visualid)
 }
