@@ -482,13 +482,23 @@ static void run_bind(void)
 
 /* The first config (glXGetFBConfigs order) whose GLX_VISUAL_ID is `id`, as
  * piglit and toolkits find a visual's config. */
-static GLXFBConfig config_of_visual(VisualID id)
+/* The config a chosen visual stands for: its GLX_VISUAL_ID, and (RGB and
+ * RGBA configs share visuals) the alpha, depth and buffering glXGetConfig
+ * reports for the visual. */
+static GLXFBConfig config_of_visual(XVisualInfo *vis)
 {
+    static const int same[] = {GLX_ALPHA_SIZE, GLX_DEPTH_SIZE, GLX_DOUBLEBUFFER};
     int n = 0;
     GLXFBConfig *cs = glXGetFBConfigs(dpy, DefaultScreen(dpy), &n), found = NULL;
     for (int i = 0; cs && i < n && !found; i++) {
-        int v = 0;
-        if (glXGetFBConfigAttrib(dpy, cs[i], GLX_VISUAL_ID, &v) == Success && (VisualID)v == id)
+        int v = 0, ok = glXGetFBConfigAttrib(dpy, cs[i], GLX_VISUAL_ID, &v) == Success && (VisualID)v == vis->visualid;
+        for (int k = 0; k < 3 && ok; k++) {
+            int want = -1, have = -2;
+            glXGetConfig(dpy, vis, same[k], &want);
+            glXGetFBConfigAttrib(dpy, cs[i], same[k], &have);
+            ok = want == have;
+        }
+        if (ok)
             found = cs[i];
     }
     if (cs)
@@ -521,7 +531,7 @@ static void run_configs(void)
         XVisualInfo *v = vis[dbl];
         int value = -1;
         CHECK(glXGetConfig(dpy, v, GLX_DOUBLEBUFFER, &value) == 0 && value == dbl, "visual 0x%lx: glXGetConfig(GLX_DOUBLEBUFFER) is %d, expected %d", v->visualid, value, dbl);
-        GLXFBConfig c = config_of_visual(v->visualid);
+        GLXFBConfig c = config_of_visual(v);
         CHECK(c != NULL, "visual 0x%lx: no config has it as GLX_VISUAL_ID", v->visualid);
         if (!c)
             continue;
@@ -553,6 +563,119 @@ static void run_configs(void)
     }
     XFree(vis[0]);
     printf("  configs: %s\n", failures ? "failed" : "ok");
+}
+
+/* ---- RGB configs (ALPHA_SIZE 0) ---- */
+
+/* First config of a glXChooseFBConfig request, with its alpha size. */
+static GLXFBConfig first_config(const int *attribs, int *alpha, int *count)
+{
+    int n = 0;
+    GLXFBConfig *cs = glXChooseFBConfig(dpy, DefaultScreen(dpy), attribs, &n), c = NULL;
+    *count = n;
+    *alpha = -1;
+    if (cs && n > 0) {
+        c = cs[0];
+        glXGetFBConfigAttrib(dpy, c, GLX_ALPHA_SIZE, alpha);
+        /* Asked for alpha: every config returned has it. */
+        for (int i = 1; i < n && *alpha > 0; i++) {
+            int a = -1;
+            glXGetFBConfigAttrib(dpy, cs[i], GLX_ALPHA_SIZE, &a);
+            CHECK(a > 0, "config %d of a request for alpha has GLX_ALPHA_SIZE %d", i, a);
+        }
+    }
+    if (cs)
+        XFree(cs);
+    return c;
+}
+
+/* Draws a 16x16 window with `c` and checks what alpha reads as: `rgb`
+ * says the config has none (so alpha is 1.0 whatever is written). */
+static void check_alpha(GLXFBConfig c, int rgb)
+{
+    XVisualInfo *v = glXGetVisualFromFBConfig(dpy, c), *save = vi;
+    CHECK(v != NULL, "no visual for the config");
+    if (!v)
+        return;
+    vi = v;
+    Window win = make_window(16, 16);
+    vi = save;
+    GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, NULL, True);
+    CHECK(ctx && glXMakeCurrent(dpy, win, ctx), "rgb=%d: context", rgb);
+    GLint bits = -1;
+    glGetIntegerv(GL_ALPHA_BITS, &bits);
+    CHECK(bits == (rgb ? 0 : 8), "rgb=%d: GL_ALPHA_BITS is %d", rgb, bits);
+    glViewport(0, 0, 16, 16);
+    glClearColor(0.2f, 0.4f, 0.6f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    GLubyte px[4] = {0};
+    glReadPixels(4, 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    CHECK(px[3] == (rgb ? 255 : 0), "rgb=%d: alpha after clearing to 0 reads %d", rgb, px[3]);
+    GLfloat f[4] = {0};
+    glReadPixels(4, 4, 1, 1, GL_RGBA, GL_FLOAT, f);
+    CHECK(f[3] == (rgb ? 1.0f : 0.0f), "rgb=%d: float alpha reads %g", rgb, f[3]);
+    /* A quad with alpha 0.25, no blending: alpha is written only with
+     * an alpha buffer. */
+    glColor4f(0.0f, 0.0f, 0.0f, 0.25f);
+    glRectf(-1, -1, 1, 1);
+    glReadPixels(4, 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    CHECK(px[3] == (rgb ? 255 : 64), "rgb=%d: alpha after drawing 0.25 reads %d", rgb, px[3]);
+    /* Destination alpha: 1.0 without an alpha buffer, 0.25 with. */
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_DST_ALPHA, GL_ZERO);
+    glColor4f(1.0f, 1.0f, 1.0f, 1.0f);
+    glRectf(-1, -1, 1, 1);
+    glDisable(GL_BLEND);
+    glReadPixels(4, 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    int want = rgb ? 255 : 64;
+    CHECK(abs(px[0] - want) <= 1 && abs(px[1] - want) <= 1, "rgb=%d: GL_DST_ALPHA blend gives %d %d %d %d, want red and green %d", rgb, px[0], px[1], px[2], px[3], want);
+    glXMakeCurrent(dpy, None, NULL);
+    if (ctx)
+        glXDestroyContext(dpy, ctx);
+    XDestroyWindow(dpy, win);
+    XFree(v);
+}
+
+static void run_rgb(void)
+{
+    int alpha = -1, n = 0;
+    /* GLX 1.4 table 3.5: alpha not asked for is not counted, and the
+     * smaller GLX_BUFFER_SIZE comes first: an RGB config. */
+    int no_alpha[] = {GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_DOUBLEBUFFER, True, GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8, GLX_BLUE_SIZE, 8, None};
+    GLXFBConfig rgb = first_config(no_alpha, &alpha, &n);
+    CHECK(rgb && alpha == 0, "first config without alpha asked: GLX_ALPHA_SIZE %d (%d configs)", alpha, n);
+    int with_alpha[] = {GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_DOUBLEBUFFER, True, GLX_ALPHA_SIZE, 1, None};
+    GLXFBConfig rgba = first_config(with_alpha, &alpha, &n);
+    CHECK(rgba && alpha == 8, "first config with alpha asked: GLX_ALPHA_SIZE %d (%d configs)", alpha, n);
+    int buffer = -1;
+    if (rgb) {
+        glXGetFBConfigAttrib(dpy, rgb, GLX_BUFFER_SIZE, &buffer);
+        CHECK(buffer == 24, "RGB config: GLX_BUFFER_SIZE %d", buffer);
+    }
+    /* glXChooseVisual hands out only RGBA configs (the RGB ones share
+     * their visuals; a visual names the first config that has it). */
+    int v_no_alpha[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_DEPTH_SIZE, 1, None};
+    int v_alpha[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_ALPHA_SIZE, 1, None};
+    XVisualInfo *v0 = glXChooseVisual(dpy, DefaultScreen(dpy), v_no_alpha);
+    int a0 = -1, d0 = -1;
+    if (v0) {
+        glXGetConfig(dpy, v0, GLX_ALPHA_SIZE, &a0);
+        glXGetConfig(dpy, v0, GLX_DEPTH_SIZE, &d0);
+        XFree(v0);
+    }
+    CHECK(a0 == 8 && d0 == 24, "glXChooseVisual without alpha: GLX_ALPHA_SIZE %d, GLX_DEPTH_SIZE %d", a0, d0);
+    XVisualInfo *v1 = glXChooseVisual(dpy, DefaultScreen(dpy), v_alpha);
+    int a1 = -1;
+    if (v1) {
+        glXGetConfig(dpy, v1, GLX_ALPHA_SIZE, &a1);
+        XFree(v1);
+    }
+    CHECK(a1 == 8, "glXChooseVisual with alpha: GLX_ALPHA_SIZE %d", a1);
+    if (rgb)
+        check_alpha(rgb, 1);
+    if (rgba)
+        check_alpha(rgba, 0);
+    printf("  rgb: %s\n", failures ? "failed" : "ok");
 }
 
 /* ---- binned triangles and window-system calls ---- */
@@ -926,6 +1049,8 @@ int main(int argc, char **argv)
         run_share();
     else if (!strcmp(mode, "configs"))
         run_configs();
+    else if (!strcmp(mode, "rgb"))
+        run_rgb();
     else if (!strcmp(mode, "bind"))
         run_bind();
     else if (!strcmp(mode, "deferred"))

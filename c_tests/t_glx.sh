@@ -113,7 +113,7 @@ for mode in visual fbconfig; do
     fi
 done
 
-for mode in shm noshm attribs share bind configs deferred multi read pbuffer pixmap; do
+for mode in shm noshm attribs share bind configs rgb deferred multi read pbuffer pixmap; do
     if [ $mode = noshm ]; then
         out=$(SOFTGL_NO_SHM=1 timeout 30 "$DIR/glx_drawables" shm 2>&1)
     else

@@ -6,7 +6,7 @@ use softgl::gl::enums::*;
 use softgl::gl::{Command, Context};
 
 fn context(accum: bool) -> Context {
-    let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: if accum { 16 } else { 0 } });
+    let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: if accum { 16 } else { 0 } });
     c.fb.resize(4, 4).unwrap();
     c.surface_resized(4, 4);
     c
@@ -93,4 +93,26 @@ fn accum_errors() {
     c.execute(&Command::Begin(GL_TRIANGLES));
     c.execute(&Command::Accum(GL_LOAD, 1.0));
     assert_eq!(c.take_error(), GL_INVALID_OPERATION);
+}
+
+/// A surface without alpha (a GLX RGB config) keeps alpha at 1.0 through
+/// clears, colour masks and RETURN (framebuffer::Config::color_mask).
+#[test]
+fn no_alpha_surface_keeps_alpha_one() {
+    let mut c = Context::new(Config { alpha_bits: 0, depth_bits: 24, stencil_bits: 8, accum_bits: 16 });
+    c.fb.resize(4, 4).unwrap();
+    c.surface_resized(4, 4);
+    assert_eq!(px(&c)[3], 255, "a new RGB buffer starts with alpha 1.0");
+    clear_to(&mut c, [0.2, 0.4, 0.6, 0.0]);
+    near(px(&c), [0.2, 0.4, 0.6, 1.0]);
+    // Only alpha enabled for writing: the clear changes nothing.
+    c.execute(&Command::ColorMask([false, false, false, true]));
+    clear_to(&mut c, [0.0; 4]);
+    near(px(&c), [0.2, 0.4, 0.6, 1.0]);
+    c.execute(&Command::ColorMask([true; 4]));
+    c.execute(&Command::ClearAccum([0.5, 0.5, 0.5, 0.0]));
+    c.execute(&Command::Clear(GL_ACCUM_BUFFER_BIT));
+    c.execute(&Command::Accum(GL_RETURN, 1.0));
+    near(px(&c), [0.5, 0.5, 0.5, 1.0]);
+    assert_eq!(c.take_error(), GL_NO_ERROR);
 }

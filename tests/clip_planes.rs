@@ -5,7 +5,7 @@ use softgl::gl::enums::*;
 use softgl::gl::{Command, Context};
 
 fn context() -> Context {
-    let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+    let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
     c.fb.resize(32, 32).unwrap();
     c.surface_resized(32, 32);
     c.execute(&Command::MatrixMode(GL_PROJECTION));

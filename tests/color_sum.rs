@@ -8,7 +8,7 @@ use softgl::gl::texture::enums as t;
 use softgl::gl::{Command, Context};
 
 fn context() -> Context {
-    let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+    let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
     c.fb.resize(4, 4).unwrap();
     c.surface_resized(4, 4);
     c

@@ -7,7 +7,7 @@ use softgl::gl::{Command, Context};
 use softgl::render::fog::{GL_EXP, GL_EXP2, GL_LINEAR};
 
 fn context() -> Context {
-    let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+    let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
     c.fb.resize(8, 8).unwrap();
     c.surface_resized(8, 8);
     c.execute(&Command::MatrixMode(GL_PROJECTION));
@@ -123,7 +123,7 @@ fn fog_errors_and_queries() {
 fn point_size_attenuation() {
     let count = |c: &Context| c.fb.color.iter().filter(|p| p[0] != 0).count();
     let draw = |att: [f32; 3], min: f32, max: f32| {
-        let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+        let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
         c.fb.resize(32, 32).unwrap();
         c.surface_resized(32, 32);
         c.execute(&Command::MatrixMode(GL_PROJECTION));

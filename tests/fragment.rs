@@ -10,7 +10,7 @@ use softgl::gl::enums::*;
 use softgl::gl::{Command, Context};
 
 fn context_with(stencil_bits: u8) -> Context {
-    let mut c = Context::new(Config { depth_bits: 24, stencil_bits, accum_bits: 0 });
+    let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits, accum_bits: 0 });
     c.fb.resize(2, 2).unwrap();
     c.surface_resized(2, 2);
     c

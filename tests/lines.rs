@@ -12,7 +12,7 @@ use std::collections::BTreeSet;
 const N: usize = 32;
 
 fn context() -> Context {
-    let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+    let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
     c.fb.resize(N, N).unwrap();
     c.surface_resized(N as i32, N as i32);
     c.execute(&Command::MatrixMode(GL_PROJECTION));

@@ -13,7 +13,7 @@ const W: usize = 32;
 const H: usize = 16;
 
 fn context() -> Context {
-    let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+    let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
     c.fb.resize(W, H).unwrap();
     c.surface_resized(W as i32, H as i32);
     c
@@ -492,7 +492,7 @@ fn draw_pixels_fragment_operations() {
     let row: Vec<u8> = (8..14).map(|x| c.fb.color[x][0]).collect();
     assert_eq!(row, vec![0, 0, 200, 200, 0, 0]);
     // No depth/stencil buffer: INVALID_OPERATION; bad arguments.
-    let mut n = Context::new(Config { depth_bits: 0, stencil_bits: 0, accum_bits: 0 });
+    let mut n = Context::new(Config { alpha_bits: 8, depth_bits: 0, stencil_bits: 0, accum_bits: 0 });
     n.fb.resize(4, 4).unwrap();
     n.surface_resized(4, 4);
     draw(&mut n, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &[0; 4]);

@@ -43,7 +43,7 @@ impl Rng {
 }
 
 fn context(reference: bool, (W, H): (usize, usize), threads: usize) -> Context {
-    let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+    let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
     c.fb.resize(W, H).unwrap();
     c.surface_resized(W as i32, H as i32);
     c.derived.render.reference = reference;

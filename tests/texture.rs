@@ -7,7 +7,7 @@ use softgl::gl::texture::enums as t;
 use softgl::gl::{Command, Context};
 
 fn context(w: usize, h: usize) -> Context {
-    let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+    let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
     c.fb.resize(w, h).unwrap();
     c.surface_resized(w as i32, h as i32);
     c

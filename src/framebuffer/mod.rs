@@ -32,11 +32,32 @@ pub const DEPTH_BITS: u32 = 24;
 pub const DEPTH_MAX: u32 = (1 << DEPTH_BITS) - 1;
 
 /// Which ancillary buffers a surface has, as the window system asked.
+///
+/// `alpha_bits` is 8 or 0. Storage is RGBA8 either way; a surface without
+/// alpha (a GLX RGB config) keeps every stored alpha at 255: it starts so,
+/// and every colour write goes through [`Config::color_mask`], which never
+/// lets alpha be written. Reads (glReadPixels, GL_DST_ALPHA blending,
+/// copies into textures) therefore see 1.0, as GL 1.5 section 4.1.8 and
+/// 4.3.2 require of a buffer with no alpha.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Config {
+    pub alpha_bits: u8,
     pub depth_bits: u8,
     pub stencil_bits: u8,
     pub accum_bits: u8,
+}
+
+impl Config {
+    /// The colour write mask as applied to this surface: alpha is never
+    /// written when the surface has none.
+    pub fn color_mask(&self, mask: [bool; 4]) -> [bool; 4] {
+        [mask[0], mask[1], mask[2], mask[3] && self.alpha_bits > 0]
+    }
+
+    /// What a colour buffer's pixels start as.
+    pub fn initial_color(&self) -> [u8; 4] {
+        if self.alpha_bits > 0 { [0; 4] } else { [0, 0, 0, 255] }
+    }
 }
 
 #[derive(Debug)]
@@ -207,8 +228,8 @@ impl Framebuffer {
             return Ok(());
         }
         let n = width * height;
-        let color = alloc(n, [0u8; 4])?;
-        let other_color = if self.double { alloc(n, [0u8; 4])? } else { Vec::new() };
+        let color = alloc(n, self.config.initial_color())?;
+        let other_color = if self.double { alloc(n, self.config.initial_color())? } else { Vec::new() };
         let depth = if self.config.depth_bits > 0 { alloc(n, 0u32)? } else { Vec::new() };
         let stencil = if self.config.stencil_bits > 0 { alloc(n, 0u8)? } else { Vec::new() };
         let accum = if self.config.accum_bits > 0 { alloc(n, [0i16; 4])? } else { Vec::new() };

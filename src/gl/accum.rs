@@ -111,7 +111,7 @@ impl Context {
         if r.is_empty() {
             return;
         }
-        let mask = if self.color_buffer.draw_buffer == 0 { [false; 4] } else { self.color_buffer.write_mask };
+        let mask = if self.color_buffer.draw_buffer == 0 { [false; 4] } else { self.fb.config.color_mask(self.color_buffer.write_mask) };
         self.sync_draw_buffer();
         let read_back = matches!(self.pixel_read_buffer, GL_BACK | 0x0402 /* BACK_LEFT */);
         let fb = &mut self.fb;
@@ -265,7 +265,7 @@ mod tests {
         };
         for (w, h) in [(7, 5), (300, 120)] {
             for &value in &[0.25f32, 1.0, -0.7, 2.5, 0.1] {
-                let mut c = Context::new(Config { depth_bits: 24, stencil_bits: 8, accum_bits: 16 });
+                let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 16 });
                 c.fb.resize(w, h).unwrap();
                 c.surface_resized(w as i32, h as i32);
                 let color: Vec<[u8; 4]> = (0..w * h).map(|_| next().to_ne_bytes()).collect();

@@ -95,9 +95,12 @@ impl Context {
             }
         }
         // Every colour buffer drawing writes (both for FRONT_AND_BACK).
+        // Blits ignore the write masks, but a surface without alpha keeps
+        // its alpha at 1.0 (see framebuffer::Config).
+        let keep_alpha = self.fb.config.alpha_bits == 0;
         for buf in self.fb.draw_colors() {
             for &(d, c) in &colors {
-                buf[d] = c;
+                buf[d] = if keep_alpha { [c[0], c[1], c[2], 255] } else { c };
             }
         }
     }

@@ -33,8 +33,14 @@ impl Context {
         let fb: &mut Framebuffer = &mut self.fb;
         let w = fb.width;
         if mask & GL_COLOR_BUFFER_BIT != 0 {
-            let value = color_to_u8(Vec4::from_array(self.color_buffer.clear));
-            let m = if self.color_buffer.draw_buffer == 0 { [false; 4] } else { self.color_buffer.write_mask };
+            let mut value = color_to_u8(Vec4::from_array(self.color_buffer.clear));
+            let mut m = if self.color_buffer.draw_buffer == 0 { [false; 4] } else { self.color_buffer.write_mask };
+            if fb.config.alpha_bits == 0 {
+                // No alpha: stored alpha stays 255, so writing 255 is the
+                // same as not writing it, and keeps the whole-row fill.
+                value[3] = 255;
+                m[3] = m[0] || m[1] || m[2];
+            }
             for color in fb.draw_colors() {
                 if m == [true; 4] {
                     rows(color, w, r, |row| row.fill(value));

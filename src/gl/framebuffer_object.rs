@@ -312,7 +312,7 @@ impl Context {
         }
         if old == 0 {
             // Park the window's framebuffer and its draw-buffer choice.
-            let staging = Framebuffer::new(Config { depth_bits: 0, stencil_bits: 0, accum_bits: 0 });
+            let staging = Framebuffer::new(Config { alpha_bits: 8, depth_bits: 0, stencil_bits: 0, accum_bits: 0 });
             self.fbo.parked = Some(std::mem::replace(&mut self.fb, staging));
             self.fbo.window_draw_buffer = self.color_buffer.draw_buffer;
         }
@@ -869,7 +869,7 @@ impl Context {
         if w == usize::MAX {
             return None;
         }
-        let config = Config { depth_bits: if depth.is_some() { 24 } else { 0 }, stencil_bits: if stencil.is_some() { 8 } else { 0 }, accum_bits: 0 };
+        let config = Config { alpha_bits: 8, depth_bits: if depth.is_some() { 24 } else { 0 }, stencil_bits: if stencil.is_some() { 8 } else { 0 }, accum_bits: 0 };
         let mut fb = Framebuffer::new(config);
         fb.resize(w, h).ok()?;
         if let Some(r) = &color {
@@ -939,7 +939,7 @@ impl Context {
             return;
         }
         let o = self.fbo.framebuffers.get(&b).cloned().unwrap_or_default();
-        let (fb, snap) = self.build_staging(&o).unwrap_or_else(|| (Framebuffer::new(Config { depth_bits: 0, stencil_bits: 0, accum_bits: 0 }), Snapshot::default()));
+        let (fb, snap) = self.build_staging(&o).unwrap_or_else(|| (Framebuffer::new(Config { alpha_bits: 8, depth_bits: 0, stencil_bits: 0, accum_bits: 0 }), Snapshot::default()));
         let samples = self.fb.samples_passed;
         self.fb = fb;
         self.fb.samples_passed = samples;

@@ -195,7 +195,7 @@ impl Context {
             zpass: st.zpass,
         };
         // glDrawBuffer(GL_NONE) writes no colour (4.2.1).
-        let color_mask = if cb.draw_buffer == 0 { [false; 4] } else { cb.write_mask };
+        let color_mask = if cb.draw_buffer == 0 { [false; 4] } else { self.fb.config.color_mask(cb.write_mask) };
         let color = if color_mask == [false; 4] {
             ColorOp::None
         } else if cb.color_logic_op {

@@ -196,6 +196,7 @@ impl Present for UserBuffer {
 
 fn config(depth: i32, stencil: i32, accum: i32) -> Config {
     Config {
+        alpha_bits: 8,
         depth_bits: if depth > 0 { crate::framebuffer::DEPTH_BITS as u8 } else { 0 },
         stencil_bits: if stencil > 0 { 8 } else { 0 },
         accum_bits: if accum > 0 { 16 } else { 0 },

@@ -377,7 +377,7 @@ pub fn create_context(hdc: Hdc) -> Hglrc {
     if format == 0 {
         return null_mut(); // Windows: ERROR_INVALID_PIXEL_FORMAT
     }
-    let config = Config { depth_bits: DEPTH_BITS as u8, stencil_bits: 8, accum_bits: 16 };
+    let config = Config { alpha_bits: 8, depth_bits: DEPTH_BITS as u8, stencil_bits: 8, accum_bits: 16 };
     let mut gl = Context::new(config);
     gl.set_double_buffered(is_double(format));
     gl.defer_render = true;

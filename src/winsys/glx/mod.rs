@@ -6,13 +6,18 @@
 //! at all (with one, the errors GLX defines are numbered from its base).
 //!
 //! What is offered: for each of the depths 24 and 32 that has TrueColor
-//! visuals with 8-bit channels, two FBConfigs (single- and
-//! double-buffered), each RGBA8 with depth 24, stencil 8, accumulation 16
-//! per channel, no multisampling, window, pixmap and pbuffer drawables.
-//! Each config has its own visual when the screen has two of that depth
-//! (then a window's visual names its config); other visuals of the same
-//! format are accepted as the configs of their depth. What is
-//! advertised is what the drawable's framebuffer gets. Contexts come from
+//! visuals with 8-bit channels, FBConfigs RGBA8 single- and
+//! double-buffered with depth 24 and stencil 8; for depth 24 also RGB8
+//! (ALPHA_SIZE 0) single- and double-buffered with depth and stencil, and
+//! RGB8 double-buffered without depth or stencil; all with accumulation 16 per channel, no multisampling,
+//! window, pixmap and pbuffer drawables. Single- and double-buffered
+//! configs have their own visuals when the screen has two of that depth;
+//! other visuals of the same format are accepted as the configs of their
+//! depth. What is advertised is what the drawable's framebuffer gets (an
+//! RGB framebuffer reads alpha as 1.0, see framebuffer::Config).
+//! glXChooseFBConfig sorts by GLX 1.4 table 3.5, so a program that does
+//! not ask for alpha gets an RGB config first. glXChooseVisual picks among
+//! the RGBA configs only (see `choose_visual`). Contexts come from
 //! glXCreateContext, glXCreateNewContext and glXCreateContextAttribsARB
 //! (GLX_ARB_create_context and _profile: GL 1.0 to 1.5).
 //!
@@ -150,23 +155,34 @@ pub struct FbConfig {
     depth: c_int,
     masks: [c_ulong; 3],
     double: bool,
+    /// ALPHA_SIZE 8 (else 0: an RGB config, see framebuffer::Config).
+    alpha: bool,
+    /// DEPTH_SIZE 24 and STENCIL_SIZE 8 (else neither).
+    depth_stencil: bool,
 }
 
 impl FbConfig {
     fn framebuffer_config(&self) -> Config {
-        Config { depth_bits: DEPTH_BITS as u8, stencil_bits: 8, accum_bits: 16 }
+        let zs = self.depth_stencil;
+        Config {
+            alpha_bits: if self.alpha { 8 } else { 0 },
+            depth_bits: if zs { DEPTH_BITS as u8 } else { 0 },
+            stencil_bits: if zs { 8 } else { 0 },
+            accum_bits: 16,
+        }
     }
 
     /// glXGetFBConfigAttrib / glXGetConfig: None for an unknown attribute.
     fn attrib(&self, a: c_int) -> Option<c_int> {
         Some(match a {
             GLX_USE_GL | GLX_RGBA | GLX_X_RENDERABLE => 1,
-            GLX_BUFFER_SIZE => 32,
+            GLX_BUFFER_SIZE => if self.alpha { 32 } else { 24 },
             GLX_LEVEL | GLX_STEREO | GLX_AUX_BUFFERS => 0,
             GLX_DOUBLEBUFFER => self.double as c_int,
-            GLX_RED_SIZE | GLX_GREEN_SIZE | GLX_BLUE_SIZE | GLX_ALPHA_SIZE => 8,
-            GLX_DEPTH_SIZE => DEPTH_BITS as c_int,
-            GLX_STENCIL_SIZE => 8,
+            GLX_RED_SIZE | GLX_GREEN_SIZE | GLX_BLUE_SIZE => 8,
+            GLX_ALPHA_SIZE => if self.alpha { 8 } else { 0 },
+            GLX_DEPTH_SIZE => if self.depth_stencil { DEPTH_BITS as c_int } else { 0 },
+            GLX_STENCIL_SIZE => if self.depth_stencil { 8 } else { 0 },
             GLX_ACCUM_RED_SIZE | GLX_ACCUM_GREEN_SIZE | GLX_ACCUM_BLUE_SIZE | GLX_ACCUM_ALPHA_SIZE => 16,
             GLX_CONFIG_CAVEAT | GLX_TRANSPARENT_TYPE => GLX_NONE,
             GLX_TRANSPARENT_INDEX_VALUE..=GLX_TRANSPARENT_ALPHA_VALUE => 0,
@@ -187,8 +203,9 @@ impl FbConfig {
 /// The configs of each (display, screen), built on first use.
 struct Screens {
     lists: Vec<(usize, c_int, Vec<&'static FbConfig>)>,
-    /// Per (display, visual): double-buffered as glXChooseVisual was asked.
-    visual_double: Vec<(usize, c_ulong, bool)>,
+    /// Per (display, visual): the config id glXChooseVisual or
+    /// glXGetVisualFromFBConfig last handed the visual out for.
+    visual_config: Vec<(usize, c_ulong, c_int)>,
     /// glXSelectEvent masks: (display, drawable, mask).
     events: Vec<(usize, Xid, c_ulong)>,
     /// The next pbuffer's id (PBUFFER_ID_BASE + n).
@@ -202,7 +219,7 @@ pub const GLX_PBUFFER_HEIGHT: c_int = 0x8040;
 pub const GLX_PBUFFER_WIDTH: c_int = 0x8041;
 
 static SCREENS: Mutex<Screens> =
-    Mutex::new(Screens { lists: Vec::new(), visual_double: Vec::new(), events: Vec::new(), next_pbuffer: 1 });
+    Mutex::new(Screens { lists: Vec::new(), visual_config: Vec::new(), events: Vec::new(), next_pbuffer: 1 });
 
 fn lock() -> std::sync::MutexGuard<'static, Screens> {
     SCREENS.lock().unwrap_or_else(|e| e.into_inner())
@@ -244,26 +261,41 @@ unsafe fn configs(dpy: *mut Display, screen: c_int) -> Vec<&'static FbConfig> {
     let default_id = (x.XVisualIDFromVisual)((x.XDefaultVisual)(dpy, screen));
     found.sort_by_key(|v| (v.depth, v.visualid != default_id)); // stable
     let mut list = Vec::new();
-    for depth in [24, 32] {
-        let of_depth: Vec<&XVisualInfo> = found.iter().filter(|v| v.depth == depth).collect();
-        let Some(&first) = of_depth.first() else { continue };
-        // One visual per config when the server has two (a server with GLX
-        // has hundreds): a plain X window's visual then names its config,
-        // as glXQueryDrawable(GLX_FBCONFIG_ID) and programs matching
-        // GLX_VISUAL_ID expect. The double-buffered config takes the first
-        // visual. With a single visual both configs share it (see
-        // `config_of_visual`).
-        let single = of_depth.get(1).copied().unwrap_or(first);
-        for (v, double) in [(single, false), (first, true)] {
-            let c = FbConfig {
-                screen,
-                id: list.len() as c_int + 1,
-                visualid: v.visualid,
-                depth,
-                masks: [v.red_mask, v.green_mask, v.blue_mask],
-                double,
-            };
-            list.push(&*Box::leak(Box::new(c)));
+    // RGBA configs first (ids 1-4 as before RGB configs existed), then RGB
+    // ones: with depth and stencil (single, double), and a double-buffered
+    // one without. glXChooseFBConfig/glXChooseVisual order them by the GLX
+    // sort rules. Kinds are (alpha, depth_stencil, double).
+    let groups: [&[(bool, bool, bool)]; 2] = [&[(true, true, false), (true, true, true)], &[(false, true, false), (false, true, true), (false, false, true)]];
+    for group in groups {
+        for depth in [24, 32] {
+            let of_depth: Vec<&XVisualInfo> = found.iter().filter(|v| v.depth == depth).collect();
+            let Some(&first) = of_depth.first() else { continue };
+            // RGB configs only on depth 24: a config's GLX_BUFFER_SIZE may
+            // not be below its visual's depth (piglit glx-fbconfig-sanity).
+            if !group[0].0 && depth != 24 {
+                continue;
+            }
+            // One visual per single/double pair when the server has two
+            // (a server with GLX has hundreds): a plain X window's visual
+            // then names its config, as glXQueryDrawable(GLX_FBCONFIG_ID)
+            // and programs matching GLX_VISUAL_ID expect. Double-buffered
+            // configs take the first visual. Configs sharing a visual are
+            // told apart by `config_of_visual`.
+            let single = of_depth.get(1).copied().unwrap_or(first);
+            for &(alpha, depth_stencil, double) in group {
+                let v = if double { first } else { single };
+                let c = FbConfig {
+                    screen,
+                    id: list.len() as c_int + 1,
+                    visualid: v.visualid,
+                    depth,
+                    masks: [v.red_mask, v.green_mask, v.blue_mask],
+                    double,
+                    alpha,
+                    depth_stencil,
+                };
+                list.push(&*Box::leak(Box::new(c)));
+            }
         }
     }
     s.lists.push((dpy as usize, screen, list.clone()));
@@ -287,7 +319,7 @@ unsafe extern "C" fn display_closed(dpy: *mut Display, _codes: *mut xlib::XExtCo
         drawable::remove_display(dpy);
         let mut s = lock();
         s.lists.retain(|(d, _, _)| *d != dpy as usize);
-        s.visual_double.retain(|(d, _, _)| *d != dpy as usize);
+        s.visual_config.retain(|(d, _, _)| *d != dpy as usize);
         s.events.retain(|(d, _, _)| *d != dpy as usize);
     });
     0
@@ -310,10 +342,12 @@ unsafe fn config_of_visual(dpy: *mut Display, vis: *const XVisualInfo) -> Option
         let masks = [v.red_mask, v.green_mask, v.blue_mask];
         of_visual = list.into_iter().filter(|c| c.depth == v.depth && c.masks == masks && v.class == xlib::TrueColor).collect();
     }
-    // Two configs stand for the visual: buffering as glXChooseVisual was
-    // last asked for it (double if never).
-    let double = lock().visual_double.iter().find(|(d, id, _)| *d == dpy as usize && *id == v.visualid).is_none_or(|e| e.2);
-    of_visual.into_iter().find(|c| c.double == double)
+    // Several configs stand for the visual: the one glXChooseVisual (or
+    // glXGetVisualFromFBConfig) last handed it out for, else the
+    // double-buffered RGBA one with depth and stencil.
+    let chosen = lock().visual_config.iter().find(|(d, id, _)| *d == dpy as usize && *id == v.visualid).map(|e| e.2);
+    let pick = of_visual.iter().copied().find(|c| Some(c.id) == chosen);
+    pick.or_else(|| of_visual.into_iter().find(|c| c.double && c.alpha && c.depth_stencil))
 }
 
 /// A fresh XVisualInfo (the caller XFree's it) for a visual id.
@@ -453,16 +487,24 @@ pub unsafe fn choose_visual(dpy: *mut Display, screen: c_int, list: *mut c_int) 
     let mut want: Vec<(c_int, c_int)> = req.into_iter().filter(|&(a, _)| a != GLX_RGBA && a != GLX_USE_GL).collect();
     want.retain(|&(a, _)| a != GLX_DOUBLEBUFFER);
     want.push((GLX_DOUBLEBUFFER, double as c_int));
-    for c in configs(dpy, screen) {
-        if want.iter().all(|&(a, v)| matches(c, a, v)) {
-            let mut s = lock();
-            s.visual_double.retain(|(d, id, _)| !(*d == dpy as usize && *id == c.visualid));
-            s.visual_double.push((dpy as usize, c.visualid, double));
-            drop(s);
-            return visual_info(dpy, screen, c.visualid);
-        }
-    }
-    null_mut()
+    // Only the RGBA configs with depth and stencil: the others share their
+    // visuals, and a visual stands for the first config that has it
+    // (piglit and programs look a visual's config up by GLX_VISUAL_ID).
+    // Section 3.3.2 would prefer no alpha for GLX_ALPHA_SIZE 0, but the X
+    // server has no spare visuals to give RGB configs their own; the RGB
+    // configs are reached through glXChooseFBConfig.
+    let Some(c) = configs(dpy, screen).into_iter().find(|c| c.alpha && c.depth_stencil && want.iter().all(|&(a, v)| matches(c, a, v))) else {
+        return null_mut();
+    };
+    remember_visual(dpy, c);
+    visual_info(dpy, screen, c.visualid)
+}
+
+/// Records which config a visual was handed out for (see `config_of_visual`).
+fn remember_visual(dpy: *mut Display, c: &FbConfig) {
+    let mut s = lock();
+    s.visual_config.retain(|(d, id, _)| !(*d == dpy as usize && *id == c.visualid));
+    s.visual_config.push((dpy as usize, c.visualid, c.id));
 }
 
 pub unsafe fn get_config(dpy: *mut Display, vis: *mut XVisualInfo, attrib: c_int, value: *mut c_int) -> c_int {
@@ -534,6 +576,19 @@ pub unsafe fn choose_fb_config(dpy: *mut Display, screen: c_int, list: *const c_
             out.push(c);
         }
     }
+    // GLX 1.4 table 3.5's sort (caveat, visual type and samples are the
+    // same for all of ours): more bits in the colour components asked for
+    // (> 0 or GLX_DONT_CARE) first, then smaller GLX_BUFFER_SIZE (so an
+    // RGB config comes before an RGBA one when alpha is not asked for),
+    // single before double buffered, larger depth, smaller stencil, id.
+    let asked = |a: c_int| want.iter().find(|&&(b, _)| b == a).map_or(0, |&(_, v)| v);
+    let counted: Vec<c_int> =
+        [GLX_RED_SIZE, GLX_GREEN_SIZE, GLX_BLUE_SIZE, GLX_ALPHA_SIZE].into_iter().filter(|&a| asked(a) > 0 || asked(a) == GLX_DONT_CARE).collect();
+    let get = |c: &FbConfig, a: c_int| c.attrib(a).unwrap_or(0);
+    out.sort_by_key(|c| {
+        let color: c_int = counted.iter().map(|&a| get(c, a)).sum();
+        (-color, get(c, GLX_BUFFER_SIZE), c.double, -get(c, GLX_DEPTH_SIZE), get(c, GLX_STENCIL_SIZE), c.id)
+    });
     config_array(&out, n)
 }
 
@@ -554,6 +609,8 @@ pub unsafe fn get_visual_from_fb_config(dpy: *mut Display, config: *const FbConf
     if config.is_null() {
         return null_mut();
     }
+    // glXCreateContext with this visual then means this config.
+    remember_visual(dpy, &*config);
     visual_info(dpy, (*config).screen, (*config).visualid)
 }
 
