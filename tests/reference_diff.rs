@@ -42,8 +42,39 @@ impl Rng {
     }
 }
 
+thread_local! {
+    /// Set by the no-alpha tests: surfaces without alpha (GLX RGB
+    /// configs), whose stored alpha must stay 255 whatever is drawn.
+    static NO_ALPHA: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// The random starting colours of a case; alpha 255 on a surface without.
+fn start_colors(r: &mut Rng, n: usize) -> Vec<[u8; 4]> {
+    let no_alpha = NO_ALPHA.with(|a| a.get());
+    (0..n)
+        .map(|_| {
+            let mut c = (r.next() as u32).to_ne_bytes();
+            if no_alpha {
+                c[3] = 255;
+            }
+            c
+        })
+        .collect()
+}
+
+/// On a surface without alpha, every stored alpha is still 255.
+fn check_alpha(name: &str, n: usize, c: &Context) -> Result<(), String> {
+    if NO_ALPHA.with(|a| a.get()) {
+        if let Some(i) = c.fb.color.iter().position(|p| p[3] != 255) {
+            return Err(format!("case {n}: {name} wrote alpha {:?} at pixel {i} of a surface without alpha", c.fb.color[i]));
+        }
+    }
+    Ok(())
+}
+
 fn context(reference: bool, (W, H): (usize, usize), threads: usize) -> Context {
-    let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+    let alpha_bits = if NO_ALPHA.with(|a| a.get()) { 0 } else { 8 };
+    let mut c = Context::new(Config { alpha_bits, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
     c.fb.resize(W, H).unwrap();
     c.surface_resized(W as i32, H as i32);
     c.derived.render.reference = reference;
@@ -206,7 +237,7 @@ fn compare(seed: u64, cases: usize, size: (usize, usize), threads: usize, approx
     texture(&mut reference, &mut tr);
     for n in 0..cases {
         // The same random buffers in both.
-        let color: Vec<[u8; 4]> = (0..W * H).map(|_| (r.next() as u32).to_ne_bytes()).collect();
+        let color = start_colors(&mut r, W * H);
         let depth: Vec<u32> = (0..W * H).map(|_| if r.chance(50) { 0xFF_FFFF } else { r.next() as u32 & 0xFF_FFFF }).collect();
         let stencil: Vec<u8> = (0..W * H).map(|_| r.below(4) as u8 * if r.chance(50) { 1 } else { 85 }).collect();
         let cmds = case(&mut r, tex, size);
@@ -221,6 +252,8 @@ fn compare(seed: u64, cases: usize, size: (usize, usize), threads: usize, approx
             c.sync_render();
         }
         assert!(reference.derived.render.reference && !fast.derived.render.reference);
+        check_alpha("fast", n, &fast)?;
+        check_alpha("reference", n, &reference)?;
         // Under GL_NICEST exact; otherwise colour may be 1/255 off (the
         // fixed-point stepped colour of fast.rs).
         let nicest = cmds.contains(&Command::Hint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST));
@@ -678,7 +711,7 @@ fn compare_simd(seed: u64, cases: usize, size: (usize, usize)) -> Result<usize, 
     let mut ctx = [context(false, size, 1), context(false, size, 1), context(false, size, 1), context(true, size, 1)];
     let mut drawn = 0;
     for n in 0..cases {
-        let color: Vec<[u8; 4]> = (0..W * H).map(|_| (r.next() as u32).to_ne_bytes()).collect();
+        let color = start_colors(&mut r, W * H);
         let depth: Vec<u32> = (0..W * H).map(|_| if r.chance(40) { 0xFF_FFFF } else { r.next() as u32 & 0xFF_FFFF }).collect();
         let stencil: Vec<u8> = (0..W * H).map(|_| if r.chance(50) { r.below(4) as u8 } else { r.next() as u8 }).collect();
         let cmds = simd_case(&mut r, size);
@@ -694,6 +727,9 @@ fn compare_simd(seed: u64, cases: usize, size: (usize, usize)) -> Result<usize, 
             c.sync_render();
         }
         simd::force_level_on_this_thread(None);
+        for (k, name) in ["best", "sse2", "scalar", "reference"].iter().enumerate() {
+            check_alpha(name, n, &ctx[k])?;
+        }
         let [best_fb, sse2_fb, scalar_fb, reference_fb] = [&ctx[0].fb, &ctx[1].fb, &ctx[2].fb, &ctx[3].fb];
         for (name, fb) in [("sse2", sse2_fb), ("best", best_fb)] {
             for i in 0..W * H {
@@ -752,4 +788,21 @@ fn simd_kernels_match_scalar_and_reference() {
         }
     }
     assert!(drawn > 2000 * 100, "only {drawn} pixels drawn");
+}
+
+/// Surfaces without alpha (GLX RGB configs): the kernels keep their
+/// full-mask paths by OR-ing 255 into stored alpha (FragmentState::
+/// alpha_fix); fast, SIMD, scalar and reference paths agree, and no
+/// stored alpha ever leaves 255 (GL_DST_ALPHA blending reads 1.0).
+#[test]
+fn no_alpha_surfaces_match_reference_and_keep_alpha_one() {
+    NO_ALPHA.with(|a| a.set(true));
+    let mut approximated = 0;
+    let r = compare(5, 600, (61, 47), 1, &mut approximated)
+        .and_then(|_| compare(13, 60, (301, 203), 2, &mut approximated))
+        .and_then(|_| compare_simd(45, 400, (61, 47)).map(|_| ()));
+    NO_ALPHA.with(|a| a.set(false));
+    if let Err(e) = r {
+        panic!("{e}");
+    }
 }

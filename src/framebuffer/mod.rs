@@ -35,8 +35,10 @@ pub const DEPTH_MAX: u32 = (1 << DEPTH_BITS) - 1;
 ///
 /// `alpha_bits` is 8 or 0. Storage is RGBA8 either way; a surface without
 /// alpha (a GLX RGB config) keeps every stored alpha at 255: it starts so,
-/// and every colour write goes through [`Config::color_mask`], which never
-/// lets alpha be written. Reads (glReadPixels, GL_DST_ALPHA blending,
+/// fragments OR 255 into the alpha they store
+/// (`render::fragment::FragmentState::alpha_fix`, so the full-mask span
+/// kernels still apply), and the other writers (clear, accumulation
+/// RETURN, blits) go through [`Config::color_mask`] or store 255. Reads (glReadPixels, GL_DST_ALPHA blending,
 /// copies into textures) therefore see 1.0, as GL 1.5 section 4.1.8 and
 /// 4.3.2 require of a buffer with no alpha.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

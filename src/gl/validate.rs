@@ -195,7 +195,18 @@ impl Context {
             zpass: st.zpass,
         };
         // glDrawBuffer(GL_NONE) writes no colour (4.2.1).
-        let color_mask = if cb.draw_buffer == 0 { [false; 4] } else { self.fb.config.color_mask(cb.write_mask) };
+        let no_alpha = self.fb.config.alpha_bits == 0;
+        let color_mask = if cb.draw_buffer == 0 {
+            [false; 4]
+        } else if no_alpha {
+            // No alpha: every write ORs 255 into alpha (alpha_fix), so
+            // alpha may be "written" whenever anything is, which keeps a
+            // full mask, and the kernels that need one, for RGB surfaces.
+            let m = cb.write_mask;
+            [m[0], m[1], m[2], m[0] || m[1] || m[2]]
+        } else {
+            cb.write_mask
+        };
         let color = if color_mask == [false; 4] {
             ColorOp::None
         } else if cb.color_logic_op {
@@ -234,6 +245,7 @@ impl Context {
             depth_write: self.depth.write_mask,
             color,
             color_mask,
+            alpha_fix: if no_alpha { 255 } else { 0 },
         }
     }
 }

@@ -278,12 +278,19 @@ pub(super) fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs:
             };
             let dst = &mut col[k];
             match CO {
-                CO_STORE => *dst = src,
-                CO_OVER => *dst = over(src, *dst),
-                CO_ADD => *dst = add(src, *dst),
+                CO_STORE => *dst = with_alpha(src, fs.alpha_fix),
+                CO_OVER => *dst = with_alpha(over(src, *dst), fs.alpha_fix),
+                CO_ADD => *dst = with_alpha(add(src, *dst), fs.alpha_fix),
                 _ => write_color(fs, dst, src),
             }
         }
     }
     *total += passed;
+}
+
+/// A stored colour with `fix` (FragmentState::alpha_fix) OR-ed into alpha.
+#[inline(always)]
+pub(super) fn with_alpha(mut c: [u8; 4], fix: u8) -> [u8; 4] {
+    c[3] |= fix;
+    c
 }

@@ -122,6 +122,10 @@ pub struct FragmentState {
     pub color: ColorOp,
     /// Bytes of the RGBA pixel that colour writes may change (glColorMask).
     pub color_mask: [bool; 4],
+    /// 255 on a surface without alpha (a GLX RGB config), else 0: OR-ed
+    /// into the alpha of every colour written, so stored alpha stays 1.0
+    /// (framebuffer::Config) while the kernels keep their full-mask paths.
+    pub alpha_fix: u8,
 }
 
 impl Default for FragmentState {
@@ -146,6 +150,7 @@ impl Default for FragmentState {
             depth_write: true,
             color: ColorOp::Replace,
             color_mask: [true; 4],
+            alpha_fix: 0,
         }
     }
 }
@@ -387,6 +392,8 @@ pub(crate) fn write_color(fs: &FragmentState, dst: &mut [u8; 4], src: [u8; 4]) {
         ColorOp::Blend(b) => b.apply(src, *dst),
         ColorOp::Logic(op) => op.apply(u32::from_ne_bytes(src), u32::from_ne_bytes(*dst)).to_ne_bytes(),
     };
+    let mut new = new;
+    new[3] |= fs.alpha_fix;
     let m = fs.color_mask;
     if m == [true; 4] {
         *dst = new;

@@ -16,7 +16,7 @@ use super::{fragment, key, ColorOp, CompareFunc, FragmentState, SpanPixels};
 /// at depth `z` (24-bit fixed point), through the per-fragment operations.
 pub fn color_span(fs: &FragmentState, px: &mut SpanPixels, z: u32, colors: &[[u8; 4]]) {
     let n = colors.len().min(px.color.len());
-    let plain = !fs.alpha_test && !fs.stencil_test && fs.color == ColorOp::Replace && fs.color_mask == [true; 4] && px.other.is_none();
+    let plain = !fs.alpha_test && !fs.stencil_test && fs.color == ColorOp::Replace && fs.color_mask == [true; 4] && fs.alpha_fix == 0 && px.other.is_none();
     if plain && !fs.depth_test {
         px.color[..n].copy_from_slice(&colors[..n]);
         px.passed += n as u64;

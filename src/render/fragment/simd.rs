@@ -386,6 +386,8 @@ mod x86 {
         qr: f64,
         qdx: f64,
         flat: __m128i,
+        /// FragmentState::alpha_fix in every lane's alpha byte.
+        afix: __m128i,
         sref: __m128i,
         svmask: __m128i,
         sign: __m128i,
@@ -460,7 +462,7 @@ mod x86 {
                 CO_ADD => add(src, dst),
                 _ => src,
             };
-            _mm_storeu_si128(cp.cast(), select(m, new, dst));
+            _mm_storeu_si128(cp.cast(), select(m, _mm_or_si128(new, c.afix), dst));
         }
         count
     }
@@ -516,7 +518,7 @@ mod x86 {
         let lanes = _mm_setr_epi32(0, 1, 2, 3);
         let mut passed = 0u64;
         let mut cx = cx0;
-        let ctx = Ctx { fs, st, zr, zdx, cr, cdx, qr, qdx, flat, sref, svmask, sign };
+        let ctx = Ctx { fs, st, zr, zdx, cr, cdx, qr, qdx, flat, afix: _mm_set1_epi32(((fs.alpha_fix as u32) << 24) as i32), sref, svmask, sign };
         // Pointers for the buffers a kernel does not touch (never read).
         let (mut zbuf, mut cbuf, mut sbuf) = ([0u32; 4], [0u32; 4], [0u8; 4]);
         let pick = |i: usize, zb: *mut u32, cb: *mut u8, sb: *mut u8| -> (*mut u32, *mut u8, *mut u8) {

@@ -490,7 +490,7 @@ fn span<const D: u8, const STORE: bool, const P: bool, const M: bool>(
             }
         };
         if STORE {
-            col[k] = src;
+            col[k] = super::fast::with_alpha(src, fs.alpha_fix);
         } else {
             write_color(fs, &mut col[k], src);
         }

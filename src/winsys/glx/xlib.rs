@@ -160,6 +160,8 @@ unsafe fn load() -> Option<Xlib> {
     if lib.is_null() {
         return None;
     }
+    // Runs before the libraries' destructors (registered after _dl_fini's).
+    libc::atexit(mark_exiting);
     Some(Xlib {
         XSetErrorHandler: sym(lib, b"XSetErrorHandler\0")?,
         XQueryFont: sym(lib, b"XQueryFont\0")?,
@@ -229,6 +231,29 @@ pub fn xext() -> Option<&'static Xext> {
     X.get_or_init(|| unsafe { load_xext() }).as_ref()
 }
 
+/// The thread that called exit(), once it has (0 before). libX11 tears
+/// down its global lock in its destructor; a program thread still calling
+/// GLX then (piglit's glx-multithread-* tests exit from one thread while
+/// others make contexts current) would crash inside Xlib. Such threads
+/// wait instead for the process to end; the exiting thread itself (its
+/// later atexit handlers may still destroy contexts) goes on.
+static EXITING: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+
+extern "C" fn mark_exiting() {
+    // SAFETY: pthread_self has no preconditions.
+    EXITING.store(unsafe { libc::pthread_self() } as usize, std::sync::atomic::Ordering::SeqCst);
+}
+
+fn park_if_exiting() {
+    let e = EXITING.load(std::sync::atomic::Ordering::SeqCst);
+    // SAFETY: pthread_self has no preconditions.
+    if e != 0 && e != unsafe { libc::pthread_self() } as usize {
+        loop {
+            std::thread::park();
+        }
+    }
+}
+
 static TRAPPED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 static TRAP: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
@@ -242,13 +267,22 @@ unsafe extern "C" fn note_error(_dpy: *mut Display, _event: *mut c_void) -> c_in
 /// whether an error came. Requests made before are synced first, so their
 /// errors still go to the program. Costs two round trips.
 pub unsafe fn trap_errors<R>(x: &Xlib, dpy: *mut Display, f: impl FnOnce() -> R) -> (R, bool) {
+    // Checked before each Xlib call: exit() may begin on another thread
+    // while this one waits for the lock or for the server. (A thread
+    // parked holding the lock would block the exiting thread's own later
+    // GLX calls, a far rarer case than this race.)
+    park_if_exiting();
     // The handler is process-wide: one trap at a time.
     let _g = TRAP.lock().unwrap_or_else(|e| e.into_inner());
+    park_if_exiting();
     (x.XSync)(dpy, 0);
+    park_if_exiting();
     let old = (x.XSetErrorHandler)(Some(note_error));
     TRAPPED.store(false, std::sync::atomic::Ordering::Relaxed);
     let r = f();
+    park_if_exiting();
     (x.XSync)(dpy, 0);
+    park_if_exiting();
     (x.XSetErrorHandler)(old);
     (r, TRAPPED.swap(false, std::sync::atomic::Ordering::Relaxed))
 }
