@@ -221,7 +221,13 @@ impl Level<'_> {
         } else {
             ((a.floor(), a.floor() as i32), (b.floor(), b.floor() as i32))
         };
-        let (wa, wb) = (a - fa, b - fb);
+        self.linear_at::<P>((a - fa, b - fb), (i0, j0), repeat)
+    }
+
+    /// Bilinear filtering from the floors and weights `linear` computes
+    /// (`fa`, `i0` of a = s w - 1/2; `fb`, `j0` of b = t h - 1/2).
+    #[inline(always)]
+    fn linear_at<const P: bool>(&self, (wa, wb): (f32, f32), (i0, j0): (i32, i32), repeat: [bool; 2]) -> Vec4 {
         let (i0w, i1w) = (wrap::<P>(i0, self.w, repeat[0]), wrap::<P>(i0.wrapping_add(1), self.w, repeat[0]));
         let (j0w, j1w) = (wrap::<P>(j0, self.h, repeat[1]), wrap::<P>(j0.wrapping_add(1), self.h, repeat[1]));
         let (r0, r1) = ((j0w * self.w) as usize, (j1w * self.w) as usize);
@@ -239,6 +245,45 @@ impl Level<'_> {
             self.nearest::<P>(s, t, repeat)
         }
     }
+}
+
+/// Bilinear filtering of two levels at (s, t) (LINEAR_MIPMAP_LINEAR):
+/// `Level::linear` of each, with the four products, the four subtractions
+/// of 1/2 and the four floors (`floor_i`, sign of -0 included) done in one
+/// SSE2 register: the same IEEE operations lane by lane, so the same
+/// values. A lane of magnitude 2^23 or more (or NaN) takes the scalar
+/// function.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn linear2<const P: bool>(l1: &Level, l2: &Level, s: f32, t: f32, rep: [bool; 2]) -> (Vec4, Vec4) {
+    use std::arch::x86_64::*;
+    // SAFETY: SSE2 is part of x86_64.
+    let (w, i, ok) = unsafe {
+        let x = _mm_sub_ps(_mm_mul_ps(_mm_setr_ps(s, t, s, t), _mm_setr_ps(l1.wf, l1.hf, l2.wf, l2.hf)), _mm_set1_ps(0.5));
+        let sign = _mm_set1_ps(-0.0);
+        let ok = _mm_movemask_ps(_mm_cmplt_ps(_mm_andnot_ps(sign, x), _mm_set1_ps(EXACT))) == 0xf;
+        // floor_i: truncate; one less where the truncation is above x;
+        // else the truncation with x's sign (only -0 changes).
+        let ti = _mm_cvttps_epi32(x);
+        let tf = _mm_cvtepi32_ps(ti);
+        let gt = _mm_cmpgt_ps(tf, x);
+        let fl = _mm_or_ps(_mm_sub_ps(tf, _mm_and_ps(gt, _mm_set1_ps(1.0))), _mm_and_ps(x, sign));
+        let i = _mm_add_epi32(ti, _mm_castps_si128(gt));
+        let (mut wv, mut iv) = ([0f32; 4], [0i32; 4]);
+        _mm_storeu_ps(wv.as_mut_ptr(), _mm_sub_ps(x, fl));
+        _mm_storeu_si128(iv.as_mut_ptr() as *mut __m128i, i);
+        (wv, iv, ok)
+    };
+    if !ok {
+        return (l1.linear::<P>(s, t, rep), l2.linear::<P>(s, t, rep));
+    }
+    (l1.linear_at::<P>((w[0], w[1]), (i[0], i[1]), rep), l2.linear_at::<P>((w[2], w[3]), (i[2], i[3]), rep))
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+#[inline(always)]
+fn linear2<const P: bool>(l1: &Level, l2: &Level, s: f32, t: f32, rep: [bool; 2]) -> (Vec4, Vec4) {
+    (l1.linear::<P>(s, t, rep), l2.linear::<P>(s, t, rep))
 }
 
 /// A span's view of the sampler: levels resolved, parameters unpacked.
@@ -316,8 +361,12 @@ impl<'a> Sampler<'a> {
                         self.levels[q].filter::<P>(s, t, lin, rep)
                     } else {
                         let d1i = d1.max(0.0) as usize;
-                        let t1 = self.levels[d1i].filter::<P>(s, t, lin, rep);
-                        let t2 = self.levels[d1i + 1].filter::<P>(s, t, lin, rep);
+                        let (l1, l2) = (&self.levels[d1i], &self.levels[d1i + 1]);
+                        let (t1, t2) = if lin {
+                            linear2::<P>(l1, l2, s, t, rep)
+                        } else {
+                            (l1.nearest::<P>(s, t, rep), l2.nearest::<P>(s, t, rep))
+                        };
                         lerp(t1, t2, lambda - d1)
                     }
                 }
@@ -523,6 +572,37 @@ mod tests {
         for x in values() {
             assert_eq!(floor(x).to_bits(), x.floor().to_bits(), "floor {x}");
             assert_eq!(floor_to_i32(x), x.floor() as i32, "floor as i32 {x}");
+        }
+    }
+
+    /// The two-level bilinear filter (floors in SSE2 lanes) agrees bit for
+    /// bit with `Level::linear` of each level, at every wrap choice.
+    #[test]
+    fn linear2_matches_linear() {
+        let mut seed = 99u32;
+        let mut img = |n: usize| -> Vec<[u8; 4]> {
+            (0..n).map(|_| {
+                seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+                seed.to_ne_bytes()
+            }).collect()
+        };
+        let (a, b, c) = (img(64 * 32), img(32 * 16), img(5 * 3));
+        fn lv(tex: &[[u8; 4]], w: i32, h: i32) -> Level<'_> {
+            Level { tex, w, h, wf: w as f32, hf: h as f32 }
+        }
+        let (la, lb, lc) = (lv(&a, 64, 32), lv(&b, 32, 16), lv(&c, 5, 3));
+        let v = values();
+        let bits = |p: (Vec4, Vec4)| (p.0.to_array().map(f32::to_bits), p.1.to_array().map(f32::to_bits));
+        for (k, st) in v.chunks_exact(2).enumerate() {
+            let (s, t) = (st[0] / 64.0 * (k % 7) as f32, st[1] / 16.0);
+            for rep in [[true, true], [false, true], [true, false], [false, false]] {
+                let want = (la.linear::<false>(s, t, rep), lb.linear::<false>(s, t, rep));
+                assert_eq!(bits(linear2::<false>(&la, &lb, s, t, rep)), bits(want), "{s} {t} {rep:?}");
+                let want = (lb.linear::<false>(s, t, rep), lc.linear::<false>(s, t, rep));
+                assert_eq!(bits(linear2::<false>(&lb, &lc, s, t, rep)), bits(want), "{s} {t} {rep:?}");
+            }
+            let want = (la.linear::<true>(s, t, [true; 2]), lb.linear::<true>(s, t, [true; 2]));
+            assert_eq!(bits(linear2::<true>(&la, &lb, s, t, [true; 2])), bits(want), "{s} {t}");
         }
     }
 
