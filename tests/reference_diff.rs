@@ -573,6 +573,15 @@ fn textured_kernels_match_reference() {
     }
     // Not vacuous: most cases texture many pixels.
     assert!(drawn > 1200 * 300, "only {drawn} pixels drawn");
+    // The textured kernel without AVX2 (its SSE2 two-level floors and the
+    // scalar lerps): the AVX2 one is the default on CPUs that have it.
+    use softgl::render::fragment::simd;
+    simd::force_level_on_this_thread(Some(simd::Level::Sse2));
+    let sse2 = compare_textured(35, 400, (61, 47), 1);
+    simd::force_level_on_this_thread(None);
+    if let Err(e) = sse2 {
+        panic!("SSE2: {e}");
+    }
     if let Err(e) = compare_textured(34, 60, (301, 203), 2) {
         panic!("tiled: {e}");
     }

@@ -52,6 +52,19 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup) -> Option<Kernel> {
     }
     let d = depth_key(fs);
     let store = fs.color == ColorOp::Replace && fs.color_mask == [true; 4];
+    #[cfg(target_arch = "x86_64")]
+    if super::simd::level_here() == super::simd::Level::Avx2 {
+        return Some(match (d, store) {
+            (D_LESS, true) => kernel_avx2::<D_LESS, true>,
+            (D_LEQUAL, true) => kernel_avx2::<D_LEQUAL, true>,
+            (D_OFF, true) => kernel_avx2::<D_OFF, true>,
+            (_, true) => kernel_avx2::<D_ANY, true>,
+            (D_LESS, false) => kernel_avx2::<D_LESS, false>,
+            (D_LEQUAL, false) => kernel_avx2::<D_LEQUAL, false>,
+            (D_OFF, false) => kernel_avx2::<D_OFF, false>,
+            _ => kernel_avx2::<D_ANY, false>,
+        });
+    }
     Some(match (d, store) {
         (D_OFF, true) => kernel::<D_OFF, true>,
         (D_LESS, true) => kernel::<D_LESS, true>,
@@ -227,14 +240,22 @@ impl Level<'_> {
     /// Bilinear filtering from the floors and weights `linear` computes
     /// (`fa`, `i0` of a = s w - 1/2; `fb`, `j0` of b = t h - 1/2).
     #[inline(always)]
-    fn linear_at<const P: bool>(&self, (wa, wb): (f32, f32), (i0, j0): (i32, i32), repeat: [bool; 2]) -> Vec4 {
+    fn linear_at<const P: bool>(&self, (wa, wb): (f32, f32), ij: (i32, i32), repeat: [bool; 2]) -> Vec4 {
+        let [p00, p01, p10, p11] = self.corners::<P>(ij, repeat);
+        let top = lerp(texel(p00), texel(p01), wa);
+        let bottom = lerp(texel(p10), texel(p11), wa);
+        lerp(top, bottom, wb)
+    }
+
+    /// The 2x2 texels from (i0, j0), wrapped: top-left, top-right,
+    /// bottom-left, bottom-right.
+    #[inline(always)]
+    fn corners<const P: bool>(&self, (i0, j0): (i32, i32), repeat: [bool; 2]) -> [[u8; 4]; 4] {
         let (i0w, i1w) = (wrap::<P>(i0, self.w, repeat[0]), wrap::<P>(i0.wrapping_add(1), self.w, repeat[0]));
         let (j0w, j1w) = (wrap::<P>(j0, self.h, repeat[1]), wrap::<P>(j0.wrapping_add(1), self.h, repeat[1]));
         let (r0, r1) = ((j0w * self.w) as usize, (j1w * self.w) as usize);
         let (c0, c1) = (i0w as usize, i1w as usize);
-        let top = lerp(texel(self.tex[r0 + c0]), texel(self.tex[r0 + c1]), wa);
-        let bottom = lerp(texel(self.tex[r1 + c0]), texel(self.tex[r1 + c1]), wa);
-        lerp(top, bottom, wb)
+        [self.tex[r0 + c0], self.tex[r0 + c1], self.tex[r1 + c0], self.tex[r1 + c1]]
     }
 
     #[inline(always)]
@@ -255,7 +276,7 @@ impl Level<'_> {
 /// function.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-fn linear2<const P: bool>(l1: &Level, l2: &Level, s: f32, t: f32, rep: [bool; 2]) -> (Vec4, Vec4) {
+fn linear2<const P: bool, const A: bool>(l1: &Level, l2: &Level, s: f32, t: f32, rep: [bool; 2]) -> (Vec4, Vec4) {
     use std::arch::x86_64::*;
     // SAFETY: SSE2 is part of x86_64.
     let (w, i, ok) = unsafe {
@@ -277,12 +298,43 @@ fn linear2<const P: bool>(l1: &Level, l2: &Level, s: f32, t: f32, rep: [bool; 2]
     if !ok {
         return (l1.linear::<P>(s, t, rep), l2.linear::<P>(s, t, rep));
     }
+    if A {
+        let (a, b) = (l1.corners::<P>((i[0], i[1]), rep), l2.corners::<P>((i[2], i[3]), rep));
+        // SAFETY: A is true only in the AVX2 kernel (`kernel_avx2`).
+        return unsafe { bilerp2_avx(a, b, w) };
+    }
     (l1.linear_at::<P>((w[0], w[1]), (i[0], i[1]), rep), l2.linear_at::<P>((w[2], w[3]), (i[2], i[3]), rep))
+}
+
+/// Two levels' bilinear lerps in the two halves of 8-lane registers:
+/// `Level::linear_at`'s texel conversions (c / 255, correctly rounded
+/// lane by lane) and lerps `a + (b - a) t` (separate multiply and add),
+/// with level 1's weights `w[0], w[1]` in the low half and level 2's
+/// `w[2], w[3]` in the high half. Corners: top-left, top-right,
+/// bottom-left, bottom-right.
+#[cfg(target_arch = "x86_64")]
+#[inline]
+#[target_feature(enable = "avx2")]
+unsafe fn bilerp2_avx(a: [[u8; 4]; 4], b: [[u8; 4]; 4], w: [f32; 4]) -> (Vec4, Vec4) {
+    use std::arch::x86_64::*;
+    // No closures: they would not inherit the function's target feature.
+    let k255 = _mm256_set1_ps(255.0);
+    let c = [0, 1, 2, 3].map(|k| _mm_set_epi32(0, 0, i32::from_ne_bytes(b[k]), i32::from_ne_bytes(a[k])));
+    let c00 = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(c[0])), k255);
+    let c01 = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(c[1])), k255);
+    let c10 = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(c[2])), k255);
+    let c11 = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(c[3])), k255);
+    let wa = _mm256_setr_ps(w[0], w[0], w[0], w[0], w[2], w[2], w[2], w[2]);
+    let wb = _mm256_setr_ps(w[1], w[1], w[1], w[1], w[3], w[3], w[3], w[3]);
+    let top = _mm256_add_ps(c00, _mm256_mul_ps(_mm256_sub_ps(c01, c00), wa));
+    let bottom = _mm256_add_ps(c10, _mm256_mul_ps(_mm256_sub_ps(c11, c10), wa));
+    let r = _mm256_add_ps(top, _mm256_mul_ps(_mm256_sub_ps(bottom, top), wb));
+    (Vec4::from(_mm256_castps256_ps128(r)), Vec4::from(_mm256_extractf128_ps::<1>(r)))
 }
 
 #[cfg(not(target_arch = "x86_64"))]
 #[inline(always)]
-fn linear2<const P: bool>(l1: &Level, l2: &Level, s: f32, t: f32, rep: [bool; 2]) -> (Vec4, Vec4) {
+fn linear2<const P: bool, const A: bool>(l1: &Level, l2: &Level, s: f32, t: f32, rep: [bool; 2]) -> (Vec4, Vec4) {
     (l1.linear::<P>(s, t, rep), l2.linear::<P>(s, t, rep))
 }
 
@@ -333,7 +385,7 @@ impl<'a> Sampler<'a> {
     /// `UnitSampler::sample` at (s, t) with derivatives (dsdx, dtdx) and
     /// (dsdy, dtdy).
     #[inline(always)]
-    fn sample<const P: bool>(&self, s: f32, t: f32, dx: [f32; 2], dy: [f32; 2]) -> Vec4 {
+    fn sample<const P: bool, const A: bool>(&self, s: f32, t: f32, dx: [f32; 2], dy: [f32; 2]) -> Vec4 {
         let rep = self.repeat;
         match self.fast {
             Fast::Nearest2D { .. } => return self.levels[0].nearest::<P>(s, t, rep),
@@ -363,7 +415,7 @@ impl<'a> Sampler<'a> {
                         let d1i = d1.max(0.0) as usize;
                         let (l1, l2) = (&self.levels[d1i], &self.levels[d1i + 1]);
                         let (t1, t2) = if lin {
-                            linear2::<P>(l1, l2, s, t, rep)
+                            linear2::<P, A>(l1, l2, s, t, rep)
                         } else {
                             (l1.nearest::<P>(s, t, rep), l2.nearest::<P>(s, t, rep))
                         };
@@ -440,6 +492,27 @@ fn same_plane(a: &Plane, b: &Plane) -> bool {
 }
 
 fn kernel<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    kernel_at::<D, STORE, false>(fs, t, px, y, x0, x1)
+}
+
+/// The kernel compiled for AVX2: both levels of LINEAR_MIPMAP_LINEAR
+/// filtered in one 8-lane register (`bilerp2_avx`). Only selected when
+/// the CPU has AVX2 (`simd::level`).
+#[cfg(target_arch = "x86_64")]
+fn kernel_avx2<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    // SAFETY: `select` hands this out only at simd::Level::Avx2, which is
+    // only reported when the CPU has AVX2.
+    unsafe { kernel_avx2_at::<D, STORE>(fs, t, px, y, x0, x1) }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn kernel_avx2_at<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    kernel_at::<D, STORE, true>(fs, t, px, y, x0, x1)
+}
+
+#[inline(always)]
+fn kernel_at<const D: u8, const STORE: bool, const A: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     if x0 >= x1 {
         return;
     }
@@ -450,16 +523,16 @@ fn kernel<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup,
     // MODULATE of a texture with colour and alpha: one four-lane product.
     let modulate = matches!(env, EnvFn::Modulate { color: true, alpha: true });
     match (smp.pow2_repeat(), modulate) {
-        (true, true) => span::<D, STORE, true, true>(fs, t, px, y, x0, x1, tp, u, env, &smp),
-        (true, false) => span::<D, STORE, true, false>(fs, t, px, y, x0, x1, tp, u, env, &smp),
-        (false, true) => span::<D, STORE, false, true>(fs, t, px, y, x0, x1, tp, u, env, &smp),
-        (false, false) => span::<D, STORE, false, false>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (true, true) => span::<D, STORE, true, true, A>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (true, false) => span::<D, STORE, true, false, A>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (false, true) => span::<D, STORE, false, true, A>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (false, false) => span::<D, STORE, false, false, A>(fs, t, px, y, x0, x1, tp, u, env, &smp),
     }
 }
 
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn span<const D: u8, const STORE: bool, const P: bool, const M: bool>(
+fn span<const D: u8, const STORE: bool, const P: bool, const M: bool, const A: bool>(
     fs: &FragmentState,
     t: &TriangleSetup,
     px: &mut SpanPixels,
@@ -530,7 +603,7 @@ fn span<const D: u8, const STORE: bool, const P: bool, const M: bool>(
                 Some(c) => c,
                 None => Vec4::from_array(std::array::from_fn(|c| (color_rows[c].at(cx) * w) as f32)).clamp(Vec4::ZERO, Vec4::ONE),
             };
-            let texel = smp.sample::<P>(sf, tf, dx, dy);
+            let texel = smp.sample::<P, A>(sf, tf, dx, dy);
             // (pc tc, pa ta) lane by lane is env.rs's MODULATE.
             let c = if M { (primary * texel).clamp(Vec4::ZERO, Vec4::ONE) } else { env.apply(primary, texel) };
             match &fog {
@@ -597,12 +670,19 @@ mod tests {
             let (s, t) = (st[0] / 64.0 * (k % 7) as f32, st[1] / 16.0);
             for rep in [[true, true], [false, true], [true, false], [false, false]] {
                 let want = (la.linear::<false>(s, t, rep), lb.linear::<false>(s, t, rep));
-                assert_eq!(bits(linear2::<false>(&la, &lb, s, t, rep)), bits(want), "{s} {t} {rep:?}");
+                assert_eq!(bits(linear2::<false, false>(&la, &lb, s, t, rep)), bits(want), "{s} {t} {rep:?}");
                 let want = (lb.linear::<false>(s, t, rep), lc.linear::<false>(s, t, rep));
-                assert_eq!(bits(linear2::<false>(&lb, &lc, s, t, rep)), bits(want), "{s} {t} {rep:?}");
+                assert_eq!(bits(linear2::<false, false>(&lb, &lc, s, t, rep)), bits(want), "{s} {t} {rep:?}");
             }
             let want = (la.linear::<true>(s, t, [true; 2]), lb.linear::<true>(s, t, [true; 2]));
-            assert_eq!(bits(linear2::<true>(&la, &lb, s, t, [true; 2])), bits(want), "{s} {t}");
+            assert_eq!(bits(linear2::<true, false>(&la, &lb, s, t, [true; 2])), bits(want), "{s} {t}");
+            // The AVX2 lerps (the test calls them outside the kernel).
+            #[cfg(target_arch = "x86_64")]
+            if std::arch::is_x86_feature_detected!("avx2") {
+                assert_eq!(bits(linear2::<true, true>(&la, &lb, s, t, [true; 2])), bits(want), "avx2 {s} {t}");
+                let want = (lb.linear::<false>(s, t, [false, true]), lc.linear::<false>(s, t, [false, true]));
+                assert_eq!(bits(linear2::<false, true>(&lb, &lc, s, t, [false, true])), bits(want), "avx2 {s} {t}");
+            }
         }
     }
 
