@@ -98,6 +98,17 @@ pub fn force_level_on_this_thread(level: Option<Level>) {
     LEVEL_HERE.with(|c| c.set(level.map_or(0, |l| l as u8)));
 }
 
+/// The level for triangles selected on this thread (`level()` unless a
+/// test forced a lower one), as `pick` decides it.
+pub(super) fn level_here() -> Level {
+    let l = level();
+    match if LEVEL_FORCED.load(Ordering::Relaxed) { LEVEL_HERE.with(|c| c.get()) } else { 0 } {
+        1 => Level::Scalar,
+        2 if l != Level::Scalar => Level::Sse2,
+        _ => l,
+    }
+}
+
 /// The SIMD kernel for the stencil test `s` (on / off), depth key `d`,
 /// colour source `cs` and colour write `co` (fast.rs's keys; no alpha
 /// test), if there is one.

@@ -52,6 +52,19 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup) -> Option<Kernel> {
     }
     let d = depth_key(fs);
     let store = fs.color == ColorOp::Replace && fs.color_mask == [true; 4];
+    #[cfg(target_arch = "x86_64")]
+    if super::simd::level_here() == super::simd::Level::Avx2 {
+        return Some(match (d, store) {
+            (D_LESS, true) => kernel_avx2::<D_LESS, true>,
+            (D_LEQUAL, true) => kernel_avx2::<D_LEQUAL, true>,
+            (D_OFF, true) => kernel_avx2::<D_OFF, true>,
+            (_, true) => kernel_avx2::<D_ANY, true>,
+            (D_LESS, false) => kernel_avx2::<D_LESS, false>,
+            (D_LEQUAL, false) => kernel_avx2::<D_LEQUAL, false>,
+            (D_OFF, false) => kernel_avx2::<D_OFF, false>,
+            _ => kernel_avx2::<D_ANY, false>,
+        });
+    }
     Some(match (d, store) {
         (D_OFF, true) => kernel::<D_OFF, true>,
         (D_LESS, true) => kernel::<D_LESS, true>,
@@ -221,14 +234,28 @@ impl Level<'_> {
         } else {
             ((a.floor(), a.floor() as i32), (b.floor(), b.floor() as i32))
         };
-        let (wa, wb) = (a - fa, b - fb);
+        self.linear_at::<P>((a - fa, b - fb), (i0, j0), repeat)
+    }
+
+    /// Bilinear filtering from the floors and weights `linear` computes
+    /// (`fa`, `i0` of a = s w - 1/2; `fb`, `j0` of b = t h - 1/2).
+    #[inline(always)]
+    fn linear_at<const P: bool>(&self, (wa, wb): (f32, f32), ij: (i32, i32), repeat: [bool; 2]) -> Vec4 {
+        let [p00, p01, p10, p11] = self.corners::<P>(ij, repeat);
+        let top = lerp(texel(p00), texel(p01), wa);
+        let bottom = lerp(texel(p10), texel(p11), wa);
+        lerp(top, bottom, wb)
+    }
+
+    /// The 2x2 texels from (i0, j0), wrapped: top-left, top-right,
+    /// bottom-left, bottom-right.
+    #[inline(always)]
+    fn corners<const P: bool>(&self, (i0, j0): (i32, i32), repeat: [bool; 2]) -> [[u8; 4]; 4] {
         let (i0w, i1w) = (wrap::<P>(i0, self.w, repeat[0]), wrap::<P>(i0.wrapping_add(1), self.w, repeat[0]));
         let (j0w, j1w) = (wrap::<P>(j0, self.h, repeat[1]), wrap::<P>(j0.wrapping_add(1), self.h, repeat[1]));
         let (r0, r1) = ((j0w * self.w) as usize, (j1w * self.w) as usize);
         let (c0, c1) = (i0w as usize, i1w as usize);
-        let top = lerp(texel(self.tex[r0 + c0]), texel(self.tex[r0 + c1]), wa);
-        let bottom = lerp(texel(self.tex[r1 + c0]), texel(self.tex[r1 + c1]), wa);
-        lerp(top, bottom, wb)
+        [self.tex[r0 + c0], self.tex[r0 + c1], self.tex[r1 + c0], self.tex[r1 + c1]]
     }
 
     #[inline(always)]
@@ -239,6 +266,76 @@ impl Level<'_> {
             self.nearest::<P>(s, t, repeat)
         }
     }
+}
+
+/// Bilinear filtering of two levels at (s, t) (LINEAR_MIPMAP_LINEAR):
+/// `Level::linear` of each, with the four products, the four subtractions
+/// of 1/2 and the four floors (`floor_i`, sign of -0 included) done in one
+/// SSE2 register: the same IEEE operations lane by lane, so the same
+/// values. A lane of magnitude 2^23 or more (or NaN) takes the scalar
+/// function.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn linear2<const P: bool, const A: bool>(l1: &Level, l2: &Level, s: f32, t: f32, rep: [bool; 2]) -> (Vec4, Vec4) {
+    use std::arch::x86_64::*;
+    // SAFETY: SSE2 is part of x86_64.
+    let (w, i, ok) = unsafe {
+        let x = _mm_sub_ps(_mm_mul_ps(_mm_setr_ps(s, t, s, t), _mm_setr_ps(l1.wf, l1.hf, l2.wf, l2.hf)), _mm_set1_ps(0.5));
+        let sign = _mm_set1_ps(-0.0);
+        let ok = _mm_movemask_ps(_mm_cmplt_ps(_mm_andnot_ps(sign, x), _mm_set1_ps(EXACT))) == 0xf;
+        // floor_i: truncate; one less where the truncation is above x;
+        // else the truncation with x's sign (only -0 changes).
+        let ti = _mm_cvttps_epi32(x);
+        let tf = _mm_cvtepi32_ps(ti);
+        let gt = _mm_cmpgt_ps(tf, x);
+        let fl = _mm_or_ps(_mm_sub_ps(tf, _mm_and_ps(gt, _mm_set1_ps(1.0))), _mm_and_ps(x, sign));
+        let i = _mm_add_epi32(ti, _mm_castps_si128(gt));
+        let (mut wv, mut iv) = ([0f32; 4], [0i32; 4]);
+        _mm_storeu_ps(wv.as_mut_ptr(), _mm_sub_ps(x, fl));
+        _mm_storeu_si128(iv.as_mut_ptr() as *mut __m128i, i);
+        (wv, iv, ok)
+    };
+    if !ok {
+        return (l1.linear::<P>(s, t, rep), l2.linear::<P>(s, t, rep));
+    }
+    if A {
+        let (a, b) = (l1.corners::<P>((i[0], i[1]), rep), l2.corners::<P>((i[2], i[3]), rep));
+        // SAFETY: A is true only in the AVX2 kernel (`kernel_avx2`).
+        return unsafe { bilerp2_avx(a, b, w) };
+    }
+    (l1.linear_at::<P>((w[0], w[1]), (i[0], i[1]), rep), l2.linear_at::<P>((w[2], w[3]), (i[2], i[3]), rep))
+}
+
+/// Two levels' bilinear lerps in the two halves of 8-lane registers:
+/// `Level::linear_at`'s texel conversions (c / 255, correctly rounded
+/// lane by lane) and lerps `a + (b - a) t` (separate multiply and add),
+/// with level 1's weights `w[0], w[1]` in the low half and level 2's
+/// `w[2], w[3]` in the high half. Corners: top-left, top-right,
+/// bottom-left, bottom-right.
+#[cfg(target_arch = "x86_64")]
+#[inline]
+#[target_feature(enable = "avx2")]
+unsafe fn bilerp2_avx(a: [[u8; 4]; 4], b: [[u8; 4]; 4], w: [f32; 4]) -> (Vec4, Vec4) {
+    use std::arch::x86_64::*;
+    // No closures: they would not inherit the function's target feature.
+    let k255 = _mm256_set1_ps(255.0);
+    let c = [0, 1, 2, 3].map(|k| _mm_set_epi32(0, 0, i32::from_ne_bytes(b[k]), i32::from_ne_bytes(a[k])));
+    let c00 = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(c[0])), k255);
+    let c01 = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(c[1])), k255);
+    let c10 = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(c[2])), k255);
+    let c11 = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(c[3])), k255);
+    let wa = _mm256_setr_ps(w[0], w[0], w[0], w[0], w[2], w[2], w[2], w[2]);
+    let wb = _mm256_setr_ps(w[1], w[1], w[1], w[1], w[3], w[3], w[3], w[3]);
+    let top = _mm256_add_ps(c00, _mm256_mul_ps(_mm256_sub_ps(c01, c00), wa));
+    let bottom = _mm256_add_ps(c10, _mm256_mul_ps(_mm256_sub_ps(c11, c10), wa));
+    let r = _mm256_add_ps(top, _mm256_mul_ps(_mm256_sub_ps(bottom, top), wb));
+    (Vec4::from(_mm256_castps256_ps128(r)), Vec4::from(_mm256_extractf128_ps::<1>(r)))
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+#[inline(always)]
+fn linear2<const P: bool, const A: bool>(l1: &Level, l2: &Level, s: f32, t: f32, rep: [bool; 2]) -> (Vec4, Vec4) {
+    (l1.linear::<P>(s, t, rep), l2.linear::<P>(s, t, rep))
 }
 
 /// A span's view of the sampler: levels resolved, parameters unpacked.
@@ -288,7 +385,7 @@ impl<'a> Sampler<'a> {
     /// `UnitSampler::sample` at (s, t) with derivatives (dsdx, dtdx) and
     /// (dsdy, dtdy).
     #[inline(always)]
-    fn sample<const P: bool>(&self, s: f32, t: f32, dx: [f32; 2], dy: [f32; 2]) -> Vec4 {
+    fn sample<const P: bool, const A: bool>(&self, s: f32, t: f32, dx: [f32; 2], dy: [f32; 2]) -> Vec4 {
         let rep = self.repeat;
         match self.fast {
             Fast::Nearest2D { .. } => return self.levels[0].nearest::<P>(s, t, rep),
@@ -316,8 +413,12 @@ impl<'a> Sampler<'a> {
                         self.levels[q].filter::<P>(s, t, lin, rep)
                     } else {
                         let d1i = d1.max(0.0) as usize;
-                        let t1 = self.levels[d1i].filter::<P>(s, t, lin, rep);
-                        let t2 = self.levels[d1i + 1].filter::<P>(s, t, lin, rep);
+                        let (l1, l2) = (&self.levels[d1i], &self.levels[d1i + 1]);
+                        let (t1, t2) = if lin {
+                            linear2::<P, A>(l1, l2, s, t, rep)
+                        } else {
+                            (l1.nearest::<P>(s, t, rep), l2.nearest::<P>(s, t, rep))
+                        };
                         lerp(t1, t2, lambda - d1)
                     }
                 }
@@ -391,6 +492,27 @@ fn same_plane(a: &Plane, b: &Plane) -> bool {
 }
 
 fn kernel<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    kernel_at::<D, STORE, false>(fs, t, px, y, x0, x1)
+}
+
+/// The kernel compiled for AVX2: both levels of LINEAR_MIPMAP_LINEAR
+/// filtered in one 8-lane register (`bilerp2_avx`). Only selected when
+/// the CPU has AVX2 (`simd::level`).
+#[cfg(target_arch = "x86_64")]
+fn kernel_avx2<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    // SAFETY: `select` hands this out only at simd::Level::Avx2, which is
+    // only reported when the CPU has AVX2.
+    unsafe { kernel_avx2_at::<D, STORE>(fs, t, px, y, x0, x1) }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn kernel_avx2_at<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    kernel_at::<D, STORE, true>(fs, t, px, y, x0, x1)
+}
+
+#[inline(always)]
+fn kernel_at<const D: u8, const STORE: bool, const A: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     if x0 >= x1 {
         return;
     }
@@ -401,16 +523,16 @@ fn kernel<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup,
     // MODULATE of a texture with colour and alpha: one four-lane product.
     let modulate = matches!(env, EnvFn::Modulate { color: true, alpha: true });
     match (smp.pow2_repeat(), modulate) {
-        (true, true) => span::<D, STORE, true, true>(fs, t, px, y, x0, x1, tp, u, env, &smp),
-        (true, false) => span::<D, STORE, true, false>(fs, t, px, y, x0, x1, tp, u, env, &smp),
-        (false, true) => span::<D, STORE, false, true>(fs, t, px, y, x0, x1, tp, u, env, &smp),
-        (false, false) => span::<D, STORE, false, false>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (true, true) => span::<D, STORE, true, true, A>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (true, false) => span::<D, STORE, true, false, A>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (false, true) => span::<D, STORE, false, true, A>(fs, t, px, y, x0, x1, tp, u, env, &smp),
+        (false, false) => span::<D, STORE, false, false, A>(fs, t, px, y, x0, x1, tp, u, env, &smp),
     }
 }
 
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn span<const D: u8, const STORE: bool, const P: bool, const M: bool>(
+fn span<const D: u8, const STORE: bool, const P: bool, const M: bool, const A: bool>(
     fs: &FragmentState,
     t: &TriangleSetup,
     px: &mut SpanPixels,
@@ -481,7 +603,7 @@ fn span<const D: u8, const STORE: bool, const P: bool, const M: bool>(
                 Some(c) => c,
                 None => Vec4::from_array(std::array::from_fn(|c| (color_rows[c].at(cx) * w) as f32)).clamp(Vec4::ZERO, Vec4::ONE),
             };
-            let texel = smp.sample::<P>(sf, tf, dx, dy);
+            let texel = smp.sample::<P, A>(sf, tf, dx, dy);
             // (pc tc, pa ta) lane by lane is env.rs's MODULATE.
             let c = if M { (primary * texel).clamp(Vec4::ZERO, Vec4::ONE) } else { env.apply(primary, texel) };
             match &fog {
@@ -523,6 +645,44 @@ mod tests {
         for x in values() {
             assert_eq!(floor(x).to_bits(), x.floor().to_bits(), "floor {x}");
             assert_eq!(floor_to_i32(x), x.floor() as i32, "floor as i32 {x}");
+        }
+    }
+
+    /// The two-level bilinear filter (floors in SSE2 lanes) agrees bit for
+    /// bit with `Level::linear` of each level, at every wrap choice.
+    #[test]
+    fn linear2_matches_linear() {
+        let mut seed = 99u32;
+        let mut img = |n: usize| -> Vec<[u8; 4]> {
+            (0..n).map(|_| {
+                seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
+                seed.to_ne_bytes()
+            }).collect()
+        };
+        let (a, b, c) = (img(64 * 32), img(32 * 16), img(5 * 3));
+        fn lv(tex: &[[u8; 4]], w: i32, h: i32) -> Level<'_> {
+            Level { tex, w, h, wf: w as f32, hf: h as f32 }
+        }
+        let (la, lb, lc) = (lv(&a, 64, 32), lv(&b, 32, 16), lv(&c, 5, 3));
+        let v = values();
+        let bits = |p: (Vec4, Vec4)| (p.0.to_array().map(f32::to_bits), p.1.to_array().map(f32::to_bits));
+        for (k, st) in v.chunks_exact(2).enumerate() {
+            let (s, t) = (st[0] / 64.0 * (k % 7) as f32, st[1] / 16.0);
+            for rep in [[true, true], [false, true], [true, false], [false, false]] {
+                let want = (la.linear::<false>(s, t, rep), lb.linear::<false>(s, t, rep));
+                assert_eq!(bits(linear2::<false, false>(&la, &lb, s, t, rep)), bits(want), "{s} {t} {rep:?}");
+                let want = (lb.linear::<false>(s, t, rep), lc.linear::<false>(s, t, rep));
+                assert_eq!(bits(linear2::<false, false>(&lb, &lc, s, t, rep)), bits(want), "{s} {t} {rep:?}");
+            }
+            let want = (la.linear::<true>(s, t, [true; 2]), lb.linear::<true>(s, t, [true; 2]));
+            assert_eq!(bits(linear2::<true, false>(&la, &lb, s, t, [true; 2])), bits(want), "{s} {t}");
+            // The AVX2 lerps (the test calls them outside the kernel).
+            #[cfg(target_arch = "x86_64")]
+            if std::arch::is_x86_feature_detected!("avx2") {
+                assert_eq!(bits(linear2::<true, true>(&la, &lb, s, t, [true; 2])), bits(want), "avx2 {s} {t}");
+                let want = (lb.linear::<false>(s, t, [false, true]), lc.linear::<false>(s, t, [false, true]));
+                assert_eq!(bits(linear2::<false, true>(&lb, &lc, s, t, [false, true])), bits(want), "avx2 {s} {t}");
+            }
         }
     }
 
