@@ -72,6 +72,19 @@ fn check_alpha(name: &str, n: usize, c: &Context) -> Result<(), String> {
     Ok(())
 }
 
+/// One case on `c`: the same starting buffers, the commands, then what a
+/// readback does first (shade the binned triangles a threaded or
+/// window-system context defers).
+fn run_case(c: &mut Context, color: &[[u8; 4]], depth: &[u32], stencil: &[u8], cmds: &[Command]) {
+    c.fb.color.copy_from_slice(color);
+    c.fb.depth.copy_from_slice(depth);
+    c.fb.stencil.copy_from_slice(stencil);
+    for cmd in cmds {
+        c.execute(cmd);
+    }
+    c.sync_render();
+}
+
 fn context(reference: bool, (W, H): (usize, usize), threads: usize) -> Context {
     let alpha_bits = if NO_ALPHA.with(|a| a.get()) { 0 } else { 8 };
     let mut c = Context::new(Config { alpha_bits, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
@@ -242,14 +255,7 @@ fn compare(seed: u64, cases: usize, size: (usize, usize), threads: usize, approx
         let stencil: Vec<u8> = (0..W * H).map(|_| r.below(4) as u8 * if r.chance(50) { 1 } else { 85 }).collect();
         let cmds = case(&mut r, tex, size);
         for c in [&mut fast, &mut reference] {
-            c.fb.color.copy_from_slice(&color);
-            c.fb.depth.copy_from_slice(&depth);
-            c.fb.stencil.copy_from_slice(&stencil);
-            for cmd in &cmds {
-                c.execute(cmd);
-            }
-            // What a readback does first: shade the binned triangles.
-            c.sync_render();
+            run_case(c, &color, &depth, &stencil, &cmds);
         }
         assert!(reference.derived.render.reference && !fast.derived.render.reference);
         check_alpha("fast", n, &fast)?;
@@ -565,14 +571,7 @@ fn compare_textured(seed: u64, cases: usize, size: (usize, usize), threads: usiz
         let stencil: Vec<u8> = (0..W * H).map(|_| r.below(4) as u8).collect();
         let cmds = textured_case(&mut r, &names, size);
         for c in [&mut fast, &mut reference] {
-            c.fb.color.copy_from_slice(&color);
-            c.fb.depth.copy_from_slice(&depth);
-            c.fb.stencil.copy_from_slice(&stencil);
-            for cmd in &cmds {
-                c.execute(cmd);
-            }
-            // The threaded context defers its binned triangles.
-            c.sync_render();
+            run_case(c, &color, &depth, &stencil, &cmds);
         }
         drawn += (0..W * H).filter(|&i| reference.fb.color[i] != color[i]).count();
         for i in 0..W * H {
@@ -736,13 +735,7 @@ fn compare_simd(seed: u64, cases: usize, size: (usize, usize)) -> Result<usize, 
         for (k, c) in ctx.iter_mut().enumerate() {
             // Selection runs on this thread (one thread, nothing deferred).
             simd::force_level_on_this_thread(levels[k]);
-            c.fb.color.copy_from_slice(&color);
-            c.fb.depth.copy_from_slice(&depth);
-            c.fb.stencil.copy_from_slice(&stencil);
-            for cmd in &cmds {
-                c.execute(cmd);
-            }
-            c.sync_render();
+            run_case(c, &color, &depth, &stencil, &cmds);
         }
         simd::force_level_on_this_thread(None);
         for (k, name) in ["best", "sse2", "scalar", "reference"].iter().enumerate() {
