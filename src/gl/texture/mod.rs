@@ -26,7 +26,6 @@ use super::context::Context;
 use super::enums::{GL_INVALID_ENUM, GL_INVALID_OPERATION, GL_INVALID_VALUE, GL_OUT_OF_MEMORY};
 use super::pixel_data;
 use super::get::Value;
-use crate::render::fragment::CompareFunc;
 use crate::render::texture::{Base, Env, Filter, Image, Params, Target, Texels, TextureStage, UnitSampler, Wrap, MAX_LOD_BIAS, MAX_UNITS};
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
@@ -854,27 +853,6 @@ impl Context {
     pub fn tex_parameter(&mut self, target: u32, pname: u32, v: [f32; 4]) {
         let Some(t) = object_target(target) else { return self.set_error(GL_INVALID_ENUM) };
         let e = v[0] as u32;
-        let wrap = |e: u32| {
-            Some(match e {
-                GL_REPEAT => Wrap::Repeat,
-                GL_CLAMP => Wrap::Clamp,
-                GL_CLAMP_TO_EDGE => Wrap::ClampToEdge,
-                GL_CLAMP_TO_BORDER => Wrap::ClampToBorder,
-                GL_MIRRORED_REPEAT => Wrap::MirroredRepeat,
-                _ => return None,
-            })
-        };
-        let filter = |e: u32| {
-            Some(match e {
-                GL_NEAREST => Filter::Nearest,
-                GL_LINEAR => Filter::Linear,
-                GL_NEAREST_MIPMAP_NEAREST => Filter::NearestMipmapNearest,
-                GL_LINEAR_MIPMAP_NEAREST => Filter::LinearMipmapNearest,
-                GL_NEAREST_MIPMAP_LINEAR => Filter::NearestMipmapLinear,
-                GL_LINEAR_MIPMAP_LINEAR => Filter::LinearMipmapLinear,
-                _ => return None,
-            })
-        };
         // ARB_texture_rectangle: no REPEAT wraps, no mipmap filters
         // (INVALID_ENUM), no base level but 0 (INVALID_OPERATION).
         if t == Target::Rect {
@@ -891,94 +869,46 @@ impl Context {
         let u = self.texture.active;
         let obj = self.texture.object_mut(u, t);
         let p = &mut obj.params;
-        let bad_enum = match pname {
-            GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => match wrap(e) {
-                Some(w) => {
-                    p.wrap[(pname - GL_TEXTURE_WRAP_S).min(2) as usize] = w;
+        let bad_enum = match sampler::set_sampling(p, pname, v) {
+            Some(ok) => !ok,
+            None => match pname {
+                GL_TEXTURE_PRIORITY => {
+                    obj.priority = v[0].clamp(0.0, 1.0);
                     false
                 }
-                None => true,
-            },
-            GL_TEXTURE_MIN_FILTER => match filter(e) {
-                Some(f) => {
-                    p.min_filter = f;
+                GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL => {
+                    if v[0] < 0.0 {
+                        return self.set_error(GL_INVALID_VALUE);
+                    }
+                    let l = v[0].round() as i32;
+                    if pname == GL_TEXTURE_BASE_LEVEL {
+                        p.base_level = l;
+                    } else {
+                        p.max_level = l;
+                    }
                     false
                 }
-                None => true,
-            },
-            GL_TEXTURE_MAG_FILTER => match filter(e).filter(|f| !f.is_mipmap()) {
-                Some(f) => {
-                    p.mag_filter = f;
+                GL_GENERATE_MIPMAP => {
+                    obj.generate_mipmap = v[0] != 0.0;
                     false
                 }
-                None => true,
-            },
-            GL_TEXTURE_BORDER_COLOR => {
-                p.border_color = v.map(|c| c.clamp(0.0, 1.0));
-                false
-            }
-            GL_TEXTURE_PRIORITY => {
-                obj.priority = v[0].clamp(0.0, 1.0);
-                false
-            }
-            GL_TEXTURE_MIN_LOD => {
-                p.min_lod = v[0];
-                false
-            }
-            GL_TEXTURE_MAX_LOD => {
-                p.max_lod = v[0];
-                false
-            }
-            GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL => {
-                if v[0] < 0.0 {
-                    return self.set_error(GL_INVALID_VALUE);
-                }
-                let l = v[0].round() as i32;
-                if pname == GL_TEXTURE_BASE_LEVEL {
-                    p.base_level = l;
-                } else {
-                    p.max_level = l;
-                }
-                false
-            }
-            GL_TEXTURE_LOD_BIAS => {
-                p.lod_bias = v[0];
-                false
-            }
-            GL_GENERATE_MIPMAP => {
-                obj.generate_mipmap = v[0] != 0.0;
-                false
-            }
-            GL_TEXTURE_COMPARE_MODE => match e {
-                GL_NONE | GL_COMPARE_R_TO_TEXTURE => {
-                    p.compare_mode = e == GL_COMPARE_R_TO_TEXTURE;
-                    false
-                }
+                GL_DEPTH_TEXTURE_MODE => match e {
+                    GL_LUMINANCE => {
+                        p.depth_mode = Base::Luminance;
+                        false
+                    }
+                    GL_INTENSITY => {
+                        p.depth_mode = Base::Intensity;
+                        false
+                    }
+                    GL_ALPHA => {
+                        p.depth_mode = Base::Alpha;
+                        false
+                    }
+                    _ => true,
+                },
                 _ => true,
             },
-            GL_TEXTURE_COMPARE_FUNC => match CompareFunc::from_gl(e) {
-                Some(f) => {
-                    p.compare_func = f;
-                    false
-                }
-                None => true,
-            },
-            GL_DEPTH_TEXTURE_MODE => match e {
-                GL_LUMINANCE => {
-                    p.depth_mode = Base::Luminance;
-                    false
-                }
-                GL_INTENSITY => {
-                    p.depth_mode = Base::Intensity;
-                    false
-                }
-                GL_ALPHA => {
-                    p.depth_mode = Base::Alpha;
-                    false
-                }
-                _ => true,
-            },
-            _ => true,
         };
         if bad_enum {
             return self.set_error(GL_INVALID_ENUM);

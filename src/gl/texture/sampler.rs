@@ -25,6 +25,44 @@ fn wrap_of(e: u32) -> Option<Wrap> {
     })
 }
 
+/// The sampling state that glTexParameter and glSamplerParameter share
+/// (wraps, filters, border colour, LOD range and bias, depth comparison):
+/// None when `pname` is not one of it, else whether the value was valid
+/// (and applied). Values come as floats (enums are exact in f32).
+pub(super) fn set_sampling(p: &mut Params, pname: u32, v: [f32; 4]) -> Option<bool> {
+    let e = v[0] as u32;
+    Some(match pname {
+        GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => wrap_of(e).map(|w| p.wrap[(pname - GL_TEXTURE_WRAP_S).min(2) as usize] = w).is_some(),
+        GL_TEXTURE_MIN_FILTER => filter_of(e).map(|f| p.min_filter = f).is_some(),
+        GL_TEXTURE_MAG_FILTER => filter_of(e).filter(|f| !f.is_mipmap()).map(|f| p.mag_filter = f).is_some(),
+        GL_TEXTURE_BORDER_COLOR => {
+            p.border_color = v.map(|c| c.clamp(0.0, 1.0));
+            true
+        }
+        GL_TEXTURE_MIN_LOD => {
+            p.min_lod = v[0];
+            true
+        }
+        GL_TEXTURE_MAX_LOD => {
+            p.max_lod = v[0];
+            true
+        }
+        GL_TEXTURE_LOD_BIAS => {
+            p.lod_bias = v[0];
+            true
+        }
+        GL_TEXTURE_COMPARE_MODE => match e {
+            GL_NONE | GL_COMPARE_R_TO_TEXTURE => {
+                p.compare_mode = e == GL_COMPARE_R_TO_TEXTURE;
+                true
+            }
+            _ => false,
+        },
+        GL_TEXTURE_COMPARE_FUNC => CompareFunc::from_gl(e).map(|f| p.compare_func = f).is_some(),
+        _ => return None,
+    })
+}
+
 fn wrap_enum(w: Wrap) -> u32 {
     match w {
         Wrap::Repeat => GL_REPEAT,
@@ -138,37 +176,7 @@ impl Context {
     /// glSamplerParameter*: values as floats (enums are exact in f32).
     pub fn sampler_parameter(&mut self, sampler: u32, pname: u32, v: [f32; 4]) {
         let Some(p) = self.samplers.objects.get_mut(&sampler) else { return self.set_error(GL_INVALID_OPERATION) };
-        let e = v[0] as u32;
-        let ok = match pname {
-            GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => wrap_of(e).map(|w| p.wrap[(pname - GL_TEXTURE_WRAP_S).min(2) as usize] = w).is_some(),
-            GL_TEXTURE_MIN_FILTER => filter_of(e).map(|f| p.min_filter = f).is_some(),
-            GL_TEXTURE_MAG_FILTER => filter_of(e).filter(|f| !f.is_mipmap()).map(|f| p.mag_filter = f).is_some(),
-            GL_TEXTURE_BORDER_COLOR => {
-                p.border_color = v.map(|c| c.clamp(0.0, 1.0));
-                true
-            }
-            GL_TEXTURE_MIN_LOD => {
-                p.min_lod = v[0];
-                true
-            }
-            GL_TEXTURE_MAX_LOD => {
-                p.max_lod = v[0];
-                true
-            }
-            GL_TEXTURE_LOD_BIAS => {
-                p.lod_bias = v[0];
-                true
-            }
-            GL_TEXTURE_COMPARE_MODE => match e {
-                GL_NONE | GL_COMPARE_R_TO_TEXTURE => {
-                    p.compare_mode = e == GL_COMPARE_R_TO_TEXTURE;
-                    true
-                }
-                _ => false,
-            },
-            GL_TEXTURE_COMPARE_FUNC => CompareFunc::from_gl(e).map(|f| p.compare_func = f).is_some(),
-            _ => false,
-        };
+        let ok = set_sampling(p, pname, v).unwrap_or(false);
         if !ok {
             return self.set_error(GL_INVALID_ENUM);
         }
