@@ -72,6 +72,18 @@ fn check_alpha(name: &str, n: usize, c: &Context) -> Result<(), String> {
     Ok(())
 }
 
+/// A random vertex within +-scale of the centre: in eye space at depth
+/// -1.2 to -9 (projected by the perspective cases), or in clip space.
+fn random_vertex(r: &mut Rng, scale: f32, perspective: bool) -> Command {
+    let (x, y) = (r.range(-scale, scale), r.range(-scale, scale));
+    if perspective {
+        let z = r.range(-9.0, -1.2);
+        Command::Vertex([x * -z, y * -z, z, 1.0])
+    } else {
+        Command::Vertex([x, y, r.range(-1.2, 1.2), 1.0])
+    }
+}
+
 /// One case on `c`: the same starting buffers, the commands, then what a
 /// readback does first (shade the binned triangles a threaded or
 /// window-system context defers).
@@ -209,13 +221,7 @@ fn case(r: &mut Rng, tex: u32, (W, H): (usize, usize)) -> Vec<Command> {
         for _ in 0..3 {
             v.push(Command::Color([r.unit(), r.unit(), r.unit(), r.unit()]));
             v.push(Command::TexCoord(t::GL_TEXTURE0, [r.range(-1.0, 2.0), r.range(-1.0, 2.0), 0.0, 1.0]));
-            let (x, y) = (r.range(-scale, scale), r.range(-scale, scale));
-            if perspective {
-                let z = r.range(-9.0, -1.2);
-                v.push(Command::Vertex([x * -z, y * -z, z, 1.0]));
-            } else {
-                v.push(Command::Vertex([x, y, r.range(-1.2, 1.2), 1.0]));
-            }
+            v.push(random_vertex(r, scale, perspective));
         }
     }
     v.push(Command::End);
@@ -694,13 +700,7 @@ fn simd_case(r: &mut Rng, (W, H): (usize, usize)) -> Vec<Command> {
                 [r.unit(), r.unit(), r.unit(), r.unit()]
             };
             v.push(Command::Color(c));
-            let (x, y) = (r.range(-scale, scale), r.range(-scale, scale));
-            if perspective {
-                let z = r.range(-9.0, -1.2);
-                v.push(Command::Vertex([x * -z, y * -z, z, 1.0]));
-            } else {
-                v.push(Command::Vertex([x, y, r.range(-1.2, 1.2), 1.0]));
-            }
+            v.push(random_vertex(r, scale, perspective));
         }
     }
     v.push(Command::End);
