@@ -30,6 +30,7 @@
 use super::context::Context;
 use super::enums::*;
 use super::get::Value;
+use super::texture::enums::{GL_LINEAR, GL_TEXTURE_RECTANGLE};
 use super::texture::image::{internal_format, is_depth_stencil};
 use super::texture::MAX_LEVELS;
 use super::validate::DIRTY_ALL;
@@ -82,14 +83,7 @@ pub const GL_STENCIL_INDEX1: u32 = 0x8D46;
 pub const GL_STENCIL_INDEX4: u32 = 0x8D47;
 pub const GL_STENCIL_INDEX8: u32 = 0x8D48;
 pub const GL_STENCIL_INDEX16: u32 = 0x8D49;
-const GL_TEXTURE: u32 = 0x1702;
 const GL_UNSIGNED_NORMALIZED: u32 = 0x8C17;
-const GL_FLOAT_TYPE: u32 = 0x1406;
-const GL_LINEAR: u32 = 0x2601;
-const GL_TEXTURE_1D: u32 = 0x0DE0;
-const GL_TEXTURE_2D: u32 = 0x0DE1;
-const GL_TEXTURE_3D: u32 = 0x806F;
-const GL_TEXTURE_RECTANGLE: u32 = 0x84F5;
 const GL_TEXTURE_CUBE_MAP_POSITIVE_X: u32 = 0x8515;
 const GL_TEXTURE_CUBE_MAP_NEGATIVE_Z: u32 = 0x851A;
 
@@ -775,7 +769,7 @@ impl Context {
             (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, Attachment::Texture { layer, .. }) => layer,
             (GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, a) if a != Attachment::None => GL_LINEAR as i32,
             (GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, a) if a != Attachment::None => {
-                if sizes(self).3 { GL_FLOAT_TYPE as i32 } else { GL_UNSIGNED_NORMALIZED as i32 }
+                if sizes(self).3 { GL_FLOAT as i32 } else { GL_UNSIGNED_NORMALIZED as i32 }
             }
             (GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE..=GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, a) if a != Attachment::None => {
                 let (rgba, d, s, _) = sizes(self);
