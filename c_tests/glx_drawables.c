@@ -34,6 +34,14 @@
  *             window, at glXSwapBuffers, and for a display list's triangles
  *             (winsys/bound.rs shades them before the drawable's
  *             framebuffer leaves the context at the end of each call)
+ *   swap      GLX_EXT/MESA/SGI_swap_control: advertised, found, the
+ *             interval starts at 0 and is per drawable; an interval of 3
+ *             makes 10 swaps take at least 9 periods of SOFTGL_REFRESH_HZ
+ *             (set to 100 here), 0 makes them quick again; errors (a
+ *             negative EXT interval is BadValue, SGI's 0 GLX_BAD_VALUE,
+ *             MESA's without a context GLX_BAD_CONTEXT);
+ *             GLX_MESA_copy_sub_buffer shows just the rectangle of the
+ *             back buffer, which stays as drawn
  *   bench W H N   N glXSwapBuffers of a WxH window: ms per present
  *
  * Run by c_tests/t_glx.sh on its Xvfb. Exit status: number of failures. */
@@ -1010,6 +1018,122 @@ static void run_bench(int w, int h, int n)
     glXDestroyContext(dpy, c);
 }
 
+/* ---- swap control and copy_sub_buffer ---- */
+
+static int x_error_code;
+static int catch_error(Display *d, XErrorEvent *e)
+{
+    (void)d;
+    x_error_code = e->error_code;
+    return 0;
+}
+
+static double now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
+
+static double swaps_ms(Window win, int n)
+{
+    double t0 = now_ms();
+    for (int i = 0; i < n; i++) {
+        glClear(GL_COLOR_BUFFER_BIT);
+        glXSwapBuffers(dpy, win);
+    }
+    return now_ms() - t0;
+}
+
+static void run_swap(void)
+{
+    const char *ext = glXQueryExtensionsString(dpy, DefaultScreen(dpy));
+    const char *names[] = {"GLX_EXT_swap_control", "GLX_MESA_swap_control", "GLX_SGI_swap_control", "GLX_MESA_copy_sub_buffer"};
+    for (int i = 0; i < 4; i++)
+        CHECK(ext && strstr(ext, names[i]), "%s not advertised", names[i]);
+    typedef void (*SetExt)(Display *, GLXDrawable, int);
+    typedef int (*SetMesa)(unsigned);
+    typedef int (*GetMesa)(void);
+    typedef int (*SetSgi)(int);
+    typedef void (*CopySub)(Display *, GLXDrawable, int, int, int, int);
+    SetExt set_ext = (SetExt)glXGetProcAddress((const GLubyte *)"glXSwapIntervalEXT");
+    SetMesa set_mesa = (SetMesa)glXGetProcAddress((const GLubyte *)"glXSwapIntervalMESA");
+    GetMesa get_mesa = (GetMesa)glXGetProcAddress((const GLubyte *)"glXGetSwapIntervalMESA");
+    SetSgi set_sgi = (SetSgi)glXGetProcAddress((const GLubyte *)"glXSwapIntervalSGI");
+    CopySub copy_sub = (CopySub)glXGetProcAddress((const GLubyte *)"glXCopySubBufferMESA");
+    if (!set_ext || !set_mesa || !get_mesa || !set_sgi || !copy_sub) {
+        CHECK(0, "a swap-control or copy_sub_buffer entry point is missing");
+        return;
+    }
+    CHECK(set_mesa(1) == GLX_BAD_CONTEXT, "glXSwapIntervalMESA without a context is not GLX_BAD_CONTEXT");
+    int w = 64, h = 48;
+    Window win = make_window(w, h), other = make_window(w, h);
+    GLXContext ctx = new_context(NULL);
+    CHECK(glXMakeCurrent(dpy, win, ctx), "glXMakeCurrent");
+    glXMakeCurrent(dpy, other, ctx);
+    glXMakeCurrent(dpy, win, ctx);
+    unsigned v = 99, max = 0;
+    glXQueryDrawable(dpy, win, GLX_SWAP_INTERVAL_EXT, &v);
+    glXQueryDrawable(dpy, win, GLX_MAX_SWAP_INTERVAL_EXT, &max);
+    CHECK(v == 0, "initial GLX_SWAP_INTERVAL_EXT is %u, expected 0", v);
+    CHECK(max >= 1, "GLX_MAX_SWAP_INTERVAL_EXT is %u", max);
+    CHECK(get_mesa() == 0, "glXGetSwapIntervalMESA is %d, expected 0", get_mesa());
+    double quick = swaps_ms(win, 10);
+    set_ext(dpy, win, 3);
+    glXQueryDrawable(dpy, win, GLX_SWAP_INTERVAL_EXT, &v);
+    CHECK(v == 3, "after glXSwapIntervalEXT(3) the interval is %u", v);
+    CHECK(get_mesa() == 3, "glXGetSwapIntervalMESA is %d after EXT's 3", get_mesa());
+    glXQueryDrawable(dpy, other, GLX_SWAP_INTERVAL_EXT, &v);
+    CHECK(v == 0, "another drawable's interval changed to %u", v);
+    /* SOFTGL_REFRESH_HZ=100: 3 periods are 30 ms, so 10 swaps (9 gaps) take
+     * at least 270 ms. */
+    double paced = swaps_ms(win, 10);
+    CHECK(paced >= 265, "10 swaps at interval 3 and 100 Hz took %.1f ms (at least 270 expected)", paced);
+    CHECK(set_mesa(0) == 0, "glXSwapIntervalMESA(0) failed");
+    double again = swaps_ms(win, 10);
+    CHECK(again < 200, "10 swaps at interval 0 took %.1f ms", again);
+    CHECK(set_sgi(0) == GLX_BAD_VALUE, "glXSwapIntervalSGI(0) is not GLX_BAD_VALUE");
+    CHECK(set_sgi(2) == 0 && get_mesa() == 2, "glXSwapIntervalSGI(2) did not set 2");
+    XErrorHandler old = XSetErrorHandler(catch_error);
+    x_error_code = 0;
+    set_ext(dpy, win, -1);
+    XSync(dpy, False);
+    CHECK(x_error_code == BadValue, "glXSwapIntervalEXT(-1) gave X error %d, expected BadValue", x_error_code);
+    XSetErrorHandler(old);
+    set_mesa(0);
+    XDestroyWindow(dpy, other); /* it covers win, whose pixels are read next */
+    XSync(dpy, False);
+    printf("  10 swaps: %.1f ms at interval 0, %.1f ms at 3 (100 Hz), %.1f ms at 0 again\n", quick, paced, again);
+
+    /* copy_sub_buffer: blue frame shown; then green back buffer, of which
+     * only (10,10)-(30,20) reaches the window. */
+    glViewport(0, 0, w, h);
+    glClearColor(0, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glXSwapBuffers(dpy, win);
+    glClearColor(0, 1, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    copy_sub(dpy, win, 10, 10, 20, 10);
+    XSync(dpy, False);
+    expect_x(win, 15, 15, h, 0, 255, 0, "copy_sub_buffer: inside the rectangle");
+    expect_x(win, 29, 19, h, 0, 255, 0, "copy_sub_buffer: the rectangle's last pixel");
+    expect_x(win, 30, 15, h, 0, 0, 255, "copy_sub_buffer: right of the rectangle");
+    expect_x(win, 15, 20, h, 0, 0, 255, "copy_sub_buffer: above the rectangle");
+    expect_x(win, 5, 5, h, 0, 0, 255, "copy_sub_buffer: outside");
+    glReadBuffer(GL_BACK);
+    expect_gl(5, 5, 0, 255, 0, "copy_sub_buffer: back buffer unchanged");
+    glReadBuffer(GL_FRONT);
+    expect_gl(15, 15, 0, 255, 0, "copy_sub_buffer: front buffer inside");
+    expect_gl(40, 40, 0, 0, 255, "copy_sub_buffer: front buffer outside");
+    copy_sub(dpy, win, -100, -100, 1000, 1000); /* clipped to the window */
+    XSync(dpy, False);
+    expect_x(win, 5, 5, h, 0, 255, 0, "copy_sub_buffer: clipped whole window");
+    glXMakeCurrent(dpy, None, NULL);
+    glXDestroyContext(dpy, ctx);
+    XDestroyWindow(dpy, win);
+    printf("  swap control, copy_sub_buffer: %s\n", failures ? "failed" : "ok");
+}
+
 int main(int argc, char **argv)
 {
     const char *mode = argc > 1 ? argv[1] : "shm";
@@ -1017,6 +1141,8 @@ int main(int argc, char **argv)
      * at once); softgl reads this when the first context is made. */
     if (!strcmp(mode, "deferred"))
         setenv("SOFTGL_THREADS", "2", 1);
+    if (!strcmp(mode, "swap"))
+        setenv("SOFTGL_REFRESH_HZ", "100", 1);
     dpy = XOpenDisplay(NULL);
     if (!dpy) {
         printf("SKIP glx_drawables: cannot open display\n");
@@ -1063,6 +1189,8 @@ int main(int argc, char **argv)
         run_pbuffer();
     else if (!strcmp(mode, "pixmap"))
         run_pixmap();
+    else if (!strcmp(mode, "swap"))
+        run_swap();
     else if (!strcmp(mode, "bench") && argc > 4)
         run_bench(atoi(argv[2]), atoi(argv[3]), atoi(argv[4]));
     else {

@@ -23,7 +23,8 @@
 #      FBConfig, binned triangles reaching their window across
 #      glXMakeCurrent/glXSwapBuffers, several contexts on one window (two
 #      threads), a separate read drawable, a pbuffer in two contexts of a
-#      share group, a double-buffered GLXPixmap.
+#      share group, a double-buffered GLXPixmap, swap control
+#      (EXT/MESA/SGI) and glXCopySubBufferMESA.
 #   6. when wflinfo is installed (waffle-utils), `wflinfo -p glx -a gl`
 #      must report softgl;
 #   7. when freeglut's headers are installed (freeglut3-dev), the freeglut
@@ -113,7 +114,7 @@ for mode in visual fbconfig; do
     fi
 done
 
-for mode in shm noshm attribs share bind configs rgb deferred multi read pbuffer pixmap; do
+for mode in shm noshm attribs share bind configs rgb deferred multi read pbuffer pixmap swap; do
     if [ $mode = noshm ]; then
         out=$(SOFTGL_NO_SHM=1 timeout 30 "$DIR/glx_drawables" shm 2>&1)
     else

@@ -226,6 +226,17 @@ GLAPI __GLXextFuncPtr GLAPIENTRY glXGetProcAddress (const GLubyte *procName);
 typedef GLXContext (*PFNGLXCREATECONTEXTATTRIBSARBPROC) (Display *dpy, GLXFBConfig config, GLXContext share_context, Bool direct, const int *attrib_list);
 GLAPI GLXContext GLAPIENTRY glXCreateContextAttribsARB (Display *dpy, GLXFBConfig config, GLXContext share_context, Bool direct, const int *attrib_list);
 
+/* GLX_EXT_swap_control, GLX_MESA_swap_control, GLX_SGI_swap_control */
+#define GLX_SWAP_INTERVAL_EXT                     0x20F1
+#define GLX_MAX_SWAP_INTERVAL_EXT                 0x20F2
+GLAPI void GLAPIENTRY glXSwapIntervalEXT (Display *dpy, GLXDrawable drawable, int interval);
+GLAPI int GLAPIENTRY glXSwapIntervalMESA (unsigned int interval);
+GLAPI int GLAPIENTRY glXGetSwapIntervalMESA (void);
+GLAPI int GLAPIENTRY glXSwapIntervalSGI (int interval);
+
+/* GLX_MESA_copy_sub_buffer */
+GLAPI void GLAPIENTRY glXCopySubBufferMESA (Display *dpy, GLXDrawable drawable, int x, int y, int width, int height);
+
 #ifdef __cplusplus
 }
 #endif

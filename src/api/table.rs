@@ -881,6 +881,11 @@ super::entry_points! {
     free glXGetProcAddressARB(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
     free glXGetProcAddress(procName: *const GLubyte) -> GLproc { proc_from_name(procName as *const c_char) }
     free glXCreateContextAttribsARB(dpy: *mut Display, config: GLXFBConfig, shareContext: GLXContext, direct: Bool, attribList: *const c_int) -> GLXContext { glx::create_context_attribs(dpy, config, shareContext, direct, attribList) }
+    free glXSwapIntervalEXT(dpy: *mut Display, drawable: GLXDrawable, interval: c_int) { glx::swap::swap_interval_ext(dpy, drawable, interval) }
+    free glXSwapIntervalMESA(interval: std::ffi::c_uint) -> c_int { glx::swap::swap_interval_mesa(interval) }
+    free glXGetSwapIntervalMESA() -> c_int { glx::swap::get_swap_interval_mesa() }
+    free glXSwapIntervalSGI(interval: c_int) -> c_int { glx::swap::swap_interval_sgi(interval) }
+    free glXCopySubBufferMESA(dpy: *mut Display, drawable: GLXDrawable, x: c_int, y: c_int, width: c_int, height: c_int) { glx::swap::copy_sub_buffer(dpy, drawable, x, y, width, height) }
 
     // ---- softgl_wgl.h ----
     free wglCreateContext(hdc: *mut c_void) -> *mut c_void { crate::winsys::wgl::create_context(hdc) }

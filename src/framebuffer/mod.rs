@@ -266,6 +266,27 @@ impl Framebuffer {
         self.front_dirty = false;
     }
 
+    /// Copies the back buffer's rectangle at (x, y) (window coordinates,
+    /// origin bottom left), `width` x `height`, clipped to the buffer, into
+    /// the front buffer (GLX_MESA_copy_sub_buffer).
+    pub fn copy_back_to_front(&mut self, x: isize, y: isize, width: usize, height: usize) {
+        if !self.double {
+            return;
+        }
+        let x0 = x.clamp(0, self.width as isize) as usize;
+        let y0 = y.clamp(0, self.height as isize) as usize;
+        let x1 = x.saturating_add(width as isize).clamp(0, self.width as isize) as usize;
+        let y1 = y.saturating_add(height as isize).clamp(0, self.height as isize) as usize;
+        if x0 >= x1 {
+            return;
+        }
+        let (back, front) = if self.color_is_back { (&self.color, &mut self.other_color) } else { (&self.other_color, &mut self.color) };
+        for row in y0..y1 {
+            let i = row * self.width;
+            front[i + x0..i + x1].copy_from_slice(&back[i + x0..i + x1]);
+        }
+    }
+
     /// Resizes to `width` x `height`. Contents become undefined (zero), as
     /// after a window resize. Fails without changing anything when the size
     /// is out of range or memory runs out.

@@ -42,6 +42,8 @@ pub struct Drawable {
     pub fb: Arc<SharedFramebuffer>,
     /// Where frames go (windows and pixmaps), made at the first binding.
     pub surface: Mutex<Option<XSurface>>,
+    /// The swap interval (GLX_EXT_swap_control) and last swap time.
+    pub pacing: super::swap::Pacing,
 }
 
 // SAFETY: the raw pointers inside (display, GC, segment) are used under
@@ -67,7 +69,7 @@ impl Drawable {
             // A 0x0 pbuffer is legal; the framebuffer gets at least a pixel.
             fb.resize(width.max(1), height.max(1)).ok()?;
         }
-        Some(Arc::new(Drawable { dpy: dpy as usize, id, kind, config, fb: SharedFramebuffer::new(fb), surface: Mutex::new(None) }))
+        Some(Arc::new(Drawable { dpy: dpy as usize, id, kind, config, fb: SharedFramebuffer::new(fb), surface: Mutex::new(None), pacing: Default::default() }))
     }
 
     /// The drawable's size now: the X drawable's (None if it is gone), or
@@ -136,6 +138,8 @@ impl Drawable {
         if self.kind == Kind::Pixmap {
             return;
         }
+        // Paced before the lock: contexts sharing the drawable go on.
+        self.pacing.wait_for_slot();
         let mut slot = self.fb.lock();
         if !slot.fb.is_double_buffered() {
             return;

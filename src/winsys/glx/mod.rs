@@ -71,6 +71,7 @@
 pub mod drawable;
 pub mod handles;
 pub mod present;
+pub mod swap;
 pub mod xlib;
 
 use crate::api::types::*;
@@ -399,7 +400,7 @@ pub unsafe fn query_version(dpy: *mut Display, major: *mut c_int, minor: *mut c_
 const VENDOR: &[u8] = b"softgl\0";
 const VERSION: &[u8] = b"1.4 softgl\0";
 /// The GLX extensions softgl implements.
-const EXTENSIONS: &[u8] = b"GLX_ARB_create_context GLX_ARB_create_context_profile GLX_ARB_get_proc_address\0";
+const EXTENSIONS: &[u8] = b"GLX_ARB_create_context GLX_ARB_create_context_profile GLX_ARB_get_proc_address GLX_EXT_swap_control GLX_MESA_copy_sub_buffer GLX_MESA_swap_control GLX_SGI_swap_control\0";
 
 fn string(name: c_int) -> *const c_char {
     match name {
@@ -634,7 +635,7 @@ pub unsafe fn destroy_window(dpy: *mut Display, win: Xid) {
 }
 
 /// GLX error numbers and requests for errors of drawables.
-const GLX_BAD_DRAWABLE_ERROR: u8 = 2;
+pub(crate) const GLX_BAD_DRAWABLE_ERROR: u8 = 2;
 const GLX_BAD_PBUFFER_ERROR: u8 = 10;
 const GLX_BAD_WINDOW_ERROR: u8 = 12;
 const X_GLX_DESTROY_PBUFFER: u16 = 28;
@@ -1095,8 +1096,7 @@ pub unsafe fn destroy_context(dpy: *mut Display, ctx: *mut GlxContext) {
 /// contexts are bound to it; then follows a window's resize for the next
 /// frame. A drawable softgl has never bound has nothing to show.
 pub unsafe fn swap_buffers(dpy: *mut Display, drawable: Xid) {
-    let cur = current_glx();
-    if !cur.is_null() && (*cur).draw == drawable && (*cur).gl.in_begin_end() {
+    if in_begin_end_on(drawable) {
         return;
     }
     let Some(d) = drawable::find(dpy, drawable) else { return };
@@ -1108,6 +1108,14 @@ pub unsafe fn swap_buffers(dpy: *mut Display, drawable: Xid) {
     }
 }
 
+
+/// Whether the calling thread's context draws to `drawable` and is between
+/// glBegin and glEnd (swaps are ignored then).
+pub fn in_begin_end_on(drawable: Xid) -> bool {
+    let cur = current_glx();
+    // SAFETY: the current context is live while it is current.
+    !cur.is_null() && unsafe { (*cur).draw == drawable && (*cur).gl.in_begin_end() }
+}
 
 /// glXIsDirect: every softgl context is direct; GLXBadContext (and
 /// False) for a handle that is not a live context.
@@ -1200,6 +1208,12 @@ pub unsafe fn query_drawable(dpy: *mut Display, d: Xid, attrib: c_int, value: *m
         return;
     }
     let rec = drawable::find(dpy, d);
+    if let Some(v) = swap::query(rec.as_deref(), attrib) {
+        if rec.is_some() || drawable::x_geometry(dpy, d).is_some() {
+            *value = v;
+            return;
+        }
+    }
     if let Some(Kind::Pbuffer { width, height, preserved, largest }) = rec.as_ref().map(|r| r.kind) {
         match attrib {
             GLX_WIDTH => *value = width as c_uint,
