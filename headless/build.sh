@@ -1,7 +1,7 @@
 #!/bin/sh
 # Builds softgl's headless X client libraries into build/headless/ (see
-# headless/README.md): libX11.so.6, libXext.so.6, libXi.so.6 and
-# libXxf86vm.so.1, each with its real SONAME so that programs and
+# headless/README.md): libX11.so.6, libXext.so.6, libXi.so.6,
+# libXxf86vm.so.1 and libX11-xcb.so.1, each with its real SONAME so that programs and
 # libraries linked against the real ones load these instead when
 # build/headless is on LD_LIBRARY_PATH. Needs the Xlib headers
 # (libx11-dev, libxext-dev); without them it says so and builds nothing.
@@ -26,3 +26,4 @@ build libX11.so.6 headless/x11.c
 build libXext.so.6 headless/xext.c
 build libXi.so.6 headless/xi.c
 build libXxf86vm.so.1 headless/xxf86vm.c
+build libX11-xcb.so.1 headless/x11xcb.c

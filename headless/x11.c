@@ -116,6 +116,10 @@ typedef struct {
 } HDisplay;
 
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+/* Open displays, so that closing one twice (waffle does, on its error
+ * path) is a no-op instead of a double free. */
+static HDisplay **open_displays;
+static size_t n_open, cap_open;
 static pthread_cond_t queued = PTHREAD_COND_INITIALIZER;
 static XID next_id = 0x200000;
 static int next_ext = 128;
@@ -565,7 +569,38 @@ EXPORT Display *XOpenDisplay(const char *name)
     s->min_maps = 1;
     s->backing_store = NotUseful;
     s->save_unders = False;
+    pthread_mutex_lock(&lock);
+    if (n_open == cap_open) {
+        size_t cap = cap_open ? 2 * cap_open : 8;
+        HDisplay **l = realloc(open_displays, cap * sizeof *l);
+        if (l) {
+            open_displays = l;
+            cap_open = cap;
+        }
+    }
+    int ok = n_open < cap_open;
+    if (ok)
+        open_displays[n_open++] = h;
+    pthread_mutex_unlock(&lock);
+    if (!ok) {
+        close(h->efd);
+        free(h->screen.default_gc);
+        free(h->name);
+        free(h);
+        return NULL;
+    }
     return dpy;
+}
+
+/* Forgets an open display; false if it was not open (the lock held). */
+static int forget_display(HDisplay *h)
+{
+    for (size_t i = 0; i < n_open; i++)
+        if (open_displays[i] == h) {
+            open_displays[i] = open_displays[--n_open];
+            return 1;
+        }
+    return 0;
 }
 
 EXPORT int XCloseDisplay(Display *dpy)
@@ -573,6 +608,11 @@ EXPORT int XCloseDisplay(Display *dpy)
     if (!dpy)
         return 0;
     HDisplay *h = H(dpy);
+    pthread_mutex_lock(&lock);
+    int known = forget_display(h);
+    pthread_mutex_unlock(&lock);
+    if (!known)
+        return 0; /* closed already */
     /* Extensions' close hooks first (softgl's GLX drops its drawables). */
     for (Ext *e = h->exts; e; e = e->next)
         if (e->close)
