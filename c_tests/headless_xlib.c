@@ -19,7 +19,10 @@
  *   - XCreateImage/XPutPixel/XPutImage/XGetImage/XDestroyImage;
  *   - GLX through softgl: a double-buffered window cleared to a colour and
  *     swapped reads back (XGetImage) as that colour, and its size follows
- *     XResizeWindow.
+ *     XResizeWindow;
+ *   - with arguments "exit single|double": SOFTGL_EXIT_AFTER_FRAMES ends a
+ *     program that presents forever, and its atexit handler can still
+ *     call GLX (see exit_mode).
  * Prints "ok N checks" and exits 0, or prints each failure and exits 1.
  */
 #include <GL/gl.h>
@@ -32,6 +35,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static int checks, failures;
 
@@ -66,8 +70,57 @@ static Bool is_client_message(Display *dpy, XEvent *ev, XPointer arg)
     return ev->type == ClientMessage && ev->xclient.window == *(Window *)arg;
 }
 
-int main(void)
+/* "exit single" / "exit double": draws and presents frames (glFlush of a
+ * single-buffered window, or glXSwapBuffers) until SOFTGL_EXIT_AFTER_FRAMES
+ * ends the process; its atexit handler, which still calls GLX (as
+ * programs' cleanup does), prints how many frames were presented. */
+static Display *exit_dpy;
+static GLXContext exit_ctx;
+static int presented;
+
+static void at_exit(void)
 {
+    glXMakeCurrent(exit_dpy, None, NULL);
+    glXDestroyContext(exit_dpy, exit_ctx);
+    XCloseDisplay(exit_dpy);
+    printf("atexit after %d frames\n", presented);
+}
+
+static int exit_mode(int dbl)
+{
+    int vattr[] = {GLX_RGBA, GLX_RED_SIZE, 8, dbl ? GLX_DOUBLEBUFFER : None, None};
+    Display *dpy = exit_dpy = XOpenDisplay(NULL);
+    XVisualInfo *vi = dpy ? glXChooseVisual(dpy, DefaultScreen(dpy), vattr) : NULL;
+    if (!vi) {
+        printf("failure: no visual\n");
+        return 1;
+    }
+    XSetWindowAttributes attr;
+    attr.colormap = XCreateColormap(dpy, DefaultRootWindow(dpy), vi->visual, AllocNone);
+    Window w = XCreateWindow(dpy, DefaultRootWindow(dpy), 0, 0, 32, 32, 0, vi->depth, InputOutput, vi->visual, CWColormap, &attr);
+    exit_ctx = glXCreateContext(dpy, vi, NULL, True);
+    XMapWindow(dpy, w);
+    if (!glXMakeCurrent(dpy, w, exit_ctx)) {
+        printf("failure: glXMakeCurrent\n");
+        return 1;
+    }
+    atexit(at_exit);
+    for (presented = 1; presented <= 1000; presented++) {
+        glClearColor((float)(presented % 8) / 8, 0.5f, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        if (dbl)
+            glXSwapBuffers(dpy, w);
+        else
+            glFlush();
+    }
+    printf("failure: still running after 1000 frames (SOFTGL_EXIT_AFTER_FRAMES=%s)\n", getenv("SOFTGL_EXIT_AFTER_FRAMES"));
+    _exit(1);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 3 && !strcmp(argv[1], "exit"))
+        return exit_mode(!strcmp(argv[2], "double"));
     Display *dpy = XOpenDisplay(NULL);
     if (!dpy) {
         printf("failure: XOpenDisplay(NULL) with DISPLAY=%s\n", getenv("DISPLAY") ? getenv("DISPLAY") : "(unset)");
