@@ -253,9 +253,19 @@ int main(int argc, char **argv)
     XImage *got = XGetImage(dpy, w, 5, 6, 4, 4, AllPlanes, ZPixmap);
     check(got && (XGetPixel(got, 3, 2) & 0xffffff) == 0x010203u * 11 && (XGetPixel(got, 0, 0) & 0xffffff) == 0,
           "XGetImage reads back XPutImage");
-    XDestroyImage(im);
     if (got)
         XDestroyImage(got);
+    /* Partly outside the window: the part inside lands. */
+    XPutImage(dpy, w, gc, im, 0, 0, -2, 70, 4, 4);
+    got = XGetImage(dpy, w, 0, 70, 2, 2, AllPlanes, ZPixmap);
+    check(got && (XGetPixel(got, 0, 0) & 0xffffff) == 0x010203u * 2 && (XGetPixel(got, 1, 1) & 0xffffff) == 0x010203u * 7,
+          "XPutImage clipped at the window's left edge");
+    if (got)
+        XDestroyImage(got);
+    im->byte_order = MSBFirst;
+    XPutPixel(im, 1, 1, 0x11223344);
+    check(XGetPixel(im, 1, 1) == 0x11223344 && (unsigned char)im->data[4 * 4 + 4] == 0x11, "MSBFirst pixels");
+    XDestroyImage(im);
     XFreeGC(dpy, gc);
 
     /* GLX through softgl into a window of the stand-in. */

@@ -1510,13 +1510,11 @@ static unsigned long get_pixel(XImage *im, int x, int y)
         return (b >> (im->bitmap_bit_order == LSBFirst ? x % 8 : 7 - x % 8)) & 1;
     }
     unsigned char *p = pixel_at(im, x, y);
-    switch (im->bits_per_pixel) {
-    case 8: return p[0];
-    case 16: return (unsigned long)p[0] | (unsigned long)p[1] << 8;
-    case 24: return (unsigned long)p[0] | (unsigned long)p[1] << 8 | (unsigned long)p[2] << 16;
-    case 32: return (unsigned long)p[0] | (unsigned long)p[1] << 8 | (unsigned long)p[2] << 16 | (unsigned long)p[3] << 24;
-    }
-    return 0;
+    int n = im->bits_per_pixel / 8;
+    unsigned long v = 0;
+    for (int i = 0; i < n && i < 4; i++)
+        v |= (unsigned long)p[im->byte_order == LSBFirst ? i : n - 1 - i] << (8 * i);
+    return v;
 }
 
 static int put_pixel(XImage *im, int x, int y, unsigned long v)
@@ -1530,8 +1528,9 @@ static int put_pixel(XImage *im, int x, int y, unsigned long v)
         return 1;
     }
     unsigned char *p = pixel_at(im, x, y);
-    for (int i = 0; i < im->bits_per_pixel / 8; i++)
-        p[i] = (unsigned char)(v >> (8 * i));
+    int n = im->bits_per_pixel / 8;
+    for (int i = 0; i < n && i < 4; i++)
+        p[im->byte_order == LSBFirst ? i : n - 1 - i] = (unsigned char)(v >> (8 * i));
     return 1;
 }
 
@@ -1647,15 +1646,27 @@ EXPORT int XPutImage(Display *dpy, Drawable d, GC gc, XImage *im, int sx, int sy
     if (im && im->data && im->format == ZPixmap && im->bits_per_pixel == 32 && (dr->depth == 24 || dr->depth == 32)) {
         if (!dr->pixels)
             dr->pixels = calloc((size_t)dr->w * dr->h, sizeof *dr->pixels);
-        if (dr->pixels)
+        /* The part of the w x h rectangle inside both the image and the
+         * drawable: rows are copied whole (little-endian 32-bit pixels are
+         * the stored words). */
+        int x0 = dx > 0 ? 0 : -dx, x1 = (int)w;
+        if (sx + x0 < 0)
+            x0 = -sx;
+        if (x1 > im->width - sx)
+            x1 = im->width - sx;
+        if (x1 > (int)dr->w - dx)
+            x1 = (int)dr->w - dx;
+        if (dr->pixels && x0 < x1)
             for (unsigned j = 0; j < h; j++) {
                 int y = dy + (int)j, iy = sy + (int)j;
                 if (y < 0 || y >= (int)dr->h || iy < 0 || iy >= im->height)
                     continue;
-                for (unsigned i = 0; i < w; i++) {
-                    int x = dx + (int)i, ix = sx + (int)i;
-                    if (x >= 0 && x < (int)dr->w && ix >= 0 && ix < im->width)
-                        dr->pixels[(size_t)y * dr->w + (size_t)x] = (uint32_t)get_pixel(im, ix, iy);
+                uint32_t *dst = dr->pixels + (size_t)y * dr->w + (size_t)(dx + x0);
+                if (im->byte_order == LSBFirst) {
+                    memcpy(dst, pixel_at(im, sx + x0, iy), (size_t)(x1 - x0) * 4);
+                } else {
+                    for (int i = x0; i < x1; i++)
+                        *dst++ = (uint32_t)get_pixel(im, sx + i, iy);
                 }
             }
     }
