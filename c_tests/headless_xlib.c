@@ -114,7 +114,8 @@ static int exit_mode(int dbl)
             glFlush();
     }
     printf("failure: still running after 1000 frames (SOFTGL_EXIT_AFTER_FRAMES=%s)\n", getenv("SOFTGL_EXIT_AFTER_FRAMES"));
-    _exit(1);
+    fflush(stdout);
+    _exit(1); /* not exit(): at_exit would print as if it had worked */
 }
 
 int main(int argc, char **argv)
