@@ -949,11 +949,10 @@ EXPORT Window XCreateWindow(Display *dpy, Window parent, int x, int y, unsigned 
         x_error(dpy, BadWindow, X_CreateWindow, parent);
         return None;
     }
-    HDrawable *d = calloc(1, sizeof *d);
-    if (!d || w == 0 || h == 0) {
-        free(d);
+    HDrawable *d = w && h ? calloc(1, sizeof *d) : NULL;
+    if (!d) {
         pthread_mutex_unlock(&lock);
-        x_error(dpy, d ? BadValue : BadAlloc, X_CreateWindow, 0);
+        x_error(dpy, w && h ? BadAlloc : BadValue, X_CreateWindow, 0);
         return None;
     }
     d->id = new_id();
