@@ -69,6 +69,28 @@ stats() {
     W=${1%x*} H=${1#*x} DARK=$3 RED=$5 GREEN=$7 BLUE=$9 OTHER=${11} R0=${13} R1=${14} G0=${15} G1=${16} B0=${17} B1=${18}
 }
 
+# 0. Every X function the programs (and libglut) import, and every one
+# softgl's GLX looks up (src/winsys/glx/xlib.rs), is exported by the
+# stand-ins: a missing one would stop the program at its first call.
+if command -v nm >/dev/null 2>&1; then
+    nm -D --defined-only build/headless/*.so* | awk '{print $3}' | sort -u >"$DIR/have.txt"
+    {
+        for p in glxgears glxinfo glxdemo; do
+            command -v $p >/dev/null 2>&1 && nm -D --undefined-only "$(command -v $p)"
+        done
+        for l in /usr/lib/x86_64-linux-gnu/libglut.so.3*; do
+            [ -f "$l" ] && [ ! -L "$l" ] && nm -D --undefined-only "$l"
+        done
+        sed -n 's/.*b"\(X[A-Za-z0-9]*\)\\0".*/ U \1/p' src/winsys/glx/xlib.rs
+    } | awk '$1 == "U" {print $2}' | grep '^X' | sort -u >"$DIR/need.txt"
+    missing=$(comm -23 "$DIR/need.txt" "$DIR/have.txt" | tr '\n' ' ')
+    echo "  exports: $(wc -l <"$DIR/need.txt") X functions needed, ${missing:-none} missing"
+    if [ -n "$missing" ] || [ "$(wc -l <"$DIR/need.txt")" -lt 40 ]; then
+        echo "  failure: the stand-ins lack $missing"
+        fails=$((fails + 1))
+    fi
+fi
+
 # 1. The stand-in itself.
 if [ -f /usr/include/X11/Xlib.h ] && $CC -std=c99 -O1 -Wall -I include -o "$DIR/headless_xlib" c_tests/headless_xlib.c \
     -L build/lib -lGL -lX11 -ldl >"$DIR/build.log" 2>&1; then
