@@ -3,6 +3,8 @@
 # headless X client libraries (build/headless, headless/README.md): DISPLAY
 # is unset and LD_LIBRARY_PATH=build/headless:build/lib, so programs get the
 # stand-in libX11 (and libXext, libXi, libXxf86vm) and softgl's libGL.
+#   0. every X function glxgears, glxinfo, glxdemo, libglut and softgl's
+#      GLX use is exported by the stand-ins (nm);
 #   1. c_tests/headless_xlib.c (built against the system's Xlib headers and
 #      -lX11): the stand-in's Display layout, events, atoms, properties,
 #      errors and images, and a GLX frame read back from its window; then
