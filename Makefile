@@ -1,6 +1,8 @@
 # softgl — build, test, demo. See README.md.
 #
 #   make         build the library and lay out build/lib
+#   make headless  the X client stand-ins for running X programs without a
+#                display (build/headless, headless/README.md)
 #   make test    all tests (Rust unit tests, header/export checks, C tests)
 #   make demo    render the demo scenes into out/
 #   make piglit  piglit's GL 1.x tests against softgl on Xvfb
@@ -12,9 +14,9 @@ CC ?= cc
 LIB := build/lib
 SO := target/release/libsoftgl.so
 
-.PHONY: piglit bench all lib test rust-test c-test exports-test delphi-test demo coverage coverage-check deps clean
+.PHONY: headless piglit bench all lib test rust-test c-test exports-test delphi-test demo coverage coverage-check deps clean
 
-all: lib
+all: lib headless
 
 # One object under every name programs look for (README: "One library,
 # several names"): the SONAME is libGL.so.1; the others are symlinks so a
@@ -30,11 +32,16 @@ lib:
 	ln -sf libOSMesa.so.8 $(LIB)/libOSMesa.so
 	ln -sf libGL.so.1 $(LIB)/libsoftgl.so
 
+# libX11.so.6, libXext.so.6, libXi.so.6, libXxf86vm.so.1 with no X server
+# behind them (headless/build.sh; skipped without the Xlib headers).
+headless:
+	sh headless/build.sh
+
 # Debian packages the tests use (only when root and missing).
 deps:
 	@sh tools/install_deps.sh
 
-test: deps lib rust-test exports-test coverage-check c-test delphi-test
+test: deps lib headless rust-test exports-test coverage-check c-test delphi-test
 
 rust-test:
 	$(CARGO) test --release --workspace
@@ -42,7 +49,7 @@ rust-test:
 exports-test: lib
 	sh tools/check_exports.sh
 
-c-test: lib
+c-test: lib headless
 	bash c_tests/run.sh
 
 # The Free Pascal (Delphi mode) book programs, their images checked

@@ -2,7 +2,8 @@
 # Installs the Debian packages the tests and demo use, when running as root
 # and they are missing: a C compiler, pkg-config, and Mesa's OSMesa and GLU
 # (the LD_PRELOAD test builds a program against Mesa and runs it on softgl),
-# and for the GLX test Xvfb, the Xlib headers, x11-utils and mesa-utils
+# and for the GLX test Xvfb, the Xlib and Xext headers (also for the
+# headless X libraries), x11-utils and mesa-utils
 # (glxgears), freeglut and waffle-utils (a GLUT program, wflinfo), and
 # Free Pascal with its gl/glu units for delphi_samples/.
 set -eu
@@ -13,6 +14,7 @@ command -v pkg-config >/dev/null 2>&1 || need="$need pkg-config"
 [ -f /usr/include/GL/glu.h ] || need="$need libglu1-mesa-dev"
 command -v Xvfb >/dev/null 2>&1 || need="$need xvfb"
 [ -f /usr/include/X11/Xlib.h ] || need="$need libx11-dev"
+[ -f /usr/include/X11/extensions/XShm.h ] || need="$need libxext-dev"
 command -v xdpyinfo >/dev/null 2>&1 || need="$need x11-utils"
 command -v glxgears >/dev/null 2>&1 || need="$need mesa-utils"
 [ -f /usr/include/GL/freeglut.h ] || need="$need freeglut3-dev"

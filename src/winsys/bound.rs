@@ -28,7 +28,11 @@ pub fn with_bound<R>(ctx: &mut Context, f: impl FnOnce(&mut Context) -> R) -> R 
     let b: *const crate::framebuffer::shared::Binding = ctx.bound.as_ref().unwrap();
     // SAFETY: the binding changes only at MakeCurrent, never during a call.
     let b = unsafe { &*b };
-    swapped(ctx, &b.draw, b.read.as_ref(), f)
+    let out = swapped(ctx, &b.draw, b.read.as_ref(), f);
+    // The call may have presented a frame (glFlush, glFinish of a
+    // single-buffered drawable); the drawables' locks are released now.
+    crate::winsys::dump::exit_if_due();
+    out
 }
 
 fn swapped<R>(ctx: &mut Context, draw: &Arc<SharedFramebuffer>, read: Option<&Arc<SharedFramebuffer>>, f: impl FnOnce(&mut Context) -> R) -> R {

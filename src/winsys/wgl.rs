@@ -508,7 +508,9 @@ pub fn swap_buffers(hdc: Hdc) -> Bool {
         let s = lock_dc(&d.state);
         (s.width, s.height)
     };
-    follow_size(c, w, h) as Bool
+    let ok = follow_size(c, w, h) as Bool;
+    dump::exit_if_due();
+    ok
 }
 
 /// wglShareLists: `b` shares `a`'s display lists, textures and buffer

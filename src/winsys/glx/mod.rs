@@ -1106,6 +1106,8 @@ pub unsafe fn swap_buffers(dpy: *mut Display, drawable: Xid) {
             d.follow_size(size);
         }
     }
+    drop(d);
+    crate::winsys::dump::exit_if_due();
 }
 
 
