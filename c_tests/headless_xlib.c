@@ -207,6 +207,13 @@ int main(int argc, char **argv)
     unsigned ww, wh, bw, depth;
     check(XGetGeometry(dpy, w, &r, &x, &y, &ww, &wh, &bw, &depth) && r == root && x == 10 && y == 20 && ww == 100 && wh == 80 &&
               depth == 24, "XGetGeometry");
+    Window child;
+    check(XTranslateCoordinates(dpy, w, root, 40, 50, &x, &y, &child) && x == 50 && y == 70 && child == w,
+          "XTranslateCoordinates to the root: the point is in the window");
+    check(XTranslateCoordinates(dpy, w, root, 3, 4, &x, &y, &child) && x == 13 && y == 24 && child == quiet,
+          "XTranslateCoordinates: the window made later is on top");
+    check(XTranslateCoordinates(dpy, root, w, 0, 0, &x, &y, &child) && x == -10 && y == -20 && child == None,
+          "XTranslateCoordinates from the root");
     XEvent msg;
     memset(&msg, 0, sizeof msg);
     msg.xclient.type = ClientMessage;

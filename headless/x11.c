@@ -1261,7 +1261,13 @@ EXPORT Bool XTranslateCoordinates(Display *dpy, Window src, Window dst, int sx, 
         root_position(dpy, dst, &bx, &by);
         *dx = sx + ax - bx;
         *dy = sy + ay - by;
+        /* The mapped child of dst holding the point, topmost first (the
+         * list is newest first, and windows stack in creation order). */
         *child = None;
+        for (HDrawable *c = H(dpy)->drawables; c && *child == None; c = c->next)
+            if (c->kind == KIND_WINDOW && c->parent == dst && c->mapped && *dx >= c->x && *dy >= c->y &&
+                *dx < c->x + (int)(c->w + 2 * c->border) && *dy < c->y + (int)(c->h + 2 * c->border))
+                *child = c->id;
     }
     pthread_mutex_unlock(&lock);
     if (!ok)
