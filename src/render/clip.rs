@@ -104,7 +104,8 @@ pub fn inside_fixed(p: Vec4) -> bool {
     let g = GUARD * w;
     // With w finite, the guard and depth tests fail for infinite or NaN
     // x, y or z (a NaN comparison is false).
-    z + w >= 0.0 && w - z >= 0.0 && w - W_MIN >= 0.0 && w < f32::INFINITY && x + g >= 0.0 && g - x >= 0.0 && y + g >= 0.0 && g - y >= 0.0
+    // `&`, not `&&`: eight compares and no data-dependent branches.
+    (z + w >= 0.0) & (w - z >= 0.0) & (w - W_MIN >= 0.0) & (w < f32::INFINITY) & (x + g >= 0.0) & (g - x >= 0.0) & (y + g >= 0.0) & (g - y >= 0.0)
 }
 
 /// Clips a triangle. Vertices with NaN or infinite coordinates reject it.

@@ -38,6 +38,21 @@ pub struct ClipVertex {
 }
 
 impl ClipVertex {
+    /// Every attribute zero, edge flag false, not placed.
+    pub const ZERO: ClipVertex = ClipVertex {
+        pos: Vec4::ZERO,
+        color: Vec4::ZERO,
+        back_color: Vec4::ZERO,
+        edge: false,
+        tex: [Vec4::ZERO; super::texture::MAX_UNITS],
+        fog: 0.0,
+        secondary: Vec4::ZERO,
+        back_secondary: Vec4::ZERO,
+        inside: false,
+        win: [0.0; 4],
+        snapped: [0; 2],
+    };
+
     /// The vertex a fraction `t` of the way from `a` to `b` (clip-space
     /// linear interpolation, GL 1.5 section 2.12 equation 2.6).
     #[inline]
