@@ -70,7 +70,8 @@ impl Context {
             && rs.texture.is_none()
             && rs.fog.is_none()
             && self.select.mode == select::GL_RENDER
-            && !rs.reference;
+            && !rs.reference
+            && self.vertex_batching;
         let direct = !rs.draw_rect.is_empty()
             && rs.cull != render::Cull::All
             && rs.polygon_mode == [GL_FILL; 2]
