@@ -9,7 +9,8 @@
 //! texturing, which leave the batched path), submitted in immediate mode,
 //! through display lists (GL_COMPILE then glCallList, or
 //! GL_COMPILE_AND_EXECUTE) or from client arrays (glDrawArrays and
-//! glDrawElements). Colour, depth and stencil must be identical: the
+//! glDrawElements; positions of 2 to 4 floats, colours of 3 or 4 floats
+//! or unsigned bytes, which take the specialized array loops). Colour, depth and stencil must be identical: the
 //! batched path does the same arithmetic in the same order.
 
 use softgl::framebuffer::Config;
@@ -170,11 +171,13 @@ fn immediate(mode: u32, verts: &[Vertex]) -> Vec<Command> {
     v
 }
 
-/// The primitive from client arrays: positions, colours (where a vertex
-/// has none, the previous one's) and edge flags; by glDrawArrays or by
-/// glDrawElements with random repeated indices.
+/// The primitive from client arrays: positions of 2 to 4 floats, colours
+/// (where a vertex has none, the previous one's) as 3 or 4 floats or
+/// unsigned bytes or no colour array, and sometimes edge flags; by
+/// glDrawArrays or by glDrawElements with random repeated indices.
 fn from_arrays(c: &mut Context, r: &mut Rng, mode: u32, verts: &[Vertex]) {
-    let pos: Vec<[f32; 4]> = verts.iter().map(|x| x.pos).collect();
+    let vsize = 2 + r.below(3) as usize;
+    let pos: Vec<f32> = verts.iter().flat_map(|x| x.pos[..vsize].to_vec()).collect();
     let mut last = [1.0; 4];
     let color: Vec<[f32; 4]> = verts
         .iter()
@@ -185,13 +188,20 @@ fn from_arrays(c: &mut Context, r: &mut Rng, mode: u32, verts: &[Vertex]) {
             last
         })
         .collect();
+    let csize = 3 + r.below(2) as usize;
+    let color_f: Vec<f32> = color.iter().flat_map(|c| c[..csize].to_vec()).collect();
+    let color_b: Vec<u8> = color_f.iter().map(|&x| (x * 255.0) as u8).collect();
     let edge: Vec<u8> = verts.iter().map(|x| x.edge.unwrap_or(true) as u8).collect();
-    c.array_pointer(Array::Vertex, 4, GL_FLOAT, 0, pos.as_ptr() as usize);
-    c.array_pointer(Array::Color, 4, GL_FLOAT, 0, color.as_ptr() as usize);
+    c.array_pointer(Array::Vertex, vsize as i32, GL_FLOAT, 0, pos.as_ptr() as usize);
+    if r.chance(50) {
+        c.array_pointer(Array::Color, csize as i32, GL_FLOAT, 0, color_f.as_ptr() as usize);
+    } else {
+        c.array_pointer(Array::Color, csize as i32, GL_UNSIGNED_BYTE, 0, color_b.as_ptr() as usize);
+    }
     c.array_pointer(Array::EdgeFlag, 1, GL_UNSIGNED_BYTE, 0, edge.as_ptr() as usize);
     c.client_state(GL_VERTEX_ARRAY, true);
-    c.client_state(GL_COLOR_ARRAY, true);
-    c.client_state(GL_EDGE_FLAG_ARRAY, r.chance(50));
+    c.client_state(GL_COLOR_ARRAY, r.chance(85));
+    c.client_state(GL_EDGE_FLAG_ARRAY, r.chance(30));
     if r.chance(50) || verts.is_empty() {
         c.draw_arrays(mode, 0, verts.len() as i32);
     } else {

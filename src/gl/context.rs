@@ -42,9 +42,10 @@ pub struct Context {
     pub transform: matrix::Transform,
     /// Primitive assembly while between glBegin and glEnd.
     pub prim: Option<begin_end::Assembly>,
-    /// The batched vertex path (`begin_end::Assembly::fast`) may serve
-    /// primitives; tests turn it off to compare it with the general path
-    /// (the reference path never uses it).
+    /// The batched vertex path (`begin_end::Assembly::fast`) and the
+    /// specialized array loops (`arrays`, `draw_specialized`) may serve
+    /// primitives; tests turn them off to compare them with the general
+    /// paths (the reference path never uses the batched vertex path).
     pub vertex_batching: bool,
     pub lists: lists::Lists,
     pub pixel_store: pixels::PixelStore,
