@@ -347,11 +347,25 @@ struct Source {
     /// client memory.
     limit: Option<usize>,
     read: Reader,
+    /// The type and size `read` was chosen for (`draw_specialized`).
+    kind: (u32, usize),
 }
 
 impl Source {
     #[inline(always)]
     fn fetch(&self, i: usize) -> [f32; 4] {
+        self.fetch_with(i, self.read)
+    }
+
+    /// `fetch` through a reader known at compile time (inlined, no
+    /// indirect call): `draw_specialized`'s loops.
+    #[inline(always)]
+    fn fetch_as<T: Elem, const N: usize, const NORM: bool>(&self, i: usize) -> [f32; 4] {
+        self.fetch_with(i, read::<T, N, NORM>)
+    }
+
+    #[inline(always)]
+    fn fetch_with(&self, i: usize, read: Reader) -> [f32; 4] {
         let off = i.wrapping_mul(self.stride);
         if let Some(limit) = self.limit {
             let fits = i.checked_mul(self.stride).and_then(|o| o.checked_add(self.elem)).is_some_and(|end| end <= limit);
@@ -361,7 +375,7 @@ impl Source {
         }
         // SAFETY: client memory: the program promises the element is there
         // (section 2.8); buffer memory: checked above.
-        unsafe { (self.read)(self.base.wrapping_add(off)) }
+        unsafe { read(self.base.wrapping_add(off)) }
     }
 }
 
@@ -691,7 +705,7 @@ impl Context {
                 let data = self.buffers.data(p.buffer);
                 (data.as_ptr().wrapping_add(p.pointer), Some(data.len().saturating_sub(p.pointer)))
             };
-            Some(Source { base, stride, elem, limit, read: reader(p.type_, p.size as usize, normalized) })
+            Some(Source { base, stride, elem, limit, read: reader(p.type_, p.size as usize, normalized), kind: (p.type_, p.size as usize) })
         };
         let mut tex_coord = [None; MAX_TEXTURE_UNITS];
         for (t, p) in tex_coord.iter_mut().zip(&ar.tex_coord) {
@@ -850,13 +864,64 @@ impl Context {
         // it (2.8); softgl leaves them as they were before the draw, as
         // Mesa does and programs (piglit's draw-vertices) expect.
         let saved = self.current;
-        for k in 0..n {
-            self.apply_element(f, index(k));
+        if !self.draw_specialized(f, n, &index) {
+            for k in 0..n {
+                self.apply_element(f, index(k));
+            }
         }
         self.end();
         self.current = saved;
         if f.color.is_some() && self.lighting.color_material {
             self.apply_color_material();
+        }
+    }
+
+    /// The element loop of a draw whose only arrays are float positions
+    /// (2 to 4 components) and optionally colours (3 or 4 unsigned bytes
+    /// or floats), with both readers chosen at compile time: no indirect
+    /// call per attribute, and vertices go straight on to `vertex` (and its
+    /// batched path). The same reads, in the same order, as
+    /// `apply_element`. False when the draw needs the general loop.
+    fn draw_specialized(&mut self, f: &Fetch, n: usize, index: &impl Fn(usize) -> usize) -> bool {
+        if !self.vertex_batching || f.others || f.normal.is_some() {
+            return false;
+        }
+        let Some(v) = f.vertex else { return false };
+        let color = f.color.map(|s| s.kind);
+        macro_rules! with_color {
+            ($vn:literal) => {
+                match color {
+                    // No colour array: the colour type is never used.
+                    None => self.draw_elements_as::<$vn, f32, 4>(f, &v, n, index),
+                    Some((GL_UNSIGNED_BYTE, 3)) => self.draw_elements_as::<$vn, u8, 3>(f, &v, n, index),
+                    Some((GL_UNSIGNED_BYTE, 4)) => self.draw_elements_as::<$vn, u8, 4>(f, &v, n, index),
+                    Some((GL_FLOAT, 3)) => self.draw_elements_as::<$vn, f32, 3>(f, &v, n, index),
+                    Some((GL_FLOAT, 4)) => self.draw_elements_as::<$vn, f32, 4>(f, &v, n, index),
+                    _ => return false,
+                }
+            };
+        }
+        match v.kind {
+            (GL_FLOAT, 2) => with_color!(2),
+            (GL_FLOAT, 3) => with_color!(3),
+            (GL_FLOAT, 4) => with_color!(4),
+            _ => return false,
+        }
+        true
+    }
+
+    /// `apply_element` for positions of `VN` floats and colours of `CN`
+    /// normalized `C`s (see `draw_specialized`).
+    fn draw_elements_as<const VN: usize, C: Elem, const CN: usize>(&mut self, f: &Fetch, v: &Source, n: usize, index: &impl Fn(usize) -> usize) {
+        for k in 0..n {
+            let i = index(k);
+            if let Some(s) = &f.color {
+                self.current.color = s.fetch_as::<C, CN, true>(i);
+                if self.lighting.color_material {
+                    self.apply_color_material();
+                }
+            }
+            self.vertex(v.fetch_as::<f32, VN, false>(i));
         }
     }
 

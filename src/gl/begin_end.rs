@@ -35,7 +35,20 @@ pub struct Assembly {
     stipple: u32,
     /// The current point's size after attenuation (GL_POINTS).
     point_size: f32,
+    /// The batched path (`vertex_fast`) serves this primitive: a filled
+    /// mode whose vertices need only the position and the current colour
+    /// (no lighting, texturing, fog, selection or feedback). `verts` then
+    /// holds fixed slots the vertices are written into in place.
+    fast: bool,
+    /// Filled triangles whose vertices are all inside the guard band go
+    /// straight to setup (`render::draw_triangle`'s first case, decided
+    /// once per primitive instead of per triangle).
+    direct: bool,
 }
+
+/// Slots of the batched path: a ring of 3 for triangles, strips and fans,
+/// of 4 for quads and quad strips.
+const SLOTS: usize = 4;
 
 impl Context {
     pub fn begin(&mut self, mode: u32) {
@@ -49,7 +62,28 @@ impl Context {
         if verts.capacity() < 4 {
             verts.reserve(4);
         }
-        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0 });
+        let rs = &self.derived.render;
+        let filled = matches!(mode, GL_TRIANGLES | GL_TRIANGLE_STRIP | GL_TRIANGLE_FAN | GL_QUADS | GL_QUAD_STRIP);
+        let fast = filled
+            && self.derived.lighting.is_none()
+            && self.texture.vertex.units.is_empty()
+            && rs.texture.is_none()
+            && rs.fog.is_none()
+            && self.select.mode == select::GL_RENDER
+            && !rs.reference
+            && self.vertex_batching;
+        let direct = !rs.draw_rect.is_empty()
+            && rs.cull != render::Cull::All
+            && rs.polygon_mode == [GL_FILL; 2]
+            && rs.smooth.polygon.is_none()
+            && rs.clip_planes.len() == render::clip::FIXED_PLANES.len();
+        if fast {
+            // Every field the batched path does not write (texture
+            // coordinates, fog, secondary colours) stays zero, as the
+            // general path computes it under the same state.
+            verts.resize(SLOTS, ClipVertex::ZERO);
+        }
+        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, direct });
     }
 
     pub fn end(&mut self) {
@@ -82,7 +116,10 @@ impl Context {
     /// glVertex: the vertex takes the current colour (section 2.7).
     /// Outside Begin/End a vertex has no effect.
     pub fn vertex(&mut self, p: [f32; 4]) {
-        let Some(mode) = self.prim.as_ref().map(|a| a.mode) else { return };
+        let Some((mode, fast)) = self.prim.as_ref().map(|a| (a.mode, a.fast)) else { return };
+        if fast {
+            return self.vertex_fast(p);
+        }
         let obj = Vec4::from_array(p);
         // Primary and secondary colours, front and back (2.14, 3.9).
         let sum_enabled = self.derived.render.color_sum;
@@ -133,6 +170,81 @@ impl Context {
         self.assemble(v);
     }
 
+    /// The batched vertex path for filled primitives under state that
+    /// needs only positions and colours (`Assembly::fast`): the same
+    /// arithmetic as `vertex` in the same order (so the same bits), but the
+    /// vertex is written field by field into its slot of the assembly's
+    /// ring (no 224-byte temporary copied per vertex), and triangles whose
+    /// vertices are inside the guard band go straight to setup.
+    #[inline]
+    fn vertex_fast(&mut self, p: [f32; 4]) {
+        let obj = Vec4::from_array(p);
+        let rs = &self.derived.render;
+        let c = Vec4::from_array(self.current.color);
+        // The colour sum without texturing, as in `vertex`.
+        let s = if rs.color_sum { Vec4::from_array(self.current.secondary_color).truncate().extend(0.0) } else { Vec4::ZERO };
+        let color = c + s;
+        let pos = self.derived.mvp * obj;
+        let edge = self.current.edge_flag;
+        let Some(a) = self.prim.as_mut() else { return };
+        let n = a.count;
+        a.count += 1;
+        let slot = match a.mode {
+            GL_TRIANGLES | GL_TRIANGLE_STRIP => n % 3,
+            // Slot 0 keeps the fan's centre; the others alternate.
+            GL_TRIANGLE_FAN => if n == 0 { 0 } else { 1 + (n - 1) % 2 },
+            _ => n % 4,
+        };
+        let v = &mut a.verts[slot];
+        v.pos = pos;
+        v.color = color;
+        v.back_color = color;
+        v.edge = edge;
+        v.place(rs);
+        let fb = &mut self.fb;
+        let t = &a.verts;
+        let direct = a.direct;
+        match a.mode {
+            GL_TRIANGLES => {
+                if slot == 2 {
+                    fill(rs, fb, direct, [&t[0], &t[1], &t[2]], 2, [t[0].edge, t[1].edge, t[2].edge]);
+                }
+            }
+            GL_TRIANGLE_STRIP => {
+                if n >= 2 {
+                    let (old, prev) = ((n - 2) % 3, (n - 1) % 3);
+                    // Odd triangles swap their first two vertices (as in
+                    // `assemble_into`); the newest provokes.
+                    let v = if n % 2 == 0 { [&t[old], &t[prev], &t[slot]] } else { [&t[prev], &t[old], &t[slot]] };
+                    fill(rs, fb, direct, v, 2, [true; 3]);
+                }
+            }
+            GL_TRIANGLE_FAN => {
+                if n >= 2 {
+                    let prev = 1 + (n - 2) % 2;
+                    fill(rs, fb, direct, [&t[0], &t[prev], &t[slot]], 2, [true; 3]);
+                }
+            }
+            GL_QUADS => {
+                if slot == 3 {
+                    // `quad(q0, q1, q2, q3)` with q3 provoking.
+                    let e = |v: &ClipVertex| v.edge;
+                    fill(rs, fb, direct, [&t[0], &t[1], &t[3]], 2, [e(&t[0]), false, e(&t[3])]);
+                    fill_flat(rs, fb, direct, [&t[1], &t[2], &t[3]], &t[3], [e(&t[1]), e(&t[2]), false]);
+                }
+            }
+            _ => {
+                // GL_QUAD_STRIP: as `assemble_into`, the quad
+                // (v[n-1], v[n-3], v[n-2], v[n]) split along v[n-1]-v[n].
+                if n >= 3 && n % 2 == 1 {
+                    let (a3, b2, c1) = ((n - 3) % 4, (n - 2) % 4, (n - 1) % 4);
+                    fill(rs, fb, direct, [&t[c1], &t[a3], &t[slot]], 2, [true, false, true]);
+                    fill_flat(rs, fb, direct, [&t[a3], &t[b2], &t[slot]], &t[slot], [true, true, false]);
+                }
+            }
+        }
+    }
+
     /// The point size after GL 1.4's distance attenuation and clamping
     /// (section 3.3). Fading applies only with multisampling, which softgl
     /// does not have.
@@ -164,7 +276,7 @@ impl Context {
             a.verts.push(v);
             return;
         }
-        let mut asm = Assembly { mode: a.mode, verts: std::mem::take(&mut a.verts), count: a.count, stipple: a.stipple, point_size: a.point_size };
+        let mut asm = Assembly { verts: std::mem::take(&mut a.verts), ..*a };
         self.assemble_into(&mut asm, n, v);
         if let Some(a) = self.prim.as_mut() {
             a.verts = asm.verts;
@@ -319,6 +431,26 @@ impl Context {
             Some(w) => render::draw_triangle(&self.derived.render, &mut self.fb, [&w[0], &w[1], &w[2]], flat, edges),
             None => render::draw_triangle(&self.derived.render, &mut self.fb, v, flat, edges),
         }
+    }
+}
+
+/// One filled triangle of the batched path, `v[provoking]` giving the flat
+/// colour; see [`fill_flat`].
+#[inline(always)]
+fn fill(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: bool, v: [&ClipVertex; 3], provoking: usize, edges: [bool; 3]) {
+    fill_flat(rs, fb, direct, v, v[provoking], edges)
+}
+
+/// `render::draw_triangle` for an untextured triangle (no flat secondary
+/// colour to copy), entering setup at once when `direct` and every vertex
+/// is inside the guard band: the decision `draw_triangle` would take.
+#[inline(always)]
+fn fill_flat(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: bool, v: [&ClipVertex; 3], provoking: &ClipVertex, edges: [bool; 3]) {
+    let flat = [provoking.color, provoking.back_color];
+    if direct && v[0].inside & v[1].inside & v[2].inside {
+        render::setup::triangle_placed(rs, fb, v, flat)
+    } else {
+        render::draw_triangle(rs, fb, v, flat, edges)
     }
 }
 

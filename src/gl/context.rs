@@ -42,6 +42,11 @@ pub struct Context {
     pub transform: matrix::Transform,
     /// Primitive assembly while between glBegin and glEnd.
     pub prim: Option<begin_end::Assembly>,
+    /// The batched vertex path (`begin_end::Assembly::fast`) and the
+    /// specialized array loops (`arrays`, `draw_specialized`) may serve
+    /// primitives; tests turn them off to compare them with the general
+    /// paths (the reference path never uses the batched vertex path).
+    pub vertex_batching: bool,
     pub lists: lists::Lists,
     pub pixel_store: pixels::PixelStore,
     /// Vertex arrays (client state, GL_CLIENT_VERTEX_ARRAY_BIT).
@@ -119,6 +124,7 @@ impl Context {
             other_caps: enable::OtherCaps([GL_MULTISAMPLE].into_iter().collect()),
             transform: matrix::Transform::new(),
             prim: None,
+            vertex_batching: true,
             lists: Default::default(),
             pixel_store: Default::default(),
             arrays: Default::default(),

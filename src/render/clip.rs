@@ -102,9 +102,13 @@ fn outcode(planes: &[Plane], p: &Vec4) -> u32 {
 pub fn inside_fixed(p: Vec4) -> bool {
     let [x, y, z, w] = p.to_array();
     let g = GUARD * w;
-    // With w finite, the guard and depth tests fail for infinite or NaN
-    // x, y or z (a NaN comparison is false).
-    z + w >= 0.0 && w - z >= 0.0 && w - W_MIN >= 0.0 && w < f32::INFINITY && x + g >= 0.0 && g - x >= 0.0 && y + g >= 0.0 && g - y >= 0.0
+    // The eight tests as two 4-wide compares with zero: w - z is
+    // (-z) + w, the same single rounding; `w < inf` is inf - w >= 0 (inf
+    // for finite w, NaN for +inf and NaN, so false exactly when the
+    // comparison is). A NaN anywhere fails its lane.
+    let a = Vec4::new(z, -z, x, -x) + Vec4::new(w, w, g, g);
+    let b = Vec4::new(y, -y, w, f32::INFINITY) + Vec4::new(g, g, -W_MIN, -w);
+    (a.cmpge(Vec4::ZERO) & b.cmpge(Vec4::ZERO)).all()
 }
 
 /// Clips a triangle. Vertices with NaN or infinite coordinates reject it.

@@ -1,0 +1,286 @@
+//! Differential test of the batched vertex path (gl/begin_end.rs,
+//! `Assembly::fast`) against the general per-vertex path it stands beside:
+//! two contexts on the same (non-reference) rasterizer, one with
+//! `vertex_batching` off, draw the same random primitives (every mode,
+//! 0 to 13 vertices, random interleavings of glColor, glSecondaryColor,
+//! glEdgeFlag, glNormal and glTexCoord between the vertices) under random
+//! state (shading, culling and front face, polygon modes, scissor,
+//! viewport, user clip planes, colour sum, and sometimes lighting, fog or
+//! texturing, which leave the batched path), submitted in immediate mode,
+//! through display lists (GL_COMPILE then glCallList, or
+//! GL_COMPILE_AND_EXECUTE) or from client arrays (glDrawArrays and
+//! glDrawElements; positions of 2 to 4 floats, colours of 3 or 4 floats
+//! or unsigned bytes, which take the specialized array loops). Colour, depth and stencil must be identical: the
+//! batched path does the same arithmetic in the same order.
+
+use softgl::framebuffer::Config;
+use softgl::gl::arrays::Array;
+use softgl::gl::enums::*;
+use softgl::gl::fog::{GL_FOG_END, GL_FOG_MODE, GL_FOG_START};
+use softgl::gl::texture::enums as t;
+use softgl::gl::{Command, Context};
+
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 >> 33
+    }
+    fn below(&mut self, n: u64) -> u64 {
+        self.next() % n
+    }
+    fn chance(&mut self, percent: u64) -> bool {
+        self.below(100) < percent
+    }
+    fn unit(&mut self) -> f32 {
+        self.next() as f32 / (1u64 << 31) as f32
+    }
+    fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        lo + (hi - lo) * self.unit()
+    }
+    fn pick<T: Copy>(&mut self, v: &[T]) -> T {
+        v[self.below(v.len() as u64) as usize]
+    }
+}
+
+const W: usize = 40;
+const H: usize = 32;
+
+fn context(batching: bool) -> Context {
+    let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+    c.fb.resize(W, H).unwrap();
+    c.surface_resized(W as i32, H as i32);
+    c.derived.render.reference = false;
+    c.derived.render.threads = 1;
+    c.vertex_batching = batching;
+    let data: Vec<u8> = (0..4 * 4 * 4).map(|i| (i * 37 % 256) as u8).collect();
+    c.submit(Command::BindTexture(t::GL_TEXTURE_2D, 1));
+    let cmd = unsafe { c.tex_image_command(2, t::GL_TEXTURE_2D, 0, t::GL_RGBA as i32, [4, 4, 1], 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE, data.as_ptr()) };
+    c.submit(cmd.expect("a valid glTexImage2D"));
+    c
+}
+
+/// The state of one case; `batchable` says whether it leaves the batched
+/// path on (no lighting, fog or texturing).
+fn state(r: &mut Rng) -> (Vec<Command>, bool) {
+    let mut v = Vec::new();
+    let en = |v: &mut Vec<Command>, cap: u32, on: bool| v.push(if on { Command::Enable(cap) } else { Command::Disable(cap) });
+    v.push(Command::ShadeModel(if r.chance(40) { GL_FLAT } else { GL_SMOOTH }));
+    en(&mut v, GL_DEPTH_TEST, r.chance(60));
+    v.push(Command::DepthFunc(r.pick(&[GL_LESS, GL_LEQUAL, GL_ALWAYS])));
+    en(&mut v, GL_CULL_FACE, r.chance(25));
+    v.push(Command::CullFace(r.pick(&[GL_FRONT, GL_BACK, GL_FRONT_AND_BACK])));
+    v.push(Command::FrontFace(r.pick(&[GL_CW, GL_CCW])));
+    let modes = [GL_FILL, GL_FILL, GL_FILL, GL_LINE, GL_POINT];
+    v.push(Command::PolygonMode(GL_FRONT, r.pick(&modes)));
+    v.push(Command::PolygonMode(GL_BACK, r.pick(&modes)));
+    en(&mut v, GL_SCISSOR_TEST, r.chance(15));
+    // Sometimes empty: nothing may be drawn then.
+    v.push(Command::Scissor(r.below(W as u64) as i32 - 4, r.below(H as u64) as i32 - 4, r.below(W as u64) as i32, r.below(H as u64) as i32));
+    if r.chance(30) {
+        v.push(Command::Viewport(r.below(20) as i32 - 10, r.below(20) as i32 - 10, r.below(60) as i32, r.below(50) as i32));
+    } else {
+        v.push(Command::Viewport(0, 0, W as i32, H as i32));
+    }
+    en(&mut v, GL_CLIP_PLANE0, r.chance(10));
+    v.push(Command::ClipPlane(GL_CLIP_PLANE0, [r.range(-1.0, 1.0) as f64, r.range(-1.0, 1.0) as f64, 0.0, r.range(-0.5, 0.5) as f64]));
+    en(&mut v, GL_COLOR_SUM, r.chance(25));
+    let lighting = r.chance(10);
+    en(&mut v, GL_LIGHTING, lighting);
+    en(&mut v, GL_LIGHT0, true);
+    en(&mut v, GL_COLOR_MATERIAL, r.chance(50));
+    let fog = r.chance(10);
+    en(&mut v, GL_FOG, fog);
+    v.push(Command::Fog(GL_FOG_MODE, [t::GL_LINEAR as f32, 0.0, 0.0, 0.0]));
+    v.push(Command::Fog(GL_FOG_START, [0.0; 4]));
+    v.push(Command::Fog(GL_FOG_END, [r.range(1.0, 10.0), 0.0, 0.0, 0.0]));
+    let textured = r.chance(10);
+    en(&mut v, t::GL_TEXTURE_2D, textured);
+    v.push(Command::MatrixMode(GL_PROJECTION));
+    v.push(Command::LoadIdentity);
+    if r.chance(50) {
+        v.push(Command::Frustum([-1.0, 1.0, -1.0, 1.0, 1.0, 10.0]));
+        v.push(Command::MatrixMode(GL_MODELVIEW));
+        v.push(Command::LoadIdentity);
+        v.push(Command::Translate([0.0, 0.0, -3.0]));
+    } else {
+        v.push(Command::MatrixMode(GL_MODELVIEW));
+        v.push(Command::LoadIdentity);
+    }
+    if r.chance(50) {
+        v.push(Command::Rotate(r.range(-180.0, 180.0) as f64, [r.unit() as f64, r.unit() as f64, 1.0]));
+    }
+    (v, !lighting && !fog && !textured)
+}
+
+/// One vertex with the attributes set before it.
+#[derive(Clone, Copy, Debug)]
+struct Vertex {
+    pos: [f32; 4],
+    color: Option<[f32; 4]>,
+    secondary: Option<[f32; 4]>,
+    edge: Option<bool>,
+    normal: Option<[f32; 3]>,
+    tex: Option<[f32; 4]>,
+}
+
+fn primitive(r: &mut Rng) -> (u32, Vec<Vertex>) {
+    let mode = r.below(10) as u32; // GL_POINTS ..= GL_POLYGON
+    let n = r.below(14) as usize;
+    let scale = match r.below(10) {
+        0 => 40.0, // far outside: clipped or rejected
+        1 => 3.0,  // across the guard band's inside
+        2 => 0.1,  // tiny
+        _ => 1.2,
+    };
+    let verts = (0..n)
+        .map(|_| Vertex {
+            pos: [r.range(-scale, scale), r.range(-scale, scale), r.range(-1.5, 1.5), if r.chance(10) { r.range(0.5, 2.0) } else { 1.0 }],
+            color: r.chance(70).then(|| [r.unit(), r.unit(), r.unit(), r.unit()]),
+            secondary: r.chance(30).then(|| [r.unit(), r.unit(), r.unit(), 1.0]),
+            edge: r.chance(30).then(|| r.chance(50)),
+            normal: r.chance(30).then(|| [r.range(-1.0, 1.0), r.range(-1.0, 1.0), r.range(-1.0, 1.0)]),
+            tex: r.chance(30).then(|| [r.range(-1.0, 2.0), r.range(-1.0, 2.0), 0.0, 1.0]),
+        })
+        .collect();
+    (mode, verts)
+}
+
+fn immediate(mode: u32, verts: &[Vertex]) -> Vec<Command> {
+    let mut v = vec![Command::Begin(mode)];
+    for x in verts {
+        if let Some(c) = x.color {
+            v.push(Command::Color(c));
+        }
+        if let Some(c) = x.secondary {
+            v.push(Command::SecondaryColor(c));
+        }
+        if let Some(e) = x.edge {
+            v.push(Command::EdgeFlag(e));
+        }
+        if let Some(n) = x.normal {
+            v.push(Command::Normal(n));
+        }
+        if let Some(tc) = x.tex {
+            v.push(Command::TexCoord(t::GL_TEXTURE0, tc));
+        }
+        v.push(Command::Vertex(x.pos));
+    }
+    v.push(Command::End);
+    v
+}
+
+/// The primitive from client arrays: positions of 2 to 4 floats, colours
+/// (where a vertex has none, the previous one's) as 3 or 4 floats or
+/// unsigned bytes or no colour array, and sometimes edge flags; by
+/// glDrawArrays or by glDrawElements with random repeated indices.
+fn from_arrays(c: &mut Context, r: &mut Rng, mode: u32, verts: &[Vertex]) {
+    let vsize = 2 + r.below(3) as usize;
+    let pos: Vec<f32> = verts.iter().flat_map(|x| x.pos[..vsize].to_vec()).collect();
+    let mut last = [1.0; 4];
+    let color: Vec<[f32; 4]> = verts
+        .iter()
+        .map(|x| {
+            if let Some(c) = x.color {
+                last = c;
+            }
+            last
+        })
+        .collect();
+    let csize = 3 + r.below(2) as usize;
+    let color_f: Vec<f32> = color.iter().flat_map(|c| c[..csize].to_vec()).collect();
+    let color_b: Vec<u8> = color_f.iter().map(|&x| (x * 255.0) as u8).collect();
+    let edge: Vec<u8> = verts.iter().map(|x| x.edge.unwrap_or(true) as u8).collect();
+    c.array_pointer(Array::Vertex, vsize as i32, GL_FLOAT, 0, pos.as_ptr() as usize);
+    if r.chance(50) {
+        c.array_pointer(Array::Color, csize as i32, GL_FLOAT, 0, color_f.as_ptr() as usize);
+    } else {
+        c.array_pointer(Array::Color, csize as i32, GL_UNSIGNED_BYTE, 0, color_b.as_ptr() as usize);
+    }
+    c.array_pointer(Array::EdgeFlag, 1, GL_UNSIGNED_BYTE, 0, edge.as_ptr() as usize);
+    c.client_state(GL_VERTEX_ARRAY, true);
+    c.client_state(GL_COLOR_ARRAY, r.chance(85));
+    c.client_state(GL_EDGE_FLAG_ARRAY, r.chance(30));
+    if r.chance(50) || verts.is_empty() {
+        c.draw_arrays(mode, 0, verts.len() as i32);
+    } else {
+        let n = r.below(16) as usize;
+        let idx: Vec<u32> = (0..n).map(|_| r.below(verts.len() as u64) as u32).collect();
+        c.draw_elements(mode, n as i32, GL_UNSIGNED_INT, idx.as_ptr() as usize);
+    }
+    c.client_state(GL_VERTEX_ARRAY, false);
+    c.client_state(GL_COLOR_ARRAY, false);
+    c.client_state(GL_EDGE_FLAG_ARRAY, false);
+}
+
+#[test]
+fn batched_vertices_match_the_general_path() {
+    let (mut fast, mut general) = (context(true), context(false));
+    let mut r = Rng(0x5eed_0001);
+    let (mut batchable, mut drawn) = (0, 0);
+    for case in 0..3000 {
+        let (state_cmds, can_batch) = state(&mut r);
+        let prims: Vec<(u32, Vec<Vertex>)> = (0..1 + r.below(3)).map(|_| primitive(&mut r)).collect();
+        let route = r.below(4); // immediate, list, compile-and-execute, arrays
+        let seed = r.next();
+        let clear = [r.unit(), r.unit(), r.unit(), 1.0];
+        for c in [&mut fast, &mut general] {
+            c.submit(Command::ClearColor(clear));
+            c.submit(Command::Disable(GL_SCISSOR_TEST));
+            c.submit(Command::Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT));
+            for cmd in &state_cmds {
+                c.submit(cmd.clone());
+            }
+            let mut ar = Rng(seed);
+            match route {
+                1 | 2 => {
+                    c.new_list(1, if route == 1 { GL_COMPILE } else { GL_COMPILE_AND_EXECUTE });
+                    for (mode, verts) in &prims {
+                        for cmd in immediate(*mode, verts) {
+                            c.submit(cmd);
+                        }
+                    }
+                    c.end_list();
+                    if route == 1 {
+                        c.call_list(1);
+                    }
+                }
+                3 => {
+                    for (mode, verts) in &prims {
+                        from_arrays(c, &mut ar, *mode, verts);
+                    }
+                }
+                _ => {
+                    for (mode, verts) in &prims {
+                        for cmd in immediate(*mode, verts) {
+                            c.submit(cmd);
+                        }
+                    }
+                }
+            }
+            c.sync_render();
+        }
+        let filled = prims.iter().any(|(m, v)| *m >= GL_TRIANGLES && *m != GL_POLYGON && v.len() >= 3);
+        if can_batch && filled {
+            batchable += 1;
+        }
+        if fast.fb.color.iter().any(|p| *p != fast.fb.color[0]) {
+            drawn += 1;
+        }
+        for i in 0..W * H {
+            let (a, b) = (fast.fb.color[i], general.fb.color[i]);
+            assert!(
+                a == b && fast.fb.depth[i] == general.fb.depth[i] && fast.fb.stencil[i] == general.fb.stencil[i],
+                "case {case} (route {route}) pixel ({}, {}): batched {a:?} z {:#x} / general {b:?} z {:#x}\nstate: {state_cmds:?}\nprimitives: {prims:?}",
+                i % W,
+                i / W,
+                fast.fb.depth[i],
+                general.fb.depth[i],
+            );
+        }
+    }
+    // The comparison meant something: many cases took the batched path
+    // and drew pixels.
+    assert!(batchable > 800 && drawn > 1000, "batchable {batchable}, drawn {drawn}");
+}
