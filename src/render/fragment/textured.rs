@@ -38,6 +38,9 @@ use crate::render::setup::{Plane, TriangleSetup};
 use crate::render::texture::{Base, Fast, Filter, Target, Texels, UnitSampler, MAX_LOD_BIAS};
 use glam::{Vec3, Vec4};
 
+#[cfg(target_arch = "x86_64")]
+mod avx2;
+
 type Kernel = super::fast::Kernel;
 
 /// Most levels a texture can have (a 2^15 base; GL_MAX_TEXTURE_SIZE is
@@ -54,6 +57,19 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup) -> Option<Kernel> {
     let store = fs.color == ColorOp::Replace && fs.color_mask == [true; 4];
     #[cfg(target_arch = "x86_64")]
     if super::simd::level_here() == super::simd::Level::Avx2 {
+        // Eight pixels at a time where the sampler allows (avx2.rs).
+        if unit(tp).is_some_and(|(_, s)| avx2::takes(s)) {
+            return Some(match (d, store) {
+                (D_LESS, true) => avx2::kernel::<D_LESS, true>,
+                (D_LEQUAL, true) => avx2::kernel::<D_LEQUAL, true>,
+                (D_OFF, true) => avx2::kernel::<D_OFF, true>,
+                (_, true) => avx2::kernel::<D_ANY, true>,
+                (D_LESS, false) => avx2::kernel::<D_LESS, false>,
+                (D_LEQUAL, false) => avx2::kernel::<D_LEQUAL, false>,
+                (D_OFF, false) => avx2::kernel::<D_OFF, false>,
+                _ => avx2::kernel::<D_ANY, false>,
+            });
+        }
         return Some(match (d, store) {
             (D_LESS, true) => kernel_avx2::<D_LESS, true>,
             (D_LEQUAL, true) => kernel_avx2::<D_LEQUAL, true>,
@@ -396,7 +412,7 @@ impl<'a> Sampler<'a> {
         let lx = ((dx[0] * n0).powi(2) + (dx[1] * n1).powi(2)).sqrt();
         let ly = ((dy[0] * n0).powi(2) + (dy[1] * n1).powi(2)).sqrt();
         let rho = lx.max(ly);
-        let lambda = (rho.log2() + self.bias).clamp(self.min_lod, self.max_lod);
+        let lambda = (crate::render::texture::lod::log2(rho) + self.bias).clamp(self.min_lod, self.max_lod);
         if lambda > self.c_switch && !lambda.is_nan() {
             let q = self.q;
             match self.min {
