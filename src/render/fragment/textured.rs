@@ -10,7 +10,8 @@
 //! `UnitSampler::sample_general`) computes, in the same operations and
 //! the same order: the planes in f64 as `(a0 + dy cy) + dx cx` with the
 //! row term hoisted, one division by q per fragment, the derivatives
-//! `(S' - s Q') / Q`, ρ from them in f32 with the same sqrt and log2, λ,
+//! `(S' - s Q') / Q`, ρ from them in f32 with the same sqrt and log2
+//! (`texture::lod::log2`), λ,
 //! the level choice and the bilinear weights `frac(u - 1/2)`, the texels as
 //! `c / 255`, the lerps `a + (b - a) t` (four lanes at once: IEEE
 //! single-precision operations lane by lane, no fused multiply-add), the
@@ -28,6 +29,11 @@
 //!
 //! Depth test first (early rejection), as `fast.rs` does: without the
 //! alpha test, a fragment failing the depth test is never textured.
+//!
+//! On CPUs with AVX2, [`avx2`] runs the same computation 8 pixels at a
+//! time for the samplers it takes (see its documentation); this scalar
+//! kernel serves the others, its short spans and irregular groups, and
+//! the SSE2 and scalar levels.
 
 use super::reference;
 use super::fast::{depth_key, D_ANY, D_LEQUAL, D_LESS, D_OFF};
