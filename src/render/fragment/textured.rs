@@ -10,7 +10,8 @@
 //! `UnitSampler::sample_general`) computes, in the same operations and
 //! the same order: the planes in f64 as `(a0 + dy cy) + dx cx` with the
 //! row term hoisted, one division by q per fragment, the derivatives
-//! `(S' - s Q') / Q`, ρ from them in f32 with the same sqrt and log2, λ,
+//! `(S' - s Q') / Q`, ρ from them in f32 with the same sqrt and log2
+//! (`texture::lod::log2`), λ,
 //! the level choice and the bilinear weights `frac(u - 1/2)`, the texels as
 //! `c / 255`, the lerps `a + (b - a) t` (four lanes at once: IEEE
 //! single-precision operations lane by lane, no fused multiply-add), the
@@ -28,6 +29,11 @@
 //!
 //! Depth test first (early rejection), as `fast.rs` does: without the
 //! alpha test, a fragment failing the depth test is never textured.
+//!
+//! On CPUs with AVX2, [`avx2`] runs the same computation 8 pixels at a
+//! time for the samplers it takes (see its documentation); this scalar
+//! kernel serves the others, its short spans and irregular groups, and
+//! the SSE2 and scalar levels.
 
 use super::reference;
 use super::fast::{depth_key, D_ANY, D_LEQUAL, D_LESS, D_OFF};
@@ -37,6 +43,9 @@ use crate::render::fog::Fog;
 use crate::render::setup::{Plane, TriangleSetup};
 use crate::render::texture::{Base, Fast, Filter, Target, Texels, UnitSampler, MAX_LOD_BIAS};
 use glam::{Vec3, Vec4};
+
+#[cfg(target_arch = "x86_64")]
+mod avx2;
 
 type Kernel = super::fast::Kernel;
 
@@ -54,6 +63,19 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup) -> Option<Kernel> {
     let store = fs.color == ColorOp::Replace && fs.color_mask == [true; 4];
     #[cfg(target_arch = "x86_64")]
     if super::simd::level_here() == super::simd::Level::Avx2 {
+        // Eight pixels at a time where the sampler allows (avx2.rs).
+        if unit(tp).is_some_and(|(_, s)| avx2::takes(s)) {
+            return Some(match (d, store) {
+                (D_LESS, true) => avx2::kernel::<D_LESS, true>,
+                (D_LEQUAL, true) => avx2::kernel::<D_LEQUAL, true>,
+                (D_OFF, true) => avx2::kernel::<D_OFF, true>,
+                (_, true) => avx2::kernel::<D_ANY, true>,
+                (D_LESS, false) => avx2::kernel::<D_LESS, false>,
+                (D_LEQUAL, false) => avx2::kernel::<D_LEQUAL, false>,
+                (D_OFF, false) => avx2::kernel::<D_OFF, false>,
+                _ => avx2::kernel::<D_ANY, false>,
+            });
+        }
         return Some(match (d, store) {
             (D_LESS, true) => kernel_avx2::<D_LESS, true>,
             (D_LEQUAL, true) => kernel_avx2::<D_LEQUAL, true>,
@@ -396,7 +418,7 @@ impl<'a> Sampler<'a> {
         let lx = ((dx[0] * n0).powi(2) + (dx[1] * n1).powi(2)).sqrt();
         let ly = ((dy[0] * n0).powi(2) + (dy[1] * n1).powi(2)).sqrt();
         let rho = lx.max(ly);
-        let lambda = (rho.log2() + self.bias).clamp(self.min_lod, self.max_lod);
+        let lambda = (crate::render::texture::lod::log2(rho) + self.bias).clamp(self.min_lod, self.max_lod);
         if lambda > self.c_switch && !lambda.is_nan() {
             let q = self.q;
             match self.min {

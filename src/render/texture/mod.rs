@@ -40,12 +40,13 @@
 //!
 //! LOD (3.8.8): ρ = max(|∂(u,v,w)/∂x|, |∂(u,v,w)/∂y|) from the fragment's
 //! exact derivatives of the perspective-corrected coordinates (computed in
-//! `fragment` from the 1/w plane equations); λ = log2 ρ + bias, clamped to
+//! `fragment` from the 1/w plane equations); λ = log2 ρ + bias ([`lod::log2`]), clamped to
 //! [min_lod, max_lod]; λ > c minifies, where c = 1/2 when the magnification
 //! filter is LINEAR and the minification filter is NEAREST_MIPMAP_NEAREST
 //! or LINEAR_MIPMAP_NEAREST, else 0.
 
 pub mod env;
+pub mod lod;
 
 use crate::render::fragment::CompareFunc;
 use glam::Vec4;
@@ -611,7 +612,7 @@ impl UnitSampler {
             lx.max(ly)
         };
         let p = &self.params;
-        let lambda = (rho.log2() + (p.lod_bias + self.unit_bias).clamp(-MAX_LOD_BIAS, MAX_LOD_BIAS)).clamp(p.min_lod, p.max_lod);
+        let lambda = (lod::log2(rho) + (p.lod_bias + self.unit_bias).clamp(-MAX_LOD_BIAS, MAX_LOD_BIAS)).clamp(p.min_lod, p.max_lod);
         let c_switch = if p.mag_filter == Filter::Linear && matches!(p.min_filter, Filter::NearestMipmapNearest | Filter::LinearMipmapNearest) {
             0.5
         } else {

@@ -1,0 +1,600 @@
+//! The textured span kernel eight pixels at a time (AVX2): what
+//! [`super::span`] computes per fragment, in lanes, bit for bit.
+//!
+//! Per group of 8 pixels: depth (f64 lanes, as `simd.rs`), the
+//! perspective divide of s, t and their exact derivatives
+//! `(S' - s Q') / Q` (f64 lanes), ρ and λ (f32 lanes, [`lod::log2_8`],
+//! the same function the reference sampler uses), the level choice per
+//! lane, the 2x2 (or 1) texels of each level by gathers, their conversion
+//! c / 255, the lerps `a + (b - a) t`, the environment, fog and the
+//! conversion to bytes: every lane runs the scalar kernel's IEEE
+//! operations in the same order (no fused multiply-add; this module does
+//! not enable FMA), so no tolerance is needed.
+//!
+//! c / 255 (correctly rounded, as the scalar kernel's division) is
+//! computed as `c HI + c LO` with HI = 257 / 2^16 (c HI is exact) and
+//! LO = 1/255 - HI rounded: equal to the division for every byte (tested),
+//! and two multiplies and an add instead of a division.
+//!
+//! Taken: the states `super::select` takes whose per-level filter is the
+//! same on both sides of the magnification switch (mag LINEAR with min
+//! LINEAR, LINEAR_MIPMAP_NEAREST or LINEAR_MIPMAP_LINEAR; mag NEAREST with
+//! min NEAREST, NEAREST_MIPMAP_NEAREST or NEAREST_MIPMAP_LINEAR), each
+//! REPEAT axis of power-of-two size at every level (CLAMP_TO_EDGE axes any
+//! size). Lanes of a group may use different levels: the group is filtered
+//! once per distinct level. A group with a coordinate outside ±2^22 texels,
+//! q zero or not finite, or ρ not finite, and spans of fewer than 8
+//! pixels and the last pixels of a span (fewer than 8) go through the
+//! scalar kernel.
+
+use super::super::fast::{D_ANY, D_LEQUAL, D_LESS, D_OFF};
+use super::super::{write_color, FragmentState, SpanPixels};
+use super::{same_plane, EnvFn, Level, Sampler};
+use crate::framebuffer::DEPTH_MAX;
+use crate::render::fog::Fog;
+use crate::render::setup::TriangleSetup;
+use crate::render::texture::{lod, Fast, Filter, UnitSampler};
+use std::arch::x86_64::*;
+
+/// c / 255 = c HI + c LO for bytes c (see the module documentation).
+const HI: f32 = 257.0 / 65536.0;
+const LO: f32 = (1.0f64 / 255.0 - 257.0 / 65536.0) as f32;
+
+/// How a span's lanes pick their levels.
+#[derive(Clone, Copy, PartialEq)]
+enum Lod {
+    /// Level 0 only (min and mag filters equal and not mipmapped).
+    None,
+    /// NEAREST_MIPMAP_NEAREST or LINEAR_MIPMAP_NEAREST; `c`: the
+    /// magnification switch-over point.
+    Nearest { c: f32 },
+    /// NEAREST_MIPMAP_LINEAR or LINEAR_MIPMAP_LINEAR.
+    Linear,
+}
+
+/// The level choice and per-level filter (LINEAR or NEAREST) of a
+/// sampler, if this kernel takes it.
+fn plan(smp: &Sampler) -> Option<(Lod, bool)> {
+    let (lod, linear) = match smp.fast {
+        Fast::Nearest2D { .. } => (Lod::None, false),
+        Fast::Linear2D { .. } => (Lod::None, true),
+        Fast::General => {
+            let linear = smp.mag_linear;
+            let lod = match (smp.min, linear) {
+                (Filter::LinearMipmapLinear, true) | (Filter::NearestMipmapLinear, false) => Lod::Linear,
+                (Filter::LinearMipmapNearest, true) | (Filter::NearestMipmapNearest, false) => Lod::Nearest { c: smp.c_switch },
+                _ => return None,
+            };
+            (lod, linear)
+        }
+    };
+    let levels = &smp.levels[..=smp.q];
+    let pow2 = |n: i32| n & (n - 1) == 0;
+    if (smp.repeat[0] && !levels.iter().all(|l| pow2(l.w))) || (smp.repeat[1] && !levels.iter().all(|l| pow2(l.h))) {
+        return None;
+    }
+    Some((lod, linear))
+}
+
+/// Whether this kernel takes a sampler (`super::select` has checked the
+/// rest of the state).
+pub(super) fn takes(s: &UnitSampler) -> bool {
+    plan(&Sampler::new(s)).is_some()
+}
+
+pub(super) fn kernel<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    // SAFETY: `super::select` hands this out only at simd::Level::Avx2,
+    // which is only reported when the CPU has AVX2.
+    unsafe { span::<D, STORE>(fs, t, px, y, x0, x1) }
+}
+
+/// Pixels [a, b) of the span through the scalar kernel.
+fn scalar<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, a: usize, b: usize) {
+    let mut sub = SpanPixels {
+        color: &mut px.color[a..b],
+        depth: if px.depth.is_empty() { &mut [] } else { &mut px.depth[a..b] },
+        stencil: if px.stencil.is_empty() { &mut [] } else { &mut px.stencil[a..b] },
+        other: px.other.as_deref_mut().map(|o| &mut o[a..b]),
+        passed: 0,
+    };
+    super::kernel_avx2::<D, STORE>(fs, t, &mut sub, y, x0 + a, x0 + b);
+    px.passed += sub.passed;
+}
+
+/// Two halves of f64 lanes: pixels 0-3 and 4-7.
+type D8 = [__m256d; 2];
+type Rgba = [__m256; 4];
+
+// The helpers below are `inline(always)` without `target_feature`: they
+// are only called from `span` (AVX2), into which they are inlined, and
+// the intrinsics with them (a `target_feature` helper may stay a call).
+
+/// A plane's row term plus slope times the pixel centres, as `Row::at`.
+#[inline(always)]
+unsafe fn at8(r: f64, dx: f64, c: &D8) -> D8 {
+    let (r, dx) = (_mm256_set1_pd(r), _mm256_set1_pd(dx));
+    [_mm256_add_pd(r, _mm256_mul_pd(dx, c[0])), _mm256_add_pd(r, _mm256_mul_pd(dx, c[1]))]
+}
+
+#[inline(always)]
+unsafe fn mul8(a: &D8, b: &D8) -> D8 {
+    [_mm256_mul_pd(a[0], b[0]), _mm256_mul_pd(a[1], b[1])]
+}
+
+/// f64 lanes to f32 (rounded to nearest, as `as f32`).
+#[inline(always)]
+unsafe fn to_f32(a: &D8) -> __m256 {
+    _mm256_set_m128(_mm256_cvtpd_ps(a[1]), _mm256_cvtpd_ps(a[0]))
+}
+
+/// `((d - v * qd) * iq) as f32`: a coordinate's derivative.
+#[inline(always)]
+unsafe fn deriv(d: f64, v: &D8, qd: f64, iq: &D8) -> __m256 {
+    let (d, qd) = (_mm256_set1_pd(d), _mm256_set1_pd(qd));
+    let lo = _mm256_mul_pd(_mm256_sub_pd(d, _mm256_mul_pd(v[0], qd)), iq[0]);
+    let hi = _mm256_mul_pd(_mm256_sub_pd(d, _mm256_mul_pd(v[1], qd)), iq[1]);
+    to_f32(&[lo, hi])
+}
+
+/// min(max(v, 0), 1): NaN gives 0 (glam's clamp and `to_u8`).
+#[inline(always)]
+unsafe fn clamp01(v: __m256) -> __m256 {
+    _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(1.0))
+}
+
+#[inline(always)]
+unsafe fn lerp(a: __m256, b: __m256, t: __m256) -> __m256 {
+    _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), t))
+}
+
+/// Bytes (as i32 lanes) to c / 255.
+#[inline(always)]
+unsafe fn unorm(c: __m256i) -> __m256 {
+    let f = _mm256_cvtepi32_ps(c);
+    _mm256_add_ps(_mm256_mul_ps(f, _mm256_set1_ps(HI)), _mm256_mul_ps(f, _mm256_set1_ps(LO)))
+}
+
+/// Eight RGBA8 texels to four channels of c / 255.
+#[inline(always)]
+unsafe fn channels(v: __m256i) -> Rgba {
+    let ff = _mm256_set1_epi32(0xFF);
+    [
+        unorm(_mm256_and_si256(v, ff)),
+        unorm(_mm256_and_si256(_mm256_srli_epi32::<8>(v), ff)),
+        unorm(_mm256_and_si256(_mm256_srli_epi32::<16>(v), ff)),
+        unorm(_mm256_srli_epi32::<24>(v)),
+    ]
+}
+
+/// REPEAT (power-of-two n) or CLAMP_TO_EDGE of indices into [0, n).
+#[inline(always)]
+unsafe fn wrap(i: __m256i, n: i32, repeat: bool) -> __m256i {
+    let last = _mm256_set1_epi32(n - 1);
+    if repeat {
+        _mm256_and_si256(i, last)
+    } else {
+        _mm256_max_epi32(_mm256_min_epi32(i, last), _mm256_setzero_si256())
+    }
+}
+
+#[inline(always)]
+unsafe fn fetch(l: &Level, i: __m256i, j: __m256i) -> __m256i {
+    let off = _mm256_add_epi32(_mm256_mullo_epi32(j, _mm256_set1_epi32(l.w)), i);
+    _mm256_i32gather_epi32::<4>(l.tex.as_ptr().cast(), off)
+}
+
+/// floor(x) and floor(x) as i32 lanes (|x| < 2^23: the caller checks).
+#[inline(always)]
+unsafe fn floor(x: __m256) -> (__m256, __m256i) {
+    let f = _mm256_round_ps::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(x);
+    (f, _mm256_cvttps_epi32(f))
+}
+
+/// Level `l` filtered at (s, t): `Level::nearest` or `Level::linear`.
+#[inline(always)]
+unsafe fn filter(l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) -> Rgba {
+    let (wf, hf) = (_mm256_set1_ps(l.wf), _mm256_set1_ps(l.hf));
+    if !linear {
+        let (_, i) = floor(_mm256_mul_ps(s, wf));
+        let (_, j) = floor(_mm256_mul_ps(t, hf));
+        return channels(fetch(l, wrap(i, l.w, rep[0]), wrap(j, l.h, rep[1])));
+    }
+    let half = _mm256_set1_ps(0.5);
+    let a = _mm256_sub_ps(_mm256_mul_ps(s, wf), half);
+    let b = _mm256_sub_ps(_mm256_mul_ps(t, hf), half);
+    let ((fa, i0), (fb, j0)) = (floor(a), floor(b));
+    let (wa, wb) = (_mm256_sub_ps(a, fa), _mm256_sub_ps(b, fb));
+    let one = _mm256_set1_epi32(1);
+    let (i0w, i1w) = (wrap(i0, l.w, rep[0]), wrap(_mm256_add_epi32(i0, one), l.w, rep[0]));
+    let (j0w, j1w) = (wrap(j0, l.h, rep[1]), wrap(_mm256_add_epi32(j0, one), l.h, rep[1]));
+    let c00 = channels(fetch(l, i0w, j0w));
+    let c01 = channels(fetch(l, i1w, j0w));
+    let c10 = channels(fetch(l, i0w, j1w));
+    let c11 = channels(fetch(l, i1w, j1w));
+    let mut out = [_mm256_setzero_ps(); 4];
+    for c in 0..4 {
+        let top = lerp(c00[c], c01[c], wa);
+        let bottom = lerp(c10[c], c11[c], wa);
+        out[c] = lerp(top, bottom, wb);
+    }
+    out
+}
+
+/// `EnvFn::apply` on channel lanes.
+#[inline(always)]
+unsafe fn env_apply(env: EnvFn, p: &Rgba, c: &Rgba) -> Rgba {
+    let mut out = *p;
+    match env {
+        EnvFn::Replace { color, alpha } => {
+            if color {
+                out[..3].copy_from_slice(&c[..3]);
+            }
+            if alpha {
+                out[3] = c[3];
+            }
+        }
+        EnvFn::Modulate { color, alpha } => {
+            if color {
+                for k in 0..3 {
+                    out[k] = _mm256_mul_ps(p[k], c[k]);
+                }
+            }
+            if alpha {
+                out[3] = _mm256_mul_ps(p[3], c[3]);
+            }
+        }
+        EnvFn::DecalRgb => out[..3].copy_from_slice(&c[..3]),
+        EnvFn::DecalRgba => {
+            let ia = _mm256_sub_ps(_mm256_set1_ps(1.0), c[3]);
+            for k in 0..3 {
+                out[k] = _mm256_add_ps(_mm256_mul_ps(p[k], ia), _mm256_mul_ps(c[k], c[3]));
+            }
+        }
+        EnvFn::Pass => {}
+    }
+    for v in out.iter_mut() {
+        *v = clamp01(*v);
+    }
+    out
+}
+
+/// `color_to_u8` of a channel, as i32 lanes.
+#[inline(always)]
+unsafe fn to_byte(v: __m256) -> __m256i {
+    _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(clamp01(v), _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5)))
+}
+
+/// Lanes all true in both halves of an f64 compare.
+#[inline(always)]
+unsafe fn all_pd(a: __m256d, b: __m256d) -> bool {
+    _mm256_movemask_pd(a) & _mm256_movemask_pd(b) == 0xF
+}
+
+/// A span's constants.
+struct Ctx<'a> {
+    fs: &'a FragmentState,
+    smp: &'a Sampler<'a>,
+    lod_mode: Lod,
+    linear: bool,
+    env: EnvFn,
+    x0: f64,
+    s: (f64, f64),
+    t: (f64, f64),
+    q: (f64, f64),
+    /// dS/dy, dT/dy, dQ/dy.
+    dy: [f64; 3],
+    z: (f64, f64),
+    w: (f64, f64),
+    /// Colour and fog take 1/w from q (same plane) / from their own plane / none.
+    w_mode: u8,
+    colors: [(f64, f64); 4],
+    flat: Option<Rgba>,
+    fog: Option<((f64, f64), Fog)>,
+}
+
+const W_NONE: u8 = 0;
+const W_SHARED: u8 = 1;
+const W_OWN: u8 = 2;
+
+/// Eight pixels from x (pixel 0's window x), depth and colour at `dp`
+/// and `cp`, lanes `live` only: the number that passed the depth test, or
+/// None (nothing written) when a lane needs the scalar kernel.
+#[inline(always)]
+unsafe fn group<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Option<u32> {
+    let xs = _mm256_set1_pd(x as f64);
+    let (half, x0) = (_mm256_set1_pd(0.5), _mm256_set1_pd(k.x0));
+    let c: D8 = [
+        _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(0.0, 1.0, 2.0, 3.0)), half), x0),
+        _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(4.0, 5.0, 6.0, 7.0)), half), x0),
+    ];
+    // Depth (section 4.1.6): depth_to_fixed lane by lane.
+    let mut m = live;
+    let (mut z, mut stored) = (_mm256_setzero_si256(), _mm256_setzero_si256());
+    if D != D_OFF {
+        let zv = at8(k.z.0, k.z.1, &c);
+        let (zero, one, scale) = (_mm256_setzero_pd(), _mm256_set1_pd(1.0), _mm256_set1_pd(DEPTH_MAX as f64));
+        // max(v, 0): NaN gives 0, as the scalar clamp-then-cast.
+        let lo = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(_mm256_min_pd(_mm256_max_pd(zv[0], zero), one), scale), half));
+        let hi = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(_mm256_min_pd(_mm256_max_pd(zv[1], zero), one), scale), half));
+        z = _mm256_set_m128i(hi, lo);
+        stored = _mm256_loadu_si256(dp.cast());
+        let sign = _mm256_set1_epi32(i32::MIN);
+        let pass = match D {
+            D_LESS => _mm256_cmpgt_epi32(_mm256_xor_si256(stored, sign), _mm256_xor_si256(z, sign)),
+            D_LEQUAL => _mm256_xor_si256(_mm256_cmpgt_epi32(_mm256_xor_si256(z, sign), _mm256_xor_si256(stored, sign)), _mm256_set1_epi32(-1)),
+            _ => {
+                let (mut zs, mut ss) = ([0u32; 8], [0u32; 8]);
+                _mm256_storeu_si256(zs.as_mut_ptr().cast(), z);
+                _mm256_storeu_si256(ss.as_mut_ptr().cast(), stored);
+                let mut r = [0i32; 8];
+                for l in 0..8 {
+                    r[l] = -(k.fs.depth_func.test(zs[l], ss[l]) as i32);
+                }
+                _mm256_loadu_si256(r.as_ptr().cast())
+            }
+        };
+        m = _mm256_and_si256(m, pass);
+    }
+    let bits = _mm256_movemask_ps(_mm256_castsi256_ps(m)) as u32;
+    if bits == 0 {
+        return Some(0);
+    }
+    // Texture coordinates (reference::textured_color): s / q, t / q.
+    let q = at8(k.q.0, k.q.1, &c);
+    let zero = _mm256_setzero_pd();
+    let inf = _mm256_set1_pd(f64::INFINITY);
+    let nz = _mm256_set1_pd(-0.0);
+    let nonzero = all_pd(_mm256_cmp_pd::<_CMP_NEQ_OQ>(q[0], zero), _mm256_cmp_pd::<_CMP_NEQ_OQ>(q[1], zero));
+    let finite = all_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(_mm256_andnot_pd(nz, q[0]), inf), _mm256_cmp_pd::<_CMP_LT_OQ>(_mm256_andnot_pd(nz, q[1]), inf));
+    if !(nonzero && finite) {
+        return None;
+    }
+    let one = _mm256_set1_pd(1.0);
+    let iq: D8 = [_mm256_div_pd(one, q[0]), _mm256_div_pd(one, q[1])];
+    let s = mul8(&at8(k.s.0, k.s.1, &c), &iq);
+    let tt = mul8(&at8(k.t.0, k.t.1, &c), &iq);
+    let (sf, tf) = (to_f32(&s), to_f32(&tt));
+    let smp = k.smp;
+    let (n0, n1) = (_mm256_set1_ps(smp.levels[0].wf), _mm256_set1_ps(smp.levels[0].hf));
+    // Finite and within ±2^22 texels of level 0 (exact floors and
+    // indices at every level).
+    let (sign, limit) = (_mm256_set1_ps(-0.0), _mm256_set1_ps(4194304.0));
+    let in_range = _mm256_and_ps(
+        _mm256_cmp_ps::<_CMP_LT_OQ>(_mm256_mul_ps(_mm256_andnot_ps(sign, sf), n0), limit),
+        _mm256_cmp_ps::<_CMP_LT_OQ>(_mm256_mul_ps(_mm256_andnot_ps(sign, tf), n1), limit),
+    );
+    if _mm256_movemask_ps(in_range) != 0xFF {
+        return None;
+    }
+    // Level of detail (3.8.8) and each lane's level and weight.
+    let (mut la, mut frac) = (_mm256_setzero_si256(), _mm256_setzero_ps());
+    let qf = _mm256_set1_ps(smp.q as f32);
+    if k.lod_mode != Lod::None {
+        let dx0 = _mm256_mul_ps(deriv(k.s.1, &s, k.q.1, &iq), n0);
+        let dx1 = _mm256_mul_ps(deriv(k.t.1, &tt, k.q.1, &iq), n1);
+        let dy0 = _mm256_mul_ps(deriv(k.dy[0], &s, k.dy[2], &iq), n0);
+        let dy1 = _mm256_mul_ps(deriv(k.dy[1], &tt, k.dy[2], &iq), n1);
+        let lx = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(dx0, dx0), _mm256_mul_ps(dx1, dx1)));
+        let ly = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(dy0, dy0), _mm256_mul_ps(dy1, dy1)));
+        // f32::max: a NaN lx gives ly, as maxps does; a NaN ly fails below.
+        let rho = _mm256_max_ps(lx, ly);
+        let normal = _mm256_and_ps(_mm256_cmp_ps::<_CMP_GE_OQ>(rho, _mm256_set1_ps(f32::MIN_POSITIVE)), _mm256_cmp_ps::<_CMP_LT_OQ>(rho, _mm256_set1_ps(f32::INFINITY)));
+        let regular = _mm256_or_ps(normal, _mm256_cmp_ps::<_CMP_EQ_OQ>(rho, _mm256_setzero_ps()));
+        if _mm256_movemask_ps(regular) != 0xFF {
+            return None;
+        }
+        let lambda = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(lod::log2_8(rho), _mm256_set1_ps(smp.bias)), _mm256_set1_ps(smp.min_lod)), _mm256_set1_ps(smp.max_lod));
+        match k.lod_mode {
+            Lod::Linear => {
+                let minify = _mm256_cmp_ps::<_CMP_GT_OQ>(lambda, _mm256_setzero_ps());
+                let d1 = _mm256_round_ps::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(lambda);
+                let top = _mm256_cmp_ps::<_CMP_GE_OQ>(d1, qf);
+                let two = _mm256_andnot_ps(top, minify);
+                // Levels d1 and d1 + 1 by λ - d1; the last level alone
+                // (d1 >= q); level 0 alone when magnified (weight 0:
+                // t1 + (t2 - t1) 0 is t1).
+                let lf = _mm256_or_ps(_mm256_and_ps(two, d1), _mm256_and_ps(_mm256_and_ps(top, minify), qf));
+                la = _mm256_cvttps_epi32(lf);
+                frac = _mm256_and_ps(two, _mm256_sub_ps(lambda, d1));
+            }
+            Lod::Nearest { c: cs } => {
+                let minify = _mm256_cmp_ps::<_CMP_GT_OQ>(lambda, _mm256_set1_ps(cs));
+                let above = _mm256_and_ps(minify, _mm256_cmp_ps::<_CMP_GT_OQ>(lambda, _mm256_set1_ps(0.5)));
+                let up = _mm256_round_ps::<{ _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC }>(_mm256_add_ps(lambda, _mm256_set1_ps(0.5)));
+                let d = _mm256_min_ps(_mm256_sub_ps(up, _mm256_set1_ps(1.0)), qf);
+                la = _mm256_cvttps_epi32(_mm256_and_ps(above, d));
+            }
+            Lod::None => {}
+        }
+    }
+    if D != D_OFF && (D != D_ANY || k.fs.depth_write) {
+        _mm256_storeu_si256(dp.cast(), _mm256_blendv_epi8(stored, z, m));
+    }
+    // Texels: once per distinct level among the passing lanes.
+    let mut texel = [_mm256_setzero_ps(); 4];
+    let mut levels = [0i32; 8];
+    _mm256_storeu_si256(levels.as_mut_ptr().cast(), la);
+    let mut pending = bits;
+    let weighted_lanes = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_NEQ_UQ>(frac, _mm256_setzero_ps()));
+    while pending != 0 {
+        let l = levels[pending.trailing_zeros() as usize];
+        let same = _mm256_cmpeq_epi32(la, _mm256_set1_epi32(l));
+        let lanes = _mm256_movemask_ps(_mm256_castsi256_ps(same)) as u32 & pending;
+        pending &= !lanes;
+        let mut v = filter(&smp.levels[l as usize], sf, tf, k.linear, smp.repeat);
+        let weighted = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_and_si256(weighted_lanes, same))) as u32 & lanes;
+        if k.lod_mode == Lod::Linear && weighted != 0 && (l as usize) < smp.q {
+            let v2 = filter(&smp.levels[l as usize + 1], sf, tf, k.linear, smp.repeat);
+            for ch in 0..4 {
+                v[ch] = lerp(v[ch], v2[ch], frac);
+            }
+        }
+        if lanes == bits {
+            texel = v;
+        } else {
+            let sel = _mm256_castsi256_ps(same);
+            for ch in 0..4 {
+                texel[ch] = _mm256_blendv_ps(texel[ch], v[ch], sel);
+            }
+        }
+    }
+    // The primary colour, perspective-corrected by 1/w.
+    let w: D8 = match k.w_mode {
+        W_SHARED => iq,
+        W_OWN => {
+            let wv = at8(k.w.0, k.w.1, &c);
+            [_mm256_div_pd(one, wv[0]), _mm256_div_pd(one, wv[1])]
+        }
+        _ => [one, one],
+    };
+    let primary: Rgba = match &k.flat {
+        Some(f) => *f,
+        None => {
+            let mut p = [_mm256_setzero_ps(); 4];
+            for ch in 0..4 {
+                let v = at8(k.colors[ch].0, k.colors[ch].1, &c);
+                let v = if k.w_mode == W_NONE { v } else { mul8(&v, &w) };
+                p[ch] = clamp01(to_f32(&v));
+            }
+            p
+        }
+    };
+    let mut col = env_apply(k.env, &primary, &texel);
+    if let Some(((fr, fdx), f)) = &k.fog {
+        let v = at8(*fr, *fdx, &c);
+        let v = to_f32(&if k.w_mode == W_NONE { v } else { mul8(&v, &w) });
+        let mut vals = [0f32; 8];
+        _mm256_storeu_ps(vals.as_mut_ptr(), v);
+        for v in vals.iter_mut() {
+            *v = if f.per_fragment { f.factor(*v) } else { v.clamp(0.0, 1.0) };
+        }
+        let fv = _mm256_loadu_ps(vals.as_ptr());
+        let inv = _mm256_sub_ps(_mm256_set1_ps(1.0), fv);
+        let fc = f.color.to_array();
+        for ch in 0..3 {
+            col[ch] = _mm256_add_ps(_mm256_mul_ps(col[ch], fv), _mm256_mul_ps(_mm256_set1_ps(fc[ch]), inv));
+        }
+    }
+    // To bytes (`color_to_u8`), packed RGBA.
+    let rgba = _mm256_or_si256(
+        _mm256_or_si256(to_byte(col[0]), _mm256_slli_epi32::<8>(to_byte(col[1]))),
+        _mm256_or_si256(_mm256_slli_epi32::<16>(to_byte(col[2])), _mm256_slli_epi32::<24>(to_byte(col[3]))),
+    );
+    if STORE {
+        let old = _mm256_loadu_si256(cp.cast());
+        let afix = _mm256_set1_epi32(((k.fs.alpha_fix as u32) << 24) as i32);
+        _mm256_storeu_si256(cp.cast(), _mm256_blendv_epi8(old, _mm256_or_si256(rgba, afix), m));
+    } else {
+        let mut src = [[0u8; 4]; 8];
+        _mm256_storeu_si256(src.as_mut_ptr().cast(), rgba);
+        for l in 0..8 {
+            if bits & (1 << l) != 0 {
+                write_color(k.fs, &mut *cp.add(l), src[l]);
+            }
+        }
+    }
+    Some(bits.count_ones())
+}
+
+#[inline]
+#[target_feature(enable = "avx2")]
+unsafe fn span<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    if x1 < x0 + 8 {
+        return super::kernel_avx2::<D, STORE>(fs, t, px, y, x0, x1);
+    }
+    let Some(tp) = t.tex.as_ref() else { return super::kernel_avx2::<D, STORE>(fs, t, px, y, x0, x1) };
+    let Some((u, sampler)) = super::unit(tp) else { return super::kernel_avx2::<D, STORE>(fs, t, px, y, x0, x1) };
+    let smp = Sampler::new(sampler);
+    let Some((lod_mode, linear)) = plan(&smp) else { return super::kernel_avx2::<D, STORE>(fs, t, px, y, x0, x1) };
+    let cy = y as f64 + 0.5 - t.y0;
+    let row = |p: &crate::render::setup::Plane| (p.a0 + p.dy * cy, p.dx);
+    let p = &tp.planes[u];
+    let k = Ctx {
+        fs,
+        smp: &smp,
+        lod_mode,
+        linear,
+        env: EnvFn::new(tp.stage.envs[u].mode, sampler.base),
+        x0: t.x0,
+        s: row(&p[0]),
+        t: row(&p[1]),
+        q: row(&p[3]),
+        dy: [p[0].dy, p[1].dy, p[3].dy],
+        z: row(&t.z),
+        w: row(&t.q),
+        w_mode: if !t.perspective {
+            W_NONE
+        } else if same_plane(&t.q, &p[3]) {
+            W_SHARED
+        } else {
+            W_OWN
+        },
+        colors: std::array::from_fn(|c| row(&t.color[c])),
+        flat: t.flat.map(|c| c.map(|v| _mm256_set1_ps(v as f32 / 255.0))),
+        fog: t.fog.as_ref().map(|(plane, f)| (row(plane), *f)),
+    };
+    let n = x1 - x0;
+    let mut passed = 0u64;
+    let mut i = 0;
+    let all = _mm256_set1_epi32(-1);
+    while i < n {
+        let len = (n - i).min(8);
+        let got = if len == 8 {
+            let dp = if D != D_OFF { px.depth.as_mut_ptr().add(i) } else { std::ptr::null_mut() };
+            group::<D, STORE>(&k, x0 + i, dp, px.color.as_mut_ptr().add(i), all)
+        } else {
+            // The last pixels: on a stack copy, the missing lanes off.
+            let (mut zb, mut cb) = ([0u32; 8], [[0u8; 4]; 8]);
+            if D != D_OFF {
+                zb[..len].copy_from_slice(&px.depth[i..n]);
+            }
+            cb[..len].copy_from_slice(&px.color[i..n]);
+            let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(len as i32), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+            let got = group::<D, STORE>(&k, x0 + i, zb.as_mut_ptr(), cb.as_mut_ptr(), live);
+            if got.is_some() {
+                if D != D_OFF {
+                    px.depth[i..n].copy_from_slice(&zb[..len]);
+                }
+                px.color[i..n].copy_from_slice(&cb[..len]);
+            }
+            got
+        };
+        match got {
+            Some(p) => passed += p as u64,
+            None => scalar::<D, STORE>(fs, t, px, y, x0, i, i + len),
+        }
+        i += len;
+    }
+    px.passed += passed;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// c HI + c LO is c / 255 for every byte, in lanes as in scalar.
+    #[test]
+    fn unorm8_by_multiplies() {
+        for c in 0..=255u32 {
+            let f = c as f32;
+            assert_eq!((f * HI + f * LO).to_bits(), (f / 255.0).to_bits(), "{c}");
+        }
+        if !std::arch::is_x86_feature_detected!("avx2") {
+            return;
+        }
+        for c in 0..=255u32 {
+            let v = c | (255 - c) << 8 | (c / 3) << 16 | (c ^ 0x5A) << 24;
+            let mut out = [[0f32; 8]; 4];
+            unsafe {
+                let ch = channels(_mm256_set1_epi32(v as i32));
+                for k in 0..4 {
+                    _mm256_storeu_ps(out[k].as_mut_ptr(), ch[k]);
+                }
+            }
+            let want = v.to_ne_bytes().map(|b| b as f32 / 255.0);
+            for k in 0..4 {
+                assert_eq!(out[k][3].to_bits(), want[k].to_bits(), "{v:#x} channel {k}");
+            }
+        }
+    }
+}
