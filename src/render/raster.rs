@@ -30,6 +30,7 @@
 
 use super::fragment::{self, fast::Kernel, SpanPixels};
 use super::setup::{TriangleSetup, ONE};
+use super::tile::TILE;
 use super::RenderState;
 use crate::framebuffer::{Framebuffer, Rect};
 
@@ -168,15 +169,21 @@ impl Runs {
         self.len == 0
     }
 
-    /// Shades the runs now, on this thread (as [`triangle`] would).
-    pub fn shade(&self, rs: &RenderState, fb: &mut Framebuffer, setup: &TriangleSetup) {
-        let k = if fb.draw_both { fragment::reference::shade_span } else { kernel(rs, setup) };
-        for &(py, lo, hi) in &self.runs[..self.len] {
-            let (py, lo, hi) = (py as usize, lo as usize, hi as usize);
-            let mut px = SpanPixels::of(fb, py, lo, hi);
-            k(&rs.fragment, setup, &mut px, py, lo, hi);
-            let passed = px.passed;
-            fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+    /// The runs (y, x0, x1), bottom to top.
+    pub fn iter(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
+        self.runs[..self.len].iter().map(|&(py, lo, hi)| (py as usize, lo as usize, hi as usize))
+    }
+
+    /// Shades the runs now, on this thread, with kernel `k` (its spans cut
+    /// when `cut`).
+    pub fn shade(&self, rs: &RenderState, fb: &mut Framebuffer, setup: &TriangleSetup, (k, cut): (Kernel, bool)) {
+        for (py, lo, hi) in self.iter() {
+            pieces(lo, hi, cut, |lo, hi| {
+                let mut px = SpanPixels::of(fb, py, lo, hi);
+                k(&rs.fragment, setup, &mut px, py, lo, hi);
+                let passed = px.passed;
+                fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+            })
         }
     }
 }
@@ -220,25 +227,47 @@ pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, 
     }
 }
 
-/// The span kernel for a triangle: the reference path's, or the fast one
-/// specialized for the state and the triangle's attributes.
-pub fn kernel(rs: &RenderState, setup: &TriangleSetup) -> Kernel {
-    if rs.reference {
-        fragment::reference::shade_span
+/// The span kernel for a triangle: the general path's when drawing to two
+/// colour buffers (only it writes both), else the reference path's or the
+/// fast one specialized for the state and the triangle's attributes (as
+/// `fast::choose` picks it, once per state: `shade_state`); and whether
+/// its spans are cut at tile columns ([`pieces`]).
+#[inline]
+pub fn kernel(rs: &RenderState, fb: &Framebuffer, setup: &TriangleSetup) -> (Kernel, bool) {
+    if fb.draw_both || rs.reference {
+        (fragment::reference::shade_span, false)
     } else {
-        fragment::fast::select(&rs.fragment, setup, rs.approximate)
+        rs.shade.with(rs, |st| st.kernel(setup))
     }
 }
 
-/// Rasterizes and shades a triangle now, on this thread.
-pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup) {
-    // Two colour buffers (GL_FRONT_AND_BACK): only the general path writes both.
-    let k = if fb.draw_both { fragment::reference::shade_span } else { kernel(rs, setup) };
+/// Calls `f(x0, x1)` for span [lo, hi), cut at every multiple of
+/// `tile::TILE` when `cut`: a kernel whose result depends on where a span
+/// starts (`fast::choose`) then sees the same pieces whether the triangle
+/// is shaded now or by tiles, on any number of threads.
+#[inline(always)]
+pub fn pieces(lo: usize, hi: usize, cut: bool, mut f: impl FnMut(usize, usize)) {
+    if !cut {
+        return f(lo, hi);
+    }
+    let mut a = lo;
+    while a < hi {
+        let b = ((a / TILE + 1) * TILE).min(hi);
+        f(a, b);
+        a = b;
+    }
+}
+
+/// Rasterizes and shades a triangle now, on this thread, with kernel
+/// `k` (its spans cut when `cut`).
+pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup, (k, cut): (Kernel, bool)) {
     spans(x, y, rs.draw_rect, rs.polygon_stipple.as_deref(), |py, lo, hi| {
-        let mut px = SpanPixels::of(fb, py, lo, hi);
-        k(&rs.fragment, setup, &mut px, py, lo, hi);
-        let passed = px.passed;
-        fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+        pieces(lo, hi, cut, |lo, hi| {
+            let mut px = SpanPixels::of(fb, py, lo, hi);
+            k(&rs.fragment, setup, &mut px, py, lo, hi);
+            let passed = px.passed;
+            fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+        })
     });
 }
 

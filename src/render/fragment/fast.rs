@@ -82,11 +82,20 @@ fn blend_is(b: &Blend, src: BlendFactor, dst: BlendFactor) -> bool {
 /// point, within one step (1/255) of the exact value. Everything else
 /// stays exact.
 pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kernel {
+    choose(fs, t, approximate).0
+}
+
+/// [`select`], and whether the kernel's result depends on where a span
+/// starts: the stepped colour (CS_STEPPED) steps from each span's first
+/// pixel, so a span cut in two may differ by a step from the whole span.
+/// Callers cut such spans at the same columns on every path (multiples of
+/// `tile::TILE`), so that images do not depend on the thread count.
+pub fn choose(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> (Kernel, bool) {
     if fs.alpha_test {
-        return reference::shade_span;
+        return (reference::shade_span, false);
     }
     if let Some(k) = super::textured::select(fs, t) {
-        return k;
+        return (k, false);
     }
     let d = depth_key(fs);
     let full = fs.color_mask == [true; 4];
@@ -119,8 +128,15 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kerne
         _ => cs,
     };
     if let Some(k) = super::simd::pick(fs.stencil_test, d, simd_cs, co) {
-        return k;
+        return (k, simd_cs == CS_STEPPED);
     }
+    // Below, only pick_cs steps (never under the stencil test).
+    let stepped = cs == CS_STEPPED && co != CO_NONE && !fs.stencil_test;
+    (select_scalar(fs, d, cs, co), stepped)
+}
+
+/// The scalar kernels' choice (no SIMD kernel for the key).
+fn select_scalar(fs: &FragmentState, d: u8, cs: u8, co: u8) -> Kernel {
     if fs.stencil_test {
         // Stencil passes are rarer: general colour, specialized depth.
         return match (d, co) {
