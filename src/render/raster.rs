@@ -30,7 +30,6 @@
 
 use super::fragment::{self, fast::Kernel, SpanPixels};
 use super::setup::{TriangleSetup, ONE};
-use super::tile::TILE;
 use super::RenderState;
 use crate::framebuffer::{Framebuffer, Rect};
 
@@ -174,16 +173,13 @@ impl Runs {
         self.runs[..self.len].iter().map(|&(py, lo, hi)| (py as usize, lo as usize, hi as usize))
     }
 
-    /// Shades the runs now, on this thread, with kernel `k` (its spans cut
-    /// when `cut`).
-    pub fn shade(&self, rs: &RenderState, fb: &mut Framebuffer, setup: &TriangleSetup, (k, cut): (Kernel, bool)) {
+    /// Shades the runs now, on this thread, with kernel `k`.
+    pub fn shade(&self, rs: &RenderState, fb: &mut Framebuffer, setup: &TriangleSetup, k: Kernel) {
         for (py, lo, hi) in self.iter() {
-            pieces(lo, hi, cut, |lo, hi| {
-                let mut px = SpanPixels::of(fb, py, lo, hi);
-                k(&rs.fragment, setup, &mut px, py, lo, hi);
-                let passed = px.passed;
-                fb.samples_passed = fb.samples_passed.wrapping_add(passed);
-            })
+            let mut px = SpanPixels::of(fb, py, lo, hi);
+            k(&rs.fragment, setup, &mut px, py, lo, hi);
+            let passed = px.passed;
+            fb.samples_passed = fb.samples_passed.wrapping_add(passed);
         }
     }
 }
@@ -230,44 +226,23 @@ pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, 
 /// The span kernel for a triangle: the general path's when drawing to two
 /// colour buffers (only it writes both), else the reference path's or the
 /// fast one specialized for the state and the triangle's attributes (as
-/// `fast::choose` picks it, once per state: `shade_state`); and whether
-/// its spans are cut at tile columns ([`pieces`]).
+/// `fast::select` picks it, once per state: `shade_state`).
 #[inline]
-pub fn kernel(rs: &RenderState, fb: &Framebuffer, setup: &TriangleSetup) -> (Kernel, bool) {
+pub fn kernel(rs: &RenderState, fb: &Framebuffer, setup: &TriangleSetup) -> Kernel {
     if fb.draw_both || rs.reference {
-        (fragment::reference::shade_span, false)
+        fragment::reference::shade_span
     } else {
         rs.shade.with(rs, |st| st.kernel(setup))
     }
 }
 
-/// Calls `f(x0, x1)` for span [lo, hi), cut at every multiple of
-/// `tile::TILE` when `cut`: a kernel whose result depends on where a span
-/// starts (`fast::choose`) then sees the same pieces whether the triangle
-/// is shaded now or by tiles, on any number of threads.
-#[inline(always)]
-pub fn pieces(lo: usize, hi: usize, cut: bool, mut f: impl FnMut(usize, usize)) {
-    if !cut {
-        return f(lo, hi);
-    }
-    let mut a = lo;
-    while a < hi {
-        let b = ((a / TILE + 1) * TILE).min(hi);
-        f(a, b);
-        a = b;
-    }
-}
-
-/// Rasterizes and shades a triangle now, on this thread, with kernel
-/// `k` (its spans cut when `cut`).
-pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup, (k, cut): (Kernel, bool)) {
+/// Rasterizes and shades a triangle now, on this thread, with kernel `k`.
+pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup, k: Kernel) {
     spans(x, y, rs.draw_rect, rs.polygon_stipple.as_deref(), |py, lo, hi| {
-        pieces(lo, hi, cut, |lo, hi| {
-            let mut px = SpanPixels::of(fb, py, lo, hi);
-            k(&rs.fragment, setup, &mut px, py, lo, hi);
-            let passed = px.passed;
-            fb.samples_passed = fb.samples_passed.wrapping_add(passed);
-        })
+        let mut px = SpanPixels::of(fb, py, lo, hi);
+        k(&rs.fragment, setup, &mut px, py, lo, hi);
+        let passed = px.passed;
+        fb.samples_passed = fb.samples_passed.wrapping_add(passed);
     });
 }
 

@@ -103,9 +103,8 @@ pub struct ShadeState {
     pub texture: Option<Arc<TextureStage>>,
     pub fog: Option<Fog>,
     pub color_sum: bool,
-    /// By [`Self::kernel_index`], with whether its spans are cut at tile
-    /// columns (`fast::choose`).
-    kernels: [(Kernel, bool); 4],
+    /// By [`Self::kernel_index`].
+    kernels: [Kernel; 4],
 }
 
 impl ShadeState {
@@ -120,7 +119,7 @@ impl ShadeState {
             texture: rs.texture.clone(),
             fog: rs.fog,
             color_sum: rs.color_sum,
-            kernels: [(fragment::reference::shade_span as Kernel, false); 4],
+            kernels: [fragment::reference::shade_span; 4],
         };
         if !rs.reference {
             // A triangle of each kind, with exactly what `select` reads
@@ -142,7 +141,7 @@ impl ShadeState {
                     tex,
                     fog: s.fog.map(|f| (Plane::default(), f)),
                 };
-                *k = fast::choose(&s.fragment, &t, rs.approximate);
+                *k = fast::select(&s.fragment, &t, rs.approximate);
             }
         }
         s
@@ -162,11 +161,10 @@ impl ShadeState {
         (t.perspective as usize) << 1 | constant as usize
     }
 
-    /// The span kernel for a triangle set up under this state (what
-    /// `fast::choose` picks for it), and whether to cut its spans at tile
-    /// columns.
+    /// The span kernel for a triangle set up under this state: what
+    /// `fast::select` picks for it.
     #[inline(always)]
-    pub fn kernel(&self, t: &TriangleSetup) -> (Kernel, bool) {
+    pub fn kernel(&self, t: &TriangleSetup) -> Kernel {
         self.kernels[Self::kernel_index(t)]
     }
 }

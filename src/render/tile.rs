@@ -19,9 +19,10 @@
 //! binning stay on the calling thread.
 //!
 //! Images do not depend on the thread count: setup is a pure function of
-//! the record, exact kernels do not depend on where a span starts, and
-//! the one kernel that does (the stepped colour) gets its spans cut at
-//! multiples of TILE on every path (`raster::pieces`).
+//! the record, and no kernel's result depends on where a span starts (the
+//! stepped colour is anchored at column 0 of the row:
+//! `fragment::fast::stepped_start`), so cutting spans at tile edges
+//! changes nothing.
 //!
 //! The batch is flushed before anything else reads or writes the
 //! framebuffer or changes which buffer is drawn: by the context before
@@ -262,15 +263,13 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
     let a = [0, 1, 2].map(|i| BinAttributes { color: t.v[i].color, extra, i });
     let zq = t.v.map(|v| (v.z, v.q));
     let setup = planes_of(st, zq, a.each_ref(), t.x, t.y, t.v[0].color, false, t.front_facing);
-    let (k, cut) = st.kernel(&setup);
-    // Cut as shading at once cuts (a no-op within a tile).
-    let mut emit = |py: usize, lo: usize, hi: usize| raster::pieces(lo, hi, cut, |lo, hi| span(k, &setup, py, lo, hi));
+    let k = st.kernel(&setup);
     if found {
         for (py, lo, hi) in runs.iter() {
-            emit(py, lo, hi);
+            span(k, &setup, py, lo, hi);
         }
     } else {
-        raster::spans(t.x, t.y, rect, stipple, emit);
+        raster::spans(t.x, t.y, rect, stipple, |py, lo, hi| span(k, &setup, py, lo, hi));
     }
 }
 
