@@ -42,7 +42,7 @@
 use super::fragment::fast::Kernel;
 use super::fragment::SpanPixels;
 use super::raster;
-use super::setup::{planes_of, Attributes, TriangleSetup, ONE};
+use super::setup::{planes_of, Attributes, TriangleSetup};
 use super::shade_state::ShadeState;
 use super::texture::MAX_UNITS;
 use super::RenderState;
@@ -196,12 +196,14 @@ pub fn binning(rs: &RenderState) -> bool {
 #[inline]
 pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Option<Rect> {
     let r = rs.draw_rect;
-    let px = |c: i64| c.div_euclid(ONE);
+    // Floor division by ONE; min/max rather than clamp (no assertion).
+    let px = |c: i64| c >> super::setup::SUBPIXEL_BITS;
+    let fit = |v: i64, lo: i32, hi: i32| v.max(lo as i64).min(hi as i64) as i32;
     let bbox = Rect {
-        x0: (px(x[0].min(x[1]).min(x[2])) - 1).clamp(r.x0 as i64, r.x1 as i64) as i32,
-        x1: (px(x[0].max(x[1]).max(x[2])) + 2).clamp(r.x0 as i64, r.x1 as i64) as i32,
-        y0: (px(y[0].min(y[1]).min(y[2])) - 1).clamp(r.y0 as i64, r.y1 as i64) as i32,
-        y1: (px(y[0].max(y[1]).max(y[2])) + 2).clamp(r.y0 as i64, r.y1 as i64) as i32,
+        x0: fit(px(x[0].min(x[1]).min(x[2])) - 1, r.x0, r.x1),
+        x1: fit(px(x[0].max(x[1]).max(x[2])) + 2, r.x0, r.x1),
+        y0: fit(px(y[0].min(y[1]).min(y[2])) - 1, r.y0, r.y1),
+        y1: fit(px(y[0].max(y[1]).max(y[2])) + 2, r.y0, r.y1),
     };
     (!bbox.is_empty()).then_some(bbox)
 }
@@ -341,6 +343,27 @@ pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
         let pixels = std::mem::replace(&mut b.pixels, 0);
         (std::mem::take(&mut b.tris), std::mem::take(&mut b.extras), std::mem::take(&mut b.states), pixels)
     };
+    shade_batch(rs, fb, &tris, &extras, &states, pixels);
+    // The emptied vectors go back, keeping their capacity (no regrowth
+    // and copying per batch).
+    let (mut tris, mut extras, mut states) = (tris, extras, states);
+    tris.clear();
+    extras.clear();
+    states.clear();
+    let mut b = lock(&rs.batch);
+    if b.tris.capacity() == 0 {
+        b.tris = tris;
+    }
+    if b.extras.capacity() == 0 {
+        b.extras = extras;
+    }
+    if b.states.capacity() == 0 {
+        b.states = states;
+    }
+}
+
+/// Shades binned triangles (the body of [`flush`]).
+fn shade_batch(rs: &RenderState, fb: &mut Framebuffer, tris: &[Binned], extras: &[BinExtra], states: &[Arc<ShadeState>], pixels: u64) {
     let of = |t: &Binned| (&*states[t.state as usize], extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
     // The framebuffer may have changed size since binning only through
     // commands outside the draw call, which never happens with work
@@ -348,7 +371,7 @@ pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
     let surface = Rect::new(0, 0, fb.width as i32, fb.height as i32);
     let threads = rs.threads;
     if threads <= 1 || pixels + SETUP_PIXELS * (tris.len() as u64) < PARALLEL_WORK {
-        for t in &tris {
+        for t in tris {
             let (st, extra) = of(t);
             shade_binned(t, st, extra, t.bbox.intersect(surface), |k, setup, py, lo, hi| {
                 let mut px = SpanPixels::of(fb, py, lo, hi);
