@@ -319,6 +319,75 @@ fn tiled_threaded_path_matches_reference() {
     }
 }
 
+/// A mesh of small triangles over the whole window (random colours and
+/// depths, jittered vertices), some crossing tile edges: enough work that
+/// a batch goes to the tile workers.
+fn mesh(r: &mut Rng) -> Vec<Command> {
+    let (nx, ny) = (37, 23);
+    let mut v = vec![Command::Begin(GL_TRIANGLES)];
+    let at = |r: &mut Rng, i: usize, j: usize| {
+        let jit = |r: &mut Rng| r.range(-0.3, 0.3);
+        [-1.05 + 2.1 * (i as f32 + jit(r)) / nx as f32, -1.05 + 2.1 * (j as f32 + jit(r)) / ny as f32, r.range(-1.0, 1.0), 1.0]
+    };
+    for j in 0..ny {
+        for i in 0..nx {
+            let q = [at(r, i, j), at(r, i + 1, j), at(r, i + 1, j + 1), at(r, i, j + 1)];
+            for k in [0, 1, 2, 0, 2, 3] {
+                v.push(Command::Color([r.unit(), r.unit(), r.unit(), r.unit()]));
+                v.push(Command::Vertex(q[k]));
+            }
+        }
+    }
+    v.push(Command::End);
+    v
+}
+
+/// Images do not depend on the thread count: random cases, each followed
+/// by a mesh of small triangles, drawn by fast-path contexts with 1, 2
+/// and 3 threads (binned and set up in the tile workers above 1; the pool
+/// is per process, so 3 may run on fewer workers) give identical colour,
+/// depth, stencil and occlusion counts, under every hint (the stepped
+/// colour included: no tolerance).
+#[test]
+fn images_do_not_depend_on_thread_count() {
+    let size = (301, 203);
+    let (W, H) = size;
+    let mut r = Rng(21);
+    let mut ctx: Vec<Context> = [1, 2, 3].map(|t| context(false, size, t)).into();
+    let tex = ctx.iter_mut().map(|c| texture(c, &mut Rng(0x7e57))).last().unwrap();
+    let mut binned = 0;
+    for n in 0..60 {
+        let color = start_colors(&mut r, W * H);
+        let depth: Vec<u32> = (0..W * H).map(|_| if r.chance(50) { 0xFF_FFFF } else { r.next() as u32 & 0xFF_FFFF }).collect();
+        let stencil: Vec<u8> = (0..W * H).map(|_| r.below(4) as u8).collect();
+        let mut cmds = case(&mut r, tex, size);
+        if n % 2 == 0 {
+            // Every other mesh under the common opaque state, where the
+            // stepped colour (its value depends on where stepping starts)
+            // is the kernel.
+            for cap in [GL_BLEND, GL_STENCIL_TEST, GL_ALPHA_TEST, GL_COLOR_LOGIC_OP, GL_FOG, GL_TEXTURE_2D, GL_POLYGON_STIPPLE, GL_CULL_FACE, GL_SCISSOR_TEST] {
+                cmds.push(Command::Disable(cap));
+            }
+            cmds.extend([Command::ColorMask([true; 4]), Command::ShadeModel(GL_SMOOTH), Command::Hint(GL_PERSPECTIVE_CORRECTION_HINT, GL_FASTEST)]);
+            cmds.extend([Command::MatrixMode(GL_PROJECTION), Command::LoadIdentity, Command::MatrixMode(GL_MODELVIEW), Command::LoadIdentity]);
+        }
+        cmds.extend(mesh(&mut r));
+        for c in ctx.iter_mut() {
+            run_case(c, &color, &depth, &stencil, &cmds);
+        }
+        binned += ctx[0].fb.samples_passed.min(1) as usize;
+        let (one, rest) = ctx.split_first().unwrap();
+        for (k, c) in rest.iter().enumerate() {
+            for i in 0..W * H {
+                let (a, b) = ((one.fb.color[i], one.fb.depth[i], one.fb.stencil[i]), (c.fb.color[i], c.fb.depth[i], c.fb.stencil[i]));
+                assert_eq!(a, b, "case {n} pixel ({}, {}): 1 thread / {} threads\ncommands: {cmds:?}", i % W, i / W, k + 2);
+            }
+            assert_eq!(one.fb.samples_passed, c.fb.samples_passed, "case {n}: samples passed, 1 / {} threads", k + 2);
+        }
+    }
+    assert!(binned > 10, "the cases draw");
+}
+
 /// The cases are not vacuous: they draw pixels, and the states the fast
 /// kernels specialize (blends, flat, perspective, depth-only) all occur.
 #[test]

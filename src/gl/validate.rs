@@ -63,6 +63,8 @@ impl Default for Derived {
                 threads: crate::render::tile::threads_default(),
                 approximate: true,
                 batch: Default::default(),
+                stamp: 0,
+                shade: Default::default(),
             },
         }
     }
@@ -172,6 +174,8 @@ impl Context {
         if let Some(f) = fragment {
             rs.fragment = f;
         }
+        // Captures of the old state (render::shade_state) no longer apply.
+        rs.stamp = crate::render::shade_state::next_stamp();
     }
 
     /// Derives the fragment pipeline's configuration (render::fragment):

@@ -18,6 +18,7 @@ pub mod polygon_mode;
 pub mod pool;
 pub mod raster;
 pub mod setup;
+pub mod shade_state;
 pub mod smooth;
 pub mod texture;
 pub mod tile;
@@ -82,6 +83,11 @@ pub struct RenderState {
     /// may approximate colour interpolation (render::fragment::fast).
     pub approximate: bool,
     pub batch: tile::SharedBatch,
+    /// Changes whenever validation changes anything here (never reused;
+    /// 0 until the first validation): what [`shade_state`] keys on.
+    pub stamp: u64,
+    /// The last [`shade_state::ShadeState`] captured from this state.
+    pub shade: shade_state::ShadeCache,
 }
 
 /// SOFTGL_REFERENCE=1 (read once per process): new contexts render through

@@ -168,11 +168,14 @@ impl Runs {
         self.len == 0
     }
 
-    /// Shades the runs now, on this thread (as [`triangle`] would).
-    pub fn shade(&self, rs: &RenderState, fb: &mut Framebuffer, setup: &TriangleSetup) {
-        let k = if fb.draw_both { fragment::reference::shade_span } else { kernel(rs, setup) };
-        for &(py, lo, hi) in &self.runs[..self.len] {
-            let (py, lo, hi) = (py as usize, lo as usize, hi as usize);
+    /// The runs (y, x0, x1), bottom to top.
+    pub fn iter(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
+        self.runs[..self.len].iter().map(|&(py, lo, hi)| (py as usize, lo as usize, hi as usize))
+    }
+
+    /// Shades the runs now, on this thread, with kernel `k`.
+    pub fn shade(&self, rs: &RenderState, fb: &mut Framebuffer, setup: &TriangleSetup, k: Kernel) {
+        for (py, lo, hi) in self.iter() {
             let mut px = SpanPixels::of(fb, py, lo, hi);
             k(&rs.fragment, setup, &mut px, py, lo, hi);
             let passed = px.passed;
@@ -220,20 +223,21 @@ pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, 
     }
 }
 
-/// The span kernel for a triangle: the reference path's, or the fast one
-/// specialized for the state and the triangle's attributes.
-pub fn kernel(rs: &RenderState, setup: &TriangleSetup) -> Kernel {
-    if rs.reference {
+/// The span kernel for a triangle: the general path's when drawing to two
+/// colour buffers (only it writes both), else the reference path's or the
+/// fast one specialized for the state and the triangle's attributes (as
+/// `fast::select` picks it, once per state: `shade_state`).
+#[inline]
+pub fn kernel(rs: &RenderState, fb: &Framebuffer, setup: &TriangleSetup) -> Kernel {
+    if fb.draw_both || rs.reference {
         fragment::reference::shade_span
     } else {
-        fragment::fast::select(&rs.fragment, setup, rs.approximate)
+        rs.shade.with(rs, |st| st.kernel(setup))
     }
 }
 
-/// Rasterizes and shades a triangle now, on this thread.
-pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup) {
-    // Two colour buffers (GL_FRONT_AND_BACK): only the general path writes both.
-    let k = if fb.draw_both { fragment::reference::shade_span } else { kernel(rs, setup) };
+/// Rasterizes and shades a triangle now, on this thread, with kernel `k`.
+pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3], setup: &TriangleSetup, k: Kernel) {
     spans(x, y, rs.draw_rect, rs.polygon_stipple.as_deref(), |py, lo, hi| {
         let mut px = SpanPixels::of(fb, py, lo, hi);
         k(&rs.fragment, setup, &mut px, py, lo, hi);

@@ -11,6 +11,7 @@
 
 use super::raster;
 use super::vertex::ClipVertex;
+use super::shade_state::SetupParams;
 use super::RenderState;
 use glam::Vec4;
 
@@ -207,6 +208,21 @@ fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer
     let order = if ccw { [0, 1, 2] } else { [0, 2, 1] };
     let ex = order.map(|i| fx[i]);
     let ey = order.map(|i| fy[i]);
+    let zq = order.map(|i| (pos[i][2], pos[i][3]));
+    let v = order.map(|i| attrs[i]);
+    // Two-sided lighting: a back-facing polygon shows its back colours.
+    let back = rs.two_side && !front_facing;
+    if super::tile::binning(rs) && !fb.draw_both && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2] {
+        // Set up later, in the tile workers.
+        if let Some(bbox) = super::tile::bounds(rs, ex, ey) {
+            if super::tile::push(rs, ex, ey, bbox, zq, v, flat_color[back as usize], back, front_facing) {
+                super::tile::flush(rs, fb);
+            }
+        }
+        return;
+    }
+    // Drawn now: after what is binned (two colour buffers).
+    super::tile::sync(rs, fb);
     // A short triangle's runs are found first: covering no pixel (most
     // often through the stipple or between pixel centres), it needs no
     // planes.
@@ -215,35 +231,11 @@ fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer
     if runs.is_some_and(|r| r.is_empty()) {
         return;
     }
-    let zq = order.map(|i| (pos[i][2], pos[i][3]));
-    let v = order.map(|i| attrs[i]);
-
-    // Two-sided lighting: a back-facing polygon shows its back colours.
-    let back = rs.two_side && !front_facing;
     let setup = planes_of(rs, zq, v, ex, ey, flat_color[back as usize], back, front_facing);
-    if super::tile::binning(rs) && !fb.draw_both && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2] {
-        match super::tile::route(rs, ex, ey) {
-            super::tile::Route::ShadeNow => shade(rs, fb, ex, ey, &setup, runs),
-            super::tile::Route::Nothing => {}
-            super::tile::Route::Bin(bbox) => {
-                if super::tile::push(rs, ex, ey, bbox, setup) {
-                    super::tile::flush(rs, fb);
-                }
-            }
-        }
-    } else {
-        // Drawn now (two colour buffers): after what is binned.
-        super::tile::sync(rs, fb);
-        shade(rs, fb, ex, ey, &setup, runs);
-    }
-}
-
-/// Shades a triangle now: its runs if already found, else by a scan.
-#[inline]
-fn shade(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, ex: [i64; 3], ey: [i64; 3], setup: &TriangleSetup, runs: Option<&raster::Runs>) {
+    let k = raster::kernel(rs, fb, &setup);
     match runs {
-        Some(r) => r.shade(rs, fb, setup),
-        None => raster::triangle(rs, fb, ex, ey, setup),
+        Some(r) => r.shade(rs, fb, &setup, k),
+        None => raster::triangle(rs, fb, ex, ey, &setup, k),
     }
 }
 
@@ -263,7 +255,7 @@ pub(crate) fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: 
 /// per vertex in `zq`, the other attributes from `v`.
 #[allow(clippy::too_many_arguments)]
 #[inline]
-pub(crate) fn planes_of<A: Attributes>(rs: &RenderState, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
+pub(crate) fn planes_of<P: SetupParams, A: Attributes>(rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
     let inv = 1.0 / ONE as f64;
     let x = ex.map(|c| c as f64 * inv);
     let y = ey.map(|c| c as f64 * inv);
@@ -275,7 +267,7 @@ pub(crate) fn planes_of<A: Attributes>(rs: &RenderState, zq: [(f64, f64); 3], v:
     };
     let q = zq.map(|p| p.1);
     let perspective = !(q[0] == q[1] && q[1] == q[2]);
-    let (flat, color) = if rs.flat {
+    let (flat, color) = if rs.flat() {
         (Some(super::fragment::color_to_u8(flat_color)), [Plane::default(); 4])
     } else {
         let s = if perspective { q } else { [1.0; 3] };
@@ -283,13 +275,13 @@ pub(crate) fn planes_of<A: Attributes>(rs: &RenderState, zq: [(f64, f64); 3], v:
         (None, std::array::from_fn(|ch| plane([c[0][ch] as f64 * s[0], c[1][ch] as f64 * s[1], c[2][ch] as f64 * s[2]])))
     };
     let mut z = plane(zq.map(|p| p.0));
-    if let Some((factor, units)) = rs.offset_fill {
+    if let Some((factor, units)) = rs.offset_fill() {
         // Polygon offset (3.5.5): m * factor + r * units, with m the
         // largest depth slope and r the depth buffer's resolution.
         let m = z.dx.abs().max(z.dy.abs());
         z.a0 += m * factor as f64 + units as f64 * OFFSET_UNIT;
     }
-    let tex = rs.texture.as_ref().map(|stage| {
+    let tex = rs.texture().map(|stage| {
         let mut planes = [[Plane::default(); 4]; super::texture::MAX_UNITS];
         for &u in &stage.active {
             for (c, p) in planes[u].iter_mut().enumerate() {
@@ -298,8 +290,8 @@ pub(crate) fn planes_of<A: Attributes>(rs: &RenderState, zq: [(f64, f64); 3], v:
         }
         Box::new(TexPlanes { stage: stage.clone(), planes })
     });
-    let fog = rs.fog.map(|f| (plane([0, 1, 2].map(|i| v[i].fog() as f64 * if perspective { q[i] } else { 1.0 })), f));
-    let secondary = (rs.color_sum && tex.is_some())
+    let fog = rs.fog().map(|f| (plane([0, 1, 2].map(|i| v[i].fog() as f64 * if perspective { q[i] } else { 1.0 })), f));
+    let secondary = (rs.color_sum() && tex.is_some())
         .then(|| [0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| if back { v[i].back_secondary() } else { v[i].secondary() }[ch] as f64 * if perspective { q[i] } else { 1.0 }))));
     TriangleSetup {
         tex,

@@ -508,7 +508,7 @@ mod x86 {
         let mut step = [_mm_setzero_si128(); 4];
         let mut step4 = _mm_setzero_si128();
         if CS == CS_STEPPED {
-            let (fixed, dx) = fast::stepped_start(&cr, &cdx, cx0);
+            let (fixed, dx) = fast::stepped_start(&cr, &cdx, cx0, x0);
             let last = (n - 1) as i64;
             let fits = |v: i64| v >= i32::MIN as i64 && v <= i32::MAX as i64;
             if !(0..4).all(|c| fits(fixed[c]) && fits(fixed[c] + dx[c] * last)) {
