@@ -13,6 +13,7 @@
  *   ones): every value k / (2^b - 1) of a b-bit component, given as
  *   UNSIGNED_SHORT, reads back (as UNSIGNED_SHORT) within half a step of
  *   b bits.
+ * - EXT_abgr: ABGR_EXT bytes unpack and pack in the order A, B, G, R.
  * - Drawn with GL_REPLACE, an RGB10_A2 texture given as UNSIGNED_BYTE comes
  *   out as the bytes given (the teximage-colors draw check, 8-bit window).
  */
@@ -27,6 +28,9 @@
 #define GL_R16 0x822A
 #define GL_RG8 0x822B
 #define GL_RG16 0x822C
+#endif
+#ifndef GL_ABGR_EXT
+#define GL_ABGR_EXT 0x8000
 #endif
 #ifndef GL_RGBA32F_ARB
 #define GL_RGBA32F_ARB 0x8814
@@ -197,6 +201,21 @@ static void drawn(void)
     }
 }
 
+/* EXT_abgr: ABGR_EXT bytes are A, B, G, R, in and out. */
+static void abgr(void)
+{
+    static const unsigned char in[2 * 4] = {10, 20, 30, 40, 50, 60, 70, 80};
+    unsigned char out[2 * 4], back[2 * 4];
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 1, 0, GL_ABGR_EXT, GL_UNSIGNED_BYTE, in);
+    h_expect_no_error("glTexImage2D with ABGR_EXT");
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out);
+    h_expect(out[0] == 40 && out[1] == 30 && out[2] == 20 && out[3] == 10 && out[4] == 80, "ABGR_EXT unpacked as R %d G %d B %d A %d", out[0], out[1], out[2], out[3]);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_ABGR_EXT, GL_UNSIGNED_BYTE, back);
+    h_expect(memcmp(back, in, sizeof in) == 0, "ABGR_EXT packed back: %d %d %d %d", back[0], back[1], back[2], back[3]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 1, 0, GL_ABGR_EXT, GL_UNSIGNED_SHORT_4_4_4_4, in);
+    h_expect_error(GL_INVALID_OPERATION, "ABGR_EXT with a packed type");
+}
+
 int main(void)
 {
     GLuint tex;
@@ -204,6 +223,7 @@ int main(void)
     glGenTextures(1, &tex);
     glBindTexture(GL_TEXTURE_2D, tex);
     exact_round_trips();
+    abgr();
     nominal_precision();
     drawn();
     return h_finish();

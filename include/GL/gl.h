@@ -1979,6 +1979,12 @@ GLAPI void APIENTRY glTexStorage1D (GLenum target, GLsizei levels, GLenum intern
 GLAPI void APIENTRY glTexStorage2D (GLenum target, GLsizei levels, GLenum internalformat, GLsizei width, GLsizei height);
 GLAPI void APIENTRY glTexStorage3D (GLenum target, GLsizei levels, GLenum internalformat, GLsizei width, GLsizei height, GLsizei depth);
 
+/* GL_EXT_abgr */
+#ifndef GL_EXT_abgr
+#define GL_EXT_abgr 1
+#define GL_ABGR_EXT                             0x8000
+#endif
+
 /* GL_ARB_pixel_buffer_object (and EXT_), GL_ARB_map_buffer_range */
 #ifndef GL_ARB_pixel_buffer_object
 #define GL_ARB_pixel_buffer_object 1
