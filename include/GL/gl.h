@@ -1979,6 +1979,46 @@ GLAPI void APIENTRY glTexStorage1D (GLenum target, GLsizei levels, GLenum intern
 GLAPI void APIENTRY glTexStorage2D (GLenum target, GLsizei levels, GLenum internalformat, GLsizei width, GLsizei height);
 GLAPI void APIENTRY glTexStorage3D (GLenum target, GLsizei levels, GLenum internalformat, GLsizei width, GLsizei height, GLsizei depth);
 
+/* GL_EXT_abgr */
+#ifndef GL_EXT_abgr
+#define GL_EXT_abgr 1
+#define GL_ABGR_EXT                             0x8000
+#endif
+
+/* GL_ARB_pixel_buffer_object (and EXT_), GL_ARB_map_buffer_range */
+#ifndef GL_ARB_pixel_buffer_object
+#define GL_ARB_pixel_buffer_object 1
+#define GL_PIXEL_PACK_BUFFER                    0x88EB
+#define GL_PIXEL_UNPACK_BUFFER                  0x88EC
+#define GL_PIXEL_PACK_BUFFER_BINDING            0x88ED
+#define GL_PIXEL_UNPACK_BUFFER_BINDING          0x88EF
+#define GL_PIXEL_PACK_BUFFER_ARB                0x88EB
+#define GL_PIXEL_UNPACK_BUFFER_ARB              0x88EC
+#define GL_PIXEL_PACK_BUFFER_BINDING_ARB        0x88ED
+#define GL_PIXEL_UNPACK_BUFFER_BINDING_ARB      0x88EF
+#endif
+#ifndef GL_EXT_pixel_buffer_object
+#define GL_EXT_pixel_buffer_object 1
+#define GL_PIXEL_PACK_BUFFER_EXT                0x88EB
+#define GL_PIXEL_UNPACK_BUFFER_EXT              0x88EC
+#define GL_PIXEL_PACK_BUFFER_BINDING_EXT        0x88ED
+#define GL_PIXEL_UNPACK_BUFFER_BINDING_EXT      0x88EF
+#endif
+#ifndef GL_ARB_map_buffer_range
+#define GL_ARB_map_buffer_range 1
+#define GL_MAP_READ_BIT                         0x0001
+#define GL_MAP_WRITE_BIT                        0x0002
+#define GL_MAP_INVALIDATE_RANGE_BIT             0x0004
+#define GL_MAP_INVALIDATE_BUFFER_BIT            0x0008
+#define GL_MAP_FLUSH_EXPLICIT_BIT               0x0010
+#define GL_MAP_UNSYNCHRONIZED_BIT               0x0020
+#define GL_BUFFER_ACCESS_FLAGS                  0x911F
+#define GL_BUFFER_MAP_LENGTH                    0x9120
+#define GL_BUFFER_MAP_OFFSET                    0x9121
+#endif
+GLAPI GLvoid * APIENTRY glMapBufferRange (GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access);
+GLAPI void APIENTRY glFlushMappedBufferRange (GLenum target, GLintptr offset, GLsizeiptr length);
+
 #ifdef __cplusplus
 }
 #endif

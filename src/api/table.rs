@@ -148,18 +148,50 @@ fn window_pos<T: Component>(v: &[T]) -> Command {
 /// glPixelMap's command: the map is checked and the values read (mapsize
 /// of them) and converted now; an invalid map or size becomes an error
 /// command. NULL values: nothing.
-unsafe fn pixel_map<T: Copy>(map: GLenum, mapsize: GLsizei, values: *const T, conv: impl Fn(GLenum, &[T]) -> Vec<f32>) -> Option<Command> {
+unsafe fn pixel_map<T: Copy>(c: &Context, map: GLenum, mapsize: GLsizei, values: *const T, conv: impl Fn(GLenum, &[T]) -> Vec<f32>) -> Option<Command> {
     if map_index(map).is_none() {
         return Some(Command::Error(GL_INVALID_ENUM));
     }
     if mapsize < 1 || mapsize as usize > MAX_PIXEL_MAP_TABLE {
         return Some(Command::Error(GL_INVALID_VALUE));
     }
-    if values.is_null() {
+    // From a pixel unpack buffer, the values are at offset `values`.
+    let bound = c.unpack_buffer_bound();
+    let values = match c.unpack_source(values as *const u8, mapsize as usize * std::mem::size_of::<T>()) {
+        Ok(p) => p as *const T,
+        Err(e) => return Some(Command::Error(e)),
+    };
+    if values.is_null() && !bound {
         return None;
     }
     let v = slice(values, mapsize as i64);
     Some(Command::PixelMap(map, conv(map, &v)))
+}
+
+/// glPolygonStipple's mask: the client pointer, or its place in the pixel
+/// unpack buffer (None: out of the buffer's range or mapped).
+fn stipple_source(c: &Context, mask: *const GLubyte) -> Option<*const GLubyte> {
+    c.unpack_image(&c.pixel_store.unpack, 32, 32, 1, GL_COLOR_INDEX, GL_BITMAP, mask).ok()
+}
+
+/// Where glGetPolygonStipple and glGetPixelMap write: the client pointer,
+/// or its place in the pixel pack buffer (None: the error is set).
+unsafe fn pack_out<T>(c: &mut Context, p: *mut T, count: usize, stipple: bool) -> Option<*mut T> {
+    let bound = c.pack_buffer_bound();
+    let r = if stipple {
+        let modes = c.pixel_store.pack;
+        c.pack_image(&modes, 32, 32, 1, GL_COLOR_INDEX, GL_BITMAP, p as *mut u8)
+    } else {
+        c.pack_dest(p as *mut u8, count * std::mem::size_of::<T>())
+    };
+    match r {
+        Ok(p) if !p.is_null() || bound => Some(p as *mut T),
+        Ok(_) => None,
+        Err(e) => {
+            c.set_error(e);
+            None
+        }
+    }
 }
 
 /// An ARB_imaging command.
@@ -424,16 +456,16 @@ super::entry_points! {
     list glLineStipple(factor: GLint, pattern: GLushort) { |_c| Command::LineStipple(factor, pattern) }
     list glCullFace(mode: GLenum) { |_c| Command::CullFace(mode) }
     list glFrontFace(mode: GLenum) { |_c| Command::FrontFace(mode) }
-    list glPolygonStipple(mask: *const GLubyte) { |c| { if mask.is_null() { return None; } Command::PolygonStipple(Box::new(unpack_stipple(&c.pixel_store.unpack, mask))) } }
+    list glPolygonStipple(mask: *const GLubyte) { |c| { let Some(mask) = stipple_source(c, mask) else { return Some(Command::Error(GL_INVALID_OPERATION)) }; if mask.is_null() { return None; } Command::PolygonStipple(Box::new(unpack_stipple(&c.pixel_store.unpack, mask))) } }
     list glPolygonMode(face: GLenum, mode: GLenum) { |_c| Command::PolygonMode(face, mode) }
     list glPolygonOffset(factor: GLfloat, units: GLfloat) { |_c| Command::PolygonOffset(factor, units) }
     client glPixelStoref(pname: GLenum, param: GLfloat) { |c| c.pixel_store(pname, param as f64) }
     client glPixelStorei(pname: GLenum, param: GLint) { |c| c.pixel_store(pname, param as f64) }
     list glPixelTransferf(pname: GLenum, param: GLfloat) { |_c| Command::PixelTransfer(pname, param as f64) }
     list glPixelTransferi(pname: GLenum, param: GLint) { |_c| Command::PixelTransfer(pname, param as f64) }
-    list glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) { |_c| pixel_map(map, mapsize, values, |_, v| v.to_vec())? }
-    list glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) { |_c| pixel_map(map, mapsize, values, |m, v| map_values_from_uint(m, v, 32))? }
-    list glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) { |_c| pixel_map(map, mapsize, values, |m, v| map_values_from_uint(m, &v.iter().map(|&x| x as u32).collect::<Vec<_>>(), 16))? }
+    list glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) { |c| pixel_map(c, map, mapsize, values, |_, v| v.to_vec())? }
+    list glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) { |c| pixel_map(c, map, mapsize, values, |m, v| map_values_from_uint(m, v, 32))? }
+    list glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) { |c| pixel_map(c, map, mapsize, values, |m, v| map_values_from_uint(m, &v.iter().map(|&x| x as u32).collect::<Vec<_>>(), 16))? }
     list glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.build_draw_pixels(width, height, format, type_, pixels as *const u8)? }
     list glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) { |_c| Command::PixelZoom(xfactor, yfactor) }
     list glBitmap(width: GLsizei, height: GLsizei, xorig: GLfloat, yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, bitmap: *const GLubyte) { |c| c.build_bitmap(width, height, [xorig, yorig], [xmove, ymove], bitmap) }
@@ -547,13 +579,13 @@ super::entry_points! {
     exec glGetTexLevelParameterfv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat) { |c| if let Some(v) = c.get_tex_level_parameter(target, level, pname) { write_out(params, &v.as_f64().iter().map(|&x| x as f32).collect::<Vec<_>>()) } }
     exec glGetTexLevelParameteriv(target: GLenum, level: GLint, pname: GLenum, params: *mut GLint) { |c| if let Some(v) = c.get_tex_level_parameter(target, level, pname) { write_out(params, &v.as_i32()) } }
     exec glGetTexImage(target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: *mut c_void) { |c| { c.fbo_store(); c.get_tex_image(target, level, format, type_, pixels as *mut u8) } }
-    exec glGetPixelMapfv(map: GLenum, values: *mut GLfloat) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, v), None => c.set_error(GL_INVALID_ENUM) } }
-    exec glGetPixelMapuiv(map: GLenum, values: *mut GLuint) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 32)).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
-    exec glGetPixelMapusv(map: GLenum, values: *mut GLushort) { |c| match c.get_pixel_map(map) { Some(v) => write_out(values, &v.iter().map(|&x| map_value_to_uint(map, x, 16) as u16).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetPixelMapfv(map: GLenum, values: *mut GLfloat) { |c| match c.get_pixel_map(map).map(|v| v.to_vec()) { Some(v) => if let Some(p) = pack_out(c, values, v.len(), false) { write_out(p, &v) }, None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetPixelMapuiv(map: GLenum, values: *mut GLuint) { |c| match c.get_pixel_map(map).map(|v| v.iter().map(|&x| map_value_to_uint(map, x, 32)).collect::<Vec<_>>()) { Some(v) => if let Some(p) = pack_out(c, values, v.len(), false) { write_out(p, &v) }, None => c.set_error(GL_INVALID_ENUM) } }
+    exec glGetPixelMapusv(map: GLenum, values: *mut GLushort) { |c| match c.get_pixel_map(map).map(|v| v.iter().map(|&x| map_value_to_uint(map, x, 16) as u16).collect::<Vec<_>>()) { Some(v) => if let Some(p) = pack_out(c, values, v.len(), false) { write_out(p, &v) }, None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMapdv(target: GLenum, query: GLenum, v: *mut GLdouble) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &x), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMapfv(target: GLenum, query: GLenum, v: *mut GLfloat) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &x.iter().map(|&f| f as f32).collect::<Vec<_>>()), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetMapiv(target: GLenum, query: GLenum, v: *mut GLint) { |c| match c.get_map(target, query) { Some(x) => write_out(v, &get::Value::Floats(x).as_i32()), None => c.set_error(GL_INVALID_ENUM) } }
-    exec glGetPolygonStipple(mask: *mut GLubyte) { |c| if !mask.is_null() { pack_stipple(&c.pixel_store.pack, &c.polygon.stipple_pattern, mask) } }
+    exec glGetPolygonStipple(mask: *mut GLubyte) { |c| if let Some(p) = pack_out(c, mask, 0, true) { pack_stipple(&c.pixel_store.pack, &c.polygon.stipple_pattern, p) } }
     exec glGetString(name: GLenum) -> *const GLubyte { |c| match get::string(name) { Some(s) => s.as_ptr(), None => { c.set_error(GL_INVALID_ENUM); std::ptr::null() } } }
     list glPushAttrib(mask: GLbitfield) { |_c| Command::PushAttrib(mask) }
     list glPopAttrib() { |_c| Command::PopAttrib }
@@ -762,6 +794,9 @@ super::entry_points! {
     exec glTexStorage2D(target: GLenum, levels: GLsizei, internalformat: GLenum, width: GLsizei, height: GLsizei) { |c| c.tex_storage(2, target, levels, internalformat, [width, height, 1]) }
     exec glTexStorage3D(target: GLenum, levels: GLsizei, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei) { |c| c.tex_storage(3, target, levels, internalformat, [width, height, depth]) }
     exec glBlitFramebufferEXT(srcX0: GLint, srcY0: GLint, srcX1: GLint, srcY1: GLint, dstX0: GLint, dstY0: GLint, dstX1: GLint, dstY1: GLint, mask: GLbitfield, filter: GLenum) { |c| c.blit_framebuffer([srcX0, srcY0, srcX1, srcY1], [dstX0, dstY0, dstX1, dstY1], mask, filter) }
+    // ---- GL_ARB_map_buffer_range ----
+    exec glMapBufferRange(target: GLenum, offset: GLintptr, length: GLsizeiptr, access: GLbitfield) -> *mut c_void { |c| c.map_buffer_range(target, offset, length, access) as *mut c_void }
+    exec glFlushMappedBufferRange(target: GLenum, offset: GLintptr, length: GLsizeiptr) { |c| c.flush_mapped_buffer_range(target, offset, length) }
 
     // ---- glu.h ----
     free gluErrorString(error: GLenum) -> *const GLubyte { glu::strings::error_string(error) }

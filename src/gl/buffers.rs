@@ -1,6 +1,9 @@
-//! Buffer objects (GL 1.5 section 2.9): names, the ARRAY_BUFFER and
-//! ELEMENT_ARRAY_BUFFER bindings, data store creation and update, mapping,
-//! and the buffer queries (section 6.1.13).
+//! Buffer objects (GL 1.5 section 2.9): names, the ARRAY_BUFFER,
+//! ELEMENT_ARRAY_BUFFER and (ARB_pixel_buffer_object) PIXEL_PACK_BUFFER /
+//! PIXEL_UNPACK_BUFFER bindings, data store creation and update, mapping
+//! (glMapBuffer, and ARB_map_buffer_range's glMapBufferRange and
+//! glFlushMappedBufferRange), and the buffer queries (section 6.1.13).
+//! How pixel commands read and write the pixel buffers is `pixel_buffer`.
 //!
 //! A buffer's data store is a `Vec<u8>` owned by the context. While a
 //! buffer is mapped its Vec is never reallocated (BufferData and deletion
@@ -32,6 +35,20 @@ pub const GL_BUFFER_ACCESS: u32 = 0x88BB;
 pub const GL_BUFFER_MAPPED: u32 = 0x88BC;
 pub const GL_BUFFER_MAP_POINTER: u32 = 0x88BD;
 pub const GL_STREAM_DRAW: u32 = 0x88E0;
+pub const GL_PIXEL_PACK_BUFFER: u32 = 0x88EB;
+pub const GL_PIXEL_UNPACK_BUFFER: u32 = 0x88EC;
+pub const GL_PIXEL_PACK_BUFFER_BINDING: u32 = 0x88ED;
+pub const GL_PIXEL_UNPACK_BUFFER_BINDING: u32 = 0x88EF;
+// ARB_map_buffer_range's access bits and (GL 3.0) map queries.
+pub const GL_MAP_READ_BIT: u32 = 0x1;
+pub const GL_MAP_WRITE_BIT: u32 = 0x2;
+pub const GL_MAP_INVALIDATE_RANGE_BIT: u32 = 0x4;
+pub const GL_MAP_INVALIDATE_BUFFER_BIT: u32 = 0x8;
+pub const GL_MAP_FLUSH_EXPLICIT_BIT: u32 = 0x10;
+pub const GL_MAP_UNSYNCHRONIZED_BIT: u32 = 0x20;
+pub const GL_BUFFER_ACCESS_FLAGS: u32 = 0x911F;
+pub const GL_BUFFER_MAP_LENGTH: u32 = 0x9120;
+pub const GL_BUFFER_MAP_OFFSET: u32 = 0x9121;
 pub const GL_STATIC_DRAW: u32 = 0x88E4;
 pub const GL_DYNAMIC_COPY: u32 = 0x88EA;
 
@@ -72,11 +89,23 @@ pub struct Buffer {
     /// BUFFER_ACCESS: the access of the last (or current) mapping; READ_WRITE initially.
     pub access: u32,
     pub mapped: bool,
+    /// BUFFER_ACCESS_FLAGS, BUFFER_MAP_OFFSET and BUFFER_MAP_LENGTH of the
+    /// current mapping (zero when unmapped).
+    pub access_flags: u32,
+    pub map_offset: usize,
+    pub map_length: usize,
 }
 
 impl Buffer {
     fn new() -> Buffer {
-        Buffer { data: Vec::new(), usage: GL_STATIC_DRAW, access: GL_READ_WRITE, mapped: false }
+        Buffer { data: Vec::new(), usage: GL_STATIC_DRAW, access: GL_READ_WRITE, mapped: false, access_flags: 0, map_offset: 0, map_length: 0 }
+    }
+
+    fn unmap(&mut self) {
+        self.mapped = false;
+        self.access_flags = 0;
+        self.map_offset = 0;
+        self.map_length = 0;
     }
 }
 
@@ -89,6 +118,11 @@ pub struct Buffers {
     pub array: u32,
     /// ELEMENT_ARRAY_BUFFER_BINDING: read by glDrawElements and friends.
     pub element_array: u32,
+    /// PIXEL_PACK_BUFFER_BINDING: where pixel commands that return images
+    /// write (`pixel_buffer`).
+    pub pixel_pack: u32,
+    /// PIXEL_UNPACK_BUFFER_BINDING: where pixel commands that take images read.
+    pub pixel_unpack: u32,
 }
 
 impl Buffers {
@@ -116,6 +150,11 @@ impl Buffers {
     pub fn is_buffer(&self, name: u32) -> bool {
         name != 0 && self.objects.contains_key(&name)
     }
+
+    /// The buffer object `name`, mutable (pixel packing writes its store).
+    pub fn get_mut(&mut self, name: u32) -> Option<&mut Buffer> {
+        self.objects.get_mut(&name)
+    }
 }
 
 fn valid_usage(usage: u32) -> bool {
@@ -128,6 +167,8 @@ impl Context {
         match target {
             GL_ARRAY_BUFFER => Some(self.buffers.array),
             GL_ELEMENT_ARRAY_BUFFER => Some(self.buffers.element_array),
+            GL_PIXEL_PACK_BUFFER => Some(self.buffers.pixel_pack),
+            GL_PIXEL_UNPACK_BUFFER => Some(self.buffers.pixel_unpack),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 None
@@ -158,6 +199,8 @@ impl Context {
         let slot = match target {
             GL_ARRAY_BUFFER => &mut self.buffers.array,
             GL_ELEMENT_ARRAY_BUFFER => &mut self.buffers.element_array,
+            GL_PIXEL_PACK_BUFFER => &mut self.buffers.pixel_pack,
+            GL_PIXEL_UNPACK_BUFFER => &mut self.buffers.pixel_unpack,
             _ => return self.set_error(GL_INVALID_ENUM),
         };
         *slot = name;
@@ -180,6 +223,12 @@ impl Context {
             }
             if self.buffers.element_array == name {
                 self.buffers.element_array = 0;
+            }
+            if self.buffers.pixel_pack == name {
+                self.buffers.pixel_pack = 0;
+            }
+            if self.buffers.pixel_unpack == name {
+                self.buffers.pixel_unpack = 0;
             }
             self.arrays.unbind_buffer(name);
         }
@@ -212,23 +261,20 @@ impl Context {
         }
         b.data = store;
         b.usage = usage;
-        b.mapped = false;
+        b.unmap();
         b.access = GL_READ_WRITE;
     }
 
     /// The checked range [offset, offset + size) of the buffer bound to
     /// `target`, for glBufferSubData and glGetBufferSubData.
     fn buffer_range(&mut self, target: u32, offset: isize, size: isize) -> Option<(&mut Buffer, std::ops::Range<usize>)> {
-        self.buffer_binding(target)?;
+        let name = self.buffer_binding(target)?;
         if offset < 0 || size < 0 {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
         let (o, s) = (offset as usize, size as usize);
-        let len = match self.buffers.objects.get(&match target {
-            GL_ARRAY_BUFFER => self.buffers.array,
-            _ => self.buffers.element_array,
-        }) {
+        let len = match self.buffers.objects.get(&name) {
             Some(b) => {
                 if b.mapped {
                     self.set_error(GL_INVALID_OPERATION);
@@ -288,7 +334,69 @@ impl Context {
         }
         b.mapped = true;
         b.access = access;
+        b.access_flags = match access {
+            GL_READ_ONLY => GL_MAP_READ_BIT,
+            GL_WRITE_ONLY => GL_MAP_WRITE_BIT,
+            _ => GL_MAP_READ_BIT | GL_MAP_WRITE_BIT,
+        };
+        b.map_offset = 0;
+        b.map_length = b.data.len();
         b.data.as_mut_ptr()
+    }
+
+    /// glMapBufferRange (ARB_map_buffer_range): a pointer to bytes
+    /// [offset, offset + length) of the store. The store is CPU memory, so
+    /// the mapping is the store itself: INVALIDATE_* leave the old bytes
+    /// (their contents are undefined, keeping them is allowed),
+    /// UNSYNCHRONIZED has nothing to wait for, and with FLUSH_EXPLICIT every
+    /// write is already in place whether flushed or not.
+    pub fn map_buffer_range(&mut self, target: u32, offset: isize, length: isize, access: u32) -> *mut u8 {
+        let Some(name) = self.buffer_binding(target) else { return std::ptr::null_mut() };
+        let all = GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT | GL_MAP_FLUSH_EXPLICIT_BIT | GL_MAP_UNSYNCHRONIZED_BIT;
+        // The value errors first (offset, length, unknown bits), then the
+        // operation errors, as the extension lists them.
+        let size = self.buffers.objects.get(&name).map_or(0, |b| b.data.len());
+        if offset < 0 || length <= 0 || access & !all != 0 || (name != 0 && (offset as usize).saturating_add(length as usize) > size) {
+            self.set_error(GL_INVALID_VALUE);
+            return std::ptr::null_mut();
+        }
+        let rw = access & (GL_MAP_READ_BIT | GL_MAP_WRITE_BIT);
+        let bad = rw == 0
+            || (access & GL_MAP_READ_BIT != 0 && access & (GL_MAP_INVALIDATE_RANGE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT | GL_MAP_UNSYNCHRONIZED_BIT) != 0)
+            || (access & GL_MAP_FLUSH_EXPLICIT_BIT != 0 && access & GL_MAP_WRITE_BIT == 0);
+        if bad {
+            self.set_error(GL_INVALID_OPERATION);
+            return std::ptr::null_mut();
+        }
+        let Some(b) = self.bound_buffer(target) else { return std::ptr::null_mut() };
+        if b.mapped {
+            self.set_error(GL_INVALID_OPERATION);
+            return std::ptr::null_mut();
+        }
+        b.mapped = true;
+        b.access = match rw {
+            GL_MAP_READ_BIT => GL_READ_ONLY,
+            GL_MAP_WRITE_BIT => GL_WRITE_ONLY,
+            _ => GL_READ_WRITE,
+        };
+        b.access_flags = access;
+        b.map_offset = offset as usize;
+        b.map_length = length as usize;
+        // SAFETY: offset + length is within the store (checked above).
+        unsafe { b.data.as_mut_ptr().add(offset as usize) }
+    }
+
+    /// glFlushMappedBufferRange: checks the range against the mapping; the
+    /// writes are already in the store (see [`Self::map_buffer_range`]).
+    pub fn flush_mapped_buffer_range(&mut self, target: u32, offset: isize, length: isize) {
+        let Some(b) = self.bound_buffer(target) else { return };
+        if !b.mapped || b.access_flags & GL_MAP_FLUSH_EXPLICIT_BIT == 0 {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let map_length = b.map_length;
+        if offset < 0 || length < 0 || (offset as usize).saturating_add(length as usize) > map_length {
+            self.set_error(GL_INVALID_VALUE);
+        }
     }
 
     pub fn unmap_buffer(&mut self, target: u32) -> bool {
@@ -297,14 +405,14 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return false;
         }
-        b.mapped = false;
+        b.unmap();
         // The store never becomes corrupt in memory.
         true
     }
 
     pub fn get_buffer_parameter(&mut self, target: u32, pname: u32) -> Option<i64> {
         self.buffer_binding(target)?;
-        if !matches!(pname, GL_BUFFER_SIZE | GL_BUFFER_USAGE | GL_BUFFER_ACCESS | GL_BUFFER_MAPPED) {
+        if !matches!(pname, GL_BUFFER_SIZE | GL_BUFFER_USAGE | GL_BUFFER_ACCESS | GL_BUFFER_MAPPED | GL_BUFFER_ACCESS_FLAGS | GL_BUFFER_MAP_OFFSET | GL_BUFFER_MAP_LENGTH) {
             self.set_error(GL_INVALID_ENUM);
             return None;
         }
@@ -313,6 +421,9 @@ impl Context {
             GL_BUFFER_SIZE => b.data.len() as i64,
             GL_BUFFER_USAGE => b.usage as i64,
             GL_BUFFER_ACCESS => b.access as i64,
+            GL_BUFFER_ACCESS_FLAGS => b.access_flags as i64,
+            GL_BUFFER_MAP_OFFSET => b.map_offset as i64,
+            GL_BUFFER_MAP_LENGTH => b.map_length as i64,
             _ => b.mapped as i64,
         })
     }
@@ -324,6 +435,7 @@ impl Context {
             return None;
         }
         let b = self.bound_buffer(target)?;
-        Some(if b.mapped { b.data.as_mut_ptr() } else { std::ptr::null_mut() })
+        // SAFETY: map_offset is within the store while it is mapped.
+        Some(if b.mapped { unsafe { b.data.as_mut_ptr().add(b.map_offset) } } else { std::ptr::null_mut() })
     }
 }

@@ -125,9 +125,13 @@ impl Context {
             Ok(k) => k,
             Err(e) => return Some(Command::Error(e)),
         };
-        if ptr.is_null() {
+        if ptr.is_null() && !self.unpack_buffer_bound() {
             return None;
         }
+        let ptr = match self.unpack_image(&self.pixel_store.unpack, w, h, 1, format, ty, ptr) {
+            Ok(p) => p,
+            Err(e) => return Some(Command::Error(e)),
+        };
         let (w, h) = (w as usize, h as usize);
         let src = Source::new(&self.pixel_store.unpack, w, h, 1, format, ty, ptr);
         let data = match kind {
@@ -150,10 +154,16 @@ impl Context {
         if w < 0 || h < 0 {
             return Command::Error(GL_INVALID_VALUE);
         }
+        // From a pixel unpack buffer, the bitmap is at offset `ptr`.
+        let bound = self.unpack_buffer_bound();
+        let ptr = match self.unpack_image(&self.pixel_store.unpack, w, h, 1, GL_COLOR_INDEX, GL_BITMAP, ptr) {
+            Ok(p) => p,
+            Err(e) => return Command::Error(e),
+        };
         let (w, h) = (w as usize, h as usize);
         let stride = w.div_ceil(8);
         let mut bits = vec![0u8; stride * h];
-        if !ptr.is_null() {
+        if !ptr.is_null() || bound {
             let src = Source::new(&self.pixel_store.unpack, w, h, 1, GL_COLOR_INDEX, GL_BITMAP, ptr);
             for (n, v) in src.values(w, h, 1, false).into_iter().enumerate() {
                 if v != 0.0 {

@@ -235,6 +235,8 @@ impl Context {
             GL_UNPACK_ALIGNMENT => ints([self.pixel_store.unpack.alignment as i64]),
             GL_UNPACK_SKIP_IMAGES => ints([self.pixel_store.unpack.skip_images as i64]),
             GL_UNPACK_IMAGE_HEIGHT => ints([self.pixel_store.unpack.image_height as i64]),
+            super::buffers::GL_PIXEL_PACK_BUFFER_BINDING => ints([self.buffers.pixel_pack as i64]),
+            super::buffers::GL_PIXEL_UNPACK_BUFFER_BINDING => ints([self.buffers.pixel_unpack as i64]),
             // Raster position and pixel transfer (tables 6.7, 6.17, 6.18).
             GL_CURRENT_RASTER_POSITION => Some(Value::Floats(self.raster.pos.iter().map(|&c| c as f64).collect())),
             GL_CURRENT_RASTER_POSITION_VALID => Some(Value::Bools(vec![self.raster.valid])),
@@ -289,7 +291,8 @@ impl Context {
 /// names resolve to them through GetProcAddress), plus EXT_vertex_array,
 /// ARB_texture_non_power_of_two, ARB_texture_rectangle (and its EXT/NV
 /// names), ARB_texture_rg, ARB/EXT_framebuffer_object and
-/// EXT_framebuffer_blit (`framebuffer_object`, `blit`), ARB_texture_float, EXT/NV_packed_depth_stencil, EXT_shadow_funcs
+/// EXT_framebuffer_blit (`framebuffer_object`, `blit`), ARB_texture_float, EXT/NV_packed_depth_stencil, EXT_shadow_funcs,
+/// ARB/EXT_pixel_buffer_object (`pixel_buffer`), ARB_map_buffer_range (`buffers`), EXT_abgr (`pixel_data`)
 /// and the GL 1.2 imaging subset (ARB_imaging, `imaging`). The string ends
 /// in a space, as Mesa's does: programs that print it name by name
 /// (piglit's glinfo) rely on the separator after the last name.
@@ -300,12 +303,12 @@ impl Context {
 /// GL_SHADING_LANGUAGE_VERSION, NULL in a GL 1.5 context without GLSL, and
 /// crashes instead of skipping; and texture storage's own piglit tests
 /// still fail on error cases (depth-stencil formats).
-const EXTENSIONS: &[u8] = b"GL_ARB_depth_texture GL_ARB_framebuffer_object GL_ARB_imaging GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_point_parameters \
+const EXTENSIONS: &[u8] = b"GL_ARB_depth_texture GL_ARB_framebuffer_object GL_ARB_imaging GL_ARB_multitexture GL_ARB_map_buffer_range GL_ARB_occlusion_query GL_ARB_pixel_buffer_object GL_ARB_point_parameters \
 GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine \
 GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_ARB_texture_float GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_ARB_texture_rectangle GL_ARB_texture_rg GL_ARB_transpose_matrix \
-GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_vertex_array GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_func_separate \
+GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_vertex_array GL_EXT_abgr GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_func_separate \
 GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_framebuffer_blit GL_EXT_framebuffer_object GL_EXT_multi_draw_arrays \
-GL_EXT_packed_depth_stencil GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_secondary_color GL_EXT_separate_specular_color GL_EXT_shadow_funcs GL_EXT_stencil_wrap \
+GL_EXT_packed_depth_stencil GL_EXT_packed_pixels GL_EXT_pixel_buffer_object GL_EXT_rescale_normal GL_EXT_secondary_color GL_EXT_separate_specular_color GL_EXT_shadow_funcs GL_EXT_stencil_wrap \
 GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_lod_bias GL_EXT_texture_rectangle \
 GL_NV_packed_depth_stencil GL_NV_texture_rectangle GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod \0";
 

@@ -320,9 +320,10 @@ impl Context {
             Kind::Color => {}
             _ => return Err(GL_INVALID_ENUM),
         }
-        if ptr.is_null() || w < 0 || h < 0 || w as usize > MAX_TABLE * MAX_TABLE || h as usize > MAX_TABLE {
+        if (ptr.is_null() && !self.unpack_buffer_bound()) || w < 0 || h < 0 || w as usize > MAX_TABLE * MAX_TABLE || h as usize > MAX_TABLE {
             return Ok(None);
         }
+        let ptr = self.unpack_image(&self.pixel_store.unpack, w, h, 1, format, ty, ptr)?;
         let (w, h) = (w as usize, h as usize);
         Ok(Some(Source::new(&self.pixel_store.unpack, w, h, 1, format, ty, ptr).colors(w, h, 1)))
     }
@@ -493,9 +494,14 @@ impl Context {
     /// `out` must be NULL or have room for the table as packed.
     pub unsafe fn get_color_table(&mut self, target: u32, format: u32, ty: u32, out: *mut u8) {
         let Some((k, false)) = table_target(target) else { return self.set_error(GL_INVALID_ENUM) };
-        if !self.check_get_format(format, ty) || out.is_null() {
+        if !self.check_get_format(format, ty) || (out.is_null() && !self.pack_buffer_bound()) {
             return;
         }
+        let pack = self.pixel_store.pack;
+        let out = match self.pack_image(&pack, self.imaging.tables[k].width as i32, 1, 1, format, ty, out) {
+            Ok(p) => p,
+            Err(e) => return self.set_error(e),
+        };
         let t = &self.imaging.tables[k];
         let mut dest = Dest::new(&self.pixel_store.pack, t.width, 1, format, ty, out);
         for (i, e) in t.entries.iter().enumerate() {
@@ -587,10 +593,21 @@ impl Context {
         if !self.check_get_format(format, ty) {
             return;
         }
-        let f = &self.imaging.filters[k];
         let pack = self.pixel_store.pack;
+        // With a pixel pack buffer, the pointers are offsets into it.
+        let bound = self.pack_buffer_bound();
+        let (fw, fh) = (self.imaging.filters[k].width as i32, self.imaging.filters[k].height as i32);
+        let (out, column) = match column {
+            None => (self.pack_image(&pack, fw, fh, 1, format, ty, out), None),
+            Some(col) => (self.pack_image(&pack, fw, 1, 1, format, ty, out), Some(self.pack_image(&pack, fh, 1, 1, format, ty, col))),
+        };
+        let (out, column) = match (out, column.transpose()) {
+            (Ok(o), Ok(c)) => (o, c),
+            (Err(e), _) | (_, Err(e)) => return self.set_error(e),
+        };
+        let f = &self.imaging.filters[k];
         let write = |ptr: *mut u8, w: usize, h: usize, taps: &[[f32; 4]]| {
-            if ptr.is_null() {
+            if ptr.is_null() && !bound {
                 return;
             }
             let mut dest = Dest::new(&pack, w, h, format, ty, ptr);
@@ -641,8 +658,14 @@ impl Context {
         if !self.check_get_format(format, ty) {
             return;
         }
+        let pack = self.pixel_store.pack;
+        let out = match self.pack_image(&pack, self.imaging.histogram.width as i32, 1, 1, format, ty, out) {
+            Ok(p) => p,
+            Err(e) => return self.set_error(e),
+        };
+        let bound = self.pack_buffer_bound();
         let h = &mut self.imaging.histogram;
-        if !out.is_null() {
+        if !out.is_null() || bound {
             let mut dest = Dest::new(&self.pixel_store.pack, h.width, 1, format, ty, out);
             for (i, c) in h.counts.iter().enumerate() {
                 dest.put_counts(i, 0, c.map(|n| n as f64));
@@ -693,8 +716,14 @@ impl Context {
         if !self.check_get_format(format, ty) {
             return;
         }
+        let pack = self.pixel_store.pack;
+        let out = match self.pack_image(&pack, 2, 1, 1, format, ty, out) {
+            Ok(p) => p,
+            Err(e) => return self.set_error(e),
+        };
+        let bound = self.pack_buffer_bound();
         let m = &mut self.imaging.minmax;
-        if !out.is_null() {
+        if !out.is_null() || bound {
             let keep = components(m.base);
             let pick = |v: [f32; 4]| -> [f32; 4] {
                 let v = std::array::from_fn(|k| if keep[k] { v[k] } else { 0.0 });

@@ -19,6 +19,10 @@
 //! (table 4.6). Pixels the caller marks as not available (outside the
 //! window) are left untouched in client memory.
 //!
+//! EXT_abgr's ABGR_EXT is RGBA with the components in reverse order; like
+//! RGB and BGR it takes the non-packed types only (the packed 4-component
+//! types name RGBA and BGRA, section 3.6.4).
+//!
 //! DEPTH_STENCIL with UNSIGNED_INT_24_8 (EXT/NV_packed_depth_stencil): one
 //! 32-bit word per group, depth in the upper 24 bits (normalized by
 //! 2^24 - 1), the stencil index in the lower 8.
@@ -38,6 +42,8 @@ pub const GL_DEPTH_STENCIL: u32 = 0x84F9;
 pub const GL_UNSIGNED_INT_24_8: u32 = 0x84FA;
 /// ARB_texture_rg's two-component format.
 pub const GL_RG: u32 = 0x8227;
+/// EXT_abgr's format: RGBA groups in the order A, B, G, R.
+pub const GL_ABGR_EXT: u32 = 0x8000;
 
 /// What a format's groups are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -67,6 +73,7 @@ pub fn format_info(format: u32) -> Option<(Kind, &'static [usize])> {
         GL_RGBA => (Kind::Color, &[0, 1, 2, 3]),
         GL_BGR => (Kind::Color, &[2, 1, 0]),
         GL_BGRA => (Kind::Color, &[2, 1, 0, 3]),
+        GL_ABGR_EXT => (Kind::Color, &[3, 2, 1, 0]),
         GL_LUMINANCE => (Kind::Color, &[4]),
         GL_LUMINANCE_ALPHA => (Kind::Color, &[4, 3]),
         _ => return None,

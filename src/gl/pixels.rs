@@ -101,10 +101,14 @@ impl Context {
         if missing {
             return self.set_error(GL_INVALID_OPERATION);
         }
-        if out.is_null() || w == 0 || h == 0 {
+        if (out.is_null() && !self.pack_buffer_bound()) || w == 0 || h == 0 {
             return;
         }
         let modes = self.pixel_store.pack;
+        let out = match self.pack_image(&modes, w, h, 1, format, ty, out) {
+            Ok(p) => p,
+            Err(e) => return self.set_error(e),
+        };
         if kind == Kind::Color {
             if let Some(st) = self.imaging_stages(2) {
                 // The ARB_imaging stages (section 3.6.5) need the whole

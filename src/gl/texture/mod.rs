@@ -521,9 +521,14 @@ impl Context {
         let proxy = matches!(image_target(target, dims), Some((_, _, true)));
         let limit = level_limit(target, dims, level);
         let sizes_ok = size[..dims as usize].iter().all(|&s| (0..=limit).contains(&s));
-        if !proxy && !pixels.is_null() && sizes_ok && image::check_format_type(format, ty).is_ok() {
+        if !proxy && (!pixels.is_null() || self.unpack_buffer_bound()) && sizes_ok && image::check_format_type(format, ty).is_ok() {
+            let modes = unpack_modes(&self.pixel_store.unpack, dims);
+            let pixels = match self.unpack_image(&modes, size[0], size[1], size[2], format, ty, pixels) {
+                Ok(p) => p,
+                Err(e) => return Some(super::Command::Error(e)),
+            };
             let [w, h, d] = size.map(|s| s as usize);
-            cmd.pixels = Some(Arc::new(image::unpack(&unpack_modes(&self.pixel_store.unpack, dims), w, h, d, format, ty, pixels)));
+            cmd.pixels = Some(Arc::new(image::unpack(&modes, w, h, d, format, ty, pixels)));
         }
         if proxy {
             if self.in_begin_end() {
@@ -545,9 +550,14 @@ impl Context {
         let mut cmd = TexSubImageCmd { dims, target, level, offset, size, format, ty, pixels: None };
         let limit = level_limit(target, dims, 0);
         let sizes_ok = size[..dims as usize].iter().all(|&s| (0..=limit).contains(&s));
-        if !pixels.is_null() && sizes_ok && image::check_format_type(format, ty).is_ok() {
+        if (!pixels.is_null() || self.unpack_buffer_bound()) && sizes_ok && image::check_format_type(format, ty).is_ok() {
+            let modes = unpack_modes(&self.pixel_store.unpack, dims);
+            let pixels = match self.unpack_image(&modes, size[0], size[1], size[2], format, ty, pixels) {
+                Ok(p) => p,
+                Err(e) => return super::Command::Error(e),
+            };
             let [w, h, d] = size.map(|s| s as usize);
-            cmd.pixels = Some(Arc::new(image::unpack(&unpack_modes(&self.pixel_store.unpack, dims), w, h, d, format, ty, pixels)));
+            cmd.pixels = Some(Arc::new(image::unpack(&modes, w, h, d, format, ty, pixels)));
         }
         super::Command::TexSubImage(Box::new(cmd))
     }
@@ -1038,10 +1048,17 @@ impl Context {
         if matches!(format, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL) != (img.base == Base::Depth) {
             return self.set_error(GL_INVALID_OPERATION);
         }
-        if out.is_null() || img.texels.is_empty() {
+        if (out.is_null() && !self.pack_buffer_bound()) || img.texels.is_empty() {
             return;
         }
-        image::pack(&self.pixel_store.pack, img, format, ty, &self.pixel, out);
+        let (w, h, d) = (img.width as i32, img.height as i32, img.depth as i32);
+        let modes = self.pixel_store.pack;
+        let out = match self.pack_image(&modes, w, h, d, format, ty, out) {
+            Ok(p) => p,
+            Err(e) => return self.set_error(e),
+        };
+        let Some(img) = self.texture.object(self.texture.active, t).image(face, level as usize) else { return };
+        image::pack(&modes, img, format, ty, &self.pixel, out);
     }
 
     /// glTexEnv (section 3.8.13); the integer form's colour is normalized.
