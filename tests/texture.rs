@@ -234,10 +234,10 @@ fn tex_image_errors() {
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 5, 5, 1, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR, "5 with border 1");
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 1, 1, 1, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "1 with border 1");
     // Level k holds at most MAX_TEXTURE_SIZE >> k (section 3.8.1).
-    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 2048, 1, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR, "max x 1");
-    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 1, 4, 2048, 1, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "max at level 1");
-    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 2, 4, 1, 1024, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "max/2 at level 2");
-    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 4096, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "too wide");
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 4096, 1, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR, "max x 1");
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 1, 4, 4096, 1, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "max at level 1");
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 2, 4, 1, 2048, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "max/2 at level 2");
+    assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 8192, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "too wide");
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 5, 4, 4, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE, "internal format 5");
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 4, 4, 0, 0x1234, t::GL_UNSIGNED_BYTE), GL_INVALID_ENUM, "format");
     assert_eq!(e(&mut c, t::GL_TEXTURE_2D, 0, 4, 4, 4, 0, t::GL_RGBA, 0x1234), GL_INVALID_ENUM, "type");
@@ -251,7 +251,7 @@ fn tex_image_errors() {
     // Errors leave the proxy alone; a size softgl cannot hold zeroes it.
     assert_eq!(e(&mut c, t::GL_PROXY_TEXTURE_2D, 0, 4, 64, 64, 2, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_INVALID_VALUE);
     assert_eq!(c.get_tex_level_parameter(t::GL_PROXY_TEXTURE_2D, 0, t::GL_TEXTURE_WIDTH).unwrap().as_i32(), vec![64]);
-    assert_eq!(e(&mut c, t::GL_PROXY_TEXTURE_2D, 0, 4, 4096, 4096, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR);
+    assert_eq!(e(&mut c, t::GL_PROXY_TEXTURE_2D, 0, 4, 8192, 8192, 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE), GL_NO_ERROR);
     for pname in [t::GL_TEXTURE_WIDTH, t::GL_TEXTURE_HEIGHT] {
         assert_eq!(c.get_tex_level_parameter(t::GL_PROXY_TEXTURE_2D, 0, pname).unwrap().as_i32(), vec![0]);
     }

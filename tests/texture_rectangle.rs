@@ -145,7 +145,7 @@ fn enable_priority_cube_3d_rect_2d() {
 #[test]
 fn initial_state_errors_and_queries() {
     let mut c = context(4, 4);
-    assert_eq!(int(&mut c, t::GL_MAX_RECTANGLE_TEXTURE_SIZE), 2048);
+    assert_eq!(int(&mut c, t::GL_MAX_RECTANGLE_TEXTURE_SIZE), 4096);
     assert_eq!(int(&mut c, t::GL_TEXTURE_BINDING_RECTANGLE), 0);
     c.execute(&Command::BindTexture(RECT, 7));
     assert_eq!(int(&mut c, t::GL_TEXTURE_BINDING_RECTANGLE), 7);
@@ -187,11 +187,11 @@ fn initial_state_errors_and_queries() {
     c.submit(cmd.unwrap());
     assert_eq!(c.take_error(), GL_INVALID_ENUM);
     // Proxies: the largest size fits, twice it gives width 0 and no error.
-    tex_image(&mut c, t::GL_PROXY_TEXTURE_RECTANGLE, 0, 2048, 2048, 0, &[]);
-    assert_eq!(level(&mut c, t::GL_PROXY_TEXTURE_RECTANGLE, t::GL_TEXTURE_WIDTH), 2048);
     tex_image(&mut c, t::GL_PROXY_TEXTURE_RECTANGLE, 0, 4096, 4096, 0, &[]);
+    assert_eq!(level(&mut c, t::GL_PROXY_TEXTURE_RECTANGLE, t::GL_TEXTURE_WIDTH), 4096);
+    tex_image(&mut c, t::GL_PROXY_TEXTURE_RECTANGLE, 0, 8192, 8192, 0, &[]);
     assert_eq!(level(&mut c, t::GL_PROXY_TEXTURE_RECTANGLE, t::GL_TEXTURE_WIDTH), 0);
-    tex_image(&mut c, t::GL_PROXY_TEXTURE_RECTANGLE, 0, 2049, 16, 0, &[]);
+    tex_image(&mut c, t::GL_PROXY_TEXTURE_RECTANGLE, 0, 4097, 16, 0, &[]);
     assert_eq!(level(&mut c, t::GL_PROXY_TEXTURE_RECTANGLE, t::GL_TEXTURE_WIDTH), 0);
     assert_eq!(c.take_error(), GL_NO_ERROR);
 }

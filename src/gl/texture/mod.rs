@@ -36,12 +36,15 @@ static IDENTITY_TRANSFER: std::sync::LazyLock<super::pixel_transfer::PixelTransf
 /// Dirty bit: texture state the fragment stage derives from.
 pub const DIRTY_TEXTURE: u32 = super::validate::DIRTY_TEXTURE;
 
-pub const MAX_TEXTURE_SIZE: i32 = 2048;
+/// 4096 as on the hardware of GL 1.5's time (piglit's
+/// tex-upside-down-miptree asks for it); an image still may not exceed
+/// MAX_IMAGE_BYTES, so a 4096x4096 RGBA32F level (256 MB) is the worst.
+pub const MAX_TEXTURE_SIZE: i32 = 4096;
 pub const MAX_3D_TEXTURE_SIZE: i32 = 256;
-pub const MAX_CUBE_MAP_TEXTURE_SIZE: i32 = 2048;
-pub const MAX_RECTANGLE_TEXTURE_SIZE: i32 = 2048;
+pub const MAX_CUBE_MAP_TEXTURE_SIZE: i32 = 4096;
+pub const MAX_RECTANGLE_TEXTURE_SIZE: i32 = 4096;
 /// Levels per face: log2(MAX_TEXTURE_SIZE) + 1.
-pub const MAX_LEVELS: usize = 12;
+pub const MAX_LEVELS: usize = 13;
 /// The largest image softgl allocates (bytes of stored texels): larger
 /// requests are GL_OUT_OF_MEMORY at once (proxies: not supported).
 const MAX_IMAGE_BYTES: usize = 1 << 30;
