@@ -278,6 +278,168 @@ pub fn convex_pixels(poly: &[P], rect: Rect, quality: Quality, inside: impl Fn(f
     }
 }
 
+/// The rectangle of an unstippled smooth line (3.4.2), with its exact
+/// coverage in closed form instead of clipping (the fast path; the
+/// reference path runs [`convex_pixels`] on the same corners).
+///
+/// A pixel square is classified by its centre's coordinates along the
+/// segment (`along`, from the start) and across it (`across`): the square
+/// projects on either axis of the rectangle to an interval of half length
+/// h = (|ux| + |uy|) / 2 around them. Squares wholly beyond a side get no
+/// fragment; squares wholly between the two end caps are cut only by the
+/// two long sides, so their coverage is C(hw - across) - C(-hw - across),
+/// where C(s) is the area of the unit square on the inner side of a line at
+/// signed distance s from its centre: the distribution function of the sum
+/// of two uniform variables of widths |ux| and |uy| (a quadratic, linear,
+/// quadratic piece). The few squares a cap crosses are clipped exactly, in
+/// coordinates relative to the square.
+///
+/// Precision: `along` and `across` are two products and a sum of exact
+/// differences (pixel centres and snapped endpoints are multiples of 1/256),
+/// so they are within about 2^-52 times the line's length of the real
+/// values; C is evaluated near [0, 1]. The coverage is within about 1e-13
+/// of the exact area for lines up to a few thousand pixels, closer than
+/// [`convex_pixels`], whose shoelace sums products of absolute window
+/// coordinates (about 1e-10 there; `tests::line_rect_*` measures both
+/// against a double-double evaluation). Coverages below [`COVERAGE_FLOOR`]
+/// (squares touching the rectangle, up to rounding) produce no fragment.
+pub struct LineRect {
+    x: f64,
+    y: f64,
+    ux: f64,
+    uy: f64,
+    len: f64,
+    hw: f64,
+    /// (|ux| + |uy|) / 2 and (max - min) / 2 of |ux|, |uy|.
+    h: f64,
+    hd: f64,
+    /// 1 / max(|ux|, |uy|) and 1 / (2 |ux| |uy|) (0 when the line is
+    /// axis-aligned: the quadratic pieces are then empty).
+    inv_a: f64,
+    inv_2ab: f64,
+    corners: [P; 4],
+}
+
+/// Coverage below which a square gets no fragment (fast path).
+pub const COVERAGE_FLOOR: f64 = 1e-12;
+
+impl LineRect {
+    /// The rectangle of half width `hw` centred on the segment from
+    /// (x, y) along (dx, dy); None for an empty or non-finite segment.
+    pub fn new(x: f64, y: f64, dx: f64, dy: f64, hw: f64) -> Option<LineRect> {
+        let len = (dx * dx + dy * dy).sqrt();
+        if !(len > 0.0) || !len.is_finite() || !x.is_finite() || !y.is_finite() {
+            return None;
+        }
+        let (ux, uy) = (dx / len, dy / len);
+        // The corners as `line::smooth_line` computes them, so that both
+        // paths visit the same rows.
+        let (bx, by) = (x + ux * len, y + uy * len);
+        let (nx, ny) = (-uy * hw, ux * hw);
+        let corners = [(x - nx, y - ny), (bx - nx, by - ny), (bx + nx, by + ny), (x + nx, y + ny)];
+        let (a, b) = (ux.abs().max(uy.abs()), ux.abs().min(uy.abs()));
+        Some(LineRect {
+            x,
+            y,
+            ux,
+            uy,
+            len,
+            hw,
+            h: (a + b) / 2.0,
+            hd: (a - b) / 2.0,
+            inv_a: 1.0 / a,
+            inv_2ab: if b > 0.0 { 1.0 / (2.0 * a * b) } else { 0.0 },
+            corners,
+        })
+    }
+
+    /// Rows of `rect` the rectangle's bounding box meets.
+    pub fn rows(&self, rect: Rect) -> std::ops::Range<i64> {
+        let ymin = self.corners.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        let ymax = self.corners.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+        (ymin.floor() as i64).max(rect.y0 as i64)..(ymax.ceil() as i64).min(rect.y1 as i64)
+    }
+
+    /// Columns of `rect` that may hold covered squares of row `py`: the
+    /// rectangle's x extent within the row (its edges cut to the row), a
+    /// little widened against rounding (the squares beyond get coverage 0).
+    pub fn cols(&self, py: i64, rect: Rect) -> std::ops::Range<i64> {
+        let (y0, y1) = (py as f64, py as f64 + 1.0);
+        let (mut xmin, mut xmax) = (f64::INFINITY, f64::NEG_INFINITY);
+        for i in 0..4 {
+            let (p, q) = (self.corners[i], self.corners[(i + 1) & 3]);
+            if p.1.max(q.1) < y0 || p.1.min(q.1) > y1 {
+                continue;
+            }
+            let (t0, t1) = if p.1 == q.1 {
+                (0.0, 1.0)
+            } else {
+                let (a, b) = ((y0 - p.1) / (q.1 - p.1), (y1 - p.1) / (q.1 - p.1));
+                (a.min(b).clamp(0.0, 1.0), a.max(b).clamp(0.0, 1.0))
+            };
+            for t in [t0, t1] {
+                let x = p.0 + (q.0 - p.0) * t;
+                xmin = xmin.min(x);
+                xmax = xmax.max(x);
+            }
+        }
+        if !(xmin <= xmax) {
+            return 0..0;
+        }
+        ((xmin - 1e-7).floor() as i64).max(rect.x0 as i64)..((xmax + 1e-7).ceil() as i64).min(rect.x1 as i64)
+    }
+
+    /// The area of the unit square on the inner side of a long side at
+    /// signed distance `s` from the square's centre.
+    #[inline(always)]
+    fn half_plane(&self, s: f64) -> f64 {
+        let (m, hd) = (self.h, self.hd);
+        if s <= -m {
+            0.0
+        } else if s >= m {
+            1.0
+        } else if s < -hd {
+            let r = s + m;
+            r * r * self.inv_2ab
+        } else if s > hd {
+            let r = m - s;
+            1.0 - r * r * self.inv_2ab
+        } else {
+            0.5 + s * self.inv_a
+        }
+    }
+
+    /// The coverage of pixel (px, py): 0 for no fragment.
+    #[inline]
+    pub fn coverage(&self, px: i64, py: i64) -> f64 {
+        let (rx, ry) = (px as f64 + 0.5 - self.x, py as f64 + 0.5 - self.y);
+        let along = rx * self.ux + ry * self.uy;
+        let across = ry * self.ux - rx * self.uy;
+        let h = self.h;
+        if across.abs() >= self.hw + h || along <= -h || along >= self.len + h {
+            return 0.0;
+        }
+        let c = if along >= h && along <= self.len - h {
+            self.half_plane(self.hw - across) - self.half_plane(-self.hw - across)
+        } else {
+            self.clipped(px, py)
+        };
+        if c > COVERAGE_FLOOR {
+            c.min(1.0)
+        } else {
+            0.0
+        }
+    }
+
+    /// The exact area of the rectangle within square (px, py), clipped in
+    /// the square's own coordinates.
+    fn clipped(&self, px: i64, py: i64) -> f64 {
+        let (ox, oy) = (px as f64, py as f64);
+        let rel = self.corners.map(|p| (p.0 - ox, p.1 - oy));
+        Poly::from(&rel).clip::<0, true>(0.0).clip::<0, false>(1.0).clip::<1, true>(0.0).clip::<1, false>(1.0).area()
+    }
+}
+
 /// ∫₀ˣ sqrt(r² - t²) dt for |x| <= r.
 fn chord_integral(x: f64, r: f64) -> f64 {
     0.5 * (x * (r * r - x * x).max(0.0).sqrt() + r * r * (x / r).clamp(-1.0, 1.0).asin())
