@@ -34,9 +34,20 @@
 //! GL_LINE_SMOOTH (3.4.2, "Antialiasing"): the rectangle of the smooth
 //! width centred on the segment, by coverage (`smooth_line`, `smooth`);
 //! stipple counts 1 x width rectangles instead of fragments.
+//!
+//! Two paths: the reference (`SOFTGL_REFERENCE=1`) shades each fragment
+//! through `fragment::shade_fragment`; the fast path hands the same
+//! fragments to `runs::Sink` (a width-w column or row, a smooth line's row
+//! piece), computes the colour once when it cannot vary along the segment,
+//! depth only when it is tested, steps the column's line height instead
+//! of dividing (`fragments_stepped`) and takes unstippled smooth lines'
+//! coverage in closed form (`smooth::LineRect`). Aliased results are
+//! identical (tests/line_reference_diff.rs); smooth coverages agree within
+//! 1e-9 (see `smooth::LineRect`).
 
 use super::clip::Plane;
 use super::fragment;
+use super::runs;
 use super::setup::{to_window, ONE};
 use super::smooth;
 use super::vertex::ClipVertex;
@@ -223,6 +234,67 @@ pub fn fragments(xa: i64, ya: i64, xb: i64, yb: i64, lo: i64, hi: i64, mut emit:
     }
 }
 
+/// [`fragments`] for the fast path: the same fragments in the same order,
+/// with the column's line height stepped exactly instead of divided: the
+/// quotient and remainder of `dn * (cm - ma)` by `dm` advance by those of
+/// `dn * ONE` per column (one compare carries the remainder), so no
+/// hardware division runs per column.
+pub fn fragments_stepped(xa: i64, ya: i64, xb: i64, yb: i64, lo: i64, hi: i64, mut emit: impl FnMut(i64, i64)) {
+    let (dx, dy) = (xb - xa, yb - ya);
+    if dx == 0 && dy == 0 {
+        return;
+    }
+    let x_major = dx.abs() >= dy.abs();
+    let (ma, na, mb, nb) = if x_major { (xa, ya, xb, yb) } else { (ya, xa, yb, xb) };
+    let (dm, dn) = (mb - ma, nb - na);
+    let first = (floor_div(ma.min(mb), ONE) - 1).max(lo);
+    let last = (floor_div(ma.max(mb), ONE) + 1).min(hi - 1);
+    if first > last {
+        return;
+    }
+    let step = if dm > 0 { 1 } else { -1 };
+    let (mut p, end) = if dm > 0 { (first, last) } else { (last, first) };
+    let (lo_m, hi_m) = (ma.min(mb), ma.max(mb));
+    // a = dn * (cm - ma) = quot * dm + rem, 0 <= rem < |dm| (div_euclid).
+    let cm0 = p * ONE + ONE / 2;
+    let a = dn * (cm0 - ma);
+    let (mut quot, mut rem) = (a.div_euclid(dm), a.rem_euclid(dm));
+    let da = dn * ONE * step;
+    let (dq, dr) = (da.div_euclid(dm), da.rem_euclid(dm));
+    let (adm, sdm) = (dm.abs(), dm.signum());
+    loop {
+        let cm = p * ONE + ONE / 2;
+        let n_at = na + quot;
+        let r0 = n_at.div_euclid(ONE);
+        let interior = lo_m <= cm - ONE / 2 - 1 && hi_m >= cm + ONE / 2 + 1;
+        for q in r0 - 1..=r0 + 1 {
+            let cn = q * ONE + ONE / 2;
+            let exact = || if x_major { diamond_exit(xa, ya, xb, yb, cm, cn) } else { diamond_exit(xa, ya, xb, yb, cn, cm) };
+            let hit = match interior.then(|| interior_hit(ma, na, dm, dn, cm, cn)).flatten() {
+                Some(h) => h,
+                None => exact(),
+            };
+            if hit {
+                if x_major {
+                    emit(p, q)
+                } else {
+                    emit(q, p)
+                }
+            }
+        }
+        if p == end {
+            break;
+        }
+        p += step;
+        quot += dq;
+        rem += dr;
+        if rem >= adm {
+            rem -= adm;
+            quot += sdm;
+        }
+    }
+}
+
 /// Draws one segment given in clip coordinates. `flat_color` is the
 /// provoking vertex's colour; `s` is the stipple counter.
 pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &ClipVertex, b: &ClipVertex, flat_color: Vec4, s: &mut u32) {
@@ -279,6 +351,38 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
     };
     // t of the pixel centre projected on the segment (3.4.1 equation 3.6).
     let t_at = |px: i64, py: i64| (((px as f64 + 0.5 - fxa) * fdx + (py as f64 + 0.5 - fya) * fdy) / len2).clamp(0.0, 1.0);
+    if !rs.reference {
+        // The fast path: the same fragments, colours and depths, handed to
+        // the framebuffer in runs (`runs`), depth only when tested, the
+        // colour once per segment when it cannot vary along it (no texture
+        // or fog, flat shading or equal colours at both ends: the
+        // interpolation of equal f32 values rounds back to them).
+        let sink = runs::Sink::new(fs, fb);
+        let depth = |px: i64, py: i64| fragment::depth_to_fixed(wa.z + t_at(px, py) * (wb.z - wa.z));
+        let constant = (rs.texture.is_none() && rs.fog.is_none() && (flat.is_some() || wa.color == wb.color)).then(|| color_at(0.0));
+        let hw = smooth::smooth_size(lp.width) / 2.0;
+        match (rs.smooth.line, constant) {
+            // Stippled smooth lines keep the reference path below.
+            (Some(_), _) if lp.stipple.is_some() => {}
+            (Some(_), Some(c)) => {
+                let (cu, cw) = (fragment::color_to_u8(c), c.w as f64);
+                return smooth_line_fast(rs, fb, &sink, [fxa, fya, fdx, fdy], hw, depth, |_, _| (cu, cw));
+            }
+            (Some(_), None) => {
+                return smooth_line_fast(rs, fb, &sink, [fxa, fya, fdx, fdy], hw, depth, |px, py| {
+                    let c = color_at(t_at(px, py));
+                    (fragment::color_to_u8(c), c.w as f64)
+                });
+            }
+            (None, Some(c)) => {
+                let cu = fragment::color_to_u8(c);
+                return aliased_fast(rs, fb, &sink, lp, [sxa, sya, sxb, syb], x_major, w, (lo, hi), s, depth, |_, _| cu);
+            }
+            (None, None) => {
+                return aliased_fast(rs, fb, &sink, lp, [sxa, sya, sxb, syb], x_major, w, (lo, hi), s, depth, |px, py| fragment::color_to_u8(color_at(t_at(px, py))));
+            }
+        }
+    }
     if let Some(quality) = rs.smooth.line {
         return smooth_line(rs, fb, lp, [fxa, fya, fdx, fdy], s, quality, |fb, px, py, cov| {
             let t = t_at(px, py);
@@ -315,6 +419,95 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
             }
         }
     });
+}
+
+/// The fast path's aliased segment: `fragments` and the stipple as in
+/// `draw_line`'s reference code, each width-1 fragment's column (x-major)
+/// or row (y-major) of `w` cut to the draw rectangle and run through `sink`.
+#[allow(clippy::too_many_arguments)]
+fn aliased_fast(
+    rs: &RenderState,
+    fb: &mut Framebuffer,
+    sink: &runs::Sink,
+    lp: &LineParams,
+    [sxa, sya, sxb, syb]: [i64; 4],
+    x_major: bool,
+    w: i64,
+    (lo, hi): (i64, i64),
+    s: &mut u32,
+    depth: impl Fn(i64, i64) -> u32,
+    color: impl Fn(i64, i64) -> [u8; 4],
+) {
+    let r = rs.draw_rect;
+    let (rx0, ry0, rx1, ry1) = (r.x0 as i64, r.y0 as i64, r.x1 as i64, r.y1 as i64);
+    let width = fb.width;
+    let (lo, hi) = if lp.stipple.is_some() { (i64::MIN / 4, i64::MAX / 4) } else { (lo, hi) };
+    fragments_stepped(sxa, sya, sxb, syb, lo, hi, |px, py| {
+        if let Some((repeat, pattern)) = lp.stipple {
+            let bit = (*s / repeat) % 16;
+            *s = s.wrapping_add(1);
+            if pattern & (1 << bit) == 0 {
+                return;
+            }
+        }
+        if x_major {
+            let (y0, y1) = (py.max(ry0), (py + w).min(ry1));
+            if px < rx0 || px >= rx1 || y0 >= y1 {
+                return;
+            }
+            let i0 = y0 as usize * width + px as usize;
+            sink.run(fb, i0, (y1 - y0) as usize, width, |k| depth(px, y0 + k as i64), |k| color(px, y0 + k as i64));
+        } else {
+            let (x0, x1) = (px.max(rx0), (px + w).min(rx1));
+            if py < ry0 || py >= ry1 || x0 >= x1 {
+                return;
+            }
+            let i0 = py as usize * width + x0 as usize;
+            sink.run(fb, i0, (x1 - x0) as usize, 1, |k| depth(x0 + k as i64, py), |k| color(x0 + k as i64, py));
+        }
+    });
+}
+
+/// The fast path's unstippled smooth segment [x, y, dx, dy] of half width
+/// `hw`: row by row, the pixels of positive coverage (`smooth::LineRect`)
+/// in runs through `sink`; `color` gives a pixel's colour and its alpha
+/// before coverage, which scales it as in `draw_line`'s reference code.
+fn smooth_line_fast(
+    rs: &RenderState,
+    fb: &mut Framebuffer,
+    sink: &runs::Sink,
+    [x, y, dx, dy]: [f64; 4],
+    hw: f64,
+    depth: impl Fn(i64, i64) -> u32,
+    color: impl Fn(i64, i64) -> ([u8; 4], f64),
+) {
+    let Some(lr) = smooth::LineRect::new(x, y, dx, dy, hw) else { return };
+    let r = rs.draw_rect;
+    let width = fb.width;
+    let mut cov: Vec<f64> = Vec::with_capacity(64);
+    for py in lr.rows(r) {
+        let cols = lr.cols(py, r);
+        cov.clear();
+        cov.extend(cols.clone().map(|px| lr.coverage(px, py)));
+        let mut k = 0;
+        while k < cov.len() {
+            if cov[k] <= 0.0 {
+                k += 1;
+                continue;
+            }
+            let start = k;
+            while k < cov.len() && cov[k] > 0.0 {
+                k += 1;
+            }
+            let x0 = cols.start + start as i64;
+            let covs = &cov[start..k];
+            sink.run(fb, py as usize * width + x0 as usize, k - start, 1, |j| depth(x0 + j as i64, py), |j| {
+                let (mut c, a) = color(x0 + j as i64, py);
+                c[3] = smooth::alpha_u8(a * covs[j]);
+                c
+            });
+        }
+    }
 }
 
 /// GL_LINE_SMOOTH (3.4.2, "Antialiasing"): the rectangle of the smooth
@@ -394,6 +587,32 @@ fn smooth_line(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The stepped enumeration gives the reference enumeration's
+    /// fragments in the same order, on segments of every slope and
+    /// direction, clipped to a column range or not.
+    #[test]
+    fn stepped_fragments_match() {
+        let mut seed = 9u64;
+        let mut rnd = |m: i64| {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 33) as i64).rem_euclid(m)
+        };
+        let mut total = 0;
+        for k in 0..20000 {
+            let unit = if k % 3 == 0 { ONE / 4 } else { 1 };
+            let span = if k % 5 == 0 { 400 } else { 40 };
+            let mut c = || rnd(span * ONE / unit) * unit - span / 2 * ONE;
+            let (xa, ya, xb, yb) = (c(), c(), c(), c());
+            let (lo, hi) = if k % 4 == 0 { (rnd(20) - 10, rnd(20) + 5) } else { (i64::MIN / 4, i64::MAX / 4) };
+            let (mut a, mut b) = (Vec::new(), Vec::new());
+            fragments(xa, ya, xb, yb, lo, hi, |x, y| a.push((x, y)));
+            fragments_stepped(xa, ya, xb, yb, lo, hi, |x, y| b.push((x, y)));
+            assert_eq!(a, b, "segment ({xa},{ya})-({xb},{yb}) columns {lo}..{hi}");
+            total += a.len();
+        }
+        assert!(total > 100_000, "{total}");
+    }
 
     /// The interior shortcut agrees with the exact rule wherever it
     /// answers, on segments whose coordinates often lie on pixel centres,

@@ -17,6 +17,7 @@ pub mod point;
 pub mod polygon_mode;
 pub mod pool;
 pub mod raster;
+pub mod runs;
 pub mod setup;
 pub mod shade_state;
 pub mod smooth;

@@ -12,6 +12,7 @@
 //! fade threshold.
 
 use super::fragment;
+use super::runs;
 use super::setup::{to_window, ONE};
 use super::smooth;
 use super::vertex::ClipVertex;
@@ -80,6 +81,19 @@ pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVer
     let (x0, y0) = (first_pixel(wv.x, w), first_pixel(wv.y, w));
     let color = fragment::color_to_u8(c);
     let xs = x0.max(r.x0 as i64)..(x0 + w).min(r.x1 as i64);
+    if xs.is_empty() {
+        return;
+    }
+    if !rs.reference {
+        // The fast path: one run per row, the depth converted once.
+        let sink = runs::Sink::new(&rs.fragment, fb);
+        let z = fragment::depth_to_fixed(wv.z);
+        for y in y0.max(r.y0 as i64)..(y0 + w).min(r.y1 as i64) {
+            let i0 = fb.index(xs.start as usize, y as usize);
+            sink.run(fb, i0, (xs.end - xs.start) as usize, 1, |_| z, |_| color);
+        }
+        return;
+    }
     for y in y0.max(r.y0 as i64)..(y0 + w).min(r.y1 as i64) {
         for x in xs.clone() {
             fragment::shade_fragment(&rs.fragment, fb, x as usize, y as usize, wv.z, color);
