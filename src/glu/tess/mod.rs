@@ -11,9 +11,15 @@
 //! GL_TRIANGLES (counter-clockwise about the normal), or GL_LINE_LOOPs with
 //! GLU_TESS_BOUNDARY_ONLY (region on the left: exteriors counter-clockwise,
 //! holes clockwise). Vertices closer than 2^-42 of the polygon's extent are
-//! merged (the first one's data is kept, COMBINE is not called for them);
-//! GLU_TESS_TOLERANCE is stored and reported but the merge distance is that
-//! fixed one. Zero-area triangles (collinear vertices) are emitted rather
+//! merged (the first one's data is kept, COMBINE is not called for them).
+//! GLU_TESS_TOLERANCE is stored and reported but not honoured: the merge
+//! distance is that fixed one whatever the tolerance. The specification
+//! makes it a hint (vertices and edges closer than tolerance times the
+//! largest coordinate *may* be merged), and merging farther apart moves
+//! vertices, so the output would no longer cover exactly the region the
+//! rule selects from the input (what the exact-coverage tests check), to
+//! gain nothing the fixed distance does not already (coincident and
+//! nearly coincident vertices are merged at any tolerance). Zero-area triangles (collinear vertices) are emitted rather
 //! than dropped, so the mesh has no T-junctions and edge flags are exact:
 //! with an EDGE_FLAG callback, an edge is flagged iff it is an edge of the
 //! selected region's boundary.

@@ -51,7 +51,9 @@ pub struct Scratch {
 /// points can create new near-crossings. Returns false if the combiner aborted.
 ///
 /// Only the first pass tests all candidate pairs. A later one tests the
-/// pieces that meet at a vertex where the previous pass split: pieces lie
+/// pieces that meet at a vertex where the previous pass split (for an end
+/// within EPS of the other piece: they share that vertex, so they cannot
+/// cross): pieces lie
 /// within rounding of their parent edges, so pieces of edges that neither
 /// crossed nor came within EPS cannot meet, and what rounding can do near
 /// a new vertex (a piece folding onto another, a sliver between three
@@ -59,14 +61,14 @@ pub struct Scratch {
 /// shares another vertex with it.
 pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, comb: &mut dyn Combiner, sc: &mut Scratch) -> bool {
     candidate_pairs(verts, segs, sc);
-    for _pass in 0..4 {
-        sc.splits.clear();
-        for k in 0..sc.pairs.len() {
-            let (i, j) = sc.pairs[k];
-            if !intersect(verts, grid, segs, i as usize, j as usize, comb, &mut sc.splits) {
-                return false;
-            }
+    sc.splits.clear();
+    for k in 0..sc.pairs.len() {
+        let (i, j) = sc.pairs[k];
+        if !intersect(verts, grid, segs, i as usize, j as usize, comb, &mut sc.splits) {
+            return false;
         }
+    }
+    for pass in 0..4 {
         if sc.splits.is_empty() {
             return true;
         }
@@ -117,20 +119,29 @@ pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, co
             }
         }
         std::mem::swap(segs, &mut sc.out);
-        incident_pairs(verts.len(), segs, sc);
+        if pass == 3 {
+            break;
+        }
+        touching_at_split_vertices(verts, segs, sc);
     }
     true
 }
 
-/// The next pass's pairs: the pieces meeting at each vertex the last pass
-/// split at (chained lists per vertex: `seg_start` heads, `stamp` links).
-fn incident_pairs(nv: usize, segs: &[Seg], sc: &mut Scratch) {
+/// A later pass: the pieces meeting at each vertex the last pass split at,
+/// tested pairwise (chained lists per vertex: `seg_start` heads, `inc`
+/// links) for an endpoint within EPS of the other piece, into `sc.splits`.
+/// Such pieces share that vertex, so this is all [`intersect`] would find
+/// for them (its crossing test needs four distinct ends); done here without
+/// the list of pairs, in the order `intersect` would push.
+fn touching_at_split_vertices(verts: &[Vert], segs: &[Seg], sc: &mut Scratch) {
     const NONE: u32 = u32::MAX;
+    let nv = verts.len();
     sc.hot.clear();
     sc.hot.resize(nv, false);
     for x in &sc.splits {
         sc.hot[x.2 as usize] = true;
     }
+    sc.splits.clear();
     // (vertex, segment) incidences at hot vertices, as linked lists.
     sc.seg_start.clear();
     sc.seg_start.resize(nv, NONE);
@@ -143,14 +154,26 @@ fn incident_pairs(nv: usize, segs: &[Seg], sc: &mut Scratch) {
             }
         }
     }
-    sc.pairs.clear();
+    let out = &mut sc.splits;
     for v in 0..nv {
         let mut a = sc.seg_start[v];
         while a != NONE {
             let mut b = sc.inc[a as usize].1;
             while b != NONE {
-                let (i, j) = (sc.inc[a as usize].0, sc.inc[b as usize].0);
-                sc.pairs.push((i.min(j), i.max(j)));
+                let (x, y) = (sc.inc[a as usize].0, sc.inc[b as usize].0);
+                let (i, j) = (x.min(y), x.max(y));
+                let (s, r) = (segs[i as usize], segs[j as usize]);
+                // The ends other than v (s and r both have v as an end).
+                let p = if s.a == v { s.b } else { s.a };
+                let q = if r.a == v { r.b } else { r.a };
+                if p != q {
+                    if let Some(t) = lies_on(verts[q].p, verts[s.a].p, verts[s.b].p) {
+                        out.push((i, t, q as u32));
+                    }
+                    if let Some(t) = lies_on(verts[p].p, verts[r.a].p, verts[r.b].p) {
+                        out.push((j, t, p as u32));
+                    }
+                }
                 b = sc.inc[b as usize].1;
             }
             a = sc.inc[a as usize].1;
@@ -287,28 +310,31 @@ fn candidate_pairs(verts: &[Vert], segs: &[Seg], sc: &mut Scratch) {
     }
 }
 
+/// If p lies within EPS of the open segment a-b, its parameter along it.
+/// (Cheap rejections first: no division unless it lies on.)
+#[inline]
+fn lies_on(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Option<f64> {
+    let dx = b[0] - a[0];
+    let dy = b[1] - a[1];
+    let l2 = dx * dx + dy * dy;
+    if !(l2 > 0.0) {
+        return None;
+    }
+    let dot = (p[0] - a[0]) * dx + (p[1] - a[1]) * dy;
+    if !(dot > 0.0 && dot < l2) {
+        return None;
+    }
+    // Distance to the line at most EPS: orient² <= EPS² · l2.
+    let o = orient(a, b, p);
+    (o * o <= EPS * EPS * l2).then(|| dot / l2)
+}
+
 /// Tests edges i and j; pushes their split points. False if the combiner aborted.
 fn intersect(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &[Seg], i: usize, j: usize, comb: &mut dyn Combiner, out: &mut Vec<(u32, f64, u32)>) -> bool {
     let (s, r) = (segs[i], segs[j]);
     let (a, b, c, d) = (verts[s.a].p, verts[s.b].p, verts[r.a].p, verts[r.b].p);
     let before = out.len();
     // Endpoints lying on the other edge's interior (touching, collinear overlaps).
-    // (Cheap rejections first: no division or square root unless it lies on.)
-    let lies_on = |p: [f64; 2], a: [f64; 2], b: [f64; 2]| -> Option<f64> {
-        let dx = b[0] - a[0];
-        let dy = b[1] - a[1];
-        let l2 = dx * dx + dy * dy;
-        if !(l2 > 0.0) {
-            return None;
-        }
-        let dot = (p[0] - a[0]) * dx + (p[1] - a[1]) * dy;
-        if !(dot > 0.0 && dot < l2) {
-            return None;
-        }
-        // Distance to the line at most EPS: orient² <= EPS² · l2.
-        let o = orient(a, b, p);
-        (o * o <= EPS * EPS * l2).then(|| dot / l2)
-    };
     for &(v, p) in &[(r.a, c), (r.b, d)] {
         if v != s.a && v != s.b {
             if let Some(t) = lies_on(p, a, b) {
