@@ -203,34 +203,61 @@ pub fn fragments(xa: i64, ya: i64, xb: i64, yb: i64, lo: i64, hi: i64, mut emit:
     }
     let step = if dm > 0 { 1 } else { -1 };
     let (mut p, end) = if dm > 0 { (first, last) } else { (last, first) };
+    let seg = Segment { xa, ya, xb, yb, x_major, ma, na, dm, dn, lo_m: ma.min(mb), hi_m: ma.max(mb) };
     loop {
         let cm = p * ONE + ONE / 2;
         // Minor coordinate of the line at the column centre (floored).
         // (|dn * (cm - ma)| < 2^57: exact in i64, one hardware division.)
         let n_at = na + (dn * (cm - ma)).div_euclid(dm);
-        let r0 = n_at.div_euclid(ONE);
-        // The segment spans this column's diamonds from side to side (both
-        // endpoints at least one unit beyond them): see `interior_hit`.
-        let interior = ma.min(mb) <= cm - ONE / 2 - 1 && ma.max(mb) >= cm + ONE / 2 + 1;
-        for q in r0 - 1..=r0 + 1 {
-            let cn = q * ONE + ONE / 2;
-            let exact = || if x_major { diamond_exit(xa, ya, xb, yb, cm, cn) } else { diamond_exit(xa, ya, xb, yb, cn, cm) };
-            let hit = match interior.then(|| interior_hit(ma, na, dm, dn, cm, cn)).flatten() {
-                Some(h) => h,
-                None => exact(),
-            };
-            if hit {
-                if x_major {
-                    emit(p, q)
-                } else {
-                    emit(q, p)
-                }
-            }
-        }
+        column_hits(&seg, p, n_at, &mut emit);
         if p == end {
             break;
         }
         p += step;
+    }
+}
+
+/// A segment in window fixed point (`ONE` per pixel) as the column walks of
+/// [`fragments`] and [`fragments_stepped`] see it: its ends, its major
+/// axis, and its major/minor start, deltas and major extent.
+struct Segment {
+    xa: i64,
+    ya: i64,
+    xb: i64,
+    yb: i64,
+    x_major: bool,
+    ma: i64,
+    na: i64,
+    dm: i64,
+    dn: i64,
+    lo_m: i64,
+    hi_m: i64,
+}
+
+/// The diamond-exit test for the three candidate pixels of major column
+/// `p`, where the line's minor coordinate at the column centre is `n_at`
+/// (floored); emits the hits as (x, y) in minor order.
+#[inline(always)]
+fn column_hits(s: &Segment, p: i64, n_at: i64, emit: &mut impl FnMut(i64, i64)) {
+    let cm = p * ONE + ONE / 2;
+    let r0 = n_at.div_euclid(ONE);
+    // The segment spans this column's diamonds from side to side (both
+    // endpoints at least one unit beyond them): see `interior_hit`.
+    let interior = s.lo_m <= cm - ONE / 2 - 1 && s.hi_m >= cm + ONE / 2 + 1;
+    for q in r0 - 1..=r0 + 1 {
+        let cn = q * ONE + ONE / 2;
+        let hit = match interior.then(|| interior_hit(s.ma, s.na, s.dm, s.dn, cm, cn)).flatten() {
+            Some(h) => h,
+            None if s.x_major => diamond_exit(s.xa, s.ya, s.xb, s.yb, cm, cn),
+            None => diamond_exit(s.xa, s.ya, s.xb, s.yb, cn, cm),
+        };
+        if hit {
+            if s.x_major {
+                emit(p, q)
+            } else {
+                emit(q, p)
+            }
+        }
     }
 }
 
@@ -254,7 +281,7 @@ pub fn fragments_stepped(xa: i64, ya: i64, xb: i64, yb: i64, lo: i64, hi: i64, m
     }
     let step = if dm > 0 { 1 } else { -1 };
     let (mut p, end) = if dm > 0 { (first, last) } else { (last, first) };
-    let (lo_m, hi_m) = (ma.min(mb), ma.max(mb));
+    let seg = Segment { xa, ya, xb, yb, x_major, ma, na, dm, dn, lo_m: ma.min(mb), hi_m: ma.max(mb) };
     // a = dn * (cm - ma) = quot * dm + rem, 0 <= rem < |dm| (div_euclid).
     let cm0 = p * ONE + ONE / 2;
     let a = dn * (cm0 - ma);
@@ -263,25 +290,7 @@ pub fn fragments_stepped(xa: i64, ya: i64, xb: i64, yb: i64, lo: i64, hi: i64, m
     let (dq, dr) = (da.div_euclid(dm), da.rem_euclid(dm));
     let (adm, sdm) = (dm.abs(), dm.signum());
     loop {
-        let cm = p * ONE + ONE / 2;
-        let n_at = na + quot;
-        let r0 = n_at.div_euclid(ONE);
-        let interior = lo_m <= cm - ONE / 2 - 1 && hi_m >= cm + ONE / 2 + 1;
-        for q in r0 - 1..=r0 + 1 {
-            let cn = q * ONE + ONE / 2;
-            let exact = || if x_major { diamond_exit(xa, ya, xb, yb, cm, cn) } else { diamond_exit(xa, ya, xb, yb, cn, cm) };
-            let hit = match interior.then(|| interior_hit(ma, na, dm, dn, cm, cn)).flatten() {
-                Some(h) => h,
-                None => exact(),
-            };
-            if hit {
-                if x_major {
-                    emit(p, q)
-                } else {
-                    emit(q, p)
-                }
-            }
-        }
+        column_hits(&seg, p, na + quot, &mut emit);
         if p == end {
             break;
         }
