@@ -14,6 +14,9 @@
  *   BUFFER_MAP_OFFSET / LENGTH / ACCESS_FLAGS report the mapping; with
  *   FLUSH_EXPLICIT, flushed writes are in the store after unmapping; the
  *   extension's INVALID_VALUE / INVALID_OPERATION cases.
+ * - glPushClientAttrib(CLIENT_PIXEL_STORE_BIT) saves the pack and unpack
+ *   buffer bindings with the pixel-store modes; the vertex-array bit does
+ *   not; a buffer deleted since the push comes back unbound.
  */
 #include "harness.h"
 #include <stdint.h>
@@ -259,11 +262,50 @@ static void map_range(void)
     glDeleteBuffers(1, &b);
 }
 
+static GLint binding(GLenum pname)
+{
+    GLint v = -1;
+    glGetIntegerv(pname, &v);
+    return v;
+}
+
+static void client_attrib(void)
+{
+    GLuint b[3];
+    glGenBuffers(3, b);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, b[0]);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, b[1]);
+    glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, b[2]);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glPopClientAttrib();
+    h_expect(binding(GL_PIXEL_PACK_BUFFER_BINDING) == (GLint)b[0] && binding(GL_PIXEL_UNPACK_BUFFER_BINDING) == (GLint)b[1],
+             "pixel-store pop restores the pack/unpack bindings: %d %d, want %u %u",
+             binding(GL_PIXEL_PACK_BUFFER_BINDING), binding(GL_PIXEL_UNPACK_BUFFER_BINDING), b[0], b[1]);
+
+    glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, b[2]);
+    glPopClientAttrib();
+    h_expect(binding(GL_PIXEL_PACK_BUFFER_BINDING) == (GLint)b[2],
+             "vertex-array pop leaves the pack binding: %d, want %u", binding(GL_PIXEL_PACK_BUFFER_BINDING), b[2]);
+
+    glPushClientAttrib(GL_CLIENT_ALL_ATTRIB_BITS);
+    glDeleteBuffers(1, &b[2]);
+    glPopClientAttrib();
+    h_expect(binding(GL_PIXEL_PACK_BUFFER_BINDING) == 0 && binding(GL_PIXEL_UNPACK_BUFFER_BINDING) == (GLint)b[1],
+             "a buffer deleted since the push comes back unbound: %d %d, want 0 %u",
+             binding(GL_PIXEL_PACK_BUFFER_BINDING), binding(GL_PIXEL_UNPACK_BUFFER_BINDING), b[1]);
+    h_expect_no_error("client attrib with pixel buffers");
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glDeleteBuffers(2, b);
+}
+
 int main(void)
 {
     h_init(8, 8);
     pbo_unpack();
     pbo_pixels();
     map_range();
+    client_attrib();
     return h_finish();
 }

@@ -103,7 +103,18 @@ struct SavedTexture {
 #[derive(Default)]
 pub struct AttribStacks {
     pub server: Vec<Saved>,
-    pub client: Vec<(u32, super::pixels::PixelStore, super::arrays::ClientArrays)>,
+    pub client: Vec<ClientAttrib>,
+}
+
+/// One glPushClientAttrib entry. The pixel-store group includes the pixel
+/// pack and unpack buffer bindings (ARB_pixel_buffer_object's state table:
+/// attribute "pixel-store"); the vertex-array group the array buffer
+/// bindings (GL 1.5, table 6.8).
+pub struct ClientAttrib {
+    mask: u32,
+    store: super::pixels::PixelStore,
+    pixel_buffers: [u32; 2],
+    arrays: super::arrays::ClientArrays,
 }
 
 impl Context {
@@ -282,15 +293,22 @@ impl Context {
             return self.set_error(GL_STACK_OVERFLOW);
         }
         let arrays = self.client_arrays();
-        self.attrib.client.push((mask, self.pixel_store, arrays));
+        let pixel_buffers = [self.buffers.pixel_pack, self.buffers.pixel_unpack];
+        self.attrib.client.push(ClientAttrib { mask, store: self.pixel_store, pixel_buffers, arrays });
     }
 
     pub fn pop_client_attrib(&mut self) {
-        let Some((mask, store, arrays)) = self.attrib.client.pop() else {
+        let Some(ClientAttrib { mask, store, pixel_buffers, arrays }) = self.attrib.client.pop() else {
             return self.set_error(GL_STACK_UNDERFLOW);
         };
         if mask & GL_CLIENT_PIXEL_STORE_BIT != 0 {
             self.pixel_store = store;
+            // A buffer deleted since the push comes back unbound, as its
+            // deletion left the binding.
+            let live = |b: u32| if b != 0 && !self.buffers.is_buffer(b) { 0 } else { b };
+            let [pack, unpack] = pixel_buffers.map(live);
+            self.buffers.pixel_pack = pack;
+            self.buffers.pixel_unpack = unpack;
         }
         if mask & super::arrays::GL_CLIENT_VERTEX_ARRAY_BIT != 0 {
             self.restore_client_arrays(arrays);
