@@ -6,7 +6,10 @@
  * draws with them and its pixels are checked); a list made in B is called
  * by A; deleting a texture in B deletes it for A; a context C made without
  * a share list sees none of them. Bindings stay per context: B's current
- * texture binding is its own.
+ * texture binding is its own. Renderbuffers and sampler objects are
+ * shared too (ARB_framebuffer_object, ARB_sampler_objects), framebuffer
+ * objects are not: B attaches A's renderbuffer to a framebuffer object of
+ * its own and reads what A drew into it.
  *
  * Part 2, two threads: A and B current at the same time in two threads.
  * The main thread keeps redefining list L (each definition sets a colour
@@ -77,6 +80,49 @@ static void *caller(void *arg)
     }
     OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
     return NULL;
+}
+
+/* A draws red into a renderbuffer through its framebuffer object and makes
+ * a sampler; B sees both, but not A's framebuffer object. */
+static void share_renderbuffers_and_samplers(void)
+{
+    GLuint rb, fbo, bfbo, smp;
+    GLint v = 0;
+    unsigned char p[4] = {0, 0, 0, 0};
+    OSMesaMakeCurrent(A, abuf, GL_UNSIGNED_BYTE, S, S);
+    glGenRenderbuffers(1, &rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, S, S);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+    glClearColor(1, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glClearColor(0, 0, 0, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glGenSamplers(1, &smp);
+    glSamplerParameteri(smp, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glFinish();
+    h_expect_no_error("A makes a renderbuffer and a sampler");
+
+    OSMesaMakeCurrent(B, bbuf, GL_UNSIGNED_BYTE, S, S);
+    h_expect(glIsRenderbuffer(rb), "B sees A's renderbuffer");
+    h_expect(!glIsFramebuffer(fbo), "B does not see A's framebuffer object");
+    h_expect(glIsSampler(smp), "B sees A's sampler");
+    glGetSamplerParameteriv(smp, GL_TEXTURE_MAG_FILTER, &v);
+    h_expect(v == GL_NEAREST, "B reads the sampler's MAG_FILTER A set: 0x%x", v);
+    glGenFramebuffers(1, &bfbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, bfbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+    h_expect(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE, "B's framebuffer with A's renderbuffer is complete");
+    glReadPixels(S / 2, S / 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+    h_expect(p[0] == 255 && p[1] == 0 && p[2] == 0, "B reads what A drew into the renderbuffer: %d,%d,%d", p[0], p[1], p[2]);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &bfbo);
+    h_expect_no_error("B uses A's renderbuffer and sampler");
+
+    OSMesaMakeCurrent(C, cbuf, GL_UNSIGNED_BYTE, S, S);
+    h_expect(!glIsRenderbuffer(rb) && !glIsSampler(smp), "C sees neither");
 }
 
 int main(void)
@@ -152,6 +198,8 @@ int main(void)
     glCallList(blist);
     pixel(p);
     h_expect(p[0] == 255 && p[1] == 0 && p[2] == 255, "A calls B's list: %d,%d,%d", p[0], p[1], p[2]);
+
+    share_renderbuffers_and_samplers();
 
     /* C shares nothing. */
     OSMesaMakeCurrent(C, cbuf, GL_UNSIGNED_BYTE, S, S);

@@ -23,8 +23,9 @@
 //! and 16-bit textures pass through an 8-bit staging buffer only where
 //! rendering touched them). Renderbuffers keep the staging formats.
 //!
-//! Objects are per context (not shared), as ARB_framebuffer_object says
-//! of framebuffer objects; one colour attachment (MAX_COLOR_ATTACHMENTS 1);
+//! Framebuffer objects are per context, as ARB_framebuffer_object says;
+//! renderbuffers are shared within a share group (`share`). One colour
+//! attachment (MAX_COLOR_ATTACHMENTS 1);
 //! no multisampling (MAX_SAMPLES 0).
 
 use super::context::Context;
@@ -181,6 +182,21 @@ pub struct FboState {
     /// The read framebuffer's staging copy when it is an object other
     /// than the draw framebuffer.
     pub read_staging: Option<Framebuffer>,
+}
+
+/// A share group's renderbuffers (their names and storage).
+#[derive(Default)]
+pub struct SharedRenderbuffers {
+    renderbuffers: HashMap<u32, Renderbuffer>,
+    reserved: HashSet<u32>,
+}
+
+impl FboState {
+    /// Exchanges this context's renderbuffers with a share group's.
+    pub fn swap_renderbuffers(&mut self, t: &mut SharedRenderbuffers) {
+        std::mem::swap(&mut self.renderbuffers, &mut t.renderbuffers);
+        std::mem::swap(&mut self.rb_reserved, &mut t.reserved);
+    }
 }
 
 fn gen_names(used: impl Fn(u32) -> bool, reserved: &mut HashSet<u32>, n: usize) -> Vec<u32> {
@@ -1026,7 +1042,11 @@ impl Context {
                 let rw = rb.width as usize;
                 for &i in pixels {
                     let c = self.fb.color[i];
-                    rb.color[(i / w) * rw + i % w] = to_bytes(base.expand(c.map(|v| UNORM8[v as usize])));
+                    // Bounds-checked: a context sharing the renderbuffer
+                    // may have given it new storage meanwhile.
+                    if let Some(t) = rb.color.get_mut((i / w) * rw + i % w) {
+                        *t = to_bytes(base.expand(c.map(|v| UNORM8[v as usize])));
+                    }
                 }
                 false
             }

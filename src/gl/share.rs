@@ -1,8 +1,17 @@
 //! Object sharing between contexts (GL 1.5 appendix D.1; GLX 1.4 section
 //! 3.3.7's share_list, wglShareLists, OSMesaCreateContextExt's sharelist):
 //! contexts of one share group see the same display lists, texture objects
-//! (not the default, name-0 ones) and buffer objects. Everything else,
-//! bindings included, stays per context.
+//! (not the default, name-0 ones), buffer objects, renderbuffers
+//! (ARB_framebuffer_object: framebuffer objects themselves are not shared)
+//! and sampler objects (ARB_sampler_objects). Everything else, bindings
+//! included, stays per context.
+//!
+//! A renderbuffer another context draws into through its framebuffer
+//! object shows that drawing once that context has written its staging
+//! copy back (it does on unbinding, and before anything of its own reads
+//! the image; see `framebuffer_object`), which meets the spec's rule that
+//! another context sees the results after the drawing context's
+//! glFinish/glFlush and a rebind.
 //!
 //! How: the shared tables live in a [`ShareGroup`] behind a mutex. A
 //! context of a group holds empty tables of its own; for the length of each
@@ -35,6 +44,8 @@ pub struct Tables {
     textures: HashMap<u32, TexObject>,
     texture_names: HashSet<u32>,
     buffers: Buffers,
+    fbo: super::framebuffer_object::SharedRenderbuffers,
+    samplers: super::texture::sampler::SharedSamplers,
 }
 
 struct Inner {
@@ -67,6 +78,8 @@ impl Context {
         std::mem::swap(&mut self.texture.objects, &mut t.textures);
         std::mem::swap(&mut self.texture.reserved, &mut t.texture_names);
         self.buffers.swap_objects(&mut t.buffers);
+        self.fbo.swap_renderbuffers(&mut t.fbo);
+        self.samplers.swap_objects(&mut t.samplers);
     }
 }
 

@@ -4,8 +4,8 @@
 //! A unit with a sampler bound samples its texture with the sampler's
 //! state in place of the texture's own (completeness follows the
 //! sampler's minification filter); BASE_LEVEL, MAX_LEVEL and
-//! DEPTH_TEXTURE_MODE stay the texture's. Samplers are per context here
-//! (the extension shares them; softgl's share groups do not yet).
+//! DEPTH_TEXTURE_MODE stay the texture's. Sampler objects are shared
+//! within a share group (`gl::share`); unit bindings are per context.
 
 use super::enums::*;
 use crate::gl::context::Context;
@@ -103,6 +103,21 @@ pub struct Samplers {
     /// The sampler bound to each unit (0: none).
     pub bound: [u32; MAX_UNITS],
     next: u32,
+}
+
+/// A share group's sampler objects.
+#[derive(Default)]
+pub struct SharedSamplers {
+    objects: std::collections::HashMap<u32, Params>,
+}
+
+impl Samplers {
+    /// Exchanges this context's sampler objects with a share group's
+    /// (names come from a per-context counter that skips names in use, so
+    /// contexts of a group never hand out the same one).
+    pub fn swap_objects(&mut self, t: &mut SharedSamplers) {
+        std::mem::swap(&mut self.objects, &mut t.objects);
+    }
 }
 
 /// Overrides a texture's parameters with a sampler's.
