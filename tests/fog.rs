@@ -70,7 +70,7 @@ fn per_vertex_and_per_fragment_agree_for_linear_fog() {
             c.execute(&Command::Vertex([v[0], v[1], v[2], 1.0]));
         }
         c.execute(&Command::End);
-        c.fb.color.clone()
+        c.fb.color.to_vec()
     };
     let (a, b) = (draw(GL_NICEST), draw(GL_FASTEST));
     for (p, q) in a.iter().zip(&b) {

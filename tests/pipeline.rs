@@ -212,7 +212,7 @@ fn display_list_replays_like_immediate_mode() {
                 c.submit(cmd);
             }
         }
-        c.fb.color.clone()
+        c.fb.color.to_vec()
     };
     let a = draw(&mut context(24, 24), false);
     let b = draw(&mut context(24, 24), true);

@@ -519,11 +519,11 @@ fn copy_pixels_overlap() {
             c.fb.depth[i] = rng.next() & 0xFF_FFFF;
             c.fb.stencil[i] = rng.next() as u8;
         }
-        let old = (c.fb.color.clone(), c.fb.depth.clone(), c.fb.stencil.clone());
+        let old = (c.fb.color.to_vec(), c.fb.depth.clone(), c.fb.stencil.clone());
         let (sx, sy, w, h) = (8, 5, 10, 6);
         window_pos(&mut c, (sx + dx) as f32, (sy + dy) as f32);
         c.execute(&Command::CopyPixels(sx, sy, w, h, GL_COLOR));
-        let copied = c.fb.color.clone();
+        let copied = c.fb.color.to_vec();
         // Depth copies write the raster colour too: mask it.
         c.execute(&Command::ColorMask([false; 4]));
         c.execute(&Command::Enable(GL_DEPTH_TEST));

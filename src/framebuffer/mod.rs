@@ -21,7 +21,10 @@
 //! Allocation is fallible: a surface too large for memory is reported, never
 //! aborts the program.
 
+pub mod color;
 pub mod shared;
+
+pub use color::ColorBuffer;
 
 /// Largest surface side; also GL_MAX_VIEWPORT_DIMS. The rasterizer's
 /// fixed-point ranges are chosen for it (see `render::setup`).
@@ -71,9 +74,9 @@ pub struct Framebuffer {
     pub height: usize,
     pub config: Config,
     /// The colour buffer drawing writes (see the module comment).
-    pub color: Vec<[u8; 4]>,
+    pub color: ColorBuffer,
     /// Double-buffered surfaces: the other colour buffer; empty otherwise.
-    pub other_color: Vec<[u8; 4]>,
+    pub other_color: ColorBuffer,
     /// Whether `color` is the back buffer (never, single-buffered).
     pub color_is_back: bool,
     /// GL_FRONT_AND_BACK on a double-buffered surface: every colour write
@@ -154,8 +157,8 @@ impl Framebuffer {
             width: 0,
             height: 0,
             config,
-            color: Vec::new(),
-            other_color: Vec::new(),
+            color: ColorBuffer::default(),
+            other_color: ColorBuffer::default(),
             color_is_back: false,
             draw_both: false,
             front_dirty: false,
@@ -177,13 +180,13 @@ impl Framebuffer {
             let mut back = Vec::new();
             back.try_reserve_exact(self.color.len()).map_err(|_| AllocError)?;
             back.extend_from_slice(&self.color);
-            self.other_color = back;
+            self.other_color = ColorBuffer::owned(back);
             self.color_is_back = false;
         } else {
             if self.color_is_back {
                 std::mem::swap(&mut self.color, &mut self.other_color);
             }
-            self.other_color = Vec::new();
+            self.other_color = ColorBuffer::default();
             self.color_is_back = false;
             self.draw_both = false;
         }
@@ -247,7 +250,7 @@ impl Framebuffer {
 
     /// The colour buffers drawing writes: `color`, and `other_color` for
     /// FRONT_AND_BACK. For glClear and glAccum's RETURN.
-    pub fn draw_colors(&mut self) -> impl Iterator<Item = &mut Vec<[u8; 4]>> {
+    pub fn draw_colors(&mut self) -> impl Iterator<Item = &mut ColorBuffer> {
         let both = self.draw_both;
         std::iter::once(&mut self.color).chain(both.then_some(&mut self.other_color))
     }
@@ -298,8 +301,8 @@ impl Framebuffer {
             return Ok(());
         }
         let n = width * height;
-        let color = alloc(n, self.config.initial_color())?;
-        let other_color = if self.double { alloc(n, self.config.initial_color())? } else { Vec::new() };
+        let color = ColorBuffer::owned(alloc(n, self.config.initial_color())?);
+        let other_color = if self.double { ColorBuffer::owned(alloc(n, self.config.initial_color())?) } else { ColorBuffer::default() };
         let depth = if self.config.depth_bits > 0 { alloc(n, 0u32)? } else { Vec::new() };
         let stencil = if self.config.stencil_bits > 0 { alloc(n, 0u8)? } else { Vec::new() };
         let accum = if self.config.accum_bits > 0 { alloc(n, [0i16; 4])? } else { Vec::new() };
@@ -318,6 +321,32 @@ impl Framebuffer {
             accum,
             samples_passed: self.samples_passed,
         };
+        Ok(())
+    }
+
+    /// Draws into the caller's memory from now on (OSMesa, when its buffer
+    /// has the colour buffer's own layout; see `color`): the caller's
+    /// pixels are the colour buffer's contents. Single-buffered surfaces
+    /// only.
+    ///
+    /// # Safety
+    /// `ptr` must hold width x height RGBA8 pixels, rows bottom-up, valid
+    /// until the colour buffer is replaced (`own_color`, `resize`) or the
+    /// framebuffer dropped.
+    pub unsafe fn lend_color(&mut self, ptr: *mut u8) {
+        debug_assert!(!self.double);
+        self.color = ColorBuffer::lent(ptr, self.width * self.height);
+    }
+
+    /// Gives the colour buffer storage of its own again, holding what the
+    /// caller's memory holds now (no-op when it has its own already).
+    pub fn own_color(&mut self) -> Result<(), AllocError> {
+        if self.color.is_lent() {
+            let mut v = Vec::new();
+            v.try_reserve_exact(self.color.len()).map_err(|_| AllocError)?;
+            v.extend_from_slice(&self.color);
+            self.color = ColorBuffer::owned(v);
+        }
         Ok(())
     }
 

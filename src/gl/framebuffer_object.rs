@@ -903,7 +903,7 @@ impl Context {
                 }
             }
         }
-        let snap = Snapshot { color: if color.is_some() { fb.color.clone() } else { Vec::new() }, depth: fb.depth.clone(), stencil: fb.stencil.clone() };
+        let snap = Snapshot { color: if color.is_some() { fb.color.to_vec() } else { Vec::new() }, depth: fb.depth.clone(), stencil: fb.stencil.clone() };
         Some((fb, snap))
     }
 
@@ -1020,7 +1020,7 @@ impl Context {
         }
         // What was stored is the new baseline.
         self.fbo.snapshot = Snapshot {
-            color: if snap.color.is_empty() { Vec::new() } else { self.fb.color.clone() },
+            color: if snap.color.is_empty() { Vec::new() } else { self.fb.color.to_vec() },
             depth: self.fb.depth.clone(),
             stencil: self.fb.stencil.clone(),
         };

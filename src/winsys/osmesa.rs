@@ -1,11 +1,15 @@
 //! The OSMesa API (Mesa's off-screen interface, as of Mesa 22): contexts
 //! that render into a buffer the caller owns.
 //!
-//! Rendering goes to the context's own framebuffer; the image is converted
-//! into the caller's buffer (format, Y_UP, ROW_LENGTH) at glFlush, glFinish
-//! and when the context stops being current, as Mesa's gallium OSMesa does.
-//! At MakeCurrent the buffer's contents are loaded, so drawing without a
-//! clear keeps what the caller put there (as Mesa's classic OSMesa did).
+//! When the caller's buffer has the colour buffer's own layout (GL_RGBA,
+//! GL_UNSIGNED_BYTE, Y_UP, no ROW_LENGTH padding: the usual case), drawing
+//! goes straight into it (`framebuffer::color`), as Mesa's classic OSMesa
+//! did. Otherwise rendering goes to the context's own colour buffer and
+//! the image is converted into the caller's buffer (format, Y_UP,
+//! ROW_LENGTH) at glFlush, glFinish and when the context stops being
+//! current, as Mesa's gallium OSMesa does; at MakeCurrent the buffer's
+//! contents are loaded. Either way drawing without a clear keeps what the
+//! caller put there.
 
 use crate::api::types::*;
 use crate::framebuffer::{Config, Framebuffer, Present, MAX_SIZE};
@@ -70,6 +74,55 @@ fn is_format(f: u32) -> bool {
 }
 
 impl UserBuffer {
+    /// Is the buffer laid out as the colour buffer is, so that drawing can
+    /// go straight into it?
+    fn is_direct(&self) -> bool {
+        self.format == GL_RGBA && self.ty == GL_UNSIGNED_BYTE && self.y_up && self.row_pixels == self.width
+    }
+
+    /// OSMesaMakeCurrent's binding: points `fb`'s colour buffer at this
+    /// buffer when its layout allows, else gives `fb` storage of its own
+    /// loaded from it (false: out of memory).
+    ///
+    /// # Safety
+    /// The buffer must be valid as OSMesaMakeCurrent's contract says.
+    unsafe fn attach(&self, fb: &mut Framebuffer) -> bool {
+        if self.is_direct() && fb.width == self.width && fb.height == self.height && !fb.is_double_buffered() {
+            fb.lend_color(self.ptr);
+            return true;
+        }
+        if fb.color.is_lent() {
+            // Never write through to memory lent before.
+            let mut v = Vec::new();
+            if v.try_reserve_exact(fb.color.len()).is_err() {
+                return false;
+            }
+            v.resize(fb.color.len(), [0; 4]);
+            fb.color = crate::framebuffer::ColorBuffer::owned(v);
+        }
+        self.load_into(fb);
+        true
+    }
+
+    /// OSMesaPixelStore's change of layout: the colour buffer's contents
+    /// stay what they are; drawing goes into the buffer if the new layout
+    /// allows (it is written in that layout first), else into storage of
+    /// the colour buffer's own (false: out of memory).
+    ///
+    /// # Safety
+    /// As for `attach`.
+    unsafe fn relayout(&mut self, fb: &mut Framebuffer) -> bool {
+        let lent_here = fb.color.is_lent() && std::ptr::eq(fb.color.as_ptr() as *const u8, self.ptr);
+        if self.is_direct() && fb.width == self.width && fb.height == self.height && !fb.is_double_buffered() {
+            if !lent_here {
+                self.present(fb);
+                fb.lend_color(self.ptr);
+            }
+            return true;
+        }
+        fb.own_color().is_ok()
+    }
+
     fn channels(&self) -> usize {
         match self.format {
             GL_RGB | OSMESA_BGR => 3,
@@ -175,6 +228,10 @@ impl UserBuffer {
 impl Present for UserBuffer {
     fn present(&mut self, fb: &Framebuffer) {
         crate::winsys::dump::frame(fb);
+        if std::ptr::eq(fb.front().as_ptr() as *const u8, self.ptr) {
+            // Drawn in place (see `attach`).
+            return;
+        }
         let pb = self.pixel_bytes();
         // SAFETY: the caller promised a buffer of at least row_pixels x height
         // pixels of this format when it called OSMesaMakeCurrent.
@@ -302,7 +359,9 @@ pub unsafe fn make_current(ctx: *mut OsContext, buffer: *mut c_void, ty: u32, wi
     let (w, h) = (width as usize, height as usize);
     let row_pixels = if os.row_length > 0 { (os.row_length as usize).max(w) } else { w };
     let ub = UserBuffer { ptr: buffer as *mut u8, format: os.format, ty, width: w, height: h, row_pixels, y_up: os.y_up };
-    ub.load_into(os.gl.window_fb_mut());
+    if !ub.attach(os.gl.window_fb_mut()) {
+        return false;
+    }
     os.buffer = Some(ub);
     os.gl.surface = Some(Box::new(ub));
     os.gl.surface_resized(width, height);
@@ -347,6 +406,15 @@ pub fn pixel_store(pname: i32, value: i32) {
     if let Some(mut ub) = os.buffer {
         ub.row_pixels = if os.row_length > 0 { (os.row_length as usize).max(ub.width) } else { ub.width };
         ub.y_up = os.y_up;
+        // Pending drawing lands first; then the colour buffer follows the
+        // new layout (into the buffer, or out of it into storage of its own).
+        os.gl.flush();
+        // SAFETY: the buffer is the one bound by OSMesaMakeCurrent, still
+        // valid by its contract.
+        if !unsafe { ub.relayout(os.gl.window_fb_mut()) } {
+            os.gl.set_error(GL_OUT_OF_MEMORY);
+            return;
+        }
         os.buffer = Some(ub);
         os.gl.surface = Some(Box::new(ub));
     }
