@@ -26,7 +26,7 @@ use crate::winsys::glx::{self, xlib::{Display, XVisualInfo}, Bool, FbConfig, Glx
 use crate::winsys::osmesa::{self, OsContext};
 use std::ffi::{c_char, c_int, c_void};
 use crate::gl::pixel_transfer::{map_index, map_value_to_uint, map_values_from_uint, MAX_PIXEL_MAP_TABLE};
-use crate::gl::texture::enums::{GL_TEXTURE0 as TEX0, GL_TEXTURE_BORDER_COLOR as TBORDER, GL_TEXTURE_ENV_COLOR as TENV_COLOR, GL_TEXTURE_GEN_MODE as TGEN_MODE};
+use crate::gl::texture::enums::{GL_TEXTURE0 as TEX0, GL_TEXTURE_BORDER_COLOR as TBORDER, GL_TEXTURE_SWIZZLE_RGBA as TSWIZZLE_RGBA, GL_TEXTURE_ENV_COLOR as TENV_COLOR, GL_TEXTURE_GEN_MODE as TGEN_MODE};
 use crate::gl::texture::CopyTexCmd;
 use crate::gl::arrays::Array;
 use crate::gl::imaging::ImagingCmd;
@@ -74,6 +74,14 @@ unsafe fn sampler_params_i(p: *const GLint, pname: GLenum) -> Option<[f32; 4]> {
 }
 
 /// Stores query results (NULL: nothing).
+/// A scalar glTexParameter's value. TEXTURE_SWIZZLE_RGBA takes four values
+/// and exists only in the vector forms: the missing three are NaN, which no
+/// swizzle source matches (INVALID_ENUM).
+fn scalar_tex_param(pname: GLenum, v: f32) -> [f32; 4] {
+    let rest = if pname == TSWIZZLE_RGBA { f32::NAN } else { 0.0 };
+    [v, rest, rest, rest]
+}
+
 unsafe fn write_out<T: Copy>(p: *mut T, v: &[T]) {
     if !p.is_null() {
         for (i, x) in v.iter().enumerate() {
@@ -477,10 +485,10 @@ super::entry_points! {
     list glTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_sub_image_command(2, target, level, [xoffset, yoffset, 0], [width, height, 1], format, type_, pixels as *const u8) }
     list glCopyTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, x: GLint, y: GLint, width: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 1, sub: true, target, level, internal_format: 0, offset: [xoffset, 0, 0], rect: [x, y, width, 1], border: 0 })) }
     list glCopyTexSubImage2D(target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei) { |_c| Command::CopyTex(Box::new(CopyTexCmd { dims: 2, sub: true, target, level, internal_format: 0, offset: [xoffset, yoffset, 0], rect: [x, y, width, height], border: 0 })) }
-    list glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) { |_c| { Command::TexParameter(target, pname, [param, 0.0, 0.0, 0.0]) } }
-    list glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TBORDER { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexParameter(target, pname, std::array::from_fn(|i| v.get(i).copied().unwrap_or(0.0))) } }
-    list glTexParameteri(target: GLenum, pname: GLenum, param: GLint) { |_c| { Command::TexParameter(target, pname, [param as f32, 0.0, 0.0, 0.0]) } }
-    list glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| { let border = pname == TBORDER; let v = slice(params, if border { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexParameter(target, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| if border { x.normalized() } else { x as f32 }))) } }
+    list glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) { |_c| { Command::TexParameter(target, pname, scalar_tex_param(pname, param)) } }
+    list glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) { |_c| { let v = slice(params, if pname == TBORDER || pname == TSWIZZLE_RGBA { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexParameter(target, pname, std::array::from_fn(|i| v.get(i).copied().unwrap_or(0.0))) } }
+    list glTexParameteri(target: GLenum, pname: GLenum, param: GLint) { |_c| { Command::TexParameter(target, pname, scalar_tex_param(pname, param as f32)) } }
+    list glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) { |_c| { let border = pname == TBORDER; let v = slice(params, if border || pname == TSWIZZLE_RGBA { 4 } else { 1 }); if v.is_empty() { return None; } Command::TexParameter(target, pname, std::array::from_fn(|i| v.get(i).map_or(0.0, |&x| if border { x.normalized() } else { x as f32 }))) } }
     exec glGenTextures(n: GLsizei, textures: *mut GLuint) { |c| if let Some(v) = c.gen_textures(n) { write_out(textures, &v) } }
     exec glDeleteTextures(n: GLsizei, textures: *const GLuint) { |c| { if n < 0 { return c.set_error(GL_INVALID_VALUE); } let names = slice(textures, n as i64); c.fbo_textures_deleted(&names); c.delete_textures(&names) } }
     list glBindTexture(target: GLenum, texture: GLuint) { |_c| Command::BindTexture(target, texture) }

@@ -40,6 +40,10 @@ pub const GL_TEXTURE_MAX_LEVEL: u32 = 0x813D;
 pub const GL_TEXTURE_LOD_BIAS: u32 = 0x8501;
 pub const GL_GENERATE_MIPMAP: u32 = 0x8191;
 pub const GL_DEPTH_TEXTURE_MODE: u32 = 0x884B;
+// EXT_texture_swizzle / ARB_texture_swizzle.
+pub const GL_TEXTURE_SWIZZLE_R: u32 = 0x8E42;
+pub const GL_TEXTURE_SWIZZLE_A: u32 = 0x8E45;
+pub const GL_TEXTURE_SWIZZLE_RGBA: u32 = 0x8E46;
 pub const GL_TEXTURE_COMPARE_MODE: u32 = 0x884C;
 pub const GL_TEXTURE_COMPARE_FUNC: u32 = 0x884D;
 pub const GL_COMPARE_R_TO_TEXTURE: u32 = 0x884E;

@@ -905,6 +905,21 @@ impl Context {
                     obj.generate_mipmap = v[0] != 0.0;
                     false
                 }
+                GL_TEXTURE_SWIZZLE_R..=GL_TEXTURE_SWIZZLE_A => match swizzle_source(v[0]) {
+                    Some(k) => {
+                        p.swizzle[(pname - GL_TEXTURE_SWIZZLE_R) as usize] = k;
+                        false
+                    }
+                    None => true,
+                },
+                // All four or none.
+                GL_TEXTURE_SWIZZLE_RGBA => match v.map(swizzle_source) {
+                    [Some(r), Some(g), Some(b), Some(a)] => {
+                        p.swizzle = [r, g, b, a];
+                        false
+                    }
+                    _ => true,
+                },
                 GL_DEPTH_TEXTURE_MODE => match e {
                     GL_LUMINANCE => {
                         p.depth_mode = Base::Luminance;
@@ -971,6 +986,8 @@ impl Context {
             GL_TEXTURE_COMPARE_FUNC => Value::Ints(vec![p.compare_func.to_gl() as i64]),
             // ARB_texture_storage.
             0x912F => Value::Bools(vec![obj.immutable]),
+            GL_TEXTURE_SWIZZLE_R..=GL_TEXTURE_SWIZZLE_A => Value::Ints(vec![swizzle_enum(p.swizzle[(pname - GL_TEXTURE_SWIZZLE_R) as usize])]),
+            GL_TEXTURE_SWIZZLE_RGBA => Value::Ints(p.swizzle.iter().map(|&k| swizzle_enum(k)).collect()),
             GL_DEPTH_TEXTURE_MODE => Value::Ints(vec![match p.depth_mode {
                 Base::Intensity => GL_INTENSITY,
                 Base::Alpha => GL_ALPHA,
@@ -1362,5 +1379,29 @@ fn generate_mipmaps(obj: &mut TexObject, t: Target, face: usize, f: &InternalFor
         obj.images[face * MAX_LEVELS + level] = Some(Arc::new(img));
         cur = next;
         (w, h, d) = (nw, nh, nd);
+    }
+}
+
+/// A TEXTURE_SWIZZLE value: RED, GREEN, BLUE, ALPHA, ZERO or ONE (else
+/// None: INVALID_ENUM).
+fn swizzle_source(v: f32) -> Option<u8> {
+    use crate::render::texture::{SWIZZLE_ONE, SWIZZLE_ZERO};
+    if v != v.trunc() {
+        return None;
+    }
+    Some(match v as i64 {
+        0x1903..=0x1906 => (v as i64 - 0x1903) as u8, // GL_RED, GREEN, BLUE, ALPHA
+        0 => SWIZZLE_ZERO,
+        1 => SWIZZLE_ONE,
+        _ => return None,
+    })
+}
+
+/// The enum glGetTexParameter reports for a swizzle source.
+fn swizzle_enum(k: u8) -> i64 {
+    match k {
+        0..=3 => 0x1903 + k as i64,
+        crate::render::texture::SWIZZLE_ZERO => 0,
+        _ => 1,
     }
 }

@@ -117,6 +117,7 @@ fn applies(tp: &crate::render::setup::TexPlanes) -> bool {
         && s.faces[0].iter().all(|l| l.border == 0 && l.width > 0 && l.height > 0 && matches!(l.texels, Texels::Rgba8(_)) && l.texels.len() >= (l.width * l.height) as usize);
     s.target == Target::T2D
         && s.base != Base::Depth
+        && s.params.swizzle == crate::render::texture::SWIZZLE_IDENTITY
         && s.fast_wrap.is_some()
         && levels_ok
         && s.params.min_lod <= s.params.max_lod

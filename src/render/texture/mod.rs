@@ -321,6 +321,28 @@ pub struct Params {
     pub compare_func: CompareFunc,
     /// DEPTH_TEXTURE_MODE: Luminance, Intensity or Alpha.
     pub depth_mode: Base,
+    /// EXT/ARB_texture_swizzle: where each of R, G, B, A comes from (see
+    /// [`swizzle`]).
+    pub swizzle: [u8; 4],
+}
+
+/// TEXTURE_SWIZZLE sources: a component of the filtered texel, or a
+/// constant.
+pub const SWIZZLE_ZERO: u8 = 4;
+pub const SWIZZLE_ONE: u8 = 5;
+/// Each component from itself.
+pub const SWIZZLE_IDENTITY: [u8; 4] = [0, 1, 2, 3];
+
+/// Applies TEXTURE_SWIZZLE_R/G/B/A to a filtered (and, for depth textures,
+/// compared) texel (ARB_texture_swizzle: after filtering, before the
+/// texture environment).
+#[inline]
+pub fn swizzle(t: [f32; 4], s: [u8; 4]) -> [f32; 4] {
+    s.map(|k| match k {
+        0..=3 => t[k as usize],
+        SWIZZLE_ZERO => 0.0,
+        _ => 1.0,
+    })
 }
 
 impl Default for Params {
@@ -338,6 +360,7 @@ impl Default for Params {
             compare_mode: false,
             compare_func: CompareFunc::Lequal,
             depth_mode: Base::Luminance,
+            swizzle: SWIZZLE_IDENTITY,
         }
     }
 }
@@ -386,7 +409,7 @@ impl Fast {
             _ => return Fast::General,
         };
         let wraps_ok = p.wrap[..n].iter().all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge));
-        if img.border != 0 || !img.texels.is_compact() || img.base == Base::Depth || !wraps_ok || p.min_filter != p.mag_filter {
+        if img.border != 0 || !img.texels.is_compact() || img.base == Base::Depth || !wraps_ok || p.min_filter != p.mag_filter || p.swizzle != SWIZZLE_IDENTITY {
             return Fast::General;
         }
         let repeat = [p.wrap[0] == Wrap::Repeat, n == 1 || p.wrap[1] == Wrap::Repeat];
@@ -644,6 +667,9 @@ impl UnitSampler {
         } else {
             self.filter(&levels[0], str, p.mag_filter == Filter::Linear)
         };
+        if p.swizzle != SWIZZLE_IDENTITY {
+            return Vec4::from_array(swizzle(texel, p.swizzle));
+        }
         Vec4::from_array(texel)
     }
 
