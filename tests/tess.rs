@@ -910,3 +910,18 @@ fn merge_distance_splits_leave_no_t_junctions() {
         check_conforming(&[big, notch], rule, tol, &format!("vertex near edge {i} d {d:e} rule {rule}"));
     }
 }
+
+/// The conforming-mesh check on the random families of
+/// `exact_coverage_random_polygons` (grid polygons with duplicates,
+/// collinear runs, touching and overlapping edges; nudged grid points;
+/// rectangles; random real coordinates).
+#[test]
+fn random_polygons_give_conforming_meshes() {
+    let mut r = Rng(0x2545_f491_4f6c_dd1d);
+    for i in 0..1200 {
+        let family = i % 6;
+        let cs = random_polygon(&mut r, family);
+        let ext = cs.iter().flatten().map(|v| v[0].abs().max(v[1].abs())).fold(1.0, f64::max);
+        check_conforming(&cs, RULES[(i / 6) as usize % 5], ext / (1u64 << 46) as f64, &format!("polygon {i} family {family}"));
+    }
+}
