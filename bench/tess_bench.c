@@ -125,7 +125,16 @@ static GLenum chk_mode;
 static const double *chk_v[2];
 static long chk_k, chk_tris;
 static double chk_area;
-static void chk_begin(GLenum m) { chk_mode = m; chk_k = 0; }
+/* FNV-1a over every checked callback (mode, vertex coordinates): with
+ * TESS_BENCH_HASH set, printed per set on stderr, so that a speed change
+ * can be shown to leave the output identical. */
+static uint64_t chk_hash = 0xcbf29ce484222325ull;
+static void hash_bytes(const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    while (n--) chk_hash = (chk_hash ^ *b++) * 0x100000001b3ull;
+}
+static void chk_begin(GLenum m) { chk_mode = m; chk_k = 0; hash_bytes(&m, sizeof m); }
 static void chk_tri(const double *a, const double *b, const double *c)
 {
     chk_area += 0.5 * fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
@@ -135,6 +144,7 @@ static void chk_vertex(void *d)
 {
     const double *p = d;
     n_vertices++;
+    hash_bytes(p, 3 * sizeof(double));
     if (chk_mode == GL_TRIANGLES) {
         if (chk_k % 3 == 2) chk_tri(chk_v[0], chk_v[1], p);
         else chk_v[chk_k % 3] = p;
@@ -484,6 +494,8 @@ static void check(Glu *g, Set *s, Result *r)
         r->area[k] = chk_area;
     }
     g->DeleteTess(t);
+    if (getenv("TESS_BENCH_HASH")) fprintf(stderr, "%s %s: output hash %016llx\n", g->name, s->name, (unsigned long long)chk_hash);
+    chk_hash = 0xcbf29ce484222325ull;
 }
 
 static double now(void)

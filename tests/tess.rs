@@ -809,3 +809,119 @@ fn combined_coordinates_stay_in_the_box_with_subnormal_z() {
         }
     }
 }
+
+/// The output is a conforming mesh: every edge that is not on the selected
+/// region's boundary (edge flag off) is shared with exactly one other
+/// triangle, traversed the other way, and no output vertex lies within
+/// `tol` of the open segment of a boundary edge (flag on) without being one
+/// of its ends. A T-junction (an edge left unsplit at a vertex within the
+/// merge distance of it) breaks one or the other, however small it is; the
+/// area and point probes of `check_coverage` skip anything that close to
+/// an edge, so they cannot see it.
+fn check_conforming(cs: &[Vec<[f64; 3]>], rule: u32, tol: f64, what: &str) {
+    let out = tess(cs, &Opts { rule, flags: true, combine: true, boundary: false, normal: Some([0.0, 0.0, 1.0]) });
+    assert!(out.errors.is_empty(), "{what}: errors {:?}", out.errors);
+    let key = |p: [f64; 3]| (p[0].to_bits(), p[1].to_bits());
+    let tris: Vec<&[([f64; 3], bool)]> = out.prims.iter().flat_map(|p| p.chunks(3)).collect();
+    let mut count: std::collections::HashMap<((u64, u64), (u64, u64)), usize> = Default::default();
+    for t in &tris {
+        for i in 0..3 {
+            *count.entry((key(t[i].0), key(t[(i + 1) % 3].0))).or_default() += 1;
+        }
+    }
+    let mut pts: Vec<[f64; 3]> = tris.iter().flat_map(|t| t.iter().map(|v| v.0)).collect();
+    pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+    pts.dedup_by(|a, b| key(*a) == key(*b));
+    for t in &tris {
+        for i in 0..3 {
+            let (a, b, flag) = (t[i].0, t[(i + 1) % 3].0, t[i].1);
+            assert_ne!(key(a), key(b), "{what}: triangle with a repeated vertex {t:?}");
+            let fwd = count[&(key(a), key(b))];
+            let rev = count.get(&(key(b), key(a))).copied().unwrap_or(0);
+            if flag {
+                assert_eq!((fwd, rev), (1, 0), "{what}: boundary edge {a:?}-{b:?} used {fwd} times, reversed {rev} times (contours {cs:?})");
+                for &p in &pts {
+                    if key(p) != key(a) && key(p) != key(b) {
+                        let d = seg_dist([p[0], p[1]], a, b);
+                        assert!(d > tol, "{what}: vertex {p:?} at {d:e} from boundary edge {a:?}-{b:?} (T-junction; contours {cs:?})");
+                    }
+                }
+            } else {
+                assert_eq!((fwd, rev), (1, 1), "{what}: interior edge {a:?}-{b:?} used {fwd} times, reversed {rev} times (T-junction; contours {cs:?})");
+            }
+        }
+    }
+}
+
+/// Splits at the merge distance's scale. Long chords through nearly one
+/// point (offsets of 0.1 to 4 times the merge distance, 2^-42 of the
+/// extent): their crossings are rounded to points a few merge distances
+/// apart, each near the other chords, and only the splitter's later passes
+/// (`touching_at_split_vertices`) split a chord at a crossing point that
+/// lies within the merge distance of it. Also a vertex of one contour
+/// within 1/8 of the merge distance of another contour's edge. Checked
+/// with `check_conforming` (the exact-coverage checks pass either way).
+#[test]
+fn merge_distance_splits_leave_no_t_junctions() {
+    let eps = 1.0 / (1u64 << 42) as f64; // the merge distance at extent 1..2
+    let tol = eps / 4.0;
+    let mut r = Rng(0x0dd_ba11_cafe_f00d);
+    for i in 0..400 {
+        let c = [r.f() * 0.4 - 0.2, r.f() * 0.4 - 0.2];
+        let spread = [0.1, 0.5, 1.0, 2.0, 4.0][r.below(5) as usize] * eps;
+        let k = 3 + r.below(4) as usize;
+        let chords: Vec<([f64; 3], [f64; 3])> = (0..k)
+            .map(|_| {
+                let a = r.f() * std::f64::consts::PI;
+                let (o, oa) = (spread * r.f(), r.f() * std::f64::consts::TAU);
+                let m = [c[0] + o * oa.cos(), c[1] + o * oa.sin()];
+                let (dx, dy) = (0.8 * a.cos(), 0.8 * a.sin());
+                ([m[0] + dx, m[1] + dy, 0.0], [m[0] - dx, m[1] - dy, 0.0])
+            })
+            .collect();
+        let cs: Vec<Vec<[f64; 3]>> = if i % 2 == 0 {
+            // One self-intersecting contour through every chord.
+            vec![chords.iter().flat_map(|&(p, q)| [p, q]).collect()]
+        } else {
+            // A thin triangle on each chord (either orientation).
+            chords
+                .iter()
+                .map(|&(p, q)| {
+                    let w = [0.5 * (p[0] + q[0]) + 0.3 * (q[1] - p[1]), 0.5 * (p[1] + q[1]) - 0.3 * (q[0] - p[0]), 0.0];
+                    if r.below(2) == 0 { vec![p, q, w] } else { vec![q, p, w] }
+                })
+                .collect()
+        };
+        let rule = RULES[i % 5];
+        check_conforming(&cs, rule, tol, &format!("chords {i} spread {spread:e} rule {rule}"));
+    }
+    // A vertex of one contour within eps/8 of another's edge (either side),
+    // the edge at random slopes.
+    for i in 0..200 {
+        let a = r.f() * std::f64::consts::TAU;
+        let (dx, dy) = (a.cos(), a.sin());
+        let t = 0.2 + 0.6 * r.f();
+        let d = (r.f() - 0.5) * eps / 4.0;
+        let p = [-dx + 2.0 * t * dx - dy * d, -dy + 2.0 * t * dy + dx * d, 0.0];
+        let big = vec![[-dx, -dy, 0.0], [dx, dy, 0.0], [-dy * 0.9, dx * 0.9, 0.0]];
+        let side = if r.below(2) == 0 { 1.0 } else { -1.0 };
+        let notch = vec![p, [p[0] + side * (0.3 * dx - 0.5 * dy), p[1] + side * (0.3 * dy + 0.5 * dx), 0.0], [p[0] + side * (-0.3 * dx - 0.5 * dy), p[1] + side * (-0.3 * dy + 0.5 * dx), 0.0]];
+        let rule = RULES[i % 5];
+        check_conforming(&[big, notch], rule, tol, &format!("vertex near edge {i} d {d:e} rule {rule}"));
+    }
+}
+
+/// The conforming-mesh check on the random families of
+/// `exact_coverage_random_polygons` (grid polygons with duplicates,
+/// collinear runs, touching and overlapping edges; nudged grid points;
+/// rectangles; random real coordinates).
+#[test]
+fn random_polygons_give_conforming_meshes() {
+    let mut r = Rng(0x2545_f491_4f6c_dd1d);
+    for i in 0..1200 {
+        let family = i % 6;
+        let cs = random_polygon(&mut r, family);
+        let ext = cs.iter().flatten().map(|v| v[0].abs().max(v[1].abs())).fold(1.0, f64::max);
+        check_conforming(&cs, RULES[(i / 6) as usize % 5], ext / (1u64 << 46) as f64, &format!("polygon {i} family {family}"));
+    }
+}

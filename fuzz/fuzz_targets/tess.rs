@@ -52,8 +52,11 @@ struct Check {
     lo: [f64; 3],
     hi: [f64; 3],
     arena: Vec<Box<[f64; 3]>>,
-    /// The output's vertices in order (for the coverage check).
+    /// The output's vertices in order (for the coverage check), and the
+    /// edge flag in force at each.
     out: Vec<[f64; 3]>,
+    out_flags: Vec<bool>,
+    flag: bool,
 }
 
 thread_local! {
@@ -86,6 +89,8 @@ extern "system" fn cb_vertex(d: *mut c_void) {
         c.prim_verts += 1;
         // Every known pointer points at an [f64; 3] (input or COMBINE's).
         c.out.push(unsafe { *(d as *const [f64; 3]) });
+        let f = c.flag;
+        c.out_flags.push(f);
     });
 }
 extern "system" fn cb_vertex_data(d: *mut c_void, pd: *mut c_void) {
@@ -106,8 +111,9 @@ extern "system" fn cb_end_data(pd: *mut c_void) {
     assert_eq!(pd as usize, 0x5eed, "polygon data");
     cb_end();
 }
-extern "system" fn cb_flag(_f: u8) {
+extern "system" fn cb_flag(f: u8) {
     with(|c| {
+        c.flag = f != 0;
         assert!(c.flags_cb, "EDGE_FLAG without a callback set");
         assert!(!c.boundary, "EDGE_FLAG in boundary-only mode");
     });
@@ -322,6 +328,49 @@ fn check_coverage(poly: &Polygon, rule: u32, auto_normal: bool, out: &[[f64; 3]]
     assert!((area - want).abs() <= 1e-9 * want.max(1.0), "covered area {area}, the rule selects {want} (rule {rule}, polygon {poly:?})");
 }
 
+/// The output triangles form a conforming mesh: an edge off the region's
+/// boundary (flag off) is shared with exactly one other triangle, the other
+/// way round; a boundary edge (flag on) with none, and no output vertex
+/// lies within 2^-46 of the extent of its interior (T-junctions at the
+/// merge distance's scale, which the coverage check cannot see).
+fn check_conforming(out: &[[f64; 3]], flags: &[bool]) {
+    let key = |p: [f64; 3]| (p[0].to_bits(), p[1].to_bits());
+    let mut count: std::collections::HashMap<((u64, u64), (u64, u64)), usize> = Default::default();
+    for t in out.chunks(3) {
+        for i in 0..3 {
+            *count.entry((key(t[i]), key(t[(i + 1) % 3]))).or_default() += 1;
+        }
+    }
+    let ext = out.iter().map(|v| v[0].abs().max(v[1].abs())).fold(1.0, f64::max);
+    let tol = ext / (1u64 << 46) as f64;
+    let mut pts: Vec<[f64; 3]> = out.to_vec();
+    pts.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+    pts.dedup_by(|a, b| key(*a) == key(*b));
+    for (k, t) in out.chunks(3).enumerate() {
+        for i in 0..3 {
+            let (a, b, flag) = (t[i], t[(i + 1) % 3], flags[3 * k + i]);
+            assert_ne!(key(a), key(b), "triangle with a repeated vertex {t:?}");
+            let fwd = count[&(key(a), key(b))];
+            let rev = count.get(&(key(b), key(a))).copied().unwrap_or(0);
+            if flag {
+                assert_eq!((fwd, rev), (1, 0), "boundary edge {a:?}-{b:?} used {fwd} times, reversed {rev} times");
+                let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+                let l2 = dx * dx + dy * dy;
+                for &p in &pts {
+                    if key(p) == key(a) || key(p) == key(b) {
+                        continue;
+                    }
+                    let s = (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2).clamp(0.0, 1.0);
+                    let d = (a[0] + s * dx - p[0]).hypot(a[1] + s * dy - p[1]);
+                    assert!(d > tol, "vertex {p:?} at {d:e} from boundary edge {a:?}-{b:?} (T-junction)");
+                }
+            } else {
+                assert_eq!((fwd, rev), (1, 1), "interior edge {a:?}-{b:?} used {fwd} times, reversed {rev} times (T-junction)");
+            }
+        }
+    }
+}
+
 /// Twice the signed area contribution of edge a→b (shoelace).
 fn o2(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[1] - a[1] * b[0]
@@ -421,6 +470,9 @@ fuzz_target!(|data: &[u8]| {
             let coverage = std::env::var_os("TESS_FUZZ_NO_COVERAGE").is_none();
             if coverage && *planar_grid && !boundary && !sloppy && combine_cb && fail_at.is_none() && z_normal && nv <= 64 {
                 with(|c| check_coverage(&store, rule, normal.is_none(), &c.out));
+                if flags_cb {
+                    with(|c| check_conforming(&c.out, &c.out_flags));
+                }
             }
             with(|c| {
                 assert!(c.in_prim.is_none(), "BEGIN without END");
