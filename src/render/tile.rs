@@ -52,11 +52,27 @@ use glam::Vec4;
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
-/// Tile side in pixels. 128 rather than llvmpipe's 64: each span piece
-/// repeats the span set-up, and at 64 that cost 18% more instructions
-/// than shading untiled (particles at 1920x1080; 8% at 128), while 135
-/// tiles of a 1080p frame still balance two threads.
-pub const TILE: usize = 128;
+/// Tiles are bands of whole rows, this many high at most (fewer when
+/// that leaves less than [`BANDS_PER_THREAD`] bands per thread; at least
+/// [`MIN_BAND`]). Square 128x128 tiles cut every row of a large triangle
+/// into pieces that each repeat the span kernel's set-up, and set a
+/// triangle up in each tile it touches: 2 threads executed 35% (overdraw)
+/// to 65% (particles) more instructions than 1 thread at 1920x1080;
+/// 64-row bands cost 0-2% more. A band's colour, depth and stencil
+/// (about 1 MB at 1920 wide) do not stay in cache as a 128x128 tile's
+/// would, but neither do the 1-thread path's, which does not tile at all.
+pub const BAND: usize = 64;
+const MIN_BAND: usize = 16;
+const BANDS_PER_THREAD: usize = 8;
+
+/// The band height for a surface `height` rows high shaded by `threads`.
+fn band_rows(height: usize, threads: usize) -> usize {
+    let mut rows = BAND;
+    while rows > MIN_BAND && height.div_ceil(rows) < BANDS_PER_THREAD * threads {
+        rows /= 2;
+    }
+    rows
+}
 
 /// The most triangles a batch holds before it is shaded (its memory,
 /// about 180 bytes a triangle, stays bounded).
@@ -396,10 +412,10 @@ impl RawPixels {
 /// command that reads, writes, resizes or frees them calls [`sync`] first.
 struct Flight {
     batch: Batch,
-    /// Per tile, the triangles touching it, in submission order.
+    /// Per band, the triangles touching it, in submission order.
     bins: Vec<Vec<u32>>,
-    /// Tiles per row.
-    tw: usize,
+    /// Rows per band.
+    rows: usize,
     surface: Rect,
     raw: RawPixels,
     /// The next tile to take.
@@ -415,7 +431,7 @@ impl Flight {
         Box::new(Flight {
             batch: Batch::default(),
             bins: Vec::new(),
-            tw: 0,
+            rows: BAND,
             surface: Rect::new(0, 0, 0, 0),
             raw: RawPixels { width: 0, color: std::ptr::null_mut(), depth: std::ptr::null_mut(), stencil: std::ptr::null_mut(), has_depth: false, has_stencil: false },
             next: AtomicUsize::new(0),
@@ -425,28 +441,25 @@ impl Flight {
     }
 
     /// Lists the batch's triangles per tile of `fb` and points at its planes.
-    fn prepare(&mut self, fb: &mut Framebuffer) {
+    fn prepare(&mut self, fb: &mut Framebuffer, threads: usize) {
         // The framebuffer may have changed size since binning only through
         // commands outside the draw call, which never happens with work
         // pending; still, never write outside it.
         let surface = Rect::new(0, 0, fb.width as i32, fb.height as i32);
-        let (tw, th) = (fb.width.div_ceil(TILE), fb.height.div_ceil(TILE));
-        self.bins.resize_with(tw * th, Vec::new);
-        self.bins.truncate(tw * th);
+        let rows = band_rows(fb.height, threads);
+        let bands = fb.height.div_ceil(rows);
+        self.bins.resize_with(bands, Vec::new);
+        self.bins.truncate(bands);
         for (i, t) in self.batch.tris.iter().enumerate() {
             let b = t.bbox.intersect(surface);
             if b.is_empty() {
                 continue;
             }
-            let (tx0, tx1) = (b.x0 as usize / TILE, (b.x1 as usize - 1) / TILE);
-            let (ty0, ty1) = (b.y0 as usize / TILE, (b.y1 as usize - 1) / TILE);
-            for ty in ty0..=ty1 {
-                for tx in tx0..=tx1 {
-                    self.bins[ty * tw + tx].push(i as u32);
-                }
+            for band in &mut self.bins[b.y0 as usize / rows..=(b.y1 as usize - 1) / rows] {
+                band.push(i as u32);
             }
         }
-        self.tw = tw;
+        self.rows = rows;
         self.surface = surface;
         self.raw = RawPixels::new(fb);
         self.next.store(0, Ordering::Relaxed);
@@ -479,8 +492,8 @@ impl pool::Work for Flight {
             if k >= self.bins.len() {
                 break;
             }
-            let (tx, ty) = ((k % self.tw) * TILE, (k / self.tw) * TILE);
-            let tile = Rect { x0: tx as i32, y0: ty as i32, x1: (tx + TILE) as i32, y1: (ty + TILE) as i32 }.intersect(self.surface);
+            let y = k * self.rows;
+            let tile = Rect { x0: 0, y0: y as i32, x1: self.surface.x1, y1: (y + self.rows) as i32 }.intersect(self.surface);
             for &i in &self.bins[k] {
                 let t = &b.tris[i as usize];
                 let r = t.bbox.intersect(tile);
@@ -554,7 +567,7 @@ fn launch(rs: &RenderState, fl: &mut Flights, mut flight: Box<Flight>, fb: &mut 
         fl.spare = Some(flight);
         return;
     }
-    flight.prepare(fb);
+    flight.prepare(fb, rs.threads);
     // Safety: the flight is boxed (its address stays put) and is only
     // dropped or reused after `finish`, which every path to the
     // framebuffer and the context's end calls first (`sync`).
