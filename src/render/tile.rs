@@ -203,9 +203,11 @@ pub struct BatchCell {
     flying: AtomicBool,
     /// Tiles of the flight not shaded yet (0: none in flight, or done).
     left: Arc<AtomicUsize>,
-    /// [`MAX_BATCH`] and [`SUBMIT_WORK`], unless a test set others.
+    /// [`MAX_BATCH`], [`SUBMIT_WORK`] and [`PARALLEL_WORK`], unless a
+    /// test set others.
     max_batch: AtomicUsize,
     submit_work: AtomicU64,
+    parallel_work: AtomicU64,
 }
 
 impl Default for BatchCell {
@@ -218,6 +220,7 @@ impl Default for BatchCell {
             left: Arc::default(),
             max_batch: AtomicUsize::new(MAX_BATCH),
             submit_work: AtomicU64::new(SUBMIT_WORK),
+            parallel_work: AtomicU64::new(PARALLEL_WORK),
         }
     }
 }
@@ -248,12 +251,22 @@ fn lock_flights(b: &SharedBatch) -> std::sync::MutexGuard<'_, Flights> {
 }
 
 /// Sets a context's batch limits (tests: to make small scenes submit
-/// several batches): at most `max_triangles` per batch, and a batch is
-/// handed to idle workers once it holds `submit_work` of work.
-pub fn set_batch_limits(rs: &RenderState, max_triangles: usize, submit_work: u64) {
+/// many batches to the workers): at most `max_triangles` per batch, a
+/// batch is handed to idle workers once it holds `submit_work` of work,
+/// and one with less than `parallel_work` is shaded on the calling thread.
+pub fn set_batch_limits(rs: &RenderState, max_triangles: usize, submit_work: u64, parallel_work: u64) {
     rs.batch.max_batch.store(max_triangles.max(1), Ordering::Relaxed);
     rs.batch.submit_work.store(submit_work, Ordering::Relaxed);
+    rs.batch.parallel_work.store(parallel_work, Ordering::Relaxed);
 }
+
+/// Batches handed to the workers so far in this process (tests check
+/// that they exercised the asynchronous path).
+pub fn flights_started() -> u64 {
+    FLIGHTS.load(Ordering::Relaxed)
+}
+
+static FLIGHTS: AtomicU64 = AtomicU64::new(0);
 
 /// Should this triangle be binned rather than shaded now?
 #[inline]
@@ -532,7 +545,7 @@ fn finish(cell: &SharedBatch, fl: &mut Flights, fb: &mut Framebuffer) {
 /// Takes the pending batch, leaving the spare flight's empty vectors in
 /// its place; None when nothing is pending.
 fn take_batch(cell: &SharedBatch, fl: &mut Flights) -> Option<Box<Flight>> {
-    if !cell.pending.load(Ordering::Relaxed) {
+    if !cell.pending.load(Ordering::Relaxed) && !cell.flying.load(Ordering::Relaxed) {
         return None;
     }
     let mut b = lock(cell);
@@ -561,7 +574,7 @@ pub fn submit(rs: &RenderState, fb: &mut Framebuffer) {
 /// Starts `flight` on the workers (or shades it now if it is small).
 fn launch(rs: &RenderState, fl: &mut Flights, mut flight: Box<Flight>, fb: &mut Framebuffer) {
     let b = &flight.batch;
-    if rs.threads <= 1 || b.pixels + SETUP_PIXELS * (b.tris.len() as u64) < PARALLEL_WORK {
+    if rs.threads <= 1 || b.pixels + SETUP_PIXELS * (b.tris.len() as u64) < rs.batch.parallel_work.load(Ordering::Relaxed) {
         shade_here(&flight.batch, fb);
         flight.clear();
         fl.spare = Some(flight);
@@ -572,6 +585,7 @@ fn launch(rs: &RenderState, fl: &mut Flights, mut flight: Box<Flight>, fb: &mut 
     // dropped or reused after `finish`, which every path to the
     // framebuffer and the context's end calls first (`sync`).
     let posted = unsafe { pool::start(rs.threads, &*flight) };
+    FLIGHTS.fetch_add(1, Ordering::Relaxed);
     fl.current = Some((flight, posted));
     rs.batch.flying.store(true, Ordering::Relaxed);
 }
