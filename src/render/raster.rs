@@ -160,6 +160,10 @@ impl RowStepper {
     }
 }
 
+/// Triangles spanning more rows than this step their span ends from row
+/// to row ([`RowStepper`]); shorter ones solve each row.
+const STEPPED_ROWS: i64 = 16;
+
 /// Bounding boxes at most this many pixel centres wide are scanned by
 /// testing each centre against the edges (a few additions) instead of
 /// solving for the span ends (three divisions per row).
@@ -274,8 +278,9 @@ pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, 
     if col0 >= col1 {
         return;
     }
-    // Wide boxes step the span solution from row to row.
-    let mut rows = (col1 - col0 > NARROW && row0 < row1).then(|| RowStepper::new(&edges, row0));
+    // Wide boxes of more than a few rows step the span solution from row
+    // to row (setting the stepper up costs six divisions).
+    let mut rows = (col1 - col0 > NARROW && row1 - row0 > STEPPED_ROWS).then(|| RowStepper::new(&edges, row0));
     for py in row0..row1 {
         let (lo, hi) = match &mut rows {
             Some(st) => {
