@@ -5,19 +5,33 @@
 //! calling thread only orients and culls them and appends a cheap record to
 //! the context's [`Batch`] (fixed-point vertices, window depth, 1/w and the
 //! attributes setup reads, and an index into the batch's list of captured
-//! states, `shade_state::ShadeState`, one per state change). [`flush`]
-//! shades the batch: the screen is cut into TILE x TILE tiles, each
-//! triangle is listed in the tiles its bounding box touches, and the
-//! persistent workers of [`super::pool`] with the calling thread take
-//! tiles one at a time. A worker finds a triangle's runs within its tile
-//! and, when it covers a pixel there, computes its planes and shades them
-//! (a triangle covering several tiles is set up once per tile: the same
-//! inputs give the same planes). Within a tile the triangles run in
-//! submission order, so every pixel sees its fragments in GL's order, and
-//! no two threads ever touch the same pixel. Setup, span finding and
-//! shading thus all run in parallel; the vertex stage, clipping and
-//! binning stay on the calling thread.
+//! states, `shade_state::ShadeState`, one per state change).
 //!
+//! Asynchronous flush (round 4): when a batch is full ([`MAX_BATCH`]), or
+//! holds [`SUBMIT_WORK`] while the workers are idle, [`submit`] hands it
+//! to the persistent workers of [`super::pool`] as a [`Flight`] and
+//! returns: the calling thread goes on with the front end (entry points,
+//! vertex stage, clipping, binning) and fills the next batch meanwhile
+//! (two batches in rotation, their vectors reused). Only the next
+//! submission (batches are shaded in order) and the sync points wait for
+//! the flight, and the waiting thread shades the bands left rather than
+//! sleep: at a sync point every thread shades. A Flight owns all it reads
+//! (triangle records, Arc'ed immutable states whose textures are
+//! copy-on-write), and writes the framebuffer's planes through raw
+//! pointers, which stay valid because everything that reads, writes,
+//! resizes, swaps or frees them calls [`sync`] first (see below;
+//! `Context` also waits in its Drop).
+//!
+//! The screen is cut into full-width bands of up to [`BAND`] rows, each
+//! triangle listed in the bands its bounding box touches; workers take
+//! bands one at a time. A worker finds a triangle's runs within its band
+//! and, when it covers a pixel there, computes its planes and shades them
+//! (a triangle crossing bands is set up once per band: the same inputs
+//! give the same planes). Within a band the triangles run in submission
+//! order, so every pixel sees its fragments in GL's order, and no two
+//! threads ever touch the same pixel. Bands rather than square tiles: a
+//! row is never cut into pieces that each repeat the span set-up.
+
 //! Images do not depend on the thread count: setup is a pure function of
 //! the record, and no kernel's result depends on where a span starts (the
 //! stepped colour is anchored at column 0 of the row:
@@ -33,11 +47,14 @@
 //! points, lines, antialiased or polygon-mode triangles or to two colour
 //! buffers at once. Later state changes cannot reach binned triangles:
 //! they carry their own copy of the state (textures are copy-on-write).
-//! A batch is also flushed when it holds [`MAX_BATCH`] triangles.
+//! GLX contexts bound to a drawable still wait at the end of every call
+//! (`winsys::bound` swaps the drawable's framebuffer in and out), so they
+//! overlap only within a call.
 //!
 //! `SOFTGL_THREADS=N` (read once per process) sets the thread count; the
 //! default is every core, and 1 shades each triangle immediately with no
-//! binning. Batches covering few pixels are shaded on the calling thread.
+//! binning and no threads at all. Batches with little work
+//! ([`PARALLEL_WORK`]) are shaded on the calling thread.
 
 use super::fragment::fast::Kernel;
 use super::fragment::SpanPixels;
