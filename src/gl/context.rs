@@ -95,6 +95,14 @@ pub struct Context {
     pub samplers: super::texture::sampler::Samplers,
 }
 
+/// The workers may still be shading a batch into this context's
+/// framebuffer (render::tile): wait for them before it is freed.
+impl Drop for Context {
+    fn drop(&mut self) {
+        self.sync_render();
+    }
+}
+
 impl Context {
     pub fn new(config: Config) -> Context {
         Context {

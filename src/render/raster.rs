@@ -82,6 +82,88 @@ fn span(edges: &[Edge; 3], py: i64, x0: i64, x1: i64) -> (i64, i64) {
     (lo, hi)
 }
 
+/// The span solution of [`span`] for consecutive rows without a division
+/// per row: each edge's bound floor((b * py + c) / |a|) is kept as a
+/// quotient and remainder and stepped by b per row (exact: the same
+/// integers `span` computes, for every row).
+struct RowStepper {
+    /// Per edge: quotient, remainder in [0, |a|), |a|, and b split as
+    /// b = bq * |a| + br with br in [0, |a|).
+    q: [i64; 3],
+    r: [i64; 3],
+    d: [i64; 3],
+    bq: [i64; 3],
+    br: [i64; 3],
+    /// Per edge: +1 bounds x from below (a > 0), -1 from above (a < 0),
+    /// 0 horizontal (then q holds b * py + c itself).
+    side: [i8; 3],
+    b: [i64; 3],
+}
+
+impl RowStepper {
+    /// At row `py`.
+    #[inline]
+    fn new(edges: &[Edge; 3], py: i64) -> RowStepper {
+        let mut st = RowStepper { q: [0; 3], r: [0; 3], d: [1; 3], bq: [0; 3], br: [0; 3], side: [0; 3], b: [0; 3] };
+        for (i, e) in edges.iter().enumerate() {
+            let t = e.b * py + e.c;
+            st.b[i] = e.b;
+            if e.a == 0 {
+                st.q[i] = t;
+                continue;
+            }
+            let d = e.a.abs();
+            st.side[i] = if e.a > 0 { 1 } else { -1 };
+            st.d[i] = d;
+            st.q[i] = floor_div(t, d);
+            st.r[i] = t - st.q[i] * d;
+            st.bq[i] = floor_div(e.b, d);
+            st.br[i] = e.b - st.bq[i] * d;
+        }
+        st
+    }
+
+    /// The pixels [lo, hi) of the current row inside all three edges,
+    /// within [x0, x1) (as [`span`]).
+    #[inline(always)]
+    fn span(&self, x0: i64, x1: i64) -> (i64, i64) {
+        let (mut lo, mut hi) = (x0, x1);
+        for i in 0..3 {
+            match self.side[i] {
+                1 => lo = lo.max(-self.q[i]),
+                -1 => hi = hi.min(self.q[i] + 1),
+                _ => {
+                    if self.q[i] < 0 {
+                        hi = lo;
+                    }
+                }
+            }
+        }
+        (lo, hi)
+    }
+
+    /// On to the next row.
+    #[inline(always)]
+    fn step(&mut self) {
+        for i in 0..3 {
+            if self.side[i] == 0 {
+                self.q[i] += self.b[i];
+                continue;
+            }
+            self.q[i] += self.bq[i];
+            self.r[i] += self.br[i];
+            if self.r[i] >= self.d[i] {
+                self.r[i] -= self.d[i];
+                self.q[i] += 1;
+            }
+        }
+    }
+}
+
+/// Triangles spanning more rows than this step their span ends from row
+/// to row ([`RowStepper`]); shorter ones solve each row.
+const STEPPED_ROWS: i64 = 16;
+
 /// Bounding boxes at most this many pixel centres wide are scanned by
 /// testing each centre against the edges (a few additions) instead of
 /// solving for the span ends (three divisions per row).
@@ -196,8 +278,18 @@ pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, 
     if col0 >= col1 {
         return;
     }
+    // Wide boxes of more than a few rows step the span solution from row
+    // to row (setting the stepper up costs six divisions).
+    let mut rows = (col1 - col0 > NARROW && row1 - row0 > STEPPED_ROWS).then(|| RowStepper::new(&edges, row0));
     for py in row0..row1 {
-        let (lo, hi) = row_span(&edges, py, col0, col1);
+        let (lo, hi) = match &mut rows {
+            Some(st) => {
+                let s = st.span(col0, col1);
+                st.step();
+                s
+            }
+            None => row_span(&edges, py, col0, col1),
+        };
         if lo >= hi {
             continue;
         }
@@ -296,6 +388,46 @@ mod tests {
         assert!(covered > 1000 && empty > 1000, "{covered} {empty}");
     }
 
+    /// Stepping the span solution row by row gives `span`'s answer for
+    /// every row, on triangles as large as the guard band allows.
+    #[test]
+    fn stepped_rows_match_span() {
+        let mut seed = 777u64;
+        let mut rnd = |m: i64| {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 20) as i64).rem_euclid(m)
+        };
+        let big = 1i64 << 27;
+        let mut rows = 0;
+        for n in 0..3000 {
+            // Large and small triangles, some with horizontal edges.
+            let m = if n % 3 == 0 { 64 * ONE } else { big };
+            let mut x = [rnd(m) - m / 2, rnd(m) - m / 2, rnd(m) - m / 2];
+            let mut y = [rnd(m) - m / 2, rnd(m) - m / 2, rnd(m) - m / 2];
+            if n % 5 == 0 {
+                y[1] = y[0];
+            }
+            let area = (x[1] - x[0]) as i128 * (y[2] - y[0]) as i128 - (x[2] - x[0]) as i128 * (y[1] - y[0]) as i128;
+            if area == 0 {
+                continue;
+            }
+            if area < 0 {
+                x.swap(1, 2);
+                y.swap(1, 2);
+            }
+            let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
+            let row0 = y[0].min(y[1]).min(y[2]) / ONE - 2;
+            let (x0, x1) = (x[0].min(x[1]).min(x[2]) / ONE - 2, x[0].max(x[1]).max(x[2]) / ONE + 2);
+            let mut st = RowStepper::new(&edges, row0);
+            for py in row0..row0 + 200 {
+                assert_eq!(st.span(x0, x1), span(&edges, py, x0, x1), "row {py} of {x:?} {y:?}");
+                rows += (span(&edges, py, x0, x1).0 < span(&edges, py, x0, x1).1) as usize;
+                st.step();
+            }
+        }
+        assert!(rows > 100_000, "{rows} covered rows");
+    }
+
     /// The span solution agrees with testing every pixel centre directly.
     #[test]
     fn spans_match_per_pixel_edge_tests() {
@@ -321,6 +453,12 @@ mod tests {
                     let inside = edges.iter().all(|e| e.a * px + e.b * py + e.c >= 0);
                     let (lo, hi) = span(&edges, py, 0, 32);
                     assert_eq!(inside, px >= lo && px < hi, "pixel {px},{py} of {x:?} {y:?}");
+                    let mut st = RowStepper::new(&edges, py - 5);
+                    for _ in 0..5 {
+                        st.step();
+                    }
+                    let (lo, hi) = st.span(0, 32);
+                    assert_eq!(inside, px >= lo && px < hi, "stepped rows: pixel {px},{py} of {x:?} {y:?}");
                     let (c0, c1) = (px - 3, px + 4);
                     let (lo, hi) = row_span(&edges, py, c0, c1);
                     assert_eq!(inside, px >= lo && px < hi, "narrow scan: pixel {px},{py} of {x:?} {y:?}");

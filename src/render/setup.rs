@@ -216,7 +216,7 @@ fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer
         // Set up later, in the tile workers.
         if let Some(bbox) = super::tile::bounds(rs, ex, ey) {
             if super::tile::push(rs, ex, ey, bbox, zq, v, flat_color[back as usize], back, front_facing) {
-                super::tile::flush(rs, fb);
+                super::tile::submit(rs, fb);
             }
         }
         return;

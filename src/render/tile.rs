@@ -5,19 +5,33 @@
 //! calling thread only orients and culls them and appends a cheap record to
 //! the context's [`Batch`] (fixed-point vertices, window depth, 1/w and the
 //! attributes setup reads, and an index into the batch's list of captured
-//! states, `shade_state::ShadeState`, one per state change). [`flush`]
-//! shades the batch: the screen is cut into TILE x TILE tiles, each
-//! triangle is listed in the tiles its bounding box touches, and the
-//! persistent workers of [`super::pool`] with the calling thread take
-//! tiles one at a time. A worker finds a triangle's runs within its tile
-//! and, when it covers a pixel there, computes its planes and shades them
-//! (a triangle covering several tiles is set up once per tile: the same
-//! inputs give the same planes). Within a tile the triangles run in
-//! submission order, so every pixel sees its fragments in GL's order, and
-//! no two threads ever touch the same pixel. Setup, span finding and
-//! shading thus all run in parallel; the vertex stage, clipping and
-//! binning stay on the calling thread.
+//! states, `shade_state::ShadeState`, one per state change).
 //!
+//! Asynchronous flush (round 4): when a batch is full ([`MAX_BATCH`]), or
+//! holds [`SUBMIT_WORK`] while the workers are idle, [`submit`] hands it
+//! to the persistent workers of [`super::pool`] as a [`Flight`] and
+//! returns: the calling thread goes on with the front end (entry points,
+//! vertex stage, clipping, binning) and fills the next batch meanwhile
+//! (two batches in rotation, their vectors reused). Only the next
+//! submission (batches are shaded in order) and the sync points wait for
+//! the flight, and the waiting thread shades the bands left rather than
+//! sleep: at a sync point every thread shades. A Flight owns all it reads
+//! (triangle records, Arc'ed immutable states whose textures are
+//! copy-on-write), and writes the framebuffer's planes through raw
+//! pointers, which stay valid because everything that reads, writes,
+//! resizes, swaps or frees them calls [`sync`] first (see below;
+//! `Context` also waits in its Drop).
+//!
+//! The screen is cut into full-width bands of up to [`BAND`] rows, each
+//! triangle listed in the bands its bounding box touches; workers take
+//! bands one at a time. A worker finds a triangle's runs within its band
+//! and, when it covers a pixel there, computes its planes and shades them
+//! (a triangle crossing bands is set up once per band: the same inputs
+//! give the same planes). Within a band the triangles run in submission
+//! order, so every pixel sees its fragments in GL's order, and no two
+//! threads ever touch the same pixel. Bands rather than square tiles: a
+//! row is never cut into pieces that each repeat the span set-up.
+
 //! Images do not depend on the thread count: setup is a pure function of
 //! the record, and no kernel's result depends on where a span starts (the
 //! stepped colour is anchored at column 0 of the row:
@@ -33,14 +47,18 @@
 //! points, lines, antialiased or polygon-mode triangles or to two colour
 //! buffers at once. Later state changes cannot reach binned triangles:
 //! they carry their own copy of the state (textures are copy-on-write).
-//! A batch is also flushed when it holds [`MAX_BATCH`] triangles.
+//! GLX contexts bound to a drawable still wait at the end of every call
+//! (`winsys::bound` swaps the drawable's framebuffer in and out), so they
+//! overlap only within a call.
 //!
 //! `SOFTGL_THREADS=N` (read once per process) sets the thread count; the
 //! default is every core, and 1 shades each triangle immediately with no
-//! binning. Batches covering few pixels are shaded on the calling thread.
+//! binning and no threads at all. Batches with little work
+//! ([`PARALLEL_WORK`]) are shaded on the calling thread.
 
 use super::fragment::fast::Kernel;
 use super::fragment::SpanPixels;
+use super::pool;
 use super::raster;
 use super::setup::{planes_of, Attributes, TriangleSetup};
 use super::shade_state::ShadeState;
@@ -51,15 +69,36 @@ use glam::Vec4;
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
-/// Tile side in pixels. 128 rather than llvmpipe's 64: each span piece
-/// repeats the span set-up, and at 64 that cost 18% more instructions
-/// than shading untiled (particles at 1920x1080; 8% at 128), while 135
-/// tiles of a 1080p frame still balance two threads.
-pub const TILE: usize = 128;
+/// Tiles are bands of whole rows, this many high at most (fewer when
+/// that leaves less than [`BANDS_PER_THREAD`] bands per thread; at least
+/// [`MIN_BAND`]). Square 128x128 tiles cut every row of a large triangle
+/// into pieces that each repeat the span kernel's set-up, and set a
+/// triangle up in each tile it touches: 2 threads executed 35% (overdraw)
+/// to 65% (particles) more instructions than 1 thread at 1920x1080;
+/// 64-row bands cost 0-2% more. A band's colour, depth and stencil
+/// (about 1 MB at 1920 wide) do not stay in cache as a 128x128 tile's
+/// would, but neither do the 1-thread path's, which does not tile at all.
+pub const BAND: usize = 64;
+const MIN_BAND: usize = 16;
+const BANDS_PER_THREAD: usize = 8;
+
+/// The band height for a surface `height` rows high shaded by `threads`.
+fn band_rows(height: usize, threads: usize) -> usize {
+    let mut rows = BAND;
+    while rows > MIN_BAND && height.div_ceil(rows) < BANDS_PER_THREAD * threads {
+        rows /= 2;
+    }
+    rows
+}
 
 /// The most triangles a batch holds before it is shaded (its memory,
 /// about 180 bytes a triangle, stays bounded).
 pub const MAX_BATCH: usize = 32 * 1024;
+
+/// A batch holding this much work is handed to the workers as soon as
+/// they are idle, without waiting for it to fill (counted as
+/// [`PARALLEL_WORK`]).
+const SUBMIT_WORK: u64 = 4 * PARALLEL_WORK;
 
 /// Batches with less work than this are shaded on the calling thread:
 /// starting workers would cost more. Work is counted in pixels of the
@@ -170,11 +209,51 @@ impl std::fmt::Debug for Batch {
 
 /// A context's batch and whether it holds anything: checked without the
 /// lock, so that the commands of a scene that bins nothing cost no
-/// locking. Only the thread using the context changes either.
-#[derive(Default, Debug)]
+/// locking. Only the thread using the context changes either. Beside it,
+/// the batch handed to the workers before it ([`Flight`]), if any.
+#[derive(Debug)]
 pub struct BatchCell {
     pending: AtomicBool,
     batch: Mutex<Batch>,
+    flights: Mutex<Flights>,
+    /// A batch is in flight (`Flights::current`), read without the lock.
+    flying: AtomicBool,
+    /// Tiles of the flight not shaded yet (0: none in flight, or done).
+    left: Arc<AtomicUsize>,
+    /// [`MAX_BATCH`], [`SUBMIT_WORK`] and [`PARALLEL_WORK`], unless a
+    /// test set others.
+    max_batch: AtomicUsize,
+    submit_work: AtomicU64,
+    parallel_work: AtomicU64,
+}
+
+impl Default for BatchCell {
+    fn default() -> BatchCell {
+        BatchCell {
+            pending: AtomicBool::new(false),
+            batch: Mutex::default(),
+            flights: Mutex::default(),
+            flying: AtomicBool::new(false),
+            left: Arc::default(),
+            max_batch: AtomicUsize::new(MAX_BATCH),
+            submit_work: AtomicU64::new(SUBMIT_WORK),
+            parallel_work: AtomicU64::new(PARALLEL_WORK),
+        }
+    }
+}
+
+/// The batch in flight and the spare one (the double buffer).
+#[derive(Default)]
+struct Flights {
+    current: Option<(Box<Flight>, pool::Posted)>,
+    /// A finished flight, emptied: its vectors become the next batch's.
+    spare: Option<Box<Flight>>,
+}
+
+impl std::fmt::Debug for Flights {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        write!(f, "Flights(in flight: {})", self.current.is_some())
+    }
 }
 
 /// A context's batch, shared by clones of its RenderState.
@@ -183,6 +262,28 @@ pub type SharedBatch = Arc<BatchCell>;
 fn lock(b: &SharedBatch) -> std::sync::MutexGuard<'_, Batch> {
     b.batch.lock().unwrap_or_else(|e| e.into_inner())
 }
+
+fn lock_flights(b: &SharedBatch) -> std::sync::MutexGuard<'_, Flights> {
+    b.flights.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Sets a context's batch limits (tests: to make small scenes submit
+/// many batches to the workers): at most `max_triangles` per batch, a
+/// batch is handed to idle workers once it holds `submit_work` of work,
+/// and one with less than `parallel_work` is shaded on the calling thread.
+pub fn set_batch_limits(rs: &RenderState, max_triangles: usize, submit_work: u64, parallel_work: u64) {
+    rs.batch.max_batch.store(max_triangles.max(1), Ordering::Relaxed);
+    rs.batch.submit_work.store(submit_work, Ordering::Relaxed);
+    rs.batch.parallel_work.store(parallel_work, Ordering::Relaxed);
+}
+
+/// Batches handed to the workers so far in this process (tests check
+/// that they exercised the asynchronous path).
+pub fn flights_started() -> u64 {
+    FLIGHTS.load(Ordering::Relaxed)
+}
+
+static FLIGHTS: AtomicU64 = AtomicU64::new(0);
 
 /// Should this triangle be binned rather than shaded now?
 #[inline]
@@ -211,7 +312,9 @@ pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Option<Rect> {
 /// Adds a triangle to the batch, to be set up in a worker: positively
 /// oriented fixed-point vertices (x, y), their window depth and 1/w, and
 /// their attributes; `flat_color` and `back` as for `setup::planes_of`.
-/// True when the batch reached [`MAX_BATCH`] and should be flushed.
+/// True when the batch should be handed to the workers now ([`submit`]):
+/// it reached [`MAX_BATCH`], or [`SUBMIT_WORK`] while the workers are
+/// idle.
 #[allow(clippy::too_many_arguments)]
 #[inline]
 pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rect, zq: [(f64, f64); 3], v: [&A; 3], flat_color: Vec4, back: bool, front_facing: bool) -> bool {
@@ -247,7 +350,10 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
     let v = std::array::from_fn(|i| BinVertex { z: zq[i].0, q: zq[i].1, color: color(i) });
     b.pixels += area;
     b.tris.push(Binned { x, y, v, bbox, state, extra, front_facing });
-    b.tris.len() >= MAX_BATCH
+    // Full, or worth handing to workers that have nothing to do.
+    let cell = &rs.batch;
+    b.tris.len() >= cell.max_batch.load(Ordering::Relaxed)
+        || (b.pixels + SETUP_PIXELS * b.tris.len() as u64 >= cell.submit_work.load(Ordering::Relaxed) && cell.left.load(Ordering::Relaxed) == 0)
 }
 
 /// Sets up a binned triangle and hands its covered runs within `rect` to
@@ -295,7 +401,7 @@ struct RawPixels {
     has_stencil: bool,
 }
 
-// Workers write disjoint tiles (see `flush`).
+// Workers write disjoint tiles (see `Flight`).
 unsafe impl Send for RawPixels {}
 unsafe impl Sync for RawPixels {}
 
@@ -328,89 +434,98 @@ impl RawPixels {
     }
 }
 
-/// Shades everything binned, in order; returns when the framebuffer holds
-/// the result.
-pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
-    if !rs.batch.pending.load(Ordering::Relaxed) {
-        return;
+/// A batch handed to the workers: its triangles listed per tile, shaded
+/// tile by tile by whoever takes the next one, while the calling thread
+/// bins the next batch. Owns everything the workers read (the states are
+/// immutable snapshots, their textures copy-on-write); the framebuffer's
+/// planes it writes stay put until [`finish`] returns, because every
+/// command that reads, writes, resizes or frees them calls [`sync`] first.
+struct Flight {
+    batch: Batch,
+    /// Per band, the triangles touching it, in submission order.
+    bins: Vec<Vec<u32>>,
+    /// Rows per band.
+    rows: usize,
+    surface: Rect,
+    raw: RawPixels,
+    /// The next tile to take.
+    next: AtomicUsize,
+    /// Tiles not shaded yet (shared with [`BatchCell::left`]).
+    left: Arc<AtomicUsize>,
+    /// Fragments that passed the depth test (occlusion queries).
+    passed: AtomicU64,
+}
+
+impl Flight {
+    fn empty(left: Arc<AtomicUsize>) -> Box<Flight> {
+        Box::new(Flight {
+            batch: Batch::default(),
+            bins: Vec::new(),
+            rows: BAND,
+            surface: Rect::new(0, 0, 0, 0),
+            raw: RawPixels { width: 0, color: std::ptr::null_mut(), depth: std::ptr::null_mut(), stencil: std::ptr::null_mut(), has_depth: false, has_stencil: false },
+            next: AtomicUsize::new(0),
+            left,
+            passed: AtomicU64::new(0),
+        })
     }
-    let (tris, extras, states, pixels) = {
-        let mut b = lock(&rs.batch);
-        rs.batch.pending.store(false, Ordering::Relaxed);
-        if b.tris.is_empty() {
-            return;
+
+    /// Lists the batch's triangles per tile of `fb` and points at its planes.
+    fn prepare(&mut self, fb: &mut Framebuffer, threads: usize) {
+        // The framebuffer may have changed size since binning only through
+        // commands outside the draw call, which never happens with work
+        // pending; still, never write outside it.
+        let surface = Rect::new(0, 0, fb.width as i32, fb.height as i32);
+        let rows = band_rows(fb.height, threads);
+        let bands = fb.height.div_ceil(rows);
+        self.bins.resize_with(bands, Vec::new);
+        self.bins.truncate(bands);
+        for (i, t) in self.batch.tris.iter().enumerate() {
+            let b = t.bbox.intersect(surface);
+            if b.is_empty() {
+                continue;
+            }
+            for band in &mut self.bins[b.y0 as usize / rows..=(b.y1 as usize - 1) / rows] {
+                band.push(i as u32);
+            }
         }
-        let pixels = std::mem::replace(&mut b.pixels, 0);
-        (std::mem::take(&mut b.tris), std::mem::take(&mut b.extras), std::mem::take(&mut b.states), pixels)
-    };
-    shade_batch(rs, fb, &tris, &extras, &states, pixels);
-    // The emptied vectors go back, keeping their capacity (no regrowth
-    // and copying per batch).
-    let (mut tris, mut extras, mut states) = (tris, extras, states);
-    tris.clear();
-    extras.clear();
-    states.clear();
-    let mut b = lock(&rs.batch);
-    if b.tris.capacity() == 0 {
-        b.tris = tris;
+        self.rows = rows;
+        self.surface = surface;
+        self.raw = RawPixels::new(fb);
+        self.next.store(0, Ordering::Relaxed);
+        self.passed.store(0, Ordering::Relaxed);
+        self.left.store(self.bins.len(), Ordering::Release);
     }
-    if b.extras.capacity() == 0 {
-        b.extras = extras;
-    }
-    if b.states.capacity() == 0 {
-        b.states = states;
+
+    /// Back to empty, keeping the vectors' capacity (no regrowth and
+    /// copying per batch).
+    fn clear(&mut self) {
+        let b = &mut self.batch;
+        b.tris.clear();
+        b.extras.clear();
+        b.states.clear();
+        b.pixels = 0;
+        for bin in &mut self.bins {
+            bin.clear();
+        }
     }
 }
 
-/// Shades binned triangles (the body of [`flush`]).
-fn shade_batch(rs: &RenderState, fb: &mut Framebuffer, tris: &[Binned], extras: &[BinExtra], states: &[Arc<ShadeState>], pixels: u64) {
-    let of = |t: &Binned| (&*states[t.state as usize], extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
-    // The framebuffer may have changed size since binning only through
-    // commands outside the draw call, which never happens with work
-    // pending; still, never write outside it.
-    let surface = Rect::new(0, 0, fb.width as i32, fb.height as i32);
-    let threads = rs.threads;
-    if threads <= 1 || pixels + SETUP_PIXELS * (tris.len() as u64) < PARALLEL_WORK {
-        for t in tris {
-            let (st, extra) = of(t);
-            shade_binned(t, st, extra, t.bbox.intersect(surface), |k, setup, py, lo, hi| {
-                let mut px = SpanPixels::of(fb, py, lo, hi);
-                k(&st.fragment, setup, &mut px, py, lo, hi);
-                let passed = px.passed;
-                fb.samples_passed = fb.samples_passed.wrapping_add(passed);
-            });
-        }
-        return;
-    }
-    let (tw, th) = (fb.width.div_ceil(TILE), fb.height.div_ceil(TILE));
-    let mut bins: Vec<Vec<u32>> = vec![Vec::new(); tw * th];
-    for (i, t) in tris.iter().enumerate() {
-        let b = t.bbox.intersect(surface);
-        if b.is_empty() {
-            continue;
-        }
-        let (tx0, tx1) = (b.x0 as usize / TILE, (b.x1 as usize - 1) / TILE);
-        let (ty0, ty1) = (b.y0 as usize / TILE, (b.y1 as usize - 1) / TILE);
-        for ty in ty0..=ty1 {
-            for tx in tx0..=tx1 {
-                bins[ty * tw + tx].push(i as u32);
-            }
-        }
-    }
-    let raw = RawPixels::new(fb);
-    let next = AtomicUsize::new(0);
-    let passed = AtomicU64::new(0);
-    let work = &|| {
+impl pool::Work for Flight {
+    fn work(&self) {
+        let b = &self.batch;
+        let of = |t: &Binned| (&*b.states[t.state as usize], b.extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
+        let raw = &self.raw;
         let mut local = 0u64;
         loop {
-            let k = next.fetch_add(1, Ordering::Relaxed);
-            if k >= bins.len() {
+            let k = self.next.fetch_add(1, Ordering::Relaxed);
+            if k >= self.bins.len() {
                 break;
             }
-            let (tx, ty) = ((k % tw) * TILE, (k / tw) * TILE);
-            let tile = Rect { x0: tx as i32, y0: ty as i32, x1: (tx + TILE).min(raw.width) as i32, y1: (ty + TILE) as i32 }.intersect(surface);
-            for &i in &bins[k] {
-                let t = &tris[i as usize];
+            let y = k * self.rows;
+            let tile = Rect { x0: 0, y0: y as i32, x1: self.surface.x1, y1: (y + self.rows) as i32 }.intersect(self.surface);
+            for &i in &self.bins[k] {
+                let t = &b.tris[i as usize];
                 let r = t.bbox.intersect(tile);
                 if r.is_empty() {
                     continue;
@@ -418,15 +533,105 @@ fn shade_batch(rs: &RenderState, fb: &mut Framebuffer, tris: &[Binned], extras: 
                 let (st, extra) = of(t);
                 shade_binned(t, st, extra, r, |kernel, setup, py, lo, hi| {
                     // Safety: inside the surface and inside this tile, which
-                    // no other worker holds.
+                    // no other thread holds.
                     let mut px = unsafe { raw.span(py, lo, hi) };
                     kernel(&st.fragment, setup, &mut px, py, lo, hi);
                     local += px.passed;
                 });
             }
+            self.left.fetch_sub(1, Ordering::Release);
         }
-        passed.fetch_add(local, Ordering::Relaxed);
+        self.passed.fetch_add(local, Ordering::Relaxed);
+    }
+}
+
+/// Waits for the batch in flight, if any, helping the workers with the
+/// tiles left; its fragment count goes to `fb` (the framebuffer it drew).
+fn finish(cell: &SharedBatch, fl: &mut Flights, fb: &mut Framebuffer) {
+    if let Some((mut flight, posted)) = fl.current.take() {
+        pool::finish(posted, &*flight);
+        debug_assert_eq!(flight.raw.color, fb.color.as_mut_ptr(), "a flight finished on another framebuffer");
+        fb.samples_passed = fb.samples_passed.wrapping_add(flight.passed.load(Ordering::Relaxed));
+        flight.clear();
+        cell.left.store(0, Ordering::Relaxed);
+        cell.flying.store(false, Ordering::Relaxed);
+        fl.spare = Some(flight);
+    }
+}
+
+/// Takes the pending batch, leaving the spare flight's empty vectors in
+/// its place; None when nothing is pending.
+fn take_batch(cell: &SharedBatch, fl: &mut Flights) -> Option<Box<Flight>> {
+    if !cell.pending.load(Ordering::Relaxed) && !cell.flying.load(Ordering::Relaxed) {
+        return None;
+    }
+    let mut b = lock(cell);
+    cell.pending.store(false, Ordering::Relaxed);
+    if b.tris.is_empty() {
+        return None;
+    }
+    let mut flight = fl.spare.take().unwrap_or_else(|| Flight::empty(cell.left.clone()));
+    std::mem::swap(&mut flight.batch, &mut *b);
+    Some(flight)
+}
+
+/// Hands the pending batch to the workers and returns without waiting
+/// for it (after waiting for the one before it: batches are shaded in
+/// order). A batch with little work is shaded at once on this thread.
+pub fn submit(rs: &RenderState, fb: &mut Framebuffer) {
+    let cell = &rs.batch;
+    let mut fl = lock_flights(cell);
+    let Some(flight) = take_batch(cell, &mut fl) else {
+        return;
     };
-    super::pool::run(threads, work);
-    fb.samples_passed = fb.samples_passed.wrapping_add(passed.into_inner());
+    finish(cell, &mut fl, fb);
+    launch(rs, &mut fl, flight, fb);
+}
+
+/// Starts `flight` on the workers (or shades it now if it is small).
+fn launch(rs: &RenderState, fl: &mut Flights, mut flight: Box<Flight>, fb: &mut Framebuffer) {
+    let b = &flight.batch;
+    if rs.threads <= 1 || b.pixels + SETUP_PIXELS * (b.tris.len() as u64) < rs.batch.parallel_work.load(Ordering::Relaxed) {
+        shade_here(&flight.batch, fb);
+        flight.clear();
+        fl.spare = Some(flight);
+        return;
+    }
+    flight.prepare(fb, rs.threads);
+    // Safety: the flight is boxed (its address stays put) and is only
+    // dropped or reused after `finish`, which every path to the
+    // framebuffer and the context's end calls first (`sync`).
+    let posted = unsafe { pool::start(rs.threads, &*flight) };
+    FLIGHTS.fetch_add(1, Ordering::Relaxed);
+    fl.current = Some((flight, posted));
+    rs.batch.flying.store(true, Ordering::Relaxed);
+}
+
+/// Shades a batch on the calling thread, triangle by triangle.
+fn shade_here(b: &Batch, fb: &mut Framebuffer) {
+    let surface = Rect::new(0, 0, fb.width as i32, fb.height as i32);
+    for t in &b.tris {
+        let (st, extra) = (&*b.states[t.state as usize], b.extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
+        shade_binned(t, st, extra, t.bbox.intersect(surface), |k, setup, py, lo, hi| {
+            let mut px = SpanPixels::of(fb, py, lo, hi);
+            k(&st.fragment, setup, &mut px, py, lo, hi);
+            let passed = px.passed;
+            fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+        });
+    }
+}
+
+/// Shades everything binned, in order, the batch in flight first; returns
+/// when the framebuffer holds the result.
+pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
+    let cell = &rs.batch;
+    if !cell.pending.load(Ordering::Relaxed) && !cell.flying.load(Ordering::Relaxed) {
+        return;
+    }
+    let mut fl = lock_flights(cell);
+    finish(cell, &mut fl, fb);
+    if let Some(flight) = take_batch(cell, &mut fl) {
+        launch(rs, &mut fl, flight, fb);
+        finish(cell, &mut fl, fb);
+    }
 }
