@@ -41,6 +41,9 @@ pub struct Assembly {
     /// with the colour sum are left out). `verts` then holds fixed slots
     /// the vertices are written into in place.
     fast: bool,
+    /// With `fast`: unlit, untextured and fog-free, so a vertex needs only
+    /// its position and the current colours.
+    plain: bool,
     /// Filled triangles whose vertices are all inside the guard band go
     /// straight to setup (`render::draw_triangle`'s first case, decided
     /// once per primitive instead of per triangle).
@@ -84,7 +87,8 @@ impl Context {
             // general path computes it under the same state.
             verts.resize(SLOTS, ClipVertex::ZERO);
         }
-        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, direct });
+        let plain = self.derived.lighting.is_none() && self.texture.vertex.units.is_empty() && rs.texture.is_none() && rs.fog.is_none();
+        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, plain, direct });
     }
 
     pub fn end(&mut self) {
@@ -117,9 +121,9 @@ impl Context {
     /// glVertex: the vertex takes the current colour (section 2.7).
     /// Outside Begin/End a vertex has no effect.
     pub fn vertex(&mut self, p: [f32; 4]) {
-        let Some((mode, fast)) = self.prim.as_ref().map(|a| (a.mode, a.fast)) else { return };
+        let Some((mode, fast, plain)) = self.prim.as_ref().map(|a| (a.mode, a.fast, a.plain)) else { return };
         if fast {
-            return self.vertex_fast(p);
+            return if plain { self.vertex_fast::<true>(p) } else { self.vertex_fast::<false>(p) };
         }
         let obj = Vec4::from_array(p);
         let [color, back_color, secondary, back_secondary] = self.vertex_colors(obj);
@@ -189,13 +193,23 @@ impl Context {
     /// ring (no 224-byte temporary copied per vertex), and triangles whose
     /// vertices are inside the guard band go straight to setup.
     #[inline]
-    fn vertex_fast(&mut self, p: [f32; 4]) {
+    fn vertex_fast<const PLAIN: bool>(&mut self, p: [f32; 4]) {
         let obj = Vec4::from_array(p);
-        // The attributes as `vertex` computes them (the same functions).
-        let [color, back_color, secondary, back_secondary] = self.vertex_colors(obj);
-        let textured = !self.texture.vertex.units.is_empty();
+        // The attributes as `vertex` computes them (the same functions);
+        // PLAIN (unlit, untextured, fog-free) skips the tests for what the
+        // state cannot need.
+        let [color, back_color, secondary, back_secondary] = if PLAIN {
+            let rs = &self.derived.render;
+            let c = Vec4::from_array(self.current.color);
+            // `vertex_colors` without lighting or texturing.
+            let s = if rs.color_sum { Vec4::from_array(self.current.secondary_color).truncate().extend(0.0) } else { Vec4::ZERO };
+            [c + s, c + s, Vec4::ZERO, Vec4::ZERO]
+        } else {
+            self.vertex_colors(obj)
+        };
+        let textured = !PLAIN && !self.texture.vertex.units.is_empty();
         let tex = if textured { self.vertex_texcoords(obj) } else { [Vec4::ZERO; render::texture::MAX_UNITS] };
-        let fog = self.vertex_fog(obj);
+        let fog = if PLAIN { 0.0 } else { self.vertex_fog(obj) };
         let rs = &self.derived.render;
         let pos = self.derived.mvp * obj;
         let edge = self.current.edge_flag;
@@ -213,13 +227,15 @@ impl Context {
         v.color = color;
         v.back_color = back_color;
         v.edge = edge;
-        v.secondary = secondary;
-        v.back_secondary = back_secondary;
-        // Without texture units the coordinates stay as `begin` zeroed them.
-        if textured {
-            v.tex = tex;
+        // Fields this state leaves zero stay as `begin` zeroed them.
+        if !PLAIN {
+            v.secondary = secondary;
+            v.back_secondary = back_secondary;
+            if textured {
+                v.tex = tex;
+            }
+            v.fog = fog;
         }
-        v.fog = fog;
         v.place(rs);
         let fb = &mut self.fb;
         let t = &a.verts;
