@@ -144,6 +144,13 @@ impl Context {
         self.assemble(v);
     }
 
+    /// Is the open primitive on the batched path's plain case (what
+    /// `vertex` sends to `vertex_fast::<true>`)?
+    #[inline]
+    pub(crate) fn plain_batch(&self) -> bool {
+        self.prim.as_ref().is_some_and(|a| a.fast && a.plain)
+    }
+
     /// A vertex's primary and secondary colours, front and back (2.14,
     /// 3.9): the current colours, or lit. Shared by `vertex` and
     /// `vertex_fast`, so both paths compute the same bits.
@@ -192,8 +199,8 @@ impl Context {
     /// vertex is written field by field into its slot of the assembly's
     /// ring (no 224-byte temporary copied per vertex), and triangles whose
     /// vertices are inside the guard band go straight to setup.
-    #[inline]
-    fn vertex_fast<const PLAIN: bool>(&mut self, p: [f32; 4]) {
+    #[inline(always)]
+    pub(crate) fn vertex_fast<const PLAIN: bool>(&mut self, p: [f32; 4]) {
         let obj = Vec4::from_array(p);
         // The attributes as `vertex` computes them (the same functions);
         // PLAIN (unlit, untextured, fog-free) skips the tests for what the
