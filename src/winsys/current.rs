@@ -102,17 +102,17 @@ mod tests {
     #[test]
     fn current_is_per_thread() {
         let a = 0x1000 as *mut Context;
-        let b = 0x2000 as *mut Context;
+        let b = 0x2000usize;
         let saved = current();
         set_current(a);
         let other = std::thread::spawn(move || {
             let before = current() as usize;
-            set_current(b);
+            set_current(b as *mut Context);
             (before, current() as usize)
         })
         .join()
         .unwrap();
-        assert_eq!(other, (0, b as usize));
+        assert_eq!(other, (0, b));
         assert_eq!(current(), a);
         set_current(std::ptr::null_mut());
         assert!(current().is_null());
