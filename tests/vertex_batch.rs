@@ -5,8 +5,10 @@
 //! 0 to 13 vertices, random interleavings of glColor, glSecondaryColor,
 //! glEdgeFlag, glNormal and glTexCoord between the vertices) under random
 //! state (shading, culling and front face, polygon modes, scissor,
-//! viewport, user clip planes, colour sum, and sometimes lighting, fog or
-//! texturing, which leave the batched path), submitted in immediate mode,
+//! viewport, user clip planes, colour sum, lighting (one or two lights,
+//! positional, attenuated, spot, two-sided, local viewer, separate
+//! specular, glMaterial between vertices), fog (every mode, per vertex or
+//! per fragment, glFogCoord or depth) and texturing), submitted in immediate mode,
 //! through display lists (GL_COMPILE then glCallList, or
 //! GL_COMPILE_AND_EXECUTE) or from client arrays (glDrawArrays and
 //! glDrawElements; positions of 2 to 4 floats, colours of 3 or 4 floats
@@ -16,7 +18,7 @@
 use softgl::framebuffer::Config;
 use softgl::gl::arrays::Array;
 use softgl::gl::enums::*;
-use softgl::gl::fog::{GL_FOG_END, GL_FOG_MODE, GL_FOG_START};
+use softgl::gl::fog::{GL_FOG_COORD, GL_FOG_COORD_SRC, GL_FOG_END, GL_FOG_MODE, GL_FOG_START, GL_FRAGMENT_DEPTH};
 use softgl::gl::texture::enums as t;
 use softgl::gl::{Command, Context};
 
@@ -37,15 +39,17 @@ fn context(batching: bool) -> Context {
     c.submit(Command::BindTexture(t::GL_TEXTURE_2D, 1));
     let cmd = unsafe { c.tex_image_command(2, t::GL_TEXTURE_2D, 0, t::GL_RGBA as i32, [4, 4, 1], 0, t::GL_RGBA, t::GL_UNSIGNED_BYTE, data.as_ptr()) };
     c.submit(cmd.expect("a valid glTexImage2D"));
+    // One level: complete only without mipmapping.
+    c.submit(Command::TexParameter(t::GL_TEXTURE_2D, t::GL_TEXTURE_MIN_FILTER, [t::GL_LINEAR as f32, 0.0, 0.0, 0.0]));
     c
 }
 
-/// The state of one case; `batchable` says whether it leaves the batched
-/// path on (no lighting, fog or texturing).
-fn state(r: &mut Rng) -> (Vec<Command>, bool) {
+/// The state of one case and whether it takes the batched path.
+fn state(r: &mut Rng) -> (Vec<Command>, Batch) {
     let mut v = Vec::new();
     let en = |v: &mut Vec<Command>, cap: u32, on: bool| v.push(if on { Command::Enable(cap) } else { Command::Disable(cap) });
-    v.push(Command::ShadeModel(if r.chance(40) { GL_FLAT } else { GL_SMOOTH }));
+    let flat = r.chance(40);
+    v.push(Command::ShadeModel(if flat { GL_FLAT } else { GL_SMOOTH }));
     en(&mut v, GL_DEPTH_TEST, r.chance(60));
     v.push(Command::DepthFunc(r.pick(&[GL_LESS, GL_LEQUAL, GL_ALWAYS])));
     en(&mut v, GL_CULL_FACE, r.chance(25));
@@ -64,17 +68,45 @@ fn state(r: &mut Rng) -> (Vec<Command>, bool) {
     }
     en(&mut v, GL_CLIP_PLANE0, r.chance(10));
     v.push(Command::ClipPlane(GL_CLIP_PLANE0, [r.range(-1.0, 1.0) as f64, r.range(-1.0, 1.0) as f64, 0.0, r.range(-0.5, 0.5) as f64]));
-    en(&mut v, GL_COLOR_SUM, r.chance(25));
-    let lighting = r.chance(10);
+    let sum = r.chance(25);
+    en(&mut v, GL_COLOR_SUM, sum);
+    let lighting = r.chance(30);
     en(&mut v, GL_LIGHTING, lighting);
-    en(&mut v, GL_LIGHT0, true);
+    en(&mut v, GL_LIGHT0, r.chance(80));
     en(&mut v, GL_COLOR_MATERIAL, r.chance(50));
-    let fog = r.chance(10);
+    if lighting {
+        // The light and model configurations the lit path meets: a second
+        // light, positional, attenuated, spot; two-sided; local viewer;
+        // separate specular; normalization; shininess.
+        en(&mut v, GL_LIGHT0 + 1, r.chance(50));
+        let w = if r.chance(50) { 1.0 } else { 0.0 };
+        v.push(Command::Light(GL_LIGHT0 + 1, GL_POSITION, [r.range(-3.0, 3.0), r.range(-3.0, 3.0), r.range(-3.0, 3.0), w]));
+        v.push(Command::Light(GL_LIGHT0 + 1, GL_DIFFUSE, [r.unit(), r.unit(), r.unit(), 1.0]));
+        v.push(Command::Light(GL_LIGHT0 + 1, GL_SPECULAR, [r.unit(), r.unit(), r.unit(), 1.0]));
+        v.push(Command::Light(GL_LIGHT0 + 1, GL_LINEAR_ATTENUATION, [r.range(0.0, 0.5), 0.0, 0.0, 0.0]));
+        if r.chance(30) {
+            v.push(Command::Light(GL_LIGHT0 + 1, GL_SPOT_CUTOFF, [r.range(10.0, 90.0), 0.0, 0.0, 0.0]));
+            v.push(Command::Light(GL_LIGHT0 + 1, GL_SPOT_EXPONENT, [r.range(0.0, 8.0), 0.0, 0.0, 0.0]));
+        }
+        v.push(Command::LightModel(GL_LIGHT_MODEL_TWO_SIDE, [r.chance(40) as u32 as f32, 0.0, 0.0, 0.0]));
+        v.push(Command::LightModel(GL_LIGHT_MODEL_LOCAL_VIEWER, [r.chance(40) as u32 as f32, 0.0, 0.0, 0.0]));
+        if r.chance(40) {
+            v.push(Command::LightModel(GL_LIGHT_MODEL_COLOR_CONTROL, [GL_SEPARATE_SPECULAR_COLOR as f32, 0.0, 0.0, 0.0]));
+        }
+        en(&mut v, GL_NORMALIZE, r.chance(50));
+        let face = r.pick(&[GL_FRONT, GL_BACK, GL_FRONT_AND_BACK]);
+        v.push(Command::Material(face, GL_SPECULAR, [r.unit(), r.unit(), r.unit(), 1.0]));
+        v.push(Command::Material(face, GL_SHININESS, [r.range(0.0, 60.0), 0.0, 0.0, 0.0]));
+        v.push(Command::Material(face, GL_EMISSION, [r.unit() * 0.2, r.unit() * 0.2, 0.0, 1.0]));
+    }
+    let fog = r.chance(20);
     en(&mut v, GL_FOG, fog);
-    v.push(Command::Fog(GL_FOG_MODE, [t::GL_LINEAR as f32, 0.0, 0.0, 0.0]));
+    v.push(Command::Fog(GL_FOG_MODE, [r.pick(&[t::GL_LINEAR, 0x0800, 0x0801]) as f32, 0.0, 0.0, 0.0])); // LINEAR, EXP, EXP2
     v.push(Command::Fog(GL_FOG_START, [0.0; 4]));
     v.push(Command::Fog(GL_FOG_END, [r.range(1.0, 10.0), 0.0, 0.0, 0.0]));
-    let textured = r.chance(10);
+    v.push(Command::Fog(GL_FOG_COORD_SRC, [r.pick(&[GL_FOG_COORD, GL_FRAGMENT_DEPTH]) as f32, 0.0, 0.0, 0.0]));
+    v.push(Command::Hint(GL_FOG_HINT, r.pick(&[GL_FASTEST, GL_NICEST, GL_DONT_CARE])));
+    let textured = r.chance(20);
     en(&mut v, t::GL_TEXTURE_2D, textured);
     v.push(Command::MatrixMode(GL_PROJECTION));
     v.push(Command::LoadIdentity);
@@ -90,7 +122,15 @@ fn state(r: &mut Rng) -> (Vec<Command>, bool) {
     if r.chance(50) {
         v.push(Command::Rotate(r.range(-180.0, 180.0) as f64, [r.unit() as f64, r.unit() as f64, 1.0]));
     }
-    (v, !lighting && !fog && !textured)
+    (v, Batch { fast: !(flat && sum && textured), lit: lighting })
+}
+
+/// Whether a case's state takes the batched path (all but flat-shaded
+/// textured triangles with the colour sum) and whether it is lit.
+#[derive(Clone, Copy)]
+struct Batch {
+    fast: bool,
+    lit: bool,
 }
 
 /// One vertex with the attributes set before it.
@@ -102,6 +142,9 @@ struct Vertex {
     edge: Option<bool>,
     normal: Option<[f32; 3]>,
     tex: Option<[f32; 4]>,
+    fog: Option<f32>,
+    /// glMaterial(GL_FRONT_AND_BACK, GL_DIFFUSE) between vertices.
+    material: Option<[f32; 4]>,
 }
 
 fn primitive(r: &mut Rng) -> (u32, Vec<Vertex>) {
@@ -121,6 +164,8 @@ fn primitive(r: &mut Rng) -> (u32, Vec<Vertex>) {
             edge: r.chance(30).then(|| r.chance(50)),
             normal: r.chance(30).then(|| [r.range(-1.0, 1.0), r.range(-1.0, 1.0), r.range(-1.0, 1.0)]),
             tex: r.chance(30).then(|| [r.range(-1.0, 2.0), r.range(-1.0, 2.0), 0.0, 1.0]),
+            fog: r.chance(30).then(|| r.range(0.0, 8.0)),
+            material: r.chance(10).then(|| [r.unit(), r.unit(), r.unit(), r.unit()]),
         })
         .collect();
     (mode, verts)
@@ -143,6 +188,12 @@ fn immediate(mode: u32, verts: &[Vertex]) -> Vec<Command> {
         }
         if let Some(tc) = x.tex {
             v.push(Command::TexCoord(t::GL_TEXTURE0, tc));
+        }
+        if let Some(f) = x.fog {
+            v.push(Command::FogCoord(f));
+        }
+        if let Some(m) = x.material {
+            v.push(Command::Material(GL_FRONT_AND_BACK, GL_DIFFUSE, m));
         }
         v.push(Command::Vertex(x.pos));
     }
@@ -197,7 +248,7 @@ fn from_arrays(c: &mut Context, r: &mut Rng, mode: u32, verts: &[Vertex]) {
 fn batched_vertices_match_the_general_path() {
     let (mut fast, mut general) = (context(true), context(false));
     let mut r = Rng(0x5eed_0001);
-    let (mut batchable, mut drawn) = (0, 0);
+    let (mut batchable, mut lit, mut drawn) = (0, 0, 0);
     for case in 0..3000 {
         let (state_cmds, can_batch) = state(&mut r);
         let prims: Vec<(u32, Vec<Vertex>)> = (0..1 + r.below(3)).map(|_| primitive(&mut r)).collect();
@@ -241,8 +292,9 @@ fn batched_vertices_match_the_general_path() {
             c.sync_render();
         }
         let filled = prims.iter().any(|(m, v)| *m >= GL_TRIANGLES && *m != GL_POLYGON && v.len() >= 3);
-        if can_batch && filled {
+        if can_batch.fast && filled {
             batchable += 1;
+            lit += can_batch.lit as u32;
         }
         if fast.fb.color.iter().any(|p| *p != fast.fb.color[0]) {
             drawn += 1;
@@ -261,5 +313,5 @@ fn batched_vertices_match_the_general_path() {
     }
     // The comparison meant something: many cases took the batched path
     // and drew pixels.
-    assert!(batchable > 800 && drawn > 1000, "batchable {batchable}, drawn {drawn}");
+    assert!(batchable > 1500 && lit > 400 && drawn > 1000, "batchable {batchable}, lit {lit}, drawn {drawn}");
 }

@@ -913,6 +913,22 @@ impl Context {
     /// `apply_element` for positions of `VN` floats and colours of `CN`
     /// normalized `C`s (see `draw_specialized`).
     fn draw_elements_as<const VN: usize, C: Elem, const CN: usize>(&mut self, f: &Fetch, v: &Source, n: usize, index: &impl Fn(usize) -> usize) {
+        // The batched path's plain case is decided once for the draw
+        // (nothing in the loop changes the state it depends on): each
+        // vertex then enters it directly, as `vertex` would send it.
+        if self.plain_batch() {
+            for k in 0..n {
+                let i = index(k);
+                if let Some(s) = &f.color {
+                    self.current.color = s.fetch_as::<C, CN, true>(i);
+                    if self.lighting.color_material {
+                        self.apply_color_material();
+                    }
+                }
+                self.vertex_fast::<true>(v.fetch_as::<f32, VN, false>(i));
+            }
+            return;
+        }
         for k in 0..n {
             let i = index(k);
             if let Some(s) = &f.color {

@@ -36,10 +36,14 @@ pub struct Assembly {
     /// The current point's size after attenuation (GL_POINTS).
     point_size: f32,
     /// The batched path (`vertex_fast`) serves this primitive: a filled
-    /// mode whose vertices need only the position and the current colour
-    /// (no lighting, texturing, fog, selection or feedback). `verts` then
-    /// holds fixed slots the vertices are written into in place.
+    /// mode in render mode (not selection or feedback), lit or not,
+    /// textured or not, fogged or not (only flat-shaded textured triangles
+    /// with the colour sum are left out). `verts` then holds fixed slots
+    /// the vertices are written into in place.
     fast: bool,
+    /// With `fast`: unlit, untextured and fog-free, so a vertex needs only
+    /// its position and the current colours.
+    plain: bool,
     /// Filled triangles whose vertices are all inside the guard band go
     /// straight to setup (`render::draw_triangle`'s first case, decided
     /// once per primitive instead of per triangle).
@@ -64,11 +68,11 @@ impl Context {
         }
         let rs = &self.derived.render;
         let filled = matches!(mode, GL_TRIANGLES | GL_TRIANGLE_STRIP | GL_TRIANGLE_FAN | GL_QUADS | GL_QUAD_STRIP);
+        // Flat shading of textured triangles with the colour sum copies the
+        // provoking vertex's secondary colour (`flat_secondary`): left to
+        // the general path.
         let fast = filled
-            && self.derived.lighting.is_none()
-            && self.texture.vertex.units.is_empty()
-            && rs.texture.is_none()
-            && rs.fog.is_none()
+            && !(rs.flat && rs.color_sum && rs.texture.is_some())
             && self.select.mode == select::GL_RENDER
             && !rs.reference
             && self.vertex_batching;
@@ -83,7 +87,8 @@ impl Context {
             // general path computes it under the same state.
             verts.resize(SLOTS, ClipVertex::ZERO);
         }
-        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, direct });
+        let plain = self.derived.lighting.is_none() && self.texture.vertex.units.is_empty() && rs.texture.is_none() && rs.fog.is_none();
+        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, plain, direct });
     }
 
     pub fn end(&mut self) {
@@ -116,12 +121,41 @@ impl Context {
     /// glVertex: the vertex takes the current colour (section 2.7).
     /// Outside Begin/End a vertex has no effect.
     pub fn vertex(&mut self, p: [f32; 4]) {
-        let Some((mode, fast)) = self.prim.as_ref().map(|a| (a.mode, a.fast)) else { return };
+        let Some((mode, fast, plain)) = self.prim.as_ref().map(|a| (a.mode, a.fast, a.plain)) else { return };
         if fast {
-            return self.vertex_fast(p);
+            return if plain { self.vertex_fast::<true>(p) } else { self.vertex_fast::<false>(p) };
         }
         let obj = Vec4::from_array(p);
-        // Primary and secondary colours, front and back (2.14, 3.9).
+        let [color, back_color, secondary, back_secondary] = self.vertex_colors(obj);
+        // No texture unit enabled: all zero, without the out-of-line call.
+        let mut tex = if self.texture.vertex.units.is_empty() { [Vec4::ZERO; render::texture::MAX_UNITS] } else { self.vertex_texcoords(obj) };
+        if self.select.mode == select::GL_FEEDBACK && !self.texture.vertex.units.iter().any(|u| u.unit == 0) {
+            tex[0] = self.feedback_texcoord(obj);
+        }
+        let fog = self.vertex_fog(obj);
+        let mut v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary, back_secondary, inside: false, win: [0.0; 4], snapped: [0; 2] };
+        v.place(&self.derived.render);
+        if mode == GL_POINTS {
+            let size = self.derived_point_size(obj);
+            if let Some(asm) = self.prim.as_mut() {
+                asm.point_size = size;
+            }
+        }
+        self.assemble(v);
+    }
+
+    /// Is the open primitive on the batched path's plain case (what
+    /// `vertex` sends to `vertex_fast::<true>`)?
+    #[inline]
+    pub(crate) fn plain_batch(&self) -> bool {
+        self.prim.as_ref().is_some_and(|a| a.fast && a.plain)
+    }
+
+    /// A vertex's primary and secondary colours, front and back (2.14,
+    /// 3.9): the current colours, or lit. Shared by `vertex` and
+    /// `vertex_fast`, so both paths compute the same bits.
+    #[inline(always)]
+    fn vertex_colors(&self, obj: Vec4) -> [Vec4; 4] {
         let sum_enabled = self.derived.render.color_sum;
         let (color, back_color, secondary, back_secondary) = match &self.derived.lighting {
             None => {
@@ -141,49 +175,49 @@ impl Context {
         };
         // Without texturing the colour sum can be made here exactly: both
         // colours interpolate linearly and the sum is clamped per fragment.
-        let textured = self.derived.render.texture.is_some();
-        let (color, back_color, secondary, back_secondary) = if textured {
-            (color, back_color, secondary, back_secondary)
+        if self.derived.render.texture.is_some() {
+            [color, back_color, secondary, back_secondary]
         } else {
-            (color + secondary, back_color + back_secondary, Vec4::ZERO, Vec4::ZERO)
-        };
-        // No texture unit enabled: all zero, without the out-of-line call.
-        let mut tex = if self.texture.vertex.units.is_empty() { [Vec4::ZERO; render::texture::MAX_UNITS] } else { self.vertex_texcoords(obj) };
-        if self.select.mode == select::GL_FEEDBACK && !self.texture.vertex.units.iter().any(|u| u.unit == 0) {
-            tex[0] = self.feedback_texcoord(obj);
+            [color + secondary, back_color + back_secondary, Vec4::ZERO, Vec4::ZERO]
         }
-        let fog = match &self.derived.render.fog {
-            None => 0.0,
-            // The fog coordinate (3.10): glFogCoord's value, or the
-            // eye-space distance, taken as |z_eye| as the spec allows.
-            Some(f) if self.fog.coord_src == super::fog::GL_FOG_COORD => f.vertex_value(self.current.fog_coord),
-            Some(f) => f.vertex_value((self.derived.modelview * obj).z.abs()),
-        };
-        let mut v = ClipVertex { pos: self.derived.mvp * obj, color, back_color, edge: self.current.edge_flag, tex, fog, secondary, back_secondary, inside: false, win: [0.0; 4], snapped: [0; 2] };
-        v.place(&self.derived.render);
-        if mode == GL_POINTS {
-            let size = self.derived_point_size(obj);
-            if let Some(asm) = self.prim.as_mut() {
-                asm.point_size = size;
-            }
-        }
-        self.assemble(v);
     }
 
-    /// The batched vertex path for filled primitives under state that
-    /// needs only positions and colours (`Assembly::fast`): the same
-    /// arithmetic as `vertex` in the same order (so the same bits), but the
+    /// The fog coordinate (3.10): glFogCoord's value, or the eye-space
+    /// distance, taken as |z_eye| as the spec allows; 0 without fog.
+    #[inline(always)]
+    fn vertex_fog(&self, obj: Vec4) -> f32 {
+        match &self.derived.render.fog {
+            None => 0.0,
+            Some(f) if self.fog.coord_src == super::fog::GL_FOG_COORD => f.vertex_value(self.current.fog_coord),
+            Some(f) => f.vertex_value((self.derived.modelview * obj).z.abs()),
+        }
+    }
+
+    /// The batched vertex path for filled primitives (`Assembly::fast`):
+    /// the attributes come from the functions `vertex` calls (so the same
+    /// bits: colours, lighting, texture coordinates, fog), but the
     /// vertex is written field by field into its slot of the assembly's
     /// ring (no 224-byte temporary copied per vertex), and triangles whose
     /// vertices are inside the guard band go straight to setup.
-    #[inline]
-    fn vertex_fast(&mut self, p: [f32; 4]) {
+    #[inline(always)]
+    pub(crate) fn vertex_fast<const PLAIN: bool>(&mut self, p: [f32; 4]) {
         let obj = Vec4::from_array(p);
+        // The attributes as `vertex` computes them (the same functions);
+        // PLAIN (unlit, untextured, fog-free) skips the tests for what the
+        // state cannot need.
+        let [color, back_color, secondary, back_secondary] = if PLAIN {
+            let rs = &self.derived.render;
+            let c = Vec4::from_array(self.current.color);
+            // `vertex_colors` without lighting or texturing.
+            let s = if rs.color_sum { Vec4::from_array(self.current.secondary_color).truncate().extend(0.0) } else { Vec4::ZERO };
+            [c + s, c + s, Vec4::ZERO, Vec4::ZERO]
+        } else {
+            self.vertex_colors(obj)
+        };
+        let textured = !PLAIN && !self.texture.vertex.units.is_empty();
+        let tex = if textured { self.vertex_texcoords(obj) } else { [Vec4::ZERO; render::texture::MAX_UNITS] };
+        let fog = if PLAIN { 0.0 } else { self.vertex_fog(obj) };
         let rs = &self.derived.render;
-        let c = Vec4::from_array(self.current.color);
-        // The colour sum without texturing, as in `vertex`.
-        let s = if rs.color_sum { Vec4::from_array(self.current.secondary_color).truncate().extend(0.0) } else { Vec4::ZERO };
-        let color = c + s;
         let pos = self.derived.mvp * obj;
         let edge = self.current.edge_flag;
         let Some(a) = self.prim.as_mut() else { return };
@@ -198,8 +232,17 @@ impl Context {
         let v = &mut a.verts[slot];
         v.pos = pos;
         v.color = color;
-        v.back_color = color;
+        v.back_color = back_color;
         v.edge = edge;
+        // Fields this state leaves zero stay as `begin` zeroed them.
+        if !PLAIN {
+            v.secondary = secondary;
+            v.back_secondary = back_secondary;
+            if textured {
+                v.tex = tex;
+            }
+            v.fog = fog;
+        }
         v.place(rs);
         let fb = &mut self.fb;
         let t = &a.verts;
@@ -441,8 +484,8 @@ fn fill(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, dire
     fill_flat(rs, fb, direct, v, v[provoking], edges)
 }
 
-/// `render::draw_triangle` for an untextured triangle (no flat secondary
-/// colour to copy), entering setup at once when `direct` and every vertex
+/// `render::draw_triangle` for a triangle with no flat secondary colour to
+/// copy (`Assembly::fast` leaves those out), entering setup at once when `direct` and every vertex
 /// is inside the guard band: the decision `draw_triangle` would take.
 #[inline(always)]
 fn fill_flat(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: bool, v: [&ClipVertex; 3], provoking: &ClipVertex, edges: [bool; 3]) {

@@ -329,16 +329,23 @@ impl Context {
         let w = &list.words[..];
         let f = |i: usize| f32::from_bits(w[i]);
         let mut i = 0;
+        // Whether the open primitive is on the batched path's plain case
+        // (`Context::plain_batch`): only Begin, End, a draw or a general
+        // command (a nested list) can change it, and it is read again
+        // after each; vertices then enter the batched path directly.
+        let mut plain = self.plain_batch();
         while i < w.len() {
             let (op, arg) = (w[i] & 0xFF, w[i] >> 8);
             i += 1;
             match op {
                 OP_VERTEX2 => {
-                    self.vertex([f(i), f(i + 1), 0.0, 1.0]);
+                    let p = [f(i), f(i + 1), 0.0, 1.0];
+                    if plain { self.vertex_fast::<true>(p) } else { self.vertex(p) }
                     i += 2;
                 }
                 OP_VERTEX3 => {
-                    self.vertex([f(i), f(i + 1), f(i + 2), 1.0]);
+                    let p = [f(i), f(i + 1), f(i + 2), 1.0];
+                    if plain { self.vertex_fast::<true>(p) } else { self.vertex(p) }
                     i += 3;
                 }
                 OP_VERTEX4 => {
@@ -378,8 +385,14 @@ impl Context {
                     i += 1;
                 }
                 OP_EDGEFLAG => self.current.edge_flag = arg != 0,
-                OP_BEGIN => self.execute(&Command::Begin(arg)),
-                OP_END => self.execute(&Command::End),
+                OP_BEGIN => {
+                    self.execute(&Command::Begin(arg));
+                    plain = self.plain_batch();
+                }
+                OP_END => {
+                    self.execute(&Command::End);
+                    plain = self.plain_batch();
+                }
                 OP_DRAW => {
                     let n = w[i] as usize;
                     i += 1;
@@ -389,12 +402,14 @@ impl Context {
                         i += n;
                     } else {
                         self.begin(arg);
+                        plain = self.plain_batch();
                     }
                 }
                 _ => {
                     let cmd = &list.cmds[w[i] as usize];
                     i += 1;
                     self.execute(cmd);
+                    plain = self.plain_batch();
                 }
             }
         }
