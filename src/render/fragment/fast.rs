@@ -85,7 +85,7 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kerne
     if fs.alpha_test {
         return reference::shade_span;
     }
-    if let Some(k) = super::textured::select(fs, t) {
+    if let Some(k) = super::textured::select(fs, t, approximate) {
         return k;
     }
     let d = depth_key(fs);
