@@ -459,7 +459,7 @@ unsafe fn fastest<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u3
     // λ exact (the reference's formula) at lanes 0 and 7, linear between.
     let (mut la, mut frac) = (_mm256_setzero_si256(), _mm256_setzero_ps());
     if k.lod_mode != Lod::None {
-        let (l0, l7) = (lambda_at(k, cx)?, lambda_at(k, cx + 7.0)?);
+        let (l0, l7) = lambdas(k, cx, cx + 7.0)?;
         let steps = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
         let lambda = _mm256_add_ps(_mm256_set1_ps(l0), _mm256_mul_ps(_mm256_set1_ps((l7 - l0) / 7.0), steps));
         (la, frac) = levels(k, lambda);
@@ -521,23 +521,30 @@ unsafe fn fastest<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u3
     Some(bits.count_ones())
 }
 
-/// λ at pixel centre cx (relative to the triangle's x0) as the
-/// reference sampler computes it; None where ρ or λ is not finite.
+/// λ at pixel centres ca and cb (relative to the triangle's x0) as the
+/// reference sampler computes it (the two log2 in one `lod::log2_8`);
+/// None where ρ or λ is not finite.
 #[inline(always)]
-fn lambda_at(k: &Ctx, cx: f64) -> Option<f32> {
+unsafe fn lambdas(k: &Ctx, ca: f64, cb: f64) -> Option<(f32, f32)> {
     let smp = k.smp;
-    let q = k.q.0 + k.q.1 * cx;
-    let iq = 1.0 / q;
-    let (s, t) = ((k.s.0 + k.s.1 * cx) * iq, (k.t.0 + k.t.1 * cx) * iq);
     let (n0, n1) = (smp.levels[0].wf, smp.levels[0].hf);
-    let dx = [((k.s.1 - s * k.q.1) * iq) as f32 * n0, ((k.t.1 - t * k.q.1) * iq) as f32 * n1];
-    let dy = [((k.dy[0] - s * k.dy[2]) * iq) as f32 * n0, ((k.dy[1] - t * k.dy[2]) * iq) as f32 * n1];
-    let rho = (dx[0] * dx[0] + dx[1] * dx[1]).sqrt().max((dy[0] * dy[0] + dy[1] * dy[1]).sqrt());
-    if !rho.is_finite() {
+    let rho = |cx: f64| {
+        let q = k.q.0 + k.q.1 * cx;
+        let iq = 1.0 / q;
+        let (s, t) = ((k.s.0 + k.s.1 * cx) * iq, (k.t.0 + k.t.1 * cx) * iq);
+        let dx = [((k.s.1 - s * k.q.1) * iq) as f32 * n0, ((k.t.1 - t * k.q.1) * iq) as f32 * n1];
+        let dy = [((k.dy[0] - s * k.dy[2]) * iq) as f32 * n0, ((k.dy[1] - t * k.dy[2]) * iq) as f32 * n1];
+        (dx[0] * dx[0] + dx[1] * dx[1]).sqrt().max((dy[0] * dy[0] + dy[1] * dy[1]).sqrt())
+    };
+    let (ra, rb) = (rho(ca), rho(cb));
+    if !(ra.is_finite() && rb.is_finite()) {
         return None;
     }
-    let lambda = (lod::log2(rho) + smp.bias).clamp(smp.min_lod, smp.max_lod);
-    (!lambda.is_nan()).then_some(lambda)
+    let mut l = [0f32; 8];
+    _mm256_storeu_ps(l.as_mut_ptr(), lod::log2_8(_mm256_setr_ps(ra, rb, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0)));
+    let f = |v: f32| (v + smp.bias).clamp(smp.min_lod, smp.max_lod);
+    let (la, lb) = (f(l[0]), f(l[1]));
+    (!(la.is_nan() || lb.is_nan())).then_some((la, lb))
 }
 
 /// Lanes a + (b - a) l / 8, l = 0..7.
