@@ -31,7 +31,9 @@
 //! alpha test, a fragment failing the depth test is never textured.
 //!
 //! On CPUs with AVX2, [`avx2`] runs the same computation 8 pixels at a
-//! time for the samplers it takes (see its documentation); this scalar
+//! time for the samplers it takes (see its documentation), and under a
+//! perspective hint other than GL_NICEST an approximation of it in 8-bit
+//! fixed point (the only inexact textured path); this scalar
 //! kernel serves the others, its short spans and irregular groups, and
 //! the SSE2 and scalar levels.
 

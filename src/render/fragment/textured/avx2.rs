@@ -11,6 +11,18 @@
 //! operations in the same order (no fused multiply-add; this module does
 //! not enable FMA), so no tolerance is needed.
 //!
+//! LINEAR filtering reads the bilinear footprint from the sampler's padded
+//! copy of the levels (`texture::pairs`): the two texels of a row are
+//! adjacent there whatever the wrap, so each row is one 64-bit load per
+//! lane. Plain 64-bit loads (`SCALAR_LOADS`) replace `vpgatherdq`: on this
+//! AMD machine they took less CPU time (callgrind counts a gather as one
+//! instruction, so its counts rise: see docs/perf-notes.md, Round 4).
+//!
+//! GL_FASTEST / GL_DONT_CARE (`FX`): `fastest` replaces the texturing of
+//! a group by an approximation in 8-bit fixed point (its documentation
+//! says which); depth stays exact. `tests/reference_diff.rs` bounds its
+//! error against the reference path.
+//!
 //! c / 255 (correctly rounded, as the scalar kernel's division) is
 //! computed as `c HI + c LO` with HI = 257 / 2^16 (c HI is exact) and
 //! LO = 1/255 - HI rounded: equal to the division for every byte (tested),
@@ -490,19 +502,23 @@ unsafe fn fastest<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u3
     let rgba = match k.env {
         EnvFn::Replace { .. } => texel,
         _ => {
-            // The primary colour: exact at the ends, linear between.
+            // The primary colour per lane, as `group` computes it.
             let primary: Rgba = match &k.flat {
                 Some(f) => *f,
                 None => {
-                    let (wa, wb) = match k.w_mode {
-                        W_SHARED => (ia, ib),
-                        W_OWN => (1.0 / at(k.w, cx), 1.0 / at(k.w, cx + 8.0)),
-                        _ => (1.0, 1.0),
+                    let w: D8 = match k.w_mode {
+                        W_SHARED => iq,
+                        W_OWN => {
+                            let wv = at8(k.w.0, k.w.1, &c);
+                            [_mm256_div_pd(one, wv[0]), _mm256_div_pd(one, wv[1])]
+                        }
+                        _ => [one, one],
                     };
-                    // (No closure: it would not inherit AVX2.)
                     let mut p = [_mm256_setzero_ps(); 4];
                     for ch in 0..4 {
-                        p[ch] = line(at(k.colors[ch], cx) * wa, at(k.colors[ch], cx + 8.0) * wb);
+                        let v = at8(k.colors[ch].0, k.colors[ch].1, &c);
+                        let v = if k.w_mode == W_NONE { v } else { mul8(&v, &w) };
+                        p[ch] = clamp01(to_f32(&v));
                     }
                     p
                 }
@@ -545,13 +561,6 @@ unsafe fn lambdas(k: &Ctx, ca: f64, cb: f64) -> Option<(f32, f32)> {
     let f = |v: f32| (v + smp.bias).clamp(smp.min_lod, smp.max_lod);
     let (la, lb) = (f(l[0]), f(l[1]));
     (!(la.is_nan() || lb.is_nan())).then_some((la, lb))
-}
-
-/// Lanes a + (b - a) l / 8, l = 0..7.
-#[inline(always)]
-unsafe fn line(a: f64, b: f64) -> __m256 {
-    let steps = _mm256_setr_ps(0.0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875);
-    _mm256_add_ps(_mm256_set1_ps(a as f32), _mm256_mul_ps(_mm256_set1_ps((b - a) as f32), steps))
 }
 
 /// The group's colours to the framebuffer, lanes `m` (`bits`) only.
