@@ -79,13 +79,14 @@ fn blend_is(b: &Blend, src: BlendFactor, dst: BlendFactor) -> bool {
 /// `approximate`: GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST, so
 /// colour interpolation may trade exactness for time (section 5.6): an
 /// affine smooth colour stored without blending is then stepped in fixed
-/// point, within one step (1/255) of the exact value. Everything else
-/// stays exact.
+/// point, within one step (1/255) of the exact value, and the 8-wide
+/// textured kernel filters in 8-bit fixed point (`textured::select`).
+/// Everything else stays exact.
 pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kernel {
     if fs.alpha_test {
         return reference::shade_span;
     }
-    if let Some(k) = super::textured::select(fs, t) {
+    if let Some(k) = super::textured::select(fs, t, approximate) {
         return k;
     }
     let d = depth_key(fs);

@@ -31,7 +31,9 @@
 //! alpha test, a fragment failing the depth test is never textured.
 //!
 //! On CPUs with AVX2, [`avx2`] runs the same computation 8 pixels at a
-//! time for the samplers it takes (see its documentation); this scalar
+//! time for the samplers it takes (see its documentation), and under a
+//! perspective hint other than GL_NICEST an approximation of it in 8-bit
+//! fixed point (the only inexact textured path); this scalar
 //! kernel serves the others, its short spans and irregular groups, and
 //! the SSE2 and scalar levels.
 
@@ -54,7 +56,10 @@ type Kernel = super::fast::Kernel;
 const MAX_LEVELS: usize = 16;
 
 /// The textured kernel for a triangle, if its state is the common case.
-pub fn select(fs: &FragmentState, t: &TriangleSetup) -> Option<Kernel> {
+/// `approximate`: GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST; the
+/// 8-wide kernel then filters in 8-bit fixed point (`avx2`'s
+/// `fixed_color`); everything else stays exact.
+pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Option<Kernel> {
     let tp = t.tex.as_ref()?;
     if fs.alpha_test || fs.stencil_test || fs.color == ColorOp::None || t.secondary.is_some() || !applies(tp) {
         return None;
@@ -65,15 +70,28 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup) -> Option<Kernel> {
     if super::simd::level_here() == super::simd::Level::Avx2 {
         // Eight pixels at a time where the sampler allows (avx2.rs).
         if unit(tp).is_some_and(|(_, s)| avx2::takes(s)) {
-            return Some(match (d, store) {
-                (D_LESS, true) => avx2::kernel::<D_LESS, true>,
-                (D_LEQUAL, true) => avx2::kernel::<D_LEQUAL, true>,
-                (D_OFF, true) => avx2::kernel::<D_OFF, true>,
-                (_, true) => avx2::kernel::<D_ANY, true>,
-                (D_LESS, false) => avx2::kernel::<D_LESS, false>,
-                (D_LEQUAL, false) => avx2::kernel::<D_LEQUAL, false>,
-                (D_OFF, false) => avx2::kernel::<D_OFF, false>,
-                _ => avx2::kernel::<D_ANY, false>,
+            return Some(if approximate {
+                match (d, store) {
+                    (D_LESS, true) => avx2::kernel::<D_LESS, true, true>,
+                    (D_LEQUAL, true) => avx2::kernel::<D_LEQUAL, true, true>,
+                    (D_OFF, true) => avx2::kernel::<D_OFF, true, true>,
+                    (_, true) => avx2::kernel::<D_ANY, true, true>,
+                    (D_LESS, false) => avx2::kernel::<D_LESS, false, true>,
+                    (D_LEQUAL, false) => avx2::kernel::<D_LEQUAL, false, true>,
+                    (D_OFF, false) => avx2::kernel::<D_OFF, false, true>,
+                    _ => avx2::kernel::<D_ANY, false, true>,
+                }
+            } else {
+                match (d, store) {
+                    (D_LESS, true) => avx2::kernel::<D_LESS, true, false>,
+                    (D_LEQUAL, true) => avx2::kernel::<D_LEQUAL, true, false>,
+                    (D_OFF, true) => avx2::kernel::<D_OFF, true, false>,
+                    (_, true) => avx2::kernel::<D_ANY, true, false>,
+                    (D_LESS, false) => avx2::kernel::<D_LESS, false, false>,
+                    (D_LEQUAL, false) => avx2::kernel::<D_LEQUAL, false, false>,
+                    (D_OFF, false) => avx2::kernel::<D_OFF, false, false>,
+                    _ => avx2::kernel::<D_ANY, false, false>,
+                }
             });
         }
         return Some(match (d, store) {

@@ -47,6 +47,7 @@
 
 pub mod env;
 pub mod lod;
+pub mod pairs;
 
 use crate::render::fragment::CompareFunc;
 use glam::Vec4;
@@ -385,6 +386,9 @@ pub struct UnitSampler {
     /// fetches (mipmapped filters then pay only for the LOD and the blend
     /// of two levels; cube maps only for the face selection).
     pub fast_wrap: Option<[bool; 2]>,
+    /// The padded copy of a 2D texture's levels for the 8-wide kernel's
+    /// bilinear fetch ([`pairs`]), built on first use.
+    pub padded: pairs::PadCache,
 }
 
 /// Specialized samplers (see the module documentation). `repeat[k]`: the
@@ -545,7 +549,7 @@ impl UnitSampler {
     /// A sampler for a complete texture; picks its fast path.
     pub fn new(target: Target, faces: Vec<Vec<Arc<Image>>>, params: Params, unit_bias: f32, base: Base) -> UnitSampler {
         if reference_path() {
-            return UnitSampler { target, faces, params, unit_bias, base, fast: Fast::General, fast_wrap: None };
+            return UnitSampler { target, faces, params, unit_bias, base, fast: Fast::General, fast_wrap: None, padded: Default::default() };
         }
         let fast = Fast::choose(target, &faces, &params);
         let wraps_ok = |n: usize| params.wrap[..n].iter().all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge));
@@ -558,7 +562,17 @@ impl UnitSampler {
             Target::T1D if wraps_ok(1) => Some([repeat(0), true]),
             _ => None,
         };
-        UnitSampler { target, faces, params, unit_bias, base, fast, fast_wrap }
+        UnitSampler { target, faces, params, unit_bias, base, fast, fast_wrap, padded: Default::default() }
+    }
+
+    /// The padded copy of a 2D texture's levels ([`pairs`]) for its
+    /// REPEAT / CLAMP_TO_EDGE wrap modes; None for other textures.
+    pub fn padded(&self) -> Option<&pairs::Padded> {
+        let repeat = self.fast_wrap?;
+        if self.target != Target::T2D || self.faces.len() != 1 {
+            return None;
+        }
+        self.padded.get(&self.faces[0], repeat)
     }
 
     /// Nearest sampling of a 2D 8-bit RGBA image without border.

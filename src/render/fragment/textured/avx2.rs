@@ -11,6 +11,18 @@
 //! operations in the same order (no fused multiply-add; this module does
 //! not enable FMA), so no tolerance is needed.
 //!
+//! LINEAR filtering reads the bilinear footprint from the sampler's padded
+//! copy of the levels (`texture::pairs`): the two texels of a row are
+//! adjacent there whatever the wrap, so each row is one 64-bit load per
+//! lane. Plain 64-bit loads (`SCALAR_LOADS`) replace `vpgatherdq`: on this
+//! AMD machine they took less CPU time (callgrind counts a gather as one
+//! instruction, so its counts rise: see docs/perf-notes.md, Round 4).
+//!
+//! GL_FASTEST / GL_DONT_CARE (`FX`): `fastest` replaces the texturing of
+//! a group by an approximation in 8-bit fixed point (its documentation
+//! says which); depth stays exact. `tests/reference_diff.rs` bounds its
+//! error against the reference path.
+//!
 //! c / 255 (correctly rounded, as the scalar kernel's division) is
 //! computed as `c HI + c LO` with HI = 257 / 2^16 (c HI is exact) and
 //! LO = 1/255 - HI rounded: equal to the division for every byte (tested),
@@ -33,8 +45,11 @@ use super::{same_plane, EnvFn, Level, Sampler};
 use crate::framebuffer::DEPTH_MAX;
 use crate::render::fog::Fog;
 use crate::render::setup::TriangleSetup;
+use crate::render::texture::pairs::{Padded, PaddedLevel};
 use crate::render::texture::{lod, Fast, Filter, UnitSampler};
 use std::arch::x86_64::*;
+
+const SCALAR_LOADS: bool = true;
 
 /// c / 255 = c HI + c LO for bytes c (see the module documentation).
 const HI: f32 = 257.0 / 65536.0;
@@ -82,10 +97,12 @@ pub(super) fn takes(s: &UnitSampler) -> bool {
     plan(&Sampler::new(s)).is_some()
 }
 
-pub(super) fn kernel<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+/// `FX`: GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST, so texturing
+/// may be approximated (`fixed_color`).
+pub(super) fn kernel<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     // SAFETY: `super::select` hands this out only at simd::Level::Avx2,
     // which is only reported when the CPU has AVX2.
-    unsafe { span::<D, STORE>(fs, t, px, y, x0, x1) }
+    unsafe { span::<D, STORE, FX>(fs, t, px, y, x0, x1) }
 }
 
 /// Pixels [a, b) of the span through the scalar kernel.
@@ -220,6 +237,132 @@ unsafe fn filter(l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) 
     out
 }
 
+/// The bilinear footprint's texels from the padded copy
+/// (`texture::pairs`): for each lane the two texels of row j0 and of row
+/// j0 + 1, each pair one 64-bit gather element. Returns the texels
+/// (top-left, top-right, bottom-left, bottom-right) as packed RGBA8 lanes;
+/// the same texels `filter` reads through its four wraps.
+#[inline(always)]
+unsafe fn pairs(p: &PaddedLevel, l: &Level, i0: __m256i, j0: __m256i, rep: [bool; 2]) -> [__m256i; 4] {
+    let m1 = _mm256_set1_epi32(-1);
+    // REPEAT: i0 mod w; CLAMP_TO_EDGE: clamp(i0, -1, w - 1) (the padding
+    // holds the edge texel at -1 and w).
+    let i = if rep[0] { _mm256_and_si256(i0, _mm256_set1_epi32(l.w - 1)) } else { _mm256_max_epi32(_mm256_min_epi32(i0, _mm256_set1_epi32(l.w - 1)), m1) };
+    let j = if rep[1] { _mm256_and_si256(j0, _mm256_set1_epi32(l.h - 1)) } else { _mm256_max_epi32(_mm256_min_epi32(j0, _mm256_set1_epi32(l.h - 1)), m1) };
+    let stride = _mm256_set1_epi32(p.stride);
+    let off = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_sub_epi32(j, m1), stride), _mm256_sub_epi32(i, m1));
+    let off1 = _mm256_add_epi32(off, stride);
+    let base = p.texels.as_ptr();
+    let (r0, r1) = if SCALAR_LOADS {
+        // Eight 64-bit loads per row instead of two gathers: on AMD Zen
+        // gathers cost about one micro-op per element and more.
+        let mut o = [0i32; 8];
+        _mm256_storeu_si256(o.as_mut_ptr().cast(), off);
+        let s0 = p.stride as isize;
+        let ld = |k: usize, d: isize| (base.offset(o[k] as isize + d) as *const i64).read_unaligned();
+        (
+            [_mm256_setr_epi64x(ld(0, 0), ld(1, 0), ld(2, 0), ld(3, 0)), _mm256_setr_epi64x(ld(4, 0), ld(5, 0), ld(6, 0), ld(7, 0))],
+            [_mm256_setr_epi64x(ld(0, s0), ld(1, s0), ld(2, s0), ld(3, s0)), _mm256_setr_epi64x(ld(4, s0), ld(5, s0), ld(6, s0), ld(7, s0))],
+        )
+    } else {
+        let base = base as *const i64;
+        (
+            [_mm256_i32gather_epi64::<4>(base, _mm256_castsi256_si128(off)), _mm256_i32gather_epi64::<4>(base, _mm256_extracti128_si256::<1>(off))],
+            [_mm256_i32gather_epi64::<4>(base, _mm256_castsi256_si128(off1)), _mm256_i32gather_epi64::<4>(base, _mm256_extracti128_si256::<1>(off1))],
+        )
+    };
+    let ((c00, c01), (c10, c11)) = (split(r0), split(r1));
+    [c00, c01, c10, c11]
+}
+
+/// [a0 b0 a1 b1 | a2 b2 a3 b3], [a4 b4 ..] -> [a0 .. a7], [b0 .. b7].
+#[inline(always)]
+unsafe fn split(r: [__m256i; 2]) -> (__m256i, __m256i) {
+    let (lo, hi) = (_mm256_castsi256_ps(r[0]), _mm256_castsi256_ps(r[1]));
+    let even = _mm256_castps_si256(_mm256_shuffle_ps::<0x88>(lo, hi));
+    let odd = _mm256_castps_si256(_mm256_shuffle_ps::<0xDD>(lo, hi));
+    (_mm256_permute4x64_epi64::<0xD8>(even), _mm256_permute4x64_epi64::<0xD8>(odd))
+}
+
+/// `filter` for LINEAR with the padded copy: the same weights and lerps.
+#[inline(always)]
+unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
+    let (wf, hf) = (_mm256_set1_ps(l.wf), _mm256_set1_ps(l.hf));
+    let half = _mm256_set1_ps(0.5);
+    let a = _mm256_sub_ps(_mm256_mul_ps(s, wf), half);
+    let b = _mm256_sub_ps(_mm256_mul_ps(t, hf), half);
+    let ((fa, i0), (fb, j0)) = (floor(a), floor(b));
+    let (wa, wb) = (_mm256_sub_ps(a, fa), _mm256_sub_ps(b, fb));
+    let [p00, p01, p10, p11] = pairs(p, l, i0, j0, rep);
+    let (c00, c01, c10, c11) = (channels(p00), channels(p01), channels(p10), channels(p11));
+    let mut out = [_mm256_setzero_ps(); 4];
+    for c in 0..4 {
+        let top = lerp(c00[c], c01[c], wa);
+        let bottom = lerp(c10[c], c11[c], wa);
+        out[c] = lerp(top, bottom, wb);
+    }
+    out
+}
+
+/// 16-bit halves of packed RGBA8 lanes: pixels 0, 1, 4, 5 and 2, 3, 6, 7
+/// (the unpack order within 128-bit halves).
+type Half16 = [__m256i; 2];
+
+#[inline(always)]
+unsafe fn widen(v: __m256i) -> Half16 {
+    let z = _mm256_setzero_si256();
+    [_mm256_unpacklo_epi8(v, z), _mm256_unpackhi_epi8(v, z)]
+}
+
+#[inline(always)]
+unsafe fn narrow(v: Half16) -> __m256i {
+    _mm256_packus_epi16(v[0], v[1])
+}
+
+/// Per-lane weights w in [0, 256] (i32 lanes) spread over the lane's four
+/// 16-bit channels, in `widen`'s order.
+#[inline(always)]
+unsafe fn weights16(w: __m256i) -> Half16 {
+    let w2 = _mm256_or_si256(w, _mm256_slli_epi32::<16>(w));
+    [_mm256_unpacklo_epi32(w2, w2), _mm256_unpackhi_epi32(w2, w2)]
+}
+
+/// (a (256 - w) + b w + 128) / 256 in 16-bit lanes (a, b <= 255,
+/// w <= 256: the sum stays below 2^16).
+#[inline(always)]
+unsafe fn lerp16(a: Half16, b: Half16, w: Half16) -> Half16 {
+    [lerp16h(a[0], b[0], w[0]), lerp16h(a[1], b[1], w[1])]
+}
+
+#[inline(always)]
+unsafe fn lerp16h(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
+    let s = _mm256_add_epi16(_mm256_mullo_epi16(a, _mm256_sub_epi16(_mm256_set1_epi16(256), w)), _mm256_mullo_epi16(b, w));
+    _mm256_srli_epi16::<8>(_mm256_add_epi16(s, _mm256_set1_epi16(128)))
+}
+
+/// GL_FASTEST bilinear filtering (llvmpipe's way): the coordinates in
+/// fixed point with 8 fraction bits, the texels lerped in 16-bit integers
+/// with 8-bit weights. Packed RGBA8 lanes.
+#[inline(always)]
+unsafe fn filter_fixed(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) -> __m256i {
+    if !linear {
+        let (_, i) = floor(_mm256_mul_ps(s, _mm256_set1_ps(l.wf)));
+        let (_, j) = floor(_mm256_mul_ps(t, _mm256_set1_ps(l.hf)));
+        return fetch(l, wrap(i, l.w, rep[0]), wrap(j, l.h, rep[1]));
+    }
+    // u 256 - 128 rounded to an integer: i0 its top bits, the weight its
+    // low 8 (|u| < 2^22 texels: the caller checks).
+    let k128 = _mm256_set1_ps(128.0);
+    let a = _mm256_cvtps_epi32(_mm256_sub_ps(_mm256_mul_ps(s, _mm256_set1_ps(l.wf * 256.0)), k128));
+    let b = _mm256_cvtps_epi32(_mm256_sub_ps(_mm256_mul_ps(t, _mm256_set1_ps(l.hf * 256.0)), k128));
+    let ff = _mm256_set1_epi32(0xFF);
+    let (wa, wb) = (weights16(_mm256_and_si256(a, ff)), weights16(_mm256_and_si256(b, ff)));
+    let [c00, c01, c10, c11] = pairs(p, l, _mm256_srai_epi32::<8>(a), _mm256_srai_epi32::<8>(b), rep);
+    let top = lerp16(widen(c00), widen(c01), wa);
+    let bottom = lerp16(widen(c10), widen(c11), wa);
+    narrow(lerp16(top, bottom, wb))
+}
+
 /// `EnvFn::apply` on channel lanes.
 #[inline(always)]
 unsafe fn env_apply(env: EnvFn, p: &Rgba, c: &Rgba) -> Rgba {
@@ -264,6 +407,211 @@ unsafe fn to_byte(v: __m256) -> __m256i {
     _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(clamp01(v), _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5)))
 }
 
+/// Level `l` filtered at (s, t) (`filter`), through the padded copy when
+/// there is one and the filter is LINEAR.
+#[inline(always)]
+unsafe fn level_filter(k: &Ctx, l: usize, s: __m256, t: __m256) -> Rgba {
+    match k.pad {
+        Some(p) if k.linear => filter_pairs(&p.levels[l], &k.smp.levels[l], s, t, k.smp.repeat),
+        _ => filter(&k.smp.levels[l], s, t, k.linear, k.smp.repeat),
+    }
+}
+
+/// Four channels to packed RGBA8 lanes (`color_to_u8` of each).
+#[inline(always)]
+unsafe fn pack_bytes(col: &Rgba) -> __m256i {
+    _mm256_or_si256(
+        _mm256_or_si256(to_byte(col[0]), _mm256_slli_epi32::<8>(to_byte(col[1]))),
+        _mm256_or_si256(_mm256_slli_epi32::<16>(to_byte(col[2])), _mm256_slli_epi32::<24>(to_byte(col[3]))),
+    )
+}
+
+/// The rest of a group under GL_FASTEST, after the (exact) depth test:
+/// s / q and t / q per lane as `group` computes them; λ computed exactly
+/// (the reference's formula) at lanes 0 and 7 only and interpolated
+/// linearly between (section 3.8.8 allows approximating ρ); the primary
+/// colour exact at the group's ends (pixel centres x + 1/2 and
+/// x + 8 + 1/2) and linear between (section 3.5.1: the hint allows
+/// non-perspective interpolation); texels filtered in 8-bit fixed point
+/// (`filter_fixed`), two levels blended with an 8-bit weight, MODULATE as
+/// round(t c / 255) in 16-bit lanes, or REPLACE. None (nothing written)
+/// sends the group to the exact scalar kernel: q zero, of different signs
+/// or not finite at the ends, coordinates beyond ±2^22 texels, ρ or λ
+/// not finite.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+unsafe fn fastest<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], m: __m256i, bits: u32, z: __m256i, stored: __m256i) -> Option<u32> {
+    let smp = k.smp;
+    let pad = k.pad?;
+    let cx = x as f64 + 0.5 - k.x0;
+    let at = |r: (f64, f64), cx: f64| r.0 + r.1 * cx;
+    let (qa, qb) = (at(k.q, cx), at(k.q, cx + 8.0));
+    if !(qa.is_finite() && qb.is_finite() && qa * qb > 0.0) {
+        return None;
+    }
+    let (ia, ib) = (1.0 / qa, 1.0 / qb);
+    let (sa, ta, sb, tb) = (at(k.s, cx) * ia, at(k.t, cx) * ia, at(k.s, cx + 8.0) * ib, at(k.t, cx + 8.0) * ib);
+    let (n0, n1) = (smp.levels[0].wf as f64, smp.levels[0].hf as f64);
+    let lim = 4194304.0;
+    if !(sa.abs() * n0 < lim && sb.abs() * n0 < lim && ta.abs() * n1 < lim && tb.abs() * n1 < lim) {
+        return None;
+    }
+    // s / q and t / q per lane, exactly (as `group`); the ends' values
+    // above only give the slopes along x.
+    let xs = _mm256_set1_pd(x as f64);
+    let (half, x0) = (_mm256_set1_pd(0.5), _mm256_set1_pd(k.x0));
+    let c: D8 = [
+        _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(0.0, 1.0, 2.0, 3.0)), half), x0),
+        _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(4.0, 5.0, 6.0, 7.0)), half), x0),
+    ];
+    let q = at8(k.q.0, k.q.1, &c);
+    let one = _mm256_set1_pd(1.0);
+    let iq: D8 = [_mm256_div_pd(one, q[0]), _mm256_div_pd(one, q[1])];
+    let (sf, tf) = (to_f32(&mul8(&at8(k.s.0, k.s.1, &c), &iq)), to_f32(&mul8(&at8(k.t.0, k.t.1, &c), &iq)));
+    // λ exact (the reference's formula) at lanes 0 and 7, linear between.
+    let (mut la, mut frac) = (_mm256_setzero_si256(), _mm256_setzero_ps());
+    if k.lod_mode != Lod::None {
+        let (l0, l7) = lambdas(k, cx, cx + 7.0)?;
+        let steps = _mm256_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
+        let lambda = _mm256_add_ps(_mm256_set1_ps(l0), _mm256_mul_ps(_mm256_set1_ps((l7 - l0) / 7.0), steps));
+        (la, frac) = levels(k, lambda);
+    }
+    // Texels: once per distinct level among the passing lanes.
+    let frac8 = weights16(_mm256_cvtps_epi32(_mm256_mul_ps(frac, _mm256_set1_ps(256.0))));
+    let mut texel = _mm256_setzero_si256();
+    let mut lv = [0i32; 8];
+    _mm256_storeu_si256(lv.as_mut_ptr().cast(), la);
+    let mut pending = bits;
+    let weighted_lanes = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_NEQ_UQ>(frac, _mm256_setzero_ps()));
+    while pending != 0 {
+        let l = lv[pending.trailing_zeros() as usize] as usize;
+        let same = _mm256_cmpeq_epi32(la, _mm256_set1_epi32(l as i32));
+        let lanes = _mm256_movemask_ps(_mm256_castsi256_ps(same)) as u32 & pending;
+        pending &= !lanes;
+        let mut v = filter_fixed(&pad.levels[l], &smp.levels[l], sf, tf, k.linear, smp.repeat);
+        let weighted = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_and_si256(weighted_lanes, same))) as u32 & lanes;
+        if k.lod_mode == Lod::Linear && weighted != 0 && l < smp.q {
+            let v2 = filter_fixed(&pad.levels[l + 1], &smp.levels[l + 1], sf, tf, k.linear, smp.repeat);
+            v = narrow(lerp16(widen(v), widen(v2), frac8));
+        }
+        texel = if lanes == bits { v } else { _mm256_blendv_epi8(texel, v, same) };
+    }
+    if D != D_OFF && (D != D_ANY || k.fs.depth_write) {
+        _mm256_storeu_si256(dp.cast(), _mm256_blendv_epi8(stored, z, m));
+    }
+    let rgba = match k.env {
+        EnvFn::Replace { .. } => texel,
+        _ => {
+            // The primary colour per lane, as `group` computes it.
+            let primary: Rgba = match &k.flat {
+                Some(f) => *f,
+                None => {
+                    let w: D8 = match k.w_mode {
+                        W_SHARED => iq,
+                        W_OWN => {
+                            let wv = at8(k.w.0, k.w.1, &c);
+                            [_mm256_div_pd(one, wv[0]), _mm256_div_pd(one, wv[1])]
+                        }
+                        _ => [one, one],
+                    };
+                    let mut p = [_mm256_setzero_ps(); 4];
+                    for ch in 0..4 {
+                        let v = at8(k.colors[ch].0, k.colors[ch].1, &c);
+                        let v = if k.w_mode == W_NONE { v } else { mul8(&v, &w) };
+                        p[ch] = clamp01(to_f32(&v));
+                    }
+                    p
+                }
+            };
+            // round(t c / 255) = (x + x / 256) / 256 with x = t c + 128.
+            let (t16, c16) = (widen(texel), widen(pack_bytes(&primary)));
+            let k128 = _mm256_set1_epi16(128);
+            let x = [_mm256_add_epi16(_mm256_mullo_epi16(t16[0], c16[0]), k128), _mm256_add_epi16(_mm256_mullo_epi16(t16[1], c16[1]), k128)];
+            narrow([
+                _mm256_srli_epi16::<8>(_mm256_add_epi16(x[0], _mm256_srli_epi16::<8>(x[0]))),
+                _mm256_srli_epi16::<8>(_mm256_add_epi16(x[1], _mm256_srli_epi16::<8>(x[1]))),
+            ])
+        }
+    };
+    write::<STORE>(k, cp, rgba, m, bits);
+    Some(bits.count_ones())
+}
+
+/// λ at pixel centres ca and cb (relative to the triangle's x0) as the
+/// reference sampler computes it (the two log2 in one `lod::log2_8`);
+/// None where ρ or λ is not finite.
+#[inline(always)]
+unsafe fn lambdas(k: &Ctx, ca: f64, cb: f64) -> Option<(f32, f32)> {
+    let smp = k.smp;
+    let (n0, n1) = (smp.levels[0].wf, smp.levels[0].hf);
+    let rho = |cx: f64| {
+        let q = k.q.0 + k.q.1 * cx;
+        let iq = 1.0 / q;
+        let (s, t) = ((k.s.0 + k.s.1 * cx) * iq, (k.t.0 + k.t.1 * cx) * iq);
+        let dx = [((k.s.1 - s * k.q.1) * iq) as f32 * n0, ((k.t.1 - t * k.q.1) * iq) as f32 * n1];
+        let dy = [((k.dy[0] - s * k.dy[2]) * iq) as f32 * n0, ((k.dy[1] - t * k.dy[2]) * iq) as f32 * n1];
+        (dx[0] * dx[0] + dx[1] * dx[1]).sqrt().max((dy[0] * dy[0] + dy[1] * dy[1]).sqrt())
+    };
+    let (ra, rb) = (rho(ca), rho(cb));
+    if !(ra.is_finite() && rb.is_finite()) {
+        return None;
+    }
+    let mut l = [0f32; 8];
+    _mm256_storeu_ps(l.as_mut_ptr(), lod::log2_8(_mm256_setr_ps(ra, rb, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0)));
+    let f = |v: f32| (v + smp.bias).clamp(smp.min_lod, smp.max_lod);
+    let (la, lb) = (f(l[0]), f(l[1]));
+    (!(la.is_nan() || lb.is_nan())).then_some((la, lb))
+}
+
+/// The group's colours to the framebuffer, lanes `m` (`bits`) only.
+#[inline(always)]
+unsafe fn write<const STORE: bool>(k: &Ctx, cp: *mut [u8; 4], rgba: __m256i, m: __m256i, bits: u32) {
+    if STORE {
+        let old = _mm256_loadu_si256(cp.cast());
+        let afix = _mm256_set1_epi32(((k.fs.alpha_fix as u32) << 24) as i32);
+        _mm256_storeu_si256(cp.cast(), _mm256_blendv_epi8(old, _mm256_or_si256(rgba, afix), m));
+    } else {
+        let mut src = [[0u8; 4]; 8];
+        _mm256_storeu_si256(src.as_mut_ptr().cast(), rgba);
+        for l in 0..8 {
+            if bits & (1 << l) != 0 {
+                write_color(k.fs, &mut *cp.add(l), src[l]);
+            }
+        }
+    }
+}
+
+/// Each lane's level (the first of two for MIPMAP_LINEAR) and the weight
+/// of the second level from λ lanes (`Sampler::sample`'s choice).
+#[inline(always)]
+unsafe fn levels(k: &Ctx, lambda: __m256) -> (__m256i, __m256) {
+    let qf = _mm256_set1_ps(k.smp.q as f32);
+    let (mut la, mut frac) = (_mm256_setzero_si256(), _mm256_setzero_ps());
+    match k.lod_mode {
+        Lod::Linear => {
+            let minify = _mm256_cmp_ps::<_CMP_GT_OQ>(lambda, _mm256_setzero_ps());
+            let d1 = _mm256_round_ps::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(lambda);
+            let top = _mm256_cmp_ps::<_CMP_GE_OQ>(d1, qf);
+            let two = _mm256_andnot_ps(top, minify);
+            // Levels d1 and d1 + 1 by λ - d1; the last level alone
+            // (d1 >= q); level 0 alone when magnified (weight 0:
+            // t1 + (t2 - t1) 0 is t1).
+            let lf = _mm256_or_ps(_mm256_and_ps(two, d1), _mm256_and_ps(_mm256_and_ps(top, minify), qf));
+            la = _mm256_cvttps_epi32(lf);
+            frac = _mm256_and_ps(two, _mm256_sub_ps(lambda, d1));
+        }
+        Lod::Nearest { c: cs } => {
+            let minify = _mm256_cmp_ps::<_CMP_GT_OQ>(lambda, _mm256_set1_ps(cs));
+            let above = _mm256_and_ps(minify, _mm256_cmp_ps::<_CMP_GT_OQ>(lambda, _mm256_set1_ps(0.5)));
+            let up = _mm256_round_ps::<{ _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC }>(_mm256_add_ps(lambda, _mm256_set1_ps(0.5)));
+            let d = _mm256_min_ps(_mm256_sub_ps(up, _mm256_set1_ps(1.0)), qf);
+            la = _mm256_cvttps_epi32(_mm256_and_ps(above, d));
+        }
+        Lod::None => {}
+    }
+    (la, frac)
+}
+
 /// Lanes all true in both halves of an f64 compare.
 #[inline(always)]
 unsafe fn all_pd(a: __m256d, b: __m256d) -> bool {
@@ -274,6 +622,9 @@ unsafe fn all_pd(a: __m256d, b: __m256d) -> bool {
 struct Ctx<'a> {
     fs: &'a FragmentState,
     smp: &'a Sampler<'a>,
+    /// The padded copy of the levels (`texture::pairs`); always there for
+    /// the GL_FASTEST kernel.
+    pad: Option<&'a Padded>,
     lod_mode: Lod,
     linear: bool,
     env: EnvFn,
@@ -300,7 +651,7 @@ const W_OWN: u8 = 2;
 /// and `cp`, lanes `live` only: the number that passed the depth test, or
 /// None (nothing written) when a lane needs the scalar kernel.
 #[inline(always)]
-unsafe fn group<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Option<u32> {
+unsafe fn group<const D: u8, const STORE: bool, const FX: bool>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Option<u32> {
     let xs = _mm256_set1_pd(x as f64);
     let (half, x0) = (_mm256_set1_pd(0.5), _mm256_set1_pd(k.x0));
     let c: D8 = [
@@ -339,6 +690,9 @@ unsafe fn group<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u32,
     if bits == 0 {
         return Some(0);
     }
+    if FX {
+        return fastest::<D, STORE>(k, x, dp, cp, m, bits, z, stored);
+    }
     // Texture coordinates (reference::textured_color): s / q, t / q.
     let q = at8(k.q.0, k.q.1, &c);
     let zero = _mm256_setzero_pd();
@@ -368,7 +722,6 @@ unsafe fn group<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u32,
     }
     // Level of detail (3.8.8) and each lane's level and weight.
     let (mut la, mut frac) = (_mm256_setzero_si256(), _mm256_setzero_ps());
-    let qf = _mm256_set1_ps(smp.q as f32);
     if k.lod_mode != Lod::None {
         let dx0 = _mm256_mul_ps(deriv(k.s.1, &s, k.q.1, &iq), n0);
         let dx1 = _mm256_mul_ps(deriv(k.t.1, &tt, k.q.1, &iq), n1);
@@ -384,59 +737,10 @@ unsafe fn group<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u32,
             return None;
         }
         let lambda = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(lod::log2_8(rho), _mm256_set1_ps(smp.bias)), _mm256_set1_ps(smp.min_lod)), _mm256_set1_ps(smp.max_lod));
-        match k.lod_mode {
-            Lod::Linear => {
-                let minify = _mm256_cmp_ps::<_CMP_GT_OQ>(lambda, _mm256_setzero_ps());
-                let d1 = _mm256_round_ps::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(lambda);
-                let top = _mm256_cmp_ps::<_CMP_GE_OQ>(d1, qf);
-                let two = _mm256_andnot_ps(top, minify);
-                // Levels d1 and d1 + 1 by λ - d1; the last level alone
-                // (d1 >= q); level 0 alone when magnified (weight 0:
-                // t1 + (t2 - t1) 0 is t1).
-                let lf = _mm256_or_ps(_mm256_and_ps(two, d1), _mm256_and_ps(_mm256_and_ps(top, minify), qf));
-                la = _mm256_cvttps_epi32(lf);
-                frac = _mm256_and_ps(two, _mm256_sub_ps(lambda, d1));
-            }
-            Lod::Nearest { c: cs } => {
-                let minify = _mm256_cmp_ps::<_CMP_GT_OQ>(lambda, _mm256_set1_ps(cs));
-                let above = _mm256_and_ps(minify, _mm256_cmp_ps::<_CMP_GT_OQ>(lambda, _mm256_set1_ps(0.5)));
-                let up = _mm256_round_ps::<{ _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC }>(_mm256_add_ps(lambda, _mm256_set1_ps(0.5)));
-                let d = _mm256_min_ps(_mm256_sub_ps(up, _mm256_set1_ps(1.0)), qf);
-                la = _mm256_cvttps_epi32(_mm256_and_ps(above, d));
-            }
-            Lod::None => {}
-        }
+        (la, frac) = levels(k, lambda);
     }
     if D != D_OFF && (D != D_ANY || k.fs.depth_write) {
         _mm256_storeu_si256(dp.cast(), _mm256_blendv_epi8(stored, z, m));
-    }
-    // Texels: once per distinct level among the passing lanes.
-    let mut texel = [_mm256_setzero_ps(); 4];
-    let mut levels = [0i32; 8];
-    _mm256_storeu_si256(levels.as_mut_ptr().cast(), la);
-    let mut pending = bits;
-    let weighted_lanes = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_NEQ_UQ>(frac, _mm256_setzero_ps()));
-    while pending != 0 {
-        let l = levels[pending.trailing_zeros() as usize];
-        let same = _mm256_cmpeq_epi32(la, _mm256_set1_epi32(l));
-        let lanes = _mm256_movemask_ps(_mm256_castsi256_ps(same)) as u32 & pending;
-        pending &= !lanes;
-        let mut v = filter(&smp.levels[l as usize], sf, tf, k.linear, smp.repeat);
-        let weighted = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_and_si256(weighted_lanes, same))) as u32 & lanes;
-        if k.lod_mode == Lod::Linear && weighted != 0 && (l as usize) < smp.q {
-            let v2 = filter(&smp.levels[l as usize + 1], sf, tf, k.linear, smp.repeat);
-            for ch in 0..4 {
-                v[ch] = lerp(v[ch], v2[ch], frac);
-            }
-        }
-        if lanes == bits {
-            texel = v;
-        } else {
-            let sel = _mm256_castsi256_ps(same);
-            for ch in 0..4 {
-                texel[ch] = _mm256_blendv_ps(texel[ch], v[ch], sel);
-            }
-        }
     }
     // The primary colour, perspective-corrected by 1/w.
     let w: D8 = match k.w_mode {
@@ -459,46 +763,61 @@ unsafe fn group<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u32,
             p
         }
     };
-    let mut col = env_apply(k.env, &primary, &texel);
-    if let Some(((fr, fdx), f)) = &k.fog {
-        let v = at8(*fr, *fdx, &c);
-        let v = to_f32(&if k.w_mode == W_NONE { v } else { mul8(&v, &w) });
-        let mut vals = [0f32; 8];
-        _mm256_storeu_ps(vals.as_mut_ptr(), v);
-        for v in vals.iter_mut() {
-            *v = if f.per_fragment { f.factor(*v) } else { v.clamp(0.0, 1.0) };
-        }
-        let fv = _mm256_loadu_ps(vals.as_ptr());
-        let inv = _mm256_sub_ps(_mm256_set1_ps(1.0), fv);
-        let fc = f.color.to_array();
-        for ch in 0..3 {
-            col[ch] = _mm256_add_ps(_mm256_mul_ps(col[ch], fv), _mm256_mul_ps(_mm256_set1_ps(fc[ch]), inv));
-        }
-    }
-    // To bytes (`color_to_u8`), packed RGBA.
-    let rgba = _mm256_or_si256(
-        _mm256_or_si256(to_byte(col[0]), _mm256_slli_epi32::<8>(to_byte(col[1]))),
-        _mm256_or_si256(_mm256_slli_epi32::<16>(to_byte(col[2])), _mm256_slli_epi32::<24>(to_byte(col[3]))),
-    );
-    if STORE {
-        let old = _mm256_loadu_si256(cp.cast());
-        let afix = _mm256_set1_epi32(((k.fs.alpha_fix as u32) << 24) as i32);
-        _mm256_storeu_si256(cp.cast(), _mm256_blendv_epi8(old, _mm256_or_si256(rgba, afix), m));
-    } else {
-        let mut src = [[0u8; 4]; 8];
-        _mm256_storeu_si256(src.as_mut_ptr().cast(), rgba);
-        for l in 0..8 {
-            if bits & (1 << l) != 0 {
-                write_color(k.fs, &mut *cp.add(l), src[l]);
+    let rgba = {
+        // Texels: once per distinct level among the passing lanes.
+        let mut texel = [_mm256_setzero_ps(); 4];
+        let mut levels = [0i32; 8];
+        _mm256_storeu_si256(levels.as_mut_ptr().cast(), la);
+        let mut pending = bits;
+        let weighted_lanes = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_NEQ_UQ>(frac, _mm256_setzero_ps()));
+        while pending != 0 {
+            let l = levels[pending.trailing_zeros() as usize];
+            let same = _mm256_cmpeq_epi32(la, _mm256_set1_epi32(l));
+            let lanes = _mm256_movemask_ps(_mm256_castsi256_ps(same)) as u32 & pending;
+            pending &= !lanes;
+            let mut v = level_filter(k, l as usize, sf, tf);
+            let weighted = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_and_si256(weighted_lanes, same))) as u32 & lanes;
+            if k.lod_mode == Lod::Linear && weighted != 0 && (l as usize) < smp.q {
+                let v2 = level_filter(k, l as usize + 1, sf, tf);
+                for ch in 0..4 {
+                    v[ch] = lerp(v[ch], v2[ch], frac);
+                }
+            }
+            if lanes == bits {
+                texel = v;
+            } else {
+                let sel = _mm256_castsi256_ps(same);
+                for ch in 0..4 {
+                    texel[ch] = _mm256_blendv_ps(texel[ch], v[ch], sel);
+                }
             }
         }
-    }
+        let mut col = env_apply(k.env, &primary, &texel);
+        if let Some(((fr, fdx), f)) = &k.fog {
+            let v = at8(*fr, *fdx, &c);
+            let v = to_f32(&if k.w_mode == W_NONE { v } else { mul8(&v, &w) });
+            let mut vals = [0f32; 8];
+            _mm256_storeu_ps(vals.as_mut_ptr(), v);
+            for v in vals.iter_mut() {
+                *v = if f.per_fragment { f.factor(*v) } else { v.clamp(0.0, 1.0) };
+            }
+            let fv = _mm256_loadu_ps(vals.as_ptr());
+            let inv = _mm256_sub_ps(_mm256_set1_ps(1.0), fv);
+            let fc = f.color.to_array();
+            for ch in 0..3 {
+                col[ch] = _mm256_add_ps(_mm256_mul_ps(col[ch], fv), _mm256_mul_ps(_mm256_set1_ps(fc[ch]), inv));
+            }
+        }
+        // To bytes (`color_to_u8`), packed RGBA.
+        pack_bytes(&col)
+    };
+    write::<STORE>(k, cp, rgba, m, bits);
     Some(bits.count_ones())
 }
 
 #[inline]
 #[target_feature(enable = "avx2")]
-unsafe fn span<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+unsafe fn span<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     if x1 < x0 + 8 {
         return super::kernel_avx2::<D, STORE>(fs, t, px, y, x0, x1);
     }
@@ -509,9 +828,11 @@ unsafe fn span<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleS
     let cy = y as f64 + 0.5 - t.y0;
     let row = |p: &crate::render::setup::Plane| (p.a0 + p.dy * cy, p.dx);
     let p = &tp.planes[u];
+    let pad = if linear || FX { sampler.padded() } else { None };
     let k = Ctx {
         fs,
         smp: &smp,
+        pad,
         lod_mode,
         linear,
         env: EnvFn::new(tp.stage.envs[u].mode, sampler.base),
@@ -533,6 +854,9 @@ unsafe fn span<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleS
         flat: t.flat.map(|c| c.map(|v| _mm256_set1_ps(v as f32 / 255.0))),
         fog: t.fog.as_ref().map(|(plane, f)| (row(plane), *f)),
     };
+    if FX && !(pad.is_some() && k.fog.is_none() && matches!(k.env, EnvFn::Modulate { color: true, .. } | EnvFn::Replace { color: true, alpha: true })) {
+        return span::<D, STORE, false>(fs, t, px, y, x0, x1);
+    }
     let n = x1 - x0;
     let mut passed = 0u64;
     let mut i = 0;
@@ -541,7 +865,7 @@ unsafe fn span<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleS
         let len = (n - i).min(8);
         let got = if len == 8 {
             let dp = if D != D_OFF { px.depth.as_mut_ptr().add(i) } else { std::ptr::null_mut() };
-            group::<D, STORE>(&k, x0 + i, dp, px.color.as_mut_ptr().add(i), all)
+            group::<D, STORE, FX>(&k, x0 + i, dp, px.color.as_mut_ptr().add(i), all)
         } else {
             // The last pixels: on a stack copy, the missing lanes off.
             let (mut zb, mut cb) = ([0u32; 8], [[0u8; 4]; 8]);
@@ -550,7 +874,7 @@ unsafe fn span<const D: u8, const STORE: bool>(fs: &FragmentState, t: &TriangleS
             }
             cb[..len].copy_from_slice(&px.color[i..n]);
             let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(len as i32), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
-            let got = group::<D, STORE>(&k, x0 + i, zb.as_mut_ptr(), cb.as_mut_ptr(), live);
+            let got = group::<D, STORE, FX>(&k, x0 + i, zb.as_mut_ptr(), cb.as_mut_ptr(), live);
             if got.is_some() {
                 if D != D_OFF {
                     px.depth[i..n].copy_from_slice(&zb[..len]);
