@@ -216,7 +216,7 @@ fn completeness_disables_the_unit() {
 #[test]
 fn tex_image_errors() {
     let mut c = context(4, 4);
-    let mut e = |c: &mut Context, target: u32, level: i32, ifmt: i32, w: i32, h: i32, border: i32, format: u32, ty: u32| {
+    let e = |c: &mut Context, target: u32, level: i32, ifmt: i32, w: i32, h: i32, border: i32, format: u32, ty: u32| {
         if let Some(cmd) = unsafe { c.tex_image_command(2, target, level, ifmt, [w, h, 1], border, format, ty, std::ptr::null()) } {
             c.execute(&cmd);
         }

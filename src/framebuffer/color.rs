@@ -74,6 +74,13 @@ impl DerefMut for ColorBuffer {
     }
 }
 
+/// Equal when the pixels are.
+impl PartialEq for ColorBuffer {
+    fn eq(&self, other: &ColorBuffer) -> bool {
+        self[..] == other[..]
+    }
+}
+
 impl std::fmt::Debug for ColorBuffer {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "ColorBuffer({} pixels{})", self.len, if self.is_lent() { ", lent" } else { "" })

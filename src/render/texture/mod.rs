@@ -898,7 +898,7 @@ mod tests {
             seed = seed.wrapping_mul(1664525).wrapping_add(1013904223);
             seed
         };
-        let mut level = |w: i32, h: i32, rnd: &mut dyn FnMut() -> u32| {
+        let level = |w: i32, h: i32, rnd: &mut dyn FnMut() -> u32| {
             let texels: Vec<[u8; 4]> = (0..w * h).map(|_| rnd().to_ne_bytes()).collect();
             Arc::new(Image { width: w, height: h, depth: 1, border: 0, internal_format: 0x8058, base: Base::Rgba, texels: Texels::Rgba8(Arc::new(texels)) })
         };
