@@ -342,6 +342,20 @@ pub fn triangle(rs: &RenderState, fb: &mut Framebuffer, x: [i64; 3], y: [i64; 3]
 mod tests {
     use super::*;
 
+    /// A triangle's vertices counter-clockwise and its three edges; None
+    /// when it has no area.
+    fn ccw_edges(mut x: [i64; 3], mut y: [i64; 3]) -> Option<([i64; 3], [i64; 3], [Edge; 3])> {
+        let area = (x[1] - x[0]) as i128 * (y[2] - y[0]) as i128 - (x[2] - x[0]) as i128 * (y[1] - y[0]) as i128;
+        if area == 0 {
+            return None;
+        }
+        if area < 0 {
+            x.swap(1, 2);
+            y.swap(1, 2);
+        }
+        Some((x, y, [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])]))
+    }
+
     /// Small triangles (the narrow scan): `spans` and `Runs` agree
     /// with testing every pixel centre of a window directly.
     #[test]
@@ -355,17 +369,9 @@ mod tests {
         let (mut covered, mut empty) = (0, 0);
         for _ in 0..20000 {
             let (bx, by, size) = (rnd(16 * ONE), rnd(16 * ONE), 1 + rnd(12 * ONE));
-            let mut x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
-            let mut y = [by + rnd(size), by + rnd(size), by + rnd(size)];
-            let area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
-            if area == 0 {
-                continue;
-            }
-            if area < 0 {
-                x.swap(1, 2);
-                y.swap(1, 2);
-            }
-            let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
+            let x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
+            let y = [by + rnd(size), by + rnd(size), by + rnd(size)];
+            let Some((x, y, edges)) = ccw_edges(x, y) else { continue };
             let mut expect = vec![];
             for py in rect.y0 as i64..rect.y1 as i64 {
                 for px in rect.x0 as i64..rect.x1 as i64 {
@@ -402,20 +408,12 @@ mod tests {
         for n in 0..3000 {
             // Large and small triangles, some with horizontal edges.
             let m = if n % 3 == 0 { 64 * ONE } else { big };
-            let mut x = [rnd(m) - m / 2, rnd(m) - m / 2, rnd(m) - m / 2];
+            let x = [rnd(m) - m / 2, rnd(m) - m / 2, rnd(m) - m / 2];
             let mut y = [rnd(m) - m / 2, rnd(m) - m / 2, rnd(m) - m / 2];
             if n % 5 == 0 {
                 y[1] = y[0];
             }
-            let area = (x[1] - x[0]) as i128 * (y[2] - y[0]) as i128 - (x[2] - x[0]) as i128 * (y[1] - y[0]) as i128;
-            if area == 0 {
-                continue;
-            }
-            if area < 0 {
-                x.swap(1, 2);
-                y.swap(1, 2);
-            }
-            let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
+            let Some((x, y, edges)) = ccw_edges(x, y) else { continue };
             let row0 = y[0].min(y[1]).min(y[2]) / ONE - 2;
             let (x0, x1) = (x[0].min(x[1]).min(x[2]) / ONE - 2, x[0].max(x[1]).max(x[2]) / ONE + 2);
             let mut st = RowStepper::new(&edges, row0);
@@ -437,17 +435,9 @@ mod tests {
             ((seed >> 33) as i64).rem_euclid(m)
         };
         for _ in 0..500 {
-            let mut x = [rnd(32 * ONE), rnd(32 * ONE), rnd(32 * ONE)];
-            let mut y = [rnd(32 * ONE), rnd(32 * ONE), rnd(32 * ONE)];
-            let area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
-            if area == 0 {
-                continue;
-            }
-            if area < 0 {
-                x.swap(1, 2);
-                y.swap(1, 2);
-            }
-            let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
+            let x = [rnd(32 * ONE), rnd(32 * ONE), rnd(32 * ONE)];
+            let y = [rnd(32 * ONE), rnd(32 * ONE), rnd(32 * ONE)];
+            let Some((x, y, edges)) = ccw_edges(x, y) else { continue };
             for py in 0..32i64 {
                 for px in 0..32i64 {
                     let inside = edges.iter().all(|e| e.a * px + e.b * py + e.c >= 0);

@@ -43,51 +43,35 @@ pub trait SetupParams {
     fn color_sum(&self) -> bool;
 }
 
-impl SetupParams for RenderState {
-    #[inline(always)]
-    fn flat(&self) -> bool {
-        self.flat
-    }
-    #[inline(always)]
-    fn offset_fill(&self) -> Option<(f32, f32)> {
-        self.offset_fill
-    }
-    #[inline(always)]
-    fn texture(&self) -> Option<&Arc<TextureStage>> {
-        self.texture.as_ref()
-    }
-    #[inline(always)]
-    fn fog(&self) -> Option<Fog> {
-        self.fog
-    }
-    #[inline(always)]
-    fn color_sum(&self) -> bool {
-        self.color_sum
-    }
+/// Both states keep these five in fields of the same names and types.
+macro_rules! setup_params_from_fields {
+    ($($t:ty),*) => {$(
+        impl SetupParams for $t {
+            #[inline(always)]
+            fn flat(&self) -> bool {
+                self.flat
+            }
+            #[inline(always)]
+            fn offset_fill(&self) -> Option<(f32, f32)> {
+                self.offset_fill
+            }
+            #[inline(always)]
+            fn texture(&self) -> Option<&Arc<TextureStage>> {
+                self.texture.as_ref()
+            }
+            #[inline(always)]
+            fn fog(&self) -> Option<Fog> {
+                self.fog
+            }
+            #[inline(always)]
+            fn color_sum(&self) -> bool {
+                self.color_sum
+            }
+        }
+    )*};
 }
 
-impl SetupParams for ShadeState {
-    #[inline(always)]
-    fn flat(&self) -> bool {
-        self.flat
-    }
-    #[inline(always)]
-    fn offset_fill(&self) -> Option<(f32, f32)> {
-        self.offset_fill
-    }
-    #[inline(always)]
-    fn texture(&self) -> Option<&Arc<TextureStage>> {
-        self.texture.as_ref()
-    }
-    #[inline(always)]
-    fn fog(&self) -> Option<Fog> {
-        self.fog
-    }
-    #[inline(always)]
-    fn color_sum(&self) -> bool {
-        self.color_sum
-    }
-}
+setup_params_from_fields!(RenderState, ShadeState);
 
 /// A render state's triangle setup and fragment parameters, with its
 /// span kernels chosen.
