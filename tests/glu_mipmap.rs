@@ -6,6 +6,12 @@
 #![allow(clippy::type_complexity, clippy::too_many_arguments, clippy::useless_vec)]
 
 use softgl::gl::enums::*;
+// Named once: glu::scale keeps its own copies of these GL enums (GLU reaches
+// GL only through its public interface), which the two globs would both bring.
+use softgl::gl::enums::{
+    GL_BITMAP, GL_UNSIGNED_BYTE_2_3_3_REV, GL_UNSIGNED_BYTE_3_3_2, GL_UNSIGNED_INT_10_10_10_2, GL_UNSIGNED_INT_2_10_10_10_REV, GL_UNSIGNED_INT_8_8_8_8, GL_UNSIGNED_INT_8_8_8_8_REV,
+    GL_UNSIGNED_SHORT_1_5_5_5_REV, GL_UNSIGNED_SHORT_4_4_4_4, GL_UNSIGNED_SHORT_4_4_4_4_REV, GL_UNSIGNED_SHORT_5_5_5_1, GL_UNSIGNED_SHORT_5_6_5_REV,
+};
 use softgl::glu::mipmap::*;
 use softgl::glu::scale::*;
 use softgl::glu::strings::{GLU_INVALID_ENUM, GLU_INVALID_OPERATION, GLU_INVALID_VALUE};
