@@ -338,6 +338,15 @@ impl Framebuffer {
         self.color = ColorBuffer::lent(ptr, self.width * self.height);
     }
 
+    /// Gives the colour buffer fresh storage of its own when it was lent
+    /// (contents as after a resize; no-op when it has its own already).
+    pub fn unlend_color(&mut self) -> Result<(), AllocError> {
+        if self.color.is_lent() {
+            self.color = ColorBuffer::owned(alloc(self.color.len(), self.config.initial_color())?);
+        }
+        Ok(())
+    }
+
     /// Gives the colour buffer storage of its own again, holding what the
     /// caller's memory holds now (no-op when it has its own already).
     pub fn own_color(&mut self) -> Result<(), AllocError> {

@@ -916,19 +916,7 @@ impl Context {
         // The batched path's plain case is decided once for the draw
         // (nothing in the loop changes the state it depends on): each
         // vertex then enters it directly, as `vertex` would send it.
-        if self.plain_batch() {
-            for k in 0..n {
-                let i = index(k);
-                if let Some(s) = &f.color {
-                    self.current.color = s.fetch_as::<C, CN, true>(i);
-                    if self.lighting.color_material {
-                        self.apply_color_material();
-                    }
-                }
-                self.vertex_fast::<true>(v.fetch_as::<f32, VN, false>(i));
-            }
-            return;
-        }
+        let plain = self.plain_batch();
         for k in 0..n {
             let i = index(k);
             if let Some(s) = &f.color {
@@ -937,7 +925,12 @@ impl Context {
                     self.apply_color_material();
                 }
             }
-            self.vertex(v.fetch_as::<f32, VN, false>(i));
+            let p = v.fetch_as::<f32, VN, false>(i);
+            if plain {
+                self.vertex_fast::<true>(p);
+            } else {
+                self.vertex(p);
+            }
         }
     }
 

@@ -327,21 +327,31 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return std::ptr::null_mut();
         }
+        let flags = match access {
+            GL_READ_ONLY => GL_MAP_READ_BIT,
+            GL_WRITE_ONLY => GL_MAP_WRITE_BIT,
+            _ => GL_MAP_READ_BIT | GL_MAP_WRITE_BIT,
+        };
+        self.map_bound(target, access, flags, None)
+    }
+
+    /// Maps the buffer bound to `target` (INVALID_OPERATION if it is mapped
+    /// already): [offset, offset + length) of its store, or all of it.
+    /// The range is within the store (the callers check).
+    fn map_bound(&mut self, target: u32, access: u32, flags: u32, range: Option<(usize, usize)>) -> *mut u8 {
         let Some(b) = self.bound_buffer(target) else { return std::ptr::null_mut() };
         if b.mapped {
             self.set_error(GL_INVALID_OPERATION);
             return std::ptr::null_mut();
         }
+        let (offset, length) = range.unwrap_or((0, b.data.len()));
         b.mapped = true;
         b.access = access;
-        b.access_flags = match access {
-            GL_READ_ONLY => GL_MAP_READ_BIT,
-            GL_WRITE_ONLY => GL_MAP_WRITE_BIT,
-            _ => GL_MAP_READ_BIT | GL_MAP_WRITE_BIT,
-        };
-        b.map_offset = 0;
-        b.map_length = b.data.len();
-        b.data.as_mut_ptr()
+        b.access_flags = flags;
+        b.map_offset = offset;
+        b.map_length = length;
+        // SAFETY: offset + length is within the store.
+        unsafe { b.data.as_mut_ptr().add(offset) }
     }
 
     /// glMapBufferRange (ARB_map_buffer_range): a pointer to bytes
@@ -368,22 +378,13 @@ impl Context {
             self.set_error(GL_INVALID_OPERATION);
             return std::ptr::null_mut();
         }
-        let Some(b) = self.bound_buffer(target) else { return std::ptr::null_mut() };
-        if b.mapped {
-            self.set_error(GL_INVALID_OPERATION);
-            return std::ptr::null_mut();
-        }
-        b.mapped = true;
-        b.access = match rw {
+        let legacy = match rw {
             GL_MAP_READ_BIT => GL_READ_ONLY,
             GL_MAP_WRITE_BIT => GL_WRITE_ONLY,
             _ => GL_READ_WRITE,
         };
-        b.access_flags = access;
-        b.map_offset = offset as usize;
-        b.map_length = length as usize;
-        // SAFETY: offset + length is within the store (checked above).
-        unsafe { b.data.as_mut_ptr().add(offset as usize) }
+        // offset + length is within the store (checked above).
+        self.map_bound(target, legacy, access, Some((offset as usize, length as usize)))
     }
 
     /// glFlushMappedBufferRange: checks the range against the mapping; the

@@ -80,6 +80,11 @@ impl UserBuffer {
         self.format == GL_RGBA && self.ty == GL_UNSIGNED_BYTE && self.y_up && self.row_pixels == self.width
     }
 
+    /// Can `fb`'s colour buffer be this buffer's memory?
+    fn can_lend(&self, fb: &Framebuffer) -> bool {
+        self.is_direct() && fb.width == self.width && fb.height == self.height && !fb.is_double_buffered()
+    }
+
     /// OSMesaMakeCurrent's binding: points `fb`'s colour buffer at this
     /// buffer when its layout allows, else gives `fb` storage of its own
     /// loaded from it (false: out of memory).
@@ -87,18 +92,13 @@ impl UserBuffer {
     /// # Safety
     /// The buffer must be valid as OSMesaMakeCurrent's contract says.
     unsafe fn attach(&self, fb: &mut Framebuffer) -> bool {
-        if self.is_direct() && fb.width == self.width && fb.height == self.height && !fb.is_double_buffered() {
+        if self.can_lend(fb) {
             fb.lend_color(self.ptr);
             return true;
         }
-        if fb.color.is_lent() {
-            // Never write through to memory lent before.
-            let mut v = Vec::new();
-            if v.try_reserve_exact(fb.color.len()).is_err() {
-                return false;
-            }
-            v.resize(fb.color.len(), [0; 4]);
-            fb.color = crate::framebuffer::ColorBuffer::owned(v);
+        // Never write through to memory lent before.
+        if fb.unlend_color().is_err() {
+            return false;
         }
         self.load_into(fb);
         true
@@ -113,7 +113,7 @@ impl UserBuffer {
     /// As for `attach`.
     unsafe fn relayout(&mut self, fb: &mut Framebuffer) -> bool {
         let lent_here = fb.color.is_lent() && std::ptr::eq(fb.color.as_ptr() as *const u8, self.ptr);
-        if self.is_direct() && fb.width == self.width && fb.height == self.height && !fb.is_double_buffered() {
+        if self.can_lend(fb) {
             if !lent_here {
                 self.present(fb);
                 fb.lend_color(self.ptr);

@@ -1389,8 +1389,10 @@ fn swizzle_source(v: f32) -> Option<u8> {
     if v != v.trunc() {
         return None;
     }
-    Some(match v as i64 {
-        0x1903..=0x1906 => (v as i64 - 0x1903) as u8, // GL_RED, GREEN, BLUE, ALPHA
+    // RED, GREEN, BLUE and ALPHA are consecutive enums.
+    let e = v as i64;
+    Some(match e {
+        _ if (GL_RED as i64..=GL_ALPHA as i64).contains(&e) => (e - GL_RED as i64) as u8,
         0 => SWIZZLE_ZERO,
         1 => SWIZZLE_ONE,
         _ => return None,
@@ -1400,7 +1402,7 @@ fn swizzle_source(v: f32) -> Option<u8> {
 /// The enum glGetTexParameter reports for a swizzle source.
 fn swizzle_enum(k: u8) -> i64 {
     match k {
-        0..=3 => 0x1903 + k as i64,
+        0..=3 => (GL_RED + k as u32) as i64,
         crate::render::texture::SWIZZLE_ZERO => 0,
         _ => 1,
     }

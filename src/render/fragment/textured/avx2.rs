@@ -207,27 +207,31 @@ unsafe fn floor(x: __m256) -> (__m256, __m256i) {
     (f, _mm256_cvttps_epi32(f))
 }
 
-/// Level `l` filtered at (s, t): `Level::nearest` or `Level::linear`.
+/// NEAREST in level `l` at (s, t): the texel as packed RGBA8 lanes.
 #[inline(always)]
-unsafe fn filter(l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) -> Rgba {
-    let (wf, hf) = (_mm256_set1_ps(l.wf), _mm256_set1_ps(l.hf));
-    if !linear {
-        let (_, i) = floor(_mm256_mul_ps(s, wf));
-        let (_, j) = floor(_mm256_mul_ps(t, hf));
-        return channels(fetch(l, wrap(i, l.w, rep[0]), wrap(j, l.h, rep[1])));
-    }
+unsafe fn nearest(l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> __m256i {
+    let (_, i) = floor(_mm256_mul_ps(s, _mm256_set1_ps(l.wf)));
+    let (_, j) = floor(_mm256_mul_ps(t, _mm256_set1_ps(l.hf)));
+    fetch(l, wrap(i, l.w, rep[0]), wrap(j, l.h, rep[1]))
+}
+
+/// LINEAR's footprint in level `l` at (s, t): the top-left texel's
+/// indices (unwrapped) and the weights across and down.
+#[inline(always)]
+unsafe fn footprint(l: &Level, s: __m256, t: __m256) -> (__m256i, __m256i, __m256, __m256) {
     let half = _mm256_set1_ps(0.5);
-    let a = _mm256_sub_ps(_mm256_mul_ps(s, wf), half);
-    let b = _mm256_sub_ps(_mm256_mul_ps(t, hf), half);
+    let a = _mm256_sub_ps(_mm256_mul_ps(s, _mm256_set1_ps(l.wf)), half);
+    let b = _mm256_sub_ps(_mm256_mul_ps(t, _mm256_set1_ps(l.hf)), half);
     let ((fa, i0), (fb, j0)) = (floor(a), floor(b));
-    let (wa, wb) = (_mm256_sub_ps(a, fa), _mm256_sub_ps(b, fb));
-    let one = _mm256_set1_epi32(1);
-    let (i0w, i1w) = (wrap(i0, l.w, rep[0]), wrap(_mm256_add_epi32(i0, one), l.w, rep[0]));
-    let (j0w, j1w) = (wrap(j0, l.h, rep[1]), wrap(_mm256_add_epi32(j0, one), l.h, rep[1]));
-    let c00 = channels(fetch(l, i0w, j0w));
-    let c01 = channels(fetch(l, i1w, j0w));
-    let c10 = channels(fetch(l, i0w, j1w));
-    let c11 = channels(fetch(l, i1w, j1w));
+    (i0, j0, _mm256_sub_ps(a, fa), _mm256_sub_ps(b, fb))
+}
+
+/// The bilinear blend of a footprint's texels (top-left, top-right,
+/// bottom-left, bottom-right, packed RGBA8 lanes): rows across by `wa`,
+/// then down by `wb`, per channel.
+#[inline(always)]
+unsafe fn blend(texels: [__m256i; 4], wa: __m256, wb: __m256) -> Rgba {
+    let [c00, c01, c10, c11] = texels.map(|v| channels(v));
     let mut out = [_mm256_setzero_ps(); 4];
     for c in 0..4 {
         let top = lerp(c00[c], c01[c], wa);
@@ -235,6 +239,19 @@ unsafe fn filter(l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) 
         out[c] = lerp(top, bottom, wb);
     }
     out
+}
+
+/// Level `l` filtered at (s, t): `Level::nearest` or `Level::linear`.
+#[inline(always)]
+unsafe fn filter(l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) -> Rgba {
+    if !linear {
+        return channels(nearest(l, s, t, rep));
+    }
+    let (i0, j0, wa, wb) = footprint(l, s, t);
+    let one = _mm256_set1_epi32(1);
+    let (i0w, i1w) = (wrap(i0, l.w, rep[0]), wrap(_mm256_add_epi32(i0, one), l.w, rep[0]));
+    let (j0w, j1w) = (wrap(j0, l.h, rep[1]), wrap(_mm256_add_epi32(j0, one), l.h, rep[1]));
+    blend([fetch(l, i0w, j0w), fetch(l, i1w, j0w), fetch(l, i0w, j1w), fetch(l, i1w, j1w)], wa, wb)
 }
 
 /// The bilinear footprint's texels from the padded copy
@@ -287,21 +304,8 @@ unsafe fn split(r: [__m256i; 2]) -> (__m256i, __m256i) {
 /// `filter` for LINEAR with the padded copy: the same weights and lerps.
 #[inline(always)]
 unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
-    let (wf, hf) = (_mm256_set1_ps(l.wf), _mm256_set1_ps(l.hf));
-    let half = _mm256_set1_ps(0.5);
-    let a = _mm256_sub_ps(_mm256_mul_ps(s, wf), half);
-    let b = _mm256_sub_ps(_mm256_mul_ps(t, hf), half);
-    let ((fa, i0), (fb, j0)) = (floor(a), floor(b));
-    let (wa, wb) = (_mm256_sub_ps(a, fa), _mm256_sub_ps(b, fb));
-    let [p00, p01, p10, p11] = pairs(p, l, i0, j0, rep);
-    let (c00, c01, c10, c11) = (channels(p00), channels(p01), channels(p10), channels(p11));
-    let mut out = [_mm256_setzero_ps(); 4];
-    for c in 0..4 {
-        let top = lerp(c00[c], c01[c], wa);
-        let bottom = lerp(c10[c], c11[c], wa);
-        out[c] = lerp(top, bottom, wb);
-    }
-    out
+    let (i0, j0, wa, wb) = footprint(l, s, t);
+    blend(pairs(p, l, i0, j0, rep), wa, wb)
 }
 
 /// 16-bit halves of packed RGBA8 lanes: pixels 0, 1, 4, 5 and 2, 3, 6, 7
@@ -346,9 +350,7 @@ unsafe fn lerp16h(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
 #[inline(always)]
 unsafe fn filter_fixed(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) -> __m256i {
     if !linear {
-        let (_, i) = floor(_mm256_mul_ps(s, _mm256_set1_ps(l.wf)));
-        let (_, j) = floor(_mm256_mul_ps(t, _mm256_set1_ps(l.hf)));
-        return fetch(l, wrap(i, l.w, rep[0]), wrap(j, l.h, rep[1]));
+        return nearest(l, s, t, rep);
     }
     // u 256 - 128 rounded to an integer: i0 its top bits, the weight its
     // low 8 (|u| < 2^22 texels: the caller checks).
