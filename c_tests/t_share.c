@@ -9,7 +9,11 @@
  * texture binding is its own. Renderbuffers and sampler objects are
  * shared too (ARB_framebuffer_object, ARB_sampler_objects), framebuffer
  * objects are not: B attaches A's renderbuffer to a framebuffer object of
- * its own and reads what A drew into it.
+ * its own and reads what A drew into it. A renderbuffer deleted while
+ * attached lives on where it is still attached: A deletes one that B's
+ * framebuffer (and A's own unbound one) holds; its name is free (a new
+ * renderbuffer may take it), but both framebuffers keep the old image,
+ * complete, with A's pixels, until they detach it.
  *
  * Part 2, two threads: A and B current at the same time in two threads.
  * The main thread keeps redefining list L (each definition sets a colour
@@ -125,6 +129,88 @@ static void share_renderbuffers_and_samplers(void)
     h_expect(!glIsRenderbuffer(rb) && !glIsSampler(smp), "C sees neither");
 }
 
+/* Reads the bound framebuffer's centre pixel and its status. */
+static GLenum read_fbo(unsigned char p[4])
+{
+    memset(p, 0, 4);
+    glReadPixels(S / 2, S / 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+    return glCheckFramebufferStatus(GL_FRAMEBUFFER);
+}
+
+/* ARB_framebuffer_object 4.4.2.2: deleting a renderbuffer detaches it from
+ * the current context's bound framebuffers only; elsewhere the image stays
+ * attached (and alive) though its name is gone. */
+static void deleted_renderbuffer_stays_attached(void)
+{
+    GLuint rb, again, afbo, bfbo, name = 0;
+    GLint type = 0;
+    unsigned char p[4];
+    OSMesaMakeCurrent(A, abuf, GL_UNSIGNED_BYTE, S, S);
+    glGenRenderbuffers(1, &rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, S, S);
+    glGenFramebuffers(1, &afbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, afbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+    glClearColor(0, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glClearColor(0, 0, 0, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glFinish();
+
+    OSMesaMakeCurrent(B, bbuf, GL_UNSIGNED_BYTE, S, S);
+    glGenFramebuffers(1, &bfbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, bfbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+    h_expect(read_fbo(p) == GL_FRAMEBUFFER_COMPLETE && p[2] == 255, "B's framebuffer reads A's blue: %d,%d,%d", p[0], p[1], p[2]);
+
+    /* A deletes it (neither of A's bindings holds it) and reuses the name. */
+    OSMesaMakeCurrent(A, abuf, GL_UNSIGNED_BYTE, S, S);
+    glDeleteRenderbuffers(1, &rb);
+    h_expect(!glIsRenderbuffer(rb), "the deleted renderbuffer's name is free");
+    glGenRenderbuffers(1, &again);
+    glBindRenderbuffer(GL_RENDERBUFFER, again);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 2, 2);
+    glBindFramebuffer(GL_FRAMEBUFFER, afbo);
+    h_expect(read_fbo(p) == GL_FRAMEBUFFER_COMPLETE && p[2] == 255 && p[0] == 0,
+             "A's unbound framebuffer kept the deleted image: %d,%d,%d", p[0], p[1], p[2]);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    h_expect_no_error("A deletes an attached renderbuffer");
+
+    /* B still has the old image, not the new object of the same name... */
+    OSMesaMakeCurrent(B, bbuf, GL_UNSIGNED_BYTE, S, S);
+    h_expect(read_fbo(p) == GL_FRAMEBUFFER_COMPLETE && p[2] == 255 && p[0] == 0,
+             "B's framebuffer kept the deleted image: %d,%d,%d", p[0], p[1], p[2]);
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    h_expect(type == GL_RENDERBUFFER, "still a renderbuffer attachment: 0x%x", type);
+    /* ... and can draw into it. */
+    glClearColor(0, 1, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glClearColor(0, 0, 0, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, bfbo);
+    h_expect(read_fbo(p) == GL_FRAMEBUFFER_COMPLETE && p[1] == 255 && p[2] == 0, "B draws into the deleted image: %d,%d,%d", p[0], p[1], p[2]);
+    /* Detaching lets it go: the framebuffer is then incomplete. */
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, 0);
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, (GLint *)&name);
+    h_expect(name == 0 && glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE, "detached: name %u", name);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &bfbo);
+
+    /* Deleted while attached to the current context's bound framebuffer:
+     * detached there at once (4.4.2.2). */
+    OSMesaMakeCurrent(A, abuf, GL_UNSIGNED_BYTE, S, S);
+    glBindFramebuffer(GL_FRAMEBUFFER, afbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, again);
+    glDeleteRenderbuffers(1, &again);
+    type = -1;
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    h_expect(type == GL_NONE, "the bound framebuffer lets the deleted renderbuffer go: 0x%x", type);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &afbo);
+    h_expect_no_error("deleted renderbuffers");
+}
+
 int main(void)
 {
     static const unsigned char green[4] = {0, 255, 0, 255};
@@ -200,6 +286,7 @@ int main(void)
     h_expect(p[0] == 255 && p[1] == 0 && p[2] == 255, "A calls B's list: %d,%d,%d", p[0], p[1], p[2]);
 
     share_renderbuffers_and_samplers();
+    deleted_renderbuffer_stays_attached();
 
     /* C shares nothing. */
     OSMesaMakeCurrent(C, cbuf, GL_UNSIGNED_BYTE, S, S);

@@ -38,7 +38,7 @@ use super::validate::DIRTY_ALL;
 use crate::framebuffer::{Config, Framebuffer, DEPTH_MAX, MAX_SIZE};
 use crate::render::texture::{to_unorm8, Base, Texels, UNORM8};
 use std::collections::{HashMap, HashSet};
-use std::sync::Arc;
+use std::sync::{Arc, Mutex, MutexGuard};
 
 pub const GL_INVALID_FRAMEBUFFER_OPERATION: u32 = 0x0506;
 pub const GL_FRAMEBUFFER: u32 = 0x8D40;
@@ -92,14 +92,44 @@ const GL_TEXTURE_CUBE_MAP_NEGATIVE_Z: u32 = 0x851A;
 pub const MAX_COLOR_ATTACHMENTS: u32 = 1;
 
 /// What an attachment point holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
 pub enum Attachment {
     #[default]
     None,
     /// A texture image: name, image target (the cube face for cube maps),
     /// level, and the slice of a 3D texture.
     Texture { name: u32, target: u32, level: i32, layer: i32 },
-    Renderbuffer(u32),
+    Renderbuffer(RbRef),
+}
+
+/// A renderbuffer object. The share group's name table and every
+/// attachment point hold it by reference, so glDeleteRenderbuffers frees
+/// the name at once while the image lives on in the framebuffers it is
+/// still attached to (any context's, bound or not: only the current
+/// context's bound framebuffers detach it), until they let it go. Access
+/// is serialized by the share group's lock (`share`); the mutex is never
+/// contended.
+pub type RbObject = Arc<Mutex<Renderbuffer>>;
+
+/// An attached renderbuffer: the name it was attached by (what
+/// FRAMEBUFFER_ATTACHMENT_OBJECT_NAME reports) and the object itself.
+#[derive(Clone, Debug)]
+pub struct RbRef {
+    pub name: u32,
+    pub obj: RbObject,
+}
+
+impl PartialEq for RbRef {
+    fn eq(&self, o: &Self) -> bool {
+        Arc::ptr_eq(&self.obj, &o.obj)
+    }
+}
+impl Eq for RbRef {}
+
+/// The renderbuffer behind a reference (a poisoned lock still holds
+/// valid pixels: nothing panics while holding it).
+fn rb(o: &RbObject) -> MutexGuard<'_, Renderbuffer> {
+    o.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 /// A framebuffer object: its attachments and its draw and read buffers.
@@ -167,7 +197,7 @@ pub struct FboState {
     pub framebuffers: HashMap<u32, FramebufferObject>,
     /// Names glGenFramebuffers returned and not yet bound.
     reserved: HashSet<u32>,
-    pub renderbuffers: HashMap<u32, Renderbuffer>,
+    pub renderbuffers: HashMap<u32, RbObject>,
     rb_reserved: HashSet<u32>,
     pub renderbuffer_binding: u32,
     pub draw_binding: u32,
@@ -187,7 +217,7 @@ pub struct FboState {
 /// A share group's renderbuffers (their names and storage).
 #[derive(Default)]
 pub struct SharedRenderbuffers {
-    renderbuffers: HashMap<u32, Renderbuffer>,
+    renderbuffers: HashMap<u32, RbObject>,
     reserved: HashSet<u32>,
 }
 
@@ -233,7 +263,7 @@ struct Resolved {
 
 enum ResolvedKind {
     Texture { name: u32, slot: usize, stride: usize, start: usize, base: Base, ifmt: u32 },
-    Renderbuffer(u32),
+    Renderbuffer(RbObject),
 }
 
 impl Context {
@@ -394,14 +424,14 @@ impl Context {
                 continue;
             }
             self.fbo.rb_reserved.remove(&name);
-            if !self.fbo.renderbuffers.contains_key(&name) {
-                continue;
-            }
+            let Some(obj) = self.fbo.renderbuffers.get(&name).cloned() else { continue };
             if self.fbo.renderbuffer_binding == name {
                 self.fbo.renderbuffer_binding = 0;
             }
-            // Detached from the bound framebuffers (section 4.4.2.2).
-            self.detach_where(|a| a == Attachment::Renderbuffer(name));
+            // Detached from the bound framebuffers (section 4.4.2.2); other
+            // framebuffers keep the image (`RbObject`).
+            let gone = Attachment::Renderbuffer(RbRef { name, obj });
+            self.detach_where(|a| *a == gone);
             self.fbo.renderbuffers.remove(&name);
         }
     }
@@ -414,15 +444,15 @@ impl Context {
         }
         for &n in names {
             if n != 0 {
-                self.detach_where(|a| matches!(a, Attachment::Texture { name, .. } if name == n));
+                self.detach_where(|a| matches!(*a, Attachment::Texture { name, .. } if name == n));
             }
         }
     }
 
-    fn detach_where(&mut self, hit: impl Fn(Attachment) -> bool) {
+    fn detach_where(&mut self, hit: impl Fn(&Attachment) -> bool) {
         let bound = [self.fbo.draw_binding, self.fbo.read_binding];
         let touched = bound.iter().any(|&b| {
-            self.fbo_object(b).is_some_and(|o| hit(o.color) || hit(o.depth) || hit(o.stencil))
+            self.fbo_object(b).is_some_and(|o| hit(&o.color) || hit(&o.depth) || hit(&o.stencil))
         });
         if !touched {
             return;
@@ -431,7 +461,7 @@ impl Context {
         for b in bound {
             if let Some(o) = self.fbo.framebuffers.get_mut(&b) {
                 for a in [&mut o.color, &mut o.depth, &mut o.stencil] {
-                    if hit(*a) {
+                    if hit(a) {
                         *a = Attachment::None;
                     }
                 }
@@ -446,7 +476,7 @@ impl Context {
         }
         if name != 0 && !self.fbo.renderbuffers.contains_key(&name) {
             self.fbo.rb_reserved.remove(&name);
-            self.fbo.renderbuffers.insert(name, Renderbuffer::default());
+            self.fbo.renderbuffers.insert(name, Arc::new(Mutex::new(Renderbuffer::default())));
         }
         self.fbo.renderbuffer_binding = name;
     }
@@ -461,24 +491,25 @@ impl Context {
         if w < 0 || h < 0 || w as usize > MAX_SIZE || h as usize > MAX_SIZE || samples < 0 || samples > 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let name = self.fbo.renderbuffer_binding;
-        if name == 0 {
+        let Some(obj) = self.fbo.renderbuffers.get(&self.fbo.renderbuffer_binding).cloned() else {
             return self.set_error(GL_INVALID_OPERATION);
-        }
+        };
         let n = w as usize * h as usize;
-        let mut rb = Renderbuffer { internal_format: ifmt, width: w, height: h, kind, ..Default::default() };
+        let mut new = Renderbuffer { internal_format: ifmt, width: w, height: h, kind, ..Default::default() };
         let ok = match kind {
-            RbKind::Color(base) => alloc(&mut rb.color, n, to_bytes(base.expand([0.0; 4]))),
-            RbKind::Depth => alloc(&mut rb.depth, n, 0),
-            RbKind::Stencil => alloc(&mut rb.stencil, n, 0),
-            RbKind::DepthStencil => alloc(&mut rb.depth, n, 0) && alloc(&mut rb.stencil, n, 0),
+            RbKind::Color(base) => alloc(&mut new.color, n, to_bytes(base.expand([0.0; 4]))),
+            RbKind::Depth => alloc(&mut new.depth, n, 0),
+            RbKind::Stencil => alloc(&mut new.stencil, n, 0),
+            RbKind::DepthStencil => alloc(&mut new.depth, n, 0) && alloc(&mut new.stencil, n, 0),
             RbKind::None => true,
         };
         if !ok {
             return self.set_error(GL_OUT_OF_MEMORY);
         }
         self.fbo_store();
-        self.fbo.renderbuffers.insert(name, rb);
+        // New storage for the same object: every framebuffer it is
+        // attached to sees it.
+        *rb(&obj) = new;
         self.fbo_reload();
     }
 
@@ -487,10 +518,11 @@ impl Context {
             self.set_error(GL_INVALID_ENUM);
             return None;
         }
-        let Some(rb) = self.fbo.renderbuffers.get(&self.fbo.renderbuffer_binding) else {
+        let Some(obj) = self.fbo.renderbuffers.get(&self.fbo.renderbuffer_binding).cloned() else {
             self.set_error(GL_INVALID_OPERATION);
             return None;
         };
+        let rb = rb(&obj);
         let (rgba, d, s) = rb_sizes(rb.kind);
         Some(match pname {
             GL_RENDERBUFFER_WIDTH => rb.width,
@@ -543,7 +575,7 @@ impl Context {
         }
         if let Some(o) = self.fbo.framebuffers.get_mut(&fbo) {
             for &s in slots {
-                *[&mut o.color, &mut o.depth, &mut o.stencil][s] = a;
+                *[&mut o.color, &mut o.depth, &mut o.stencil][s] = a.clone();
             }
         }
         if bound {
@@ -590,20 +622,25 @@ impl Context {
         if rb_target != GL_RENDERBUFFER {
             return self.set_error(GL_INVALID_ENUM);
         }
-        if rb != 0 && !self.fbo.renderbuffers.contains_key(&rb) {
-            return self.set_error(GL_INVALID_OPERATION);
-        }
-        let a = if rb == 0 { Attachment::None } else { Attachment::Renderbuffer(rb) };
+        let a = if rb == 0 {
+            Attachment::None
+        } else {
+            let Some(obj) = self.fbo.renderbuffers.get(&rb).cloned() else { return self.set_error(GL_INVALID_OPERATION) };
+            Attachment::Renderbuffer(RbRef { name: rb, obj })
+        };
         self.set_attachment(fbo, slots, a);
     }
 
     /// Where an attachment's image is and how large (None: no image).
-    fn resolve(&self, a: Attachment) -> Option<Resolved> {
-        match a {
+    fn resolve(&self, a: &Attachment) -> Option<Resolved> {
+        match *a {
             Attachment::None => None,
-            Attachment::Renderbuffer(n) => {
-                let rb = self.fbo.renderbuffers.get(&n)?;
-                Some(Resolved { width: rb.width as usize, height: rb.height as usize, kind: ResolvedKind::Renderbuffer(n) })
+            Attachment::Renderbuffer(ref r) => {
+                let (width, height) = {
+                    let b = rb(&r.obj);
+                    (b.width as usize, b.height as usize)
+                };
+                Some(Resolved { width, height, kind: ResolvedKind::Renderbuffer(r.obj.clone()) })
             }
             Attachment::Texture { name, target, level, layer } => {
                 let obj = self.texture.objects.get(&name)?;
@@ -628,8 +665,8 @@ impl Context {
     /// `draw_buffer`: the object's draw buffer, when it is to be checked.
     pub fn framebuffer_status(&self, o: &FramebufferObject, draw_buffer: Option<u32>) -> u32 {
         let mut sizes = Vec::new();
-        for (i, a) in [o.color, o.depth, o.stencil].into_iter().enumerate() {
-            if a == Attachment::None {
+        for (i, a) in [&o.color, &o.depth, &o.stencil].into_iter().enumerate() {
+            if *a == Attachment::None {
                 continue;
             }
             let Some(r) = self.resolve(a) else { return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT };
@@ -641,8 +678,8 @@ impl Context {
                 (ResolvedKind::Texture { base, .. }, 0) => *base != Base::Depth,
                 (ResolvedKind::Texture { base, .. }, 1) => *base == Base::Depth,
                 (ResolvedKind::Texture { ifmt, .. }, _) => is_depth_stencil(*ifmt),
-                (ResolvedKind::Renderbuffer(n), _) => {
-                    let k = self.fbo.renderbuffers.get(n).map_or(RbKind::None, |rb| rb.kind);
+                (ResolvedKind::Renderbuffer(obj), _) => {
+                    let k = rb(obj).kind;
                     match i {
                         0 => matches!(k, RbKind::Color(_)),
                         1 => matches!(k, RbKind::Depth | RbKind::DepthStencil),
@@ -735,10 +772,10 @@ impl Context {
         let b = if draw { self.fbo.draw_binding } else { self.fbo.read_binding };
         let Some(o) = self.fbo_object(b) else { return self.default_attachment_parameter(attachment, pname) };
         let a = match attachment {
-            GL_COLOR_ATTACHMENT0 => o.color,
-            GL_DEPTH_ATTACHMENT => o.depth,
-            GL_STENCIL_ATTACHMENT => o.stencil,
-            GL_DEPTH_STENCIL_ATTACHMENT if o.depth == o.stencil => o.depth,
+            GL_COLOR_ATTACHMENT0 => o.color.clone(),
+            GL_DEPTH_ATTACHMENT => o.depth.clone(),
+            GL_STENCIL_ATTACHMENT => o.stencil.clone(),
+            GL_DEPTH_STENCIL_ATTACHMENT if o.depth == o.stencil => o.depth.clone(),
             GL_DEPTH_STENCIL_ATTACHMENT => {
                 self.set_error(GL_INVALID_OPERATION);
                 return None;
@@ -754,12 +791,12 @@ impl Context {
         };
         let sizes = |c: &Context| -> ([i32; 4], i32, i32, bool) {
             match a {
-                Attachment::Renderbuffer(n) => {
-                    let k = c.fbo.renderbuffers.get(&n).map_or(RbKind::None, |r| r.kind);
+                Attachment::Renderbuffer(ref r) => {
+                    let k = rb(&r.obj).kind;
                     let (rgba, d, s) = rb_sizes(k);
                     (rgba, d, s, false)
                 }
-                Attachment::Texture { .. } => match c.resolve(a).map(|r| r.kind) {
+                Attachment::Texture { .. } => match c.resolve(&a).map(|r| r.kind) {
                     Some(ResolvedKind::Texture { ifmt, .. }) => {
                         let f = internal_format(ifmt).map(|f| f.stored_bits()).unwrap_or([0; 7]);
                         let float = super::texture::image::is_float_format(ifmt);
@@ -771,13 +808,13 @@ impl Context {
                 Attachment::None => ([0; 4], 0, 0, false),
             }
         };
-        Some(match (pname, a) {
+        Some(match (pname, a.clone()) {
             (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Attachment::None) => 0,
             (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Attachment::Texture { .. }) => GL_TEXTURE as i32,
             (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, Attachment::Renderbuffer(_)) => GL_RENDERBUFFER as i32,
             (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Attachment::None) => 0,
             (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Attachment::Texture { name, .. }) => name as i32,
-            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Attachment::Renderbuffer(n)) => n as i32,
+            (GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, Attachment::Renderbuffer(ref r)) => r.name as i32,
             (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, Attachment::Texture { level, .. }) => level,
             (GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, Attachment::Texture { target, .. }) => {
                 if (GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z).contains(&target) { target as i32 } else { 0 }
@@ -868,9 +905,9 @@ impl Context {
         if self.framebuffer_status(o, None) != GL_FRAMEBUFFER_COMPLETE {
             return None;
         }
-        let color = self.resolve(o.color);
-        let depth = self.resolve(o.depth);
-        let stencil = self.resolve(o.stencil);
+        let color = self.resolve(&o.color);
+        let depth = self.resolve(&o.depth);
+        let stencil = self.resolve(&o.stencil);
         let (mut w, mut h) = (usize::MAX, usize::MAX);
         for r in [&color, &depth, &stencil].into_iter().flatten() {
             w = w.min(r.width);
@@ -909,7 +946,10 @@ impl Context {
 
     fn read_color_at(&self, r: &Resolved, x: usize, y: usize) -> [u8; 4] {
         match r.kind {
-            ResolvedKind::Renderbuffer(n) => self.fbo.renderbuffers.get(&n).map_or([0; 4], |rb| rb.color.get(y * rb.width as usize + x).copied().unwrap_or([0; 4])),
+            ResolvedKind::Renderbuffer(ref obj) => {
+                let rb = rb(obj);
+                rb.color.get(y * rb.width as usize + x).copied().unwrap_or([0; 4])
+            }
             ResolvedKind::Texture { name, slot, stride, start, base, .. } => {
                 let Some(img) = self.texture.objects.get(&name).and_then(|o| o.images[slot].as_ref()) else { return [0; 4] };
                 let i = start + y * stride + x;
@@ -923,7 +963,10 @@ impl Context {
 
     fn read_depth_at(&self, r: &Resolved, x: usize, y: usize) -> u32 {
         match r.kind {
-            ResolvedKind::Renderbuffer(n) => self.fbo.renderbuffers.get(&n).map_or(0, |rb| rb.depth.get(y * rb.width as usize + x).copied().unwrap_or(0)),
+            ResolvedKind::Renderbuffer(ref obj) => {
+                let rb = rb(obj);
+                rb.depth.get(y * rb.width as usize + x).copied().unwrap_or(0)
+            }
             ResolvedKind::Texture { name, slot, stride, start, .. } => {
                 let Some(img) = self.texture.objects.get(&name).and_then(|o| o.images[slot].as_ref()) else { return 0 };
                 let d = img.texels.get(start + y * stride + x)[0] as f64;
@@ -934,7 +977,10 @@ impl Context {
 
     fn read_stencil_at(&self, r: &Resolved, x: usize, y: usize) -> u8 {
         match r.kind {
-            ResolvedKind::Renderbuffer(n) => self.fbo.renderbuffers.get(&n).map_or(0, |rb| rb.stencil.get(y * rb.width as usize + x).copied().unwrap_or(0)),
+            ResolvedKind::Renderbuffer(ref obj) => {
+                let rb = rb(obj);
+                rb.stencil.get(y * rb.width as usize + x).copied().unwrap_or(0)
+            }
             ResolvedKind::Texture { name, slot, stride, start, .. } => {
                 let Some(img) = self.texture.objects.get(&name).and_then(|o| o.images[slot].as_ref()) else { return 0 };
                 img.texels.get(start + y * stride + x)[3] as u8
@@ -994,7 +1040,7 @@ impl Context {
         }
         let snap = std::mem::take(&mut self.fbo.snapshot);
         let mut changed_tex = false;
-        if let Some(r) = self.resolve(o.color) {
+        if let Some(r) = self.resolve(&o.color) {
             if snap.color.len() == w * h {
                 let diff: Vec<usize> = (0..w * h).filter(|&i| self.fb.color[i] != snap.color[i]).collect();
                 if !diff.is_empty() {
@@ -1002,7 +1048,7 @@ impl Context {
                 }
             }
         }
-        if let Some(r) = self.resolve(o.depth) {
+        if let Some(r) = self.resolve(&o.depth) {
             if snap.depth.len() == w * h && self.fb.depth.len() == w * h {
                 let diff: Vec<usize> = (0..w * h).filter(|&i| self.fb.depth[i] != snap.depth[i]).collect();
                 if !diff.is_empty() {
@@ -1010,7 +1056,7 @@ impl Context {
                 }
             }
         }
-        if let Some(r) = self.resolve(o.stencil) {
+        if let Some(r) = self.resolve(&o.stencil) {
             if snap.stencil.len() == w * h && self.fb.stencil.len() == w * h {
                 let diff: Vec<usize> = (0..w * h).filter(|&i| self.fb.stencil[i] != snap.stencil[i]).collect();
                 if !diff.is_empty() {
@@ -1033,8 +1079,8 @@ impl Context {
 
     fn write_color(&mut self, r: &Resolved, w: usize, pixels: &[usize]) -> bool {
         match r.kind {
-            ResolvedKind::Renderbuffer(n) => {
-                let Some(rb) = self.fbo.renderbuffers.get_mut(&n) else { return false };
+            ResolvedKind::Renderbuffer(ref obj) => {
+                let mut rb = rb(obj);
                 let base = match rb.kind {
                     RbKind::Color(b) => b,
                     _ => return false,
@@ -1084,8 +1130,8 @@ impl Context {
 
     fn write_depth_stencil(&mut self, r: &Resolved, w: usize, pixels: &[usize], depth: bool) -> bool {
         match r.kind {
-            ResolvedKind::Renderbuffer(n) => {
-                let Some(rb) = self.fbo.renderbuffers.get_mut(&n) else { return false };
+            ResolvedKind::Renderbuffer(ref obj) => {
+                let mut rb = rb(obj);
                 let rw = rb.width as usize;
                 for &i in pixels {
                     let k = (i / w) * rw + i % w;
