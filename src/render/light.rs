@@ -99,7 +99,8 @@ impl LightingSetup {
     /// (alpha 0), otherwise it is in the primary and the secondary is 0.
     /// Both are clamped; the colour sum (3.9) adds them later.
     pub fn shade_split(&self, m: &Material, eye: Vec4, n: Vec3) -> (Vec4, Vec4) {
-        let v = if eye.w != 0.0 { eye.truncate() / eye.w } else { eye.truncate() };
+        // x / 1 is x exactly: the usual w = 1 skips three divisions.
+        let v = if eye.w != 0.0 && eye.w != 1.0 { eye.truncate() / eye.w } else { eye.truncate() };
         let mut primary = m.emission + m.ambient * self.model_ambient;
         let mut specular = Vec4::ZERO;
         for ls in &self.lights {
