@@ -14,7 +14,7 @@
 #![allow(non_snake_case)]
 use softgl::framebuffer::Config;
 use softgl::gl::enums::*;
-use softgl::gl::fog::{GL_FOG_COLOR, GL_FOG_DENSITY, GL_FOG_END, GL_FOG_MODE, GL_FOG_START};
+use softgl::gl::fog::{GL_FOG_COLOR, GL_FOG_COORD, GL_FOG_COORD_SRC, GL_FOG_DENSITY, GL_FOG_END, GL_FOG_MODE, GL_FOG_START, GL_FRAGMENT_DEPTH};
 use softgl::gl::texture::enums as t;
 use t::{GL_LINEAR, GL_NEAREST};
 use softgl::gl::{Command, Context};
@@ -755,7 +755,22 @@ fn simd_case(r: &mut Rng, (W, H): (usize, usize)) -> Vec<Command> {
         v.push(Command::ColorMask([false; 4]));
     }
     en(&mut v, GL_ALPHA_TEST, false);
-    en(&mut v, GL_FOG, false);
+    // Fog without texturing (the CS_FOG kernels): every mode and hint
+    // (f per fragment or per vertex), equal start and end, the fog
+    // coordinate from depth or from glFogCoord (negative and large too).
+    let fog = r.chance(35);
+    let fog_coord = fog && r.chance(40);
+    en(&mut v, GL_FOG, fog);
+    if fog {
+        v.push(Command::Hint(GL_FOG_HINT, r.pick(&[GL_NICEST, GL_FASTEST, GL_DONT_CARE])));
+        v.push(Command::Fog(GL_FOG_MODE, [r.pick(&[0x0800u32, 0x0801, 0x2601]) as f32, 0.0, 0.0, 0.0]));
+        v.push(Command::Fog(GL_FOG_DENSITY, [r.range(0.0, 2.0), 0.0, 0.0, 0.0]));
+        let start = r.range(-1.0, 1.0);
+        v.push(Command::Fog(GL_FOG_START, [start, 0.0, 0.0, 0.0]));
+        v.push(Command::Fog(GL_FOG_END, [if r.chance(10) { start } else { r.range(0.0, 5.0) }, 0.0, 0.0, 0.0]));
+        v.push(Command::Fog(GL_FOG_COLOR, [r.unit(), r.unit(), r.unit(), r.unit()]));
+        v.push(Command::Fog(GL_FOG_COORD_SRC, [if fog_coord { GL_FOG_COORD } else { GL_FRAGMENT_DEPTH } as f32, 0.0, 0.0, 0.0]));
+    }
     en(&mut v, t::GL_TEXTURE_2D, false);
     en(&mut v, GL_COLOR_LOGIC_OP, false);
     en(&mut v, GL_BLEND, r.chance(60));
@@ -801,6 +816,9 @@ fn simd_case(r: &mut Rng, (W, H): (usize, usize)) -> Vec<Command> {
                 [r.unit(), r.unit(), r.unit(), r.unit()]
             };
             v.push(Command::Color(c));
+            if fog_coord {
+                v.push(Command::FogCoord(if r.chance(10) { r.range(-50.0, 50.0) } else { r.range(-0.5, 6.0) }));
+            }
             v.push(random_vertex(r, scale, perspective));
         }
     }
@@ -866,7 +884,8 @@ fn compare_simd(seed: u64, cases: usize, size: (usize, usize)) -> Result<usize, 
         }
         let simd_fb = best_fb;
         drawn += (0..W * H).filter(|&i| reference_fb.color[i] != color[i]).count();
-        let nicest = cmds.contains(&Command::Hint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST));
+        // Fogged colour is never stepped: exact under every hint.
+        let nicest = cmds.contains(&Command::Hint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST)) || cmds.contains(&Command::Enable(GL_FOG));
         for i in 0..W * H {
             let (a, b, e) = (simd_fb.color[i], scalar_fb.color[i], reference_fb.color[i]);
             let off = (0..4).map(|ch| a[ch].abs_diff(e[ch])).max().unwrap();

@@ -56,10 +56,23 @@ impl Fog {
         }
     }
 
-    /// Fogs a colour given the interpolated vertex value.
+    /// f of a fragment from its interpolated vertex value: computed from
+    /// c per fragment, or the interpolated per-vertex f clamped.
+    #[inline(always)]
+    pub fn fragment_factor(&self, value: f32) -> f32 {
+        if self.per_fragment {
+            self.factor(value)
+        } else {
+            value.clamp(0.0, 1.0)
+        }
+    }
+
+    /// Fogs a colour given the interpolated vertex value. The SIMD span
+    /// kernel (`fragment::simd`, `fog_blend`) repeats the blend's f32
+    /// operations lane by lane: keep the two in step.
     #[inline]
     pub fn apply(&self, color: Vec4, value: f32) -> Vec4 {
-        let f = if self.per_fragment { self.factor(value) } else { value.clamp(0.0, 1.0) };
+        let f = self.fragment_factor(value);
         let rgb = color.truncate() * f + self.color.truncate() * (1.0 - f);
         rgb.extend(color.w)
     }

@@ -99,7 +99,8 @@ impl LightingSetup {
     /// (alpha 0), otherwise it is in the primary and the secondary is 0.
     /// Both are clamped; the colour sum (3.9) adds them later.
     pub fn shade_split(&self, m: &Material, eye: Vec4, n: Vec3) -> (Vec4, Vec4) {
-        let v = if eye.w != 0.0 { eye.truncate() / eye.w } else { eye.truncate() };
+        // x / 1 is x exactly: the usual w = 1 skips three divisions.
+        let v = if eye.w != 0.0 && eye.w != 1.0 { eye.truncate() / eye.w } else { eye.truncate() };
         let mut primary = m.emission + m.ambient * self.model_ambient;
         let mut specular = Vec4::ZERO;
         for ls in &self.lights {
@@ -147,5 +148,52 @@ impl LightingSetup {
         } else {
             (clamp(primary + specular).truncate().extend(alpha), Vec4::ZERO)
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The w = 1 shortcut of `shade_split` gives the division's bits: an
+    /// eye position with w = 1 lights exactly as the same point scaled by
+    /// 2 with w = 2 (x * 2 / 2 is x exactly), which divides. Random lights
+    /// (directional, positional, attenuated, spot), materials, normals,
+    /// local viewer and separate specular.
+    #[test]
+    fn w_one_matches_division() {
+        let mut seed = 11u64;
+        let mut unit = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 40) as f32 / (1u64 << 24) as f32
+        };
+        let mut lit = 0;
+        for case in 0..20_000 {
+            let mut r = |lo: f32, hi: f32| lo + (hi - lo) * unit();
+            let v4 = |r: &mut dyn FnMut(f32, f32) -> f32, lo: f32, hi: f32| Vec4::new(r(lo, hi), r(lo, hi), r(lo, hi), r(lo, hi));
+            let lights: Vec<Light> = (0..2)
+                .map(|_| Light {
+                    enabled: true,
+                    ambient: v4(&mut r, 0.0, 0.3),
+                    diffuse: v4(&mut r, 0.0, 1.0),
+                    specular: v4(&mut r, 0.0, 1.0),
+                    position: Vec4::new(r(-5.0, 5.0), r(-5.0, 5.0), r(-5.0, 5.0), if r(0.0, 1.0) < 0.5 { 0.0 } else { 1.0 }),
+                    spot_direction: Vec3::new(r(-1.0, 1.0), r(-1.0, 1.0), r(-1.0, 1.0)),
+                    spot_exponent: if r(0.0, 1.0) < 0.5 { 0.0 } else { r(0.0, 64.0) },
+                    spot_cutoff: if r(0.0, 1.0) < 0.5 { 180.0 } else { r(5.0, 90.0) },
+                    attenuation: [r(0.5, 1.5), r(0.0, 0.5), r(0.0, 0.2)],
+                })
+                .collect();
+            let m = Material { ambient: v4(&mut r, 0.0, 1.0), diffuse: v4(&mut r, 0.0, 1.0), specular: v4(&mut r, 0.0, 1.0), emission: v4(&mut r, 0.0, 0.3), shininess: r(0.0, 128.0) };
+            let flags = [case % 2 == 0, false, case % 3 == 0, false, false];
+            let ls = LightingSetup::new(&lights, Vec4::new(0.2, 0.2, 0.2, 1.0), flags, Mat4::IDENTITY);
+            let eye = Vec3::new(r(-4.0, 4.0), r(-4.0, 4.0), r(-9.0, 1.0));
+            let n = Vec3::new(r(-1.0, 1.0), r(-1.0, 1.0), r(-1.0, 1.0)).normalize_or_zero();
+            let one = ls.shade_split(&m, eye.extend(1.0), n);
+            let two = ls.shade_split(&m, (eye * 2.0).extend(2.0), n);
+            assert_eq!([one.0.to_array(), one.1.to_array()].map(|a| a.map(f32::to_bits)), [two.0.to_array(), two.1.to_array()].map(|a| a.map(f32::to_bits)), "case {case}");
+            lit += (one.0 != m.emission + m.ambient * ls.model_ambient) as usize;
+        }
+        assert!(lit > 10_000, "only {lit} cases lit");
     }
 }

@@ -63,6 +63,11 @@ pub(super) const CS_GENERAL: u8 = 3;
 pub(super) const CS_CONSTANT: u8 = 4;
 /// Affine colour stepped in 16.16 fixed point (hint not GL_NICEST).
 pub(super) const CS_STEPPED: u8 = 5;
+/// Untextured and fogged (3.10): the primary colour (flat, affine or
+/// perspective) blended towards the fog colour, as
+/// `reference::triangle_color` computes it, without its per-pixel
+/// re-evaluation of the row terms and second 1/w division ([`fog_color`]).
+pub(super) const CS_FOG: u8 = 6;
 /// Colour writes.
 pub(super) const CO_NONE: u8 = 0;
 pub(super) const CO_STORE: u8 = 1;
@@ -98,8 +103,10 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kerne
         ColorOp::Blend(b) if full && blend_is(&b, BlendFactor::SrcAlpha, BlendFactor::One) => CO_ADD,
         _ => CO_GENERAL,
     };
-    let cs = if t.tex.is_some() || t.fog.is_some() {
+    let cs = if t.tex.is_some() {
         CS_GENERAL
+    } else if t.fog.is_some() {
+        CS_FOG
     } else if t.flat.is_some() {
         CS_FLAT
     } else if t.perspective {
@@ -154,6 +161,7 @@ fn pick_cs<const D: u8>(cs: u8, co: u8) -> Kernel {
         CS_PERSPECTIVE => pick_co::<D, CS_PERSPECTIVE>(co),
         CS_CONSTANT => pick_co::<D, CS_CONSTANT>(co),
         CS_STEPPED => kernel::<false, D, CS_STEPPED, CO_STORE>,
+        CS_FOG => pick_co::<D, CS_FOG>(co),
         _ => pick_co::<D, CS_GENERAL>(co),
     }
 }
@@ -238,6 +246,7 @@ pub(super) fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs:
     let cdx: [f64; 4] = std::array::from_fn(|c| t.color[c].dx);
     let qr = t.q.a0 + t.q.dy * cy;
     let qdx = t.q.dx;
+    let fog = if CS == CS_FOG { FogRow::new(t, cy) } else { None };
     let mut flat = t.flat.unwrap_or_default();
     if CS == CS_CONSTANT {
         // a0 + 0 * cy + 0 * cx is a0 exactly: the reference's value.
@@ -296,6 +305,10 @@ pub(super) fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs:
                     let w = 1.0 / (qr + qdx * cx);
                     color_to_u8(glam::Vec4::from_array(std::array::from_fn(|c| ((cr[c] + cdx[c] * cx) * w) as f32)))
                 }
+                CS_FOG => match &fog {
+                    Some(f) => fog_color(t, f, &cr, &cdx, qr, qdx, cx),
+                    None => reference::triangle_color(t, cx, cy),
+                },
                 _ => reference::triangle_color(t, cx, cy),
             };
             let dst = &mut col[k];
@@ -308,6 +321,42 @@ pub(super) fn kernel<const S: bool, const D: u8, const CS: u8, const CO: u8>(fs:
         }
     }
     *total += passed;
+}
+
+/// A fogged triangle's fog plane with its row term hoisted, and the fog
+/// parameters: what [`fog_color`] needs besides the colour planes.
+#[derive(Clone, Copy)]
+pub(super) struct FogRow {
+    /// `a0 + dy * cy` of the fog plane (the reference's order).
+    pub r: f64,
+    pub dx: f64,
+    pub fog: crate::render::fog::Fog,
+    /// Flat shading: the provoking colour as the reference reads it
+    /// back (bytes / 255), unclamped.
+    pub flat: Option<glam::Vec4>,
+}
+
+impl FogRow {
+    /// Row `cy` of an untextured fogged triangle (None without fog).
+    #[inline(always)]
+    pub(super) fn new(t: &TriangleSetup, cy: f64) -> Option<FogRow> {
+        let (p, fog) = t.fog.as_ref()?;
+        let flat = t.flat.map(|c| glam::Vec4::from_array(c.map(|v| v as f32 / 255.0)));
+        Some(FogRow { r: p.a0 + p.dy * cy, dx: p.dx, fog: *fog, flat })
+    }
+}
+
+/// `reference::triangle_color` of an untextured fogged fragment at `cx`
+/// (rows hoisted as the kernels do: the same sums and products): one 1/w
+/// for colour and fog, then `Fog::apply` on the clamped colour.
+#[inline(always)]
+pub(super) fn fog_color(t: &TriangleSetup, fog: &FogRow, cr: &[f64; 4], cdx: &[f64; 4], qr: f64, qdx: f64, cx: f64) -> [u8; 4] {
+    let w = if t.perspective { 1.0 / (qr + qdx * cx) } else { 1.0 };
+    let c = match fog.flat {
+        Some(c) => c,
+        None => glam::Vec4::from_array(std::array::from_fn(|ch| ((cr[ch] + cdx[ch] * cx) * w) as f32)).clamp(glam::Vec4::ZERO, glam::Vec4::ONE),
+    };
+    color_to_u8(fog.fog.apply(c, ((fog.r + fog.dx * cx) * w) as f32))
 }
 
 /// A stored colour with `fix` (FragmentState::alpha_fix) OR-ed into alpha.

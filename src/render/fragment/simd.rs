@@ -5,7 +5,8 @@
 //!
 //! Covered: no stencil or alpha test; depth off, or LESS / LEQUAL with
 //! depth writes; colour flat, constant, affine, perspective or stepped
-//! (16.16 fixed point, hint not NICEST); colour stored unmasked, blended
+//! (16.16 fixed point, hint not NICEST), or any of those but stepped
+//! under fog without texturing; colour stored unmasked, blended
 //! SRC_ALPHA / ONE_MINUS_SRC_ALPHA or SRC_ALPHA / ONE, or not written
 //! (depth-only passes).
 //!
@@ -19,6 +20,10 @@
 //! - colours are f64 plane values converted to f32 with the current (round
 //!   to nearest) mode, then the f32 clamp / ×255 / +½ / truncate of
 //!   `color_to_u8`;
+//! - fog (`CS_FOG`): the fog value `(r + dx * cx) * w` per lane in f64 and
+//!   to f32, f from it by `Fog::fragment_factor` lane by lane (libm's
+//!   `expf` itself: no vector exponential reproduces its bits), then
+//!   `Fog::apply`'s f32 products and sum in lanes, alpha kept;
 //! - stepped colours use 32-bit lanes when the span's values stay in i32
 //!   (the scalar kernel's i64 values are then the same integers); the clamp
 //!   to [0, 255 << 16] followed by >> 16 equals >> 16 followed by the
@@ -34,7 +39,7 @@
 
 use super::fast::Kernel;
 #[allow(unused_imports)]
-use super::fast::{CO_ADD, CO_NONE, CO_OVER, CO_STORE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_PERSPECTIVE, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
+use super::fast::{CO_ADD, CO_NONE, CO_OVER, CO_STORE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_FOG, CS_PERSPECTIVE, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
 use std::cell::Cell;
 use std::sync::atomic::{AtomicBool, AtomicU8, Ordering};
 
@@ -161,6 +166,7 @@ fn pick_at<const S: bool>(l: Level, d: u8, cs: u8, co: u8) -> Option<Kernel> {
                 (CS_CONSTANT, _) => by_co!($d, CS_CONSTANT),
                 (CS_AFFINE, _) => by_co!($d, CS_AFFINE),
                 (CS_PERSPECTIVE, _) => by_co!($d, CS_PERSPECTIVE),
+                (CS_FOG, _) => by_co!($d, CS_FOG),
                 _ => None,
             }
         };
@@ -175,7 +181,7 @@ fn pick_at<const S: bool>(l: Level, d: u8, cs: u8, co: u8) -> Option<Kernel> {
 
 #[cfg(target_arch = "x86_64")]
 mod x86 {
-    use super::super::fast::{self, CO_ADD, CO_NONE, CO_OVER, CS_AFFINE, CS_CONSTANT, CS_PERSPECTIVE, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
+    use super::super::fast::{self, FogRow, CO_ADD, CO_NONE, CO_OVER, CS_AFFINE, CS_CONSTANT, CS_FOG, CS_PERSPECTIVE, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
     use super::super::{color_to_u8, CompareFunc, FragmentState, SpanPixels, StencilOp, StencilTest};
     use crate::framebuffer::DEPTH_MAX;
     use crate::render::setup::TriangleSetup;
@@ -311,7 +317,13 @@ mod x86 {
     /// in f64 (w = 1 and no multiply when affine), then to f32 and bytes.
     #[inline(always)]
     unsafe fn plane_color<const AVX: bool, const PERSP: bool>(cr: &[f64; 4], cdx: &[f64; 4], cx: f64, w: f64) -> __m128i {
-        let f = if AVX {
+        to_u8_lanes(plane_color_f32::<AVX, PERSP>(cr, cdx, cx, w))
+    }
+
+    /// [`plane_color`] before the conversion to bytes: the f32 channels.
+    #[inline(always)]
+    unsafe fn plane_color_f32<const AVX: bool, const PERSP: bool>(cr: &[f64; 4], cdx: &[f64; 4], cx: f64, w: f64) -> __m128 {
+        if AVX {
             plane_color_avx::<PERSP>(cr, cdx, cx, w)
         } else {
             let c = _mm_set1_pd(cx);
@@ -322,8 +334,41 @@ mod x86 {
                 ba = _mm_mul_pd(ba, _mm_set1_pd(w));
             }
             _mm_movelh_ps(_mm_cvtpd_ps(rg), _mm_cvtpd_ps(ba))
-        };
-        to_u8_lanes(f)
+        }
+    }
+
+    /// The fog values of pixels cx .. cx + 3, `((r + dx * c) * w) as f32`
+    /// lane by lane (w = 1 when not perspective, as in the reference).
+    #[inline(always)]
+    unsafe fn fog_values<const AVX: bool>(r: f64, dx: f64, cx: f64, w: &[f64; 4]) -> [f32; 4] {
+        let mut v = [0.0f32; 4];
+        if AVX {
+            fog_values_avx(r, dx, cx, w, &mut v);
+        } else {
+            let (r, dx) = (_mm_set1_pd(r), _mm_set1_pd(dx));
+            let lo = _mm_mul_pd(_mm_add_pd(r, _mm_mul_pd(dx, _mm_set_pd(cx + 1.0, cx))), _mm_loadu_pd(w.as_ptr()));
+            let hi = _mm_mul_pd(_mm_add_pd(r, _mm_mul_pd(dx, _mm_set_pd(cx + 3.0, cx + 2.0))), _mm_loadu_pd(w.as_ptr().add(2)));
+            _mm_storeu_ps(v.as_mut_ptr(), _mm_movelh_ps(_mm_cvtpd_ps(lo), _mm_cvtpd_ps(hi)));
+        }
+        v
+    }
+
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    unsafe fn fog_values_avx(r: f64, dx: f64, cx: f64, w: &[f64; 4], v: &mut [f32; 4]) {
+        let c = _mm256_add_pd(_mm256_set1_pd(cx), _mm256_setr_pd(0.0, 1.0, 2.0, 3.0));
+        let f = _mm256_mul_pd(_mm256_add_pd(_mm256_set1_pd(r), _mm256_mul_pd(_mm256_set1_pd(dx), c)), _mm256_loadu_pd(w.as_ptr()));
+        _mm_storeu_ps(v.as_mut_ptr(), _mm256_cvtpd_ps(f));
+    }
+
+    /// `Fog::apply(color, ..)` for fog factor f and fog colour `fc`:
+    /// `rgb * f + fc * (1 - f)` (separate f32 products and sum, as glam's
+    /// Vec3 does them), alpha from `color`.
+    #[inline(always)]
+    unsafe fn fog_blend(color: __m128, f: f32, fc: __m128) -> __m128 {
+        let rgb = _mm_add_ps(_mm_mul_ps(color, _mm_set1_ps(f)), _mm_mul_ps(fc, _mm_set1_ps(1.0 - f)));
+        let alpha = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
+        _mm_or_ps(_mm_and_ps(alpha, color), _mm_andnot_ps(alpha, rgb))
     }
 
     #[inline]
@@ -397,6 +442,10 @@ mod x86 {
         qr: f64,
         qdx: f64,
         flat: __m128i,
+        /// CS_FOG: the fog row, the fog colour, and whether 1/w is divided.
+        fog: Option<FogRow>,
+        fog_color: __m128,
+        perspective: bool,
         /// FragmentState::alpha_fix in every lane's alpha byte.
         afix: __m128i,
         sref: __m128i,
@@ -465,6 +514,33 @@ mod x86 {
                     let p = |k: usize| plane_color::<AVX, true>(&c.cr, &c.cdx, cx + k as f64, w[k]);
                     pack4(p(0), p(1), p(2), p(3))
                 }
+                CS_FOG => match &c.fog {
+                    Some(fog) => {
+                        // `fast::fog_color` in lanes: one 1/w for colour and
+                        // fog, the clamped colour (glam's max-then-min), f
+                        // per lane, the blend.
+                        let w = if c.perspective { recip4::<AVX>(c.qr, c.qdx, cx) } else { [1.0; 4] };
+                        let v = fog_values::<AVX>(fog.r, fog.dx, cx, &w);
+                        // Only lanes that are written pay for f (libm's
+                        // exp per fragment); the others' colours are dropped.
+                        let mut f = [0.0f32; 4];
+                        for k in 0..4 {
+                            if bits & (1 << k) != 0 {
+                                f[k] = fog.fog.fragment_factor(v[k]);
+                            }
+                        }
+                        let flat = fog.flat.map(|c| _mm_loadu_ps(c.as_ref().as_ptr()));
+                        let p = |k: usize| {
+                            let col = match flat {
+                                Some(col) => col,
+                                None => _mm_min_ps(_mm_max_ps(plane_color_f32::<AVX, true>(&c.cr, &c.cdx, cx + k as f64, w[k]), _mm_setzero_ps()), _mm_set1_ps(1.0)),
+                            };
+                            to_u8_lanes(fog_blend(col, f[k], c.fog_color))
+                        };
+                        pack4(p(0), p(1), p(2), p(3))
+                    }
+                    None => c.flat,
+                },
                 _ => c.flat,
             };
             let dst = _mm_loadu_si128(cp.cast());
@@ -482,10 +558,15 @@ mod x86 {
     /// stepped colour leaves i32.
     #[inline(always)]
     unsafe fn span<const AVX: bool, const S: bool, const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
-        if x1 < x0 + 4 {
+        if x1 < x0 + 4 && CS != CS_FOG {
             // Fewer than four pixels: the set-up and the stack copy of a
-            // partial group cost more than the scalar loop (small triangles).
+            // partial group cost more than the scalar loop (small
+            // triangles), except for fogged colour, whose scalar form costs
+            // more per pixel than the group's set-up.
             return fast::kernel::<S, D, CS, CO>(fs, t, px, y, x0, x1);
+        }
+        if x0 >= x1 {
+            return;
         }
         let n = x1 - x0;
         let cy = y as f64 + 0.5 - t.y0;
@@ -529,7 +610,12 @@ mod x86 {
         let lanes = _mm_setr_epi32(0, 1, 2, 3);
         let mut passed = 0u64;
         let mut cx = cx0;
-        let ctx = Ctx { fs, st, zr, zdx, cr, cdx, qr, qdx, flat, afix: _mm_set1_epi32(((fs.alpha_fix as u32) << 24) as i32), sref, svmask, sign };
+        let fog = if CS == CS_FOG { FogRow::new(t, cy) } else { None };
+        let fog_color = match &fog {
+            Some(f) => _mm_loadu_ps(f.fog.color.as_ref().as_ptr()),
+            None => _mm_setzero_ps(),
+        };
+        let ctx = Ctx { fs, st, zr, zdx, cr, cdx, qr, qdx, flat, fog, fog_color, perspective: t.perspective, afix: _mm_set1_epi32(((fs.alpha_fix as u32) << 24) as i32), sref, svmask, sign };
         // Pointers for the buffers a kernel does not touch (never read).
         let (mut zbuf, mut cbuf, mut sbuf) = ([0u32; 4], [0u32; 4], [0u8; 4]);
         let pick = |i: usize, zb: *mut u32, cb: *mut u8, sb: *mut u8| -> (*mut u32, *mut u8, *mut u8) {
