@@ -120,7 +120,19 @@ impl Context {
 
     /// glVertex: the vertex takes the current colour (section 2.7).
     /// Outside Begin/End a vertex has no effect.
+    #[inline(always)]
     pub fn vertex(&mut self, p: [f32; 4]) {
+        self.vertex_xyzw(p[0], p[1], p[2], p[3])
+    }
+
+    /// [`Context::vertex`] with the coordinates passed as four scalars:
+    /// they arrive in registers. An array argument is passed through
+    /// memory, written by the entry point as a few narrower stores and
+    /// read here as one 16-byte load, which cannot be forwarded from them
+    /// (a store-forwarding stall per vertex, about a tenth of the
+    /// function's time in immediate_1m).
+    pub fn vertex_xyzw(&mut self, x: f32, y: f32, z: f32, w: f32) {
+        let p = [x, y, z, w];
         let Some((mode, fast, plain)) = self.prim.as_ref().map(|a| (a.mode, a.fast, a.plain)) else { return };
         if fast {
             return if plain { self.vertex_fast::<true>(p) } else { self.vertex_fast::<false>(p) };
