@@ -48,6 +48,9 @@ pub struct Assembly {
     /// straight to setup (`render::draw_triangle`'s first case, decided
     /// once per primitive instead of per triangle).
     direct: bool,
+    /// The glBegin's caller masked every floating-point exception: the
+    /// entry points skip the guard until glEnd (`api::fpenv`).
+    fp_trusted: bool,
 }
 
 /// Slots of the batched path: a ring of 3 for triangles, strips and fans,
@@ -88,7 +91,8 @@ impl Context {
             verts.resize(SLOTS, ClipVertex::ZERO);
         }
         let plain = self.derived.lighting.is_none() && self.texture.vertex.units.is_empty() && rs.texture.is_none() && rs.fog.is_none();
-        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, plain, direct });
+        let fp_trusted = self.fp_caller_masked;
+        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, plain, direct, fp_trusted });
     }
 
     pub fn end(&mut self) {
@@ -116,6 +120,13 @@ impl Context {
         if !self.defer_render {
             self.sync_render();
         }
+    }
+
+    /// Inside a primitive whose glBegin came from a caller that masked
+    /// every floating-point exception (`api::fpenv`).
+    #[inline(always)]
+    pub fn fp_trusted(&self) -> bool {
+        self.prim.as_ref().is_some_and(|a| a.fp_trusted)
     }
 
     /// glVertex: the vertex takes the current colour (section 2.7).
