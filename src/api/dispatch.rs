@@ -15,7 +15,6 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 /// command returns zero.
 #[inline(always)]
 pub fn with_current<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
-    let _fp = FpGuard::enter();
     let p = current();
     if p.is_null() {
         return R::zero();
@@ -23,6 +22,16 @@ pub fn with_current<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
     // SAFETY: the pointer was made current by MakeCurrent and stays valid
     // until it is released; GL contexts are used by one thread at a time.
     let ctx = unsafe { &mut *p };
+    // Inside a primitive begun with every exception masked, the caller's
+    // environment was read at glBegin (fpenv: reading it waits for the
+    // floating-point work in flight).
+    let _fp = if ctx.fp_trusted() {
+        None
+    } else {
+        let g = FpGuard::enter();
+        ctx.fp_caller_masked = g.caller_masked();
+        Some(g)
+    };
     // An OSMesa or wgl context with no share group owns its framebuffer
     // and objects: nothing to swap in, so the call goes straight to `f`
     // (immediate mode's hot path; no out-of-line wrappers).

@@ -48,6 +48,9 @@ pub struct Assembly {
     /// straight to setup (`render::draw_triangle`'s first case, decided
     /// once per primitive instead of per triangle).
     direct: bool,
+    /// The glBegin's caller masked every floating-point exception: the
+    /// entry points skip the guard until glEnd (`api::fpenv`).
+    fp_trusted: bool,
 }
 
 /// Slots of the batched path: a ring of 3 for triangles, strips and fans,
@@ -88,7 +91,8 @@ impl Context {
             verts.resize(SLOTS, ClipVertex::ZERO);
         }
         let plain = self.derived.lighting.is_none() && self.texture.vertex.units.is_empty() && rs.texture.is_none() && rs.fog.is_none();
-        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, plain, direct });
+        let fp_trusted = self.fp_caller_masked;
+        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, plain, direct, fp_trusted });
     }
 
     pub fn end(&mut self) {
@@ -118,9 +122,28 @@ impl Context {
         }
     }
 
+    /// Inside a primitive whose glBegin came from a caller that masked
+    /// every floating-point exception (`api::fpenv`).
+    #[inline(always)]
+    pub fn fp_trusted(&self) -> bool {
+        self.prim.as_ref().is_some_and(|a| a.fp_trusted)
+    }
+
     /// glVertex: the vertex takes the current colour (section 2.7).
     /// Outside Begin/End a vertex has no effect.
+    #[inline(always)]
     pub fn vertex(&mut self, p: [f32; 4]) {
+        self.vertex_xyzw(p[0], p[1], p[2], p[3])
+    }
+
+    /// [`Context::vertex`] with the coordinates passed as four scalars:
+    /// they arrive in registers. An array argument is passed through
+    /// memory, written by the entry point as a few narrower stores and
+    /// read here as one 16-byte load, which cannot be forwarded from them
+    /// (a store-forwarding stall per vertex, about a tenth of the
+    /// function's time in immediate_1m).
+    pub fn vertex_xyzw(&mut self, x: f32, y: f32, z: f32, w: f32) {
+        let p = [x, y, z, w];
         let Some((mode, fast, plain)) = self.prim.as_ref().map(|a| (a.mode, a.fast, a.plain)) else { return };
         if fast {
             return if plain { self.vertex_fast::<true>(p) } else { self.vertex_fast::<false>(p) };

@@ -47,6 +47,10 @@ pub struct Context {
     /// primitives; tests turn them off to compare them with the general
     /// paths (the reference path never uses the batched vertex path).
     pub vertex_batching: bool,
+    /// The current entry point's caller masked every floating-point
+    /// exception (set by `api::dispatch::with_current`); glBegin keeps it
+    /// for the primitive (`Context::fp_trusted`).
+    pub fp_caller_masked: bool,
     pub lists: lists::Lists,
     pub pixel_store: pixels::PixelStore,
     /// Vertex arrays (client state, GL_CLIENT_VERTEX_ARRAY_BIT).
@@ -133,6 +137,7 @@ impl Context {
             transform: matrix::Transform::new(),
             prim: None,
             vertex_batching: true,
+            fp_caller_masked: false,
             lists: Default::default(),
             pixel_store: Default::default(),
             arrays: Default::default(),

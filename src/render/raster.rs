@@ -211,7 +211,9 @@ fn row_span(edges: &[Edge; 3], py: i64, col0: i64, col1: i64) -> (i64, i64) {
 /// The covered runs of a short triangle, found once before setup (which
 /// a triangle covering nothing skips) and shaded without a second scan.
 pub struct Runs {
-    runs: [(u32, u32, u32); Runs::MAX],
+    /// The first `len` are written; the rest are never read (no zeroing
+    /// of the array per triangle).
+    runs: [std::mem::MaybeUninit<(u32, u32, u32)>; Runs::MAX],
     len: usize,
 }
 
@@ -220,7 +222,7 @@ impl Runs {
     pub const MAX: usize = 12;
 
     pub fn new() -> Runs {
-        Runs { runs: [(0, 0, 0); Runs::MAX], len: 0 }
+        Runs { runs: [std::mem::MaybeUninit::uninit(); Runs::MAX], len: 0 }
     }
 
     /// Finds the runs of triangle (x, y) in `rect` cut by `stipple`; false
@@ -228,22 +230,58 @@ impl Runs {
     /// [`triangle`]. (Filled in place: no copy of the array per triangle.)
     #[inline]
     pub fn find(&mut self, x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>) -> bool {
-        let (row0, row1, _, _) = centre_box(x, y, rect);
+        let (row0, row1, col0, col1) = centre_box(x, y, rect);
         if row1 - row0 > Runs::MAX as i64 {
             return false;
         }
+        self.len = 0;
+        if stipple.is_none() && col1 - col0 <= NARROW {
+            self.find_narrow(x, y, row0, row1, col0, col1);
+            return true;
+        }
         let r = self;
-        r.len = 0;
         let mut overflow = false;
         spans(x, y, rect, stipple, |py, lo, hi| {
             if r.len == Runs::MAX {
                 overflow = true;
             } else {
-                r.runs[r.len] = (py as u32, lo as u32, hi as u32);
+                r.runs[r.len].write((py as u32, lo as u32, hi as u32));
                 r.len += 1;
             }
         });
         !overflow
+    }
+
+    /// [`Runs::find`] for a box of at most `NARROW` columns and `MAX` rows
+    /// with no stipple (most small triangles): `row_span`'s test of every
+    /// pixel centre, with the edge functions stepped from the box's corner
+    /// by additions (the same integers) and the box computed once. At most
+    /// one run per row, so the runs always fit.
+    #[inline(always)]
+    fn find_narrow(&mut self, x: [i64; 3], y: [i64; 3], row0: i64, row1: i64, col0: i64, col1: i64) {
+        if col0 >= col1 {
+            return;
+        }
+        let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
+        let a = edges.map(|e| e.a);
+        let mut row = edges.map(|e| e.a * col0 + e.b * row0 + e.c);
+        for py in row0..row1 {
+            let mut e = row;
+            let (mut lo, mut hi) = (col1, col0);
+            for px in col0..col1 {
+                // Inside all three: no sign bit in their union.
+                if (e[0] | e[1] | e[2]) >= 0 {
+                    lo = lo.min(px);
+                    hi = px + 1;
+                }
+                e = [e[0] + a[0], e[1] + a[1], e[2] + a[2]];
+            }
+            if lo < hi {
+                self.runs[self.len].write((py as u32, lo as u32, hi as u32));
+                self.len += 1;
+            }
+            row = [row[0] + edges[0].b, row[1] + edges[1].b, row[2] + edges[2].b];
+        }
     }
 
     pub fn is_empty(&self) -> bool {
@@ -252,7 +290,8 @@ impl Runs {
 
     /// The runs (y, x0, x1), bottom to top.
     pub fn iter(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
-        self.runs[..self.len].iter().map(|&(py, lo, hi)| (py as usize, lo as usize, hi as usize))
+        // SAFETY: the first `len` runs were written by `find`.
+        self.runs[..self.len].iter().map(|r| unsafe { r.assume_init() }).map(|(py, lo, hi)| (py as usize, lo as usize, hi as usize))
     }
 
     /// Shades the runs now, on this thread, with kernel `k`.
@@ -386,7 +425,7 @@ mod tests {
             assert_eq!(got, expect, "{x:?} {y:?}");
             let mut runs = Runs::new();
             assert!(runs.find(x, y, rect, None), "a short triangle");
-            let mut got: Vec<_> = runs.runs[..runs.len].iter().flat_map(|&(py, lo, hi)| (lo..hi).map(move |px| (px as i64, py as i64))).collect();
+            let mut got: Vec<_> = runs.iter().flat_map(|(py, lo, hi)| (lo..hi).map(move |px| (px as i64, py as i64))).collect();
             got.sort_by_key(|&(px, py)| (py, px));
             assert_eq!(got, expect, "runs of {x:?} {y:?}");
             if expect.is_empty() { empty += 1 } else { covered += 1 }

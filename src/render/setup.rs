@@ -271,7 +271,9 @@ pub(crate) fn planes_of<P: SetupParams, A: Attributes>(rs: &P, zq: [(f64, f64); 
         (Some(super::fragment::color_to_u8(flat_color)), [Plane::default(); 4])
     } else {
         let s = if perspective { q } else { [1.0; 3] };
-        let c = [0, 1, 2].map(|i| if back { v[i].back_color() } else { v[i].color() }.to_array());
+        // Written out: `[0, 1, 2].map` with this closure stayed an
+        // out-of-line call copying the colours through memory.
+        let c = if back { [v[0].back_color(), v[1].back_color(), v[2].back_color()] } else { [v[0].color(), v[1].color(), v[2].color()] }.map(|c| c.to_array());
         (None, std::array::from_fn(|ch| plane([c[0][ch] as f64 * s[0], c[1][ch] as f64 * s[1], c[2][ch] as f64 * s[2]])))
     };
     let mut z = plane(zq.map(|p| p.0));
