@@ -8,8 +8,9 @@
 //! lane, the 2x2 (or 1) texels of each level by gathers, their conversion
 //! c / 255, the lerps `a + (b - a) t`, the environment, fog and the
 //! conversion to bytes: every lane runs the scalar kernel's IEEE
-//! operations in the same order (no fused multiply-add; this module does
-//! not enable FMA), so no tolerance is needed.
+//! operations in the same order (no fused multiply-add but the one in
+//! `unorm`, which rounds as the separate operations do), so no tolerance
+//! is needed.
 //!
 //! LINEAR filtering reads the bilinear footprint from the sampler's padded
 //! copy of the levels (`texture::pairs`): the two texels of a row are
@@ -26,7 +27,9 @@
 //! c / 255 (correctly rounded, as the scalar kernel's division) is
 //! computed as `c HI + c LO` with HI = 257 / 2^16 (c HI is exact) and
 //! LO = 1/255 - HI rounded: equal to the division for every byte (tested),
-//! and two multiplies and an add instead of a division.
+//! a multiply and a fused multiply-add instead of a division (the one
+//! FMA here: fma(c, HI, c LO) is that sum rounded once, c HI being exact).
+//! The kernel therefore needs FMA besides AVX2 (`takes` checks).
 //!
 //! Taken: the states `super::select` takes whose per-level filter is the
 //! same on both sides of the magnification switch (mag LINEAR with min
@@ -94,14 +97,15 @@ fn plan(smp: &Sampler) -> Option<(Lod, bool)> {
 /// Whether this kernel takes a sampler (`super::select` has checked the
 /// rest of the state).
 pub(super) fn takes(s: &UnitSampler) -> bool {
-    plan(&Sampler::new(s)).is_some()
+    std::arch::is_x86_feature_detected!("fma") && plan(&Sampler::new(s)).is_some()
 }
 
 /// `FX`: GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST, so texturing
 /// may be approximated (`fixed_color`).
 pub(super) fn kernel<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     // SAFETY: `super::select` hands this out only at simd::Level::Avx2,
-    // which is only reported when the CPU has AVX2.
+    // which is only reported when the CPU has AVX2, and when `takes`
+    // found FMA.
     unsafe { span::<D, STORE, FX>(fs, t, px, y, x0, x1) }
 }
 
@@ -168,7 +172,9 @@ unsafe fn lerp(a: __m256, b: __m256, t: __m256) -> __m256 {
 #[inline(always)]
 unsafe fn unorm(c: __m256i) -> __m256 {
     let f = _mm256_cvtepi32_ps(c);
-    _mm256_add_ps(_mm256_mul_ps(f, _mm256_set1_ps(HI)), _mm256_mul_ps(f, _mm256_set1_ps(LO)))
+    // fma(c, HI, c LO) rounds c HI + (c LO rounded) once, as the add does:
+    // c HI is exact (c 257 < 2^24), so the product needs no rounding.
+    _mm256_fmadd_ps(f, _mm256_set1_ps(HI), _mm256_mul_ps(f, _mm256_set1_ps(LO)))
 }
 
 /// Eight RGBA8 texels to four channels of c / 255.
@@ -850,7 +856,7 @@ unsafe fn group<const D: u8, const STORE: bool, const FX: bool>(k: &Ctx, x: usiz
 }
 
 #[inline]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 unsafe fn span<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     if x1 < x0 + 8 {
         return super::kernel_avx2::<D, STORE>(fs, t, px, y, x0, x1);
@@ -953,7 +959,7 @@ mod tests {
             let f = c as f32;
             assert_eq!((f * HI + f * LO).to_bits(), (f / 255.0).to_bits(), "{c}");
         }
-        if !std::arch::is_x86_feature_detected!("avx2") {
+        if !(std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")) {
             return;
         }
         for c in 0..=255u32 {
