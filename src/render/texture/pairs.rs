@@ -94,9 +94,12 @@ fn shared(levels: &[Arc<Image>], repeat: [bool; 2]) -> Option<Arc<Padded>> {
     build(levels, repeat).map(Arc::new)
 }
 
-/// The padded copies (see the module documentation).
+/// The padded copies (see the module documentation). The copy is only an
+/// optimization: when it cannot be allocated (`try_reserve`) this returns
+/// None and the kernels read the plain levels, instead of aborting.
 pub fn build(levels: &[Arc<Image>], repeat: [bool; 2]) -> Option<Padded> {
-    let mut out = Vec::with_capacity(levels.len());
+    let mut out = Vec::new();
+    out.try_reserve_exact(levels.len()).ok()?;
     for img in levels {
         let Texels::Rgba8(tex) = &img.texels else { return None };
         let (w, h) = (img.width, img.height);
@@ -106,7 +109,8 @@ pub fn build(levels: &[Arc<Image>], repeat: [bool; 2]) -> Option<Padded> {
         // Index of a padded row/column in the level, by the axis's wrap mode.
         let axis = |i: i32, n: i32, rep: bool| if rep { i.rem_euclid(n) } else { i.clamp(0, n - 1) };
         let stride = w + 2;
-        let mut texels = Vec::with_capacity(stride as usize * (h + 2) as usize);
+        let mut texels = Vec::new();
+        texels.try_reserve_exact((stride as usize).checked_mul(h as usize + 2)?).ok()?;
         for j in -1..=h {
             let row = axis(j, h, repeat[1]) * w;
             for i in -1..=w {
