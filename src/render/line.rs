@@ -326,10 +326,14 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
     let env = LineEnv { fs: &rs.fragment, texture: rs.texture.as_deref(), fog: rs.fog.as_ref() };
     if !rs.reference && !(line.smooth && line.stipple.is_some()) {
         // The fast path (stippled smooth lines keep the reference code).
-        if super::tile::binning(rs) && !fb.draw_both {
+        let bbox = line.bounds(r);
+        // A stippled segment's band walks it from its start (the counter
+        // at a band's first column is not known otherwise): binned only
+        // when it spans at most one band's height.
+        let walks = line.stipple.is_some() && (bbox.y1 - bbox.y0) as usize > super::tile::BAND;
+        if super::tile::binning(rs) && !fb.draw_both && !walks {
             // Shaded later, band by band, in the tile workers; the
             // counter moves on as drawing would move it.
-            let bbox = line.bounds(r);
             *s = line.stipple_end();
             if !bbox.is_empty() && super::tile::push_line(rs, line, bbox) {
                 super::tile::submit(rs, fb);

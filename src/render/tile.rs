@@ -5,7 +5,16 @@
 //! calling thread only orients and culls them and appends a cheap record to
 //! the context's [`Batch`] (fixed-point vertices, window depth, 1/w and the
 //! attributes setup reads, and an index into the batch's list of captured
-//! states, `shade_state::ShadeState`, one per state change).
+//! states, `shade_state::ShadeState`, one per state change). Lines and
+//! points of the fast path are binned the same way (round 5): clipped and
+//! snapped on the calling thread (`line::LineRun`, `point::PointRun`, a
+//! record with the box of the pixels they may touch), drawn by each worker
+//! within its band (`runs::Band`). A segment's fragments do not depend on
+//! the rectangle drawn, and a stippled segment carries the counter it
+//! starts with (the calling thread counts its fragments to move the
+//! counter on for the next segment of a strip), so bands see exactly the
+//! 1-thread fragments. The batch being filled takes no lock (see
+//! [`BatchCell`]).
 //!
 //! Asynchronous flush (round 4): when a batch is full ([`MAX_BATCH`]), or
 //! holds [`SUBMIT_WORK`] while the workers are idle, [`submit`] hands it
@@ -44,7 +53,8 @@
 //! (`Context::execute`'s list, every immediate (`exec`/`client`) entry
 //! point and every window-system call: present, MakeCurrent, resize,
 //! queries, pixel commands, clears), and by the renderer before it draws
-//! points, lines, antialiased or polygon-mode triangles or to two colour
+//! smooth points, stippled smooth lines, antialiased or polygon-mode
+//! triangles, anything on the reference path, or to two colour
 //! buffers at once. Later state changes cannot reach binned triangles:
 //! they carry their own copy of the state (textures are copy-on-write).
 //! GLX contexts bound to a drawable still wait at the end of every call
