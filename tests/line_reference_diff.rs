@@ -180,3 +180,62 @@ fn fast_lines_and_points_match_reference() {
     // midpoint: a handful in millions of fragments.
     assert!(differing <= 20, "{differing} pixels differ");
 }
+
+/// Lines and points binned and drawn band by band in the tile workers
+/// (render::tile: 2 and 3 threads, batches of 7 primitives, every batch to
+/// the workers) give exactly the 1-thread fast path's colour, depth,
+/// stencil and occlusion count: the random cases above (wide, stippled
+/// strips across bands, smooth, flat and smooth shaded, fog, scissor) on
+/// a surface of several bands.
+#[test]
+fn threaded_lines_and_points_match_one_thread() {
+    let size = (161, 123);
+    let (W, H) = size;
+    let mut r = Rng(0x7b1e);
+    let mut ctx: Vec<Context> = [1, 2, 3]
+        .map(|t| {
+            let mut c = context(false, size);
+            c.derived.render.threads = t;
+            softgl::render::tile::set_batch_limits(&c.derived.render, 7, 0, 0);
+            c
+        })
+        .into();
+    let before = softgl::render::tile::flights_started();
+    let mut drawn = 0;
+    for n in 0..600 {
+        let color: Vec<[u8; 4]> = (0..W * H).map(|_| (r.next() as u32).to_ne_bytes()).collect();
+        let depth: Vec<u32> = (0..W * H).map(|_| if r.chance(50) { 0xFF_FFFF } else { r.next() as u32 & 0xFF_FFFF }).collect();
+        let stencil: Vec<u8> = (0..W * H).map(|_| r.below(4) as u8).collect();
+        // Two cases in a row, so that state changes between binned
+        // primitives of one batch.
+        // (Drawing to FRONT_AND_BACK is never binned: the test above
+        // covers it.)
+        let (mut cmds, _) = case(&mut r, size);
+        cmds.extend(case(&mut r, size).0);
+        cmds.retain(|c| *c != Command::DrawBuffer(GL_FRONT_AND_BACK));
+        for c in ctx.iter_mut() {
+            c.fb.color.copy_from_slice(&color);
+            c.fb.other_color.copy_from_slice(&color);
+            c.fb.depth.copy_from_slice(&depth);
+            c.fb.stencil.copy_from_slice(&stencil);
+            c.fb.samples_passed = 0;
+            for cmd in &cmds {
+                c.execute(cmd);
+            }
+            c.sync_render();
+            c.execute(&Command::DrawBuffer(GL_BACK));
+        }
+        drawn += ctx[0].fb.color.iter().zip(&color).filter(|(a, b)| a != b).count();
+        let (one, rest) = ctx.split_first().unwrap();
+        for (k, c) in rest.iter().enumerate() {
+            for i in 0..W * H {
+                let (a, b) = ((one.fb.color[i], one.fb.other_color[i], one.fb.depth[i], one.fb.stencil[i]), (c.fb.color[i], c.fb.other_color[i], c.fb.depth[i], c.fb.stencil[i]));
+                assert_eq!(a, b, "case {n} pixel ({}, {}): 1 thread / {} threads\ncommands: {cmds:?}", i % W, i / W, k + 2);
+            }
+            assert_eq!(one.fb.samples_passed, c.fb.samples_passed, "case {n}: samples passed, 1 / {} threads", k + 2);
+        }
+    }
+    assert!(drawn > 600 * 200, "the cases draw ({drawn} pixels)");
+    let flights = softgl::render::tile::flights_started() - before;
+    assert!(flights > 300, "primitives went to the workers ({flights} batches)");
+}

@@ -32,9 +32,14 @@ impl Rng {
 
 /// A context of `threads` rasterizer threads drawing into `buf`.
 unsafe fn context(threads: usize, buf: &mut [u8]) -> *mut OsContext {
+    context_of(threads, buf, W, H)
+}
+
+/// [`context`] of `w` x `h` pixels.
+unsafe fn context_of(threads: usize, buf: &mut [u8], w: i32, h: i32) -> *mut OsContext {
     let ctx = OSMesaCreateContextExt(GL_RGBA, 24, 8, 16, std::ptr::null_mut());
     assert!(!ctx.is_null());
-    assert_eq!(OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, W, H), 1);
+    assert_eq!(OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, w, h), 1);
     let rs = &mut (*ctx).gl.derived.render;
     rs.threads = threads;
     softgl::render::tile::set_batch_limits(rs, 7, 0, 0);
@@ -57,8 +62,12 @@ unsafe fn triangles(r: &mut Rng, n: usize) {
 }
 
 unsafe fn read(out: &mut Vec<Vec<u8>>) {
-    let mut px = vec![0u8; (W * H * 4) as usize];
-    glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, px.as_mut_ptr() as *mut c_void);
+    read_of(out, W, H);
+}
+
+unsafe fn read_of(out: &mut Vec<Vec<u8>>, w: i32, h: i32) {
+    let mut px = vec![0u8; (w * h * 4) as usize];
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, px.as_mut_ptr() as *mut c_void);
     out.push(px);
 }
 
@@ -177,4 +186,127 @@ fn sync_points_do_not_depend_on_thread_count() {
         }
     }
     assert!(softgl::render::tile::flights_started() - before > 100, "batches went to the workers");
+}
+
+const W2: i32 = 320;
+const H2: i32 = 240;
+
+/// Random vertices for lines and points, many crossing the whole window
+/// (so across every band), some textured.
+unsafe fn line_vertices(r: &mut Rng, mode: u32, n: usize) {
+    glBegin(mode);
+    for _ in 0..n {
+        let reach = if r.next() % 3 == 0 { 2.4 } else { 0.6 };
+        glColor4ub(r.next() as u8, r.next() as u8, r.next() as u8, 128 + (r.next() % 128) as u8);
+        glTexCoord2f(r.unit() * 2.0, r.unit() * 2.0);
+        glVertex3f((r.unit() - 0.5) * reach, (r.unit() - 0.5) * reach, r.unit() * 2.0 - 1.0);
+    }
+    glEnd();
+}
+
+/// Lines (wide, stippled strips and loops whose pattern runs on across
+/// bands, smooth, textured, fogged), points (aliased, large, smooth)
+/// between triangles, and every glAccum operation on a surface large
+/// enough for the accumulation buffer's bands to be shared among threads.
+unsafe fn lines_scene(threads: usize) -> Vec<Vec<u8>> {
+    let mut buf = vec![0u8; (W2 * H2 * 4) as usize];
+    let ctx = context_of(threads, &mut buf, W2, H2);
+    let mut r = Rng(0x11e5);
+    let mut out = Vec::new();
+    glClearColor(0.2, 0.1, 0.3, 1.0);
+    glClearAccum(0.1, -0.2, 0.3, 0.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    triangles(&mut r, 30);
+    for width in [1.0, 3.0, 6.0] {
+        glLineWidth(width);
+        line_vertices(&mut r, GL_LINES, 40);
+    }
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(3, 0x1C47);
+    glLineWidth(2.0);
+    line_vertices(&mut r, GL_LINE_STRIP, 30);
+    glLineStipple(1, 0xF0F3);
+    glLineWidth(1.0);
+    line_vertices(&mut r, GL_LINE_LOOP, 25);
+    line_vertices(&mut r, GL_LINES, 30);
+    glDisable(GL_LINE_STIPPLE);
+    read_of(&mut out, W2, H2);
+    // Smooth lines, blended, then flat-shaded and textured ones.
+    glEnable(GL_LINE_SMOOTH);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    for width in [1.5, 3.0] {
+        glLineWidth(width);
+        line_vertices(&mut r, GL_LINES, 60);
+    }
+    glDisable(GL_LINE_SMOOTH);
+    glDisable(GL_BLEND);
+    glShadeModel(GL_FLAT);
+    line_vertices(&mut r, GL_LINE_STRIP, 20);
+    glShadeModel(GL_SMOOTH);
+    let mut tex = 0u32;
+    glGenTextures(1, &mut tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    texture_image(&mut r, false);
+    glEnable(GL_TEXTURE_2D);
+    glEnable(GL_FOG);
+    glLineWidth(2.0);
+    line_vertices(&mut r, GL_LINES, 40);
+    glPointSize(4.0);
+    line_vertices(&mut r, GL_POINTS, 60);
+    glDisable(GL_TEXTURE_2D);
+    glDisable(GL_FOG);
+    // Points: 1 and 9 pixels, smooth.
+    for size in [1.0, 9.0] {
+        glPointSize(size);
+        line_vertices(&mut r, GL_POINTS, 200);
+    }
+    glEnable(GL_POINT_SMOOTH);
+    glPointSize(5.0);
+    line_vertices(&mut r, GL_POINTS, 50);
+    glDisable(GL_POINT_SMOOTH);
+    glPointSize(1.0);
+    glLineWidth(1.0);
+    read_of(&mut out, W2, H2);
+    // Every accumulation operation, drawing between them.
+    glAccum(GL_ACCUM, 0.3);
+    triangles(&mut r, 20);
+    line_vertices(&mut r, GL_LINES, 20);
+    glAccum(GL_LOAD, 0.7);
+    glAccum(GL_MULT, 0.9);
+    glAccum(GL_ADD, -0.05);
+    triangles(&mut r, 20);
+    glAccum(GL_ACCUM, -0.4);
+    glAccum(GL_RETURN, 1.3);
+    read_of(&mut out, W2, H2);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(30, 20, 250, 190);
+    glColorMask(1, 0, 1, 1);
+    glAccum(GL_RETURN, 0.8);
+    glColorMask(1, 1, 1, 1);
+    glDisable(GL_SCISSOR_TEST);
+    line_vertices(&mut r, GL_LINES, 20);
+    glFinish();
+    out.push(buf.clone());
+    OSMesaDestroyContext(ctx);
+    out
+}
+
+#[test]
+fn lines_points_and_accum_do_not_depend_on_thread_count() {
+    let before = softgl::render::tile::flights_started();
+    let one = unsafe { lines_scene(1) };
+    for w in one.windows(2) {
+        assert_ne!(w[0], w[1], "each step draws");
+    }
+    for threads in [2, 3] {
+        let many = unsafe { lines_scene(threads) };
+        for (k, (a, b)) in one.iter().zip(&many).enumerate() {
+            let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
+            assert_eq!(diff, 0, "read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
+        }
+    }
+    assert!(softgl::render::tile::flights_started() - before > 50, "primitives went to the workers");
 }

@@ -9,7 +9,9 @@
 
 use super::context::Context;
 use super::enums::*;
-use crate::framebuffer::Rect;
+use crate::framebuffer::{Framebuffer, Rect};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 
 const ONE: f32 = 32767.0;
 
@@ -95,6 +97,53 @@ fn returned(value: f32, acc: i16) -> u8 {
 /// accumulation value's byte (65536 entries) instead of converting each.
 const RETURN_TABLE_MIN: usize = 1 << 17;
 
+/// Rows of at most this many pixels are done on the calling thread;
+/// larger rectangles are cut into bands of rows for the rasterizer's
+/// threads (`render::pool`).
+const PARALLEL_PIXELS: usize = 1 << 15;
+
+/// Calls `row(y, accum, color, other)` for every row y of `r` with the
+/// whole row of the accumulation buffer, the drawn colour buffer and the
+/// other one (None when single-buffered), in bands of rows shared among
+/// `threads`. Each call gets its own row, so the result does not depend on
+/// the thread count.
+fn for_bands(threads: usize, fb: &mut Framebuffer, r: Rect, row: impl Fn(usize, &mut [[i16; 4]], &mut [[u8; 4]], Option<&mut [[u8; 4]]>) + Sync) {
+    let width = fb.width;
+    let (y0, y1) = (r.y0 as usize, r.y1 as usize);
+    let Framebuffer { accum, color, other_color, .. } = fb;
+    let span = y0 * width..y1 * width;
+    let (accum, color) = (&mut accum[span.clone()], &mut color[span.clone()]);
+    let mut other = (other_color.len() >= span.end).then(|| other_color[span].chunks_mut(width));
+    let rows = accum.chunks_mut(width).zip(color.chunks_mut(width));
+    let pixels = (r.x1 - r.x0) as usize * (y1 - y0);
+    if threads <= 1 || pixels < PARALLEL_PIXELS {
+        for (k, (a, c)) in rows.enumerate() {
+            row(y0 + k, a, c, other.as_mut().and_then(|o| o.next()));
+        }
+        return;
+    }
+    // Bands of 16 rows, each taken whole by one thread (its lock is never
+    // contended: a band is taken once).
+    type Rows<'a> = Vec<(usize, &'a mut [[i16; 4]], &'a mut [[u8; 4]], Option<&'a mut [[u8; 4]]>)>;
+    let mut bands: Vec<Mutex<Rows>> = Vec::new();
+    for (k, (a, c)) in rows.enumerate() {
+        if k % 16 == 0 {
+            bands.push(Mutex::new(Vec::with_capacity(16)));
+        }
+        let o = other.as_mut().and_then(|o| o.next());
+        bands.last_mut().expect("a band").get_mut().unwrap_or_else(|e| e.into_inner()).push((y0 + k, a, c, o));
+    }
+    let next = AtomicUsize::new(0);
+    crate::render::pool::run(threads, &|| loop {
+        let k = next.fetch_add(1, Ordering::Relaxed);
+        let Some(band) = bands.get(k) else { break };
+        let mut band = band.lock().unwrap_or_else(|e| e.into_inner());
+        for (y, a, c, o) in band.drain(..) {
+            row(y, a, c, o);
+        }
+    });
+}
+
 impl Context {
     /// glAccum. Whole rows at a time; the colour of a byte c is c / 255
     /// times `value`, the same f32 expression per byte whether computed per
@@ -114,20 +163,20 @@ impl Context {
         let mask = if self.color_buffer.draw_buffer == 0 { [false; 4] } else { self.fb.config.color_mask(self.color_buffer.write_mask) };
         self.sync_draw_buffer();
         let read_back = matches!(self.pixel_read_buffer, GL_BACK | 0x0402 /* BACK_LEFT */);
+        let threads = self.derived.render.threads;
         let fb = &mut self.fb;
-        let width = fb.width;
-        let rows = r.y0 as usize..r.y1 as usize;
+        // The read buffer of ACCUM and LOAD: the drawn one, or the other.
+        let read_other = !(read_back == fb.color_is_back || !fb.is_double_buffered());
+        let both = fb.draw_both;
         let (x0, x1) = (r.x0 as usize, r.x1 as usize);
+        // Each row is independent of the others: bands of rows in parallel.
         match op {
             GL_ACCUM | GL_LOAD => {
-                // The read buffer and the accumulation buffer are distinct
-                // vectors: borrow them apart.
-                let src: &[[u8; 4]] = if read_back == fb.color_is_back || !fb.is_double_buffered() { &fb.color } else { &fb.other_color };
-                let accum = &mut fb.accum;
                 let add: [f32; 256] = std::array::from_fn(|c| value * (c as f32 / 255.0));
                 let load: [i16; 256] = std::array::from_fn(|c| to_fixed(add[c]));
-                for y in rows {
-                    let (s, a) = (&src[y * width + x0..y * width + x1], &mut accum[y * width + x0..y * width + x1]);
+                for_bands(threads, fb, r, |_, a, color, other| {
+                    let s: &[[u8; 4]] = if read_other { other.expect("a second colour buffer") } else { color };
+                    let (s, a) = (&s[x0..x1], &mut a[x0..x1]);
                     if op == GL_LOAD {
                         for (acc, c) in a.iter_mut().zip(s) {
                             *acc = c.map(|v| load[v as usize]);
@@ -137,45 +186,44 @@ impl Context {
                             *acc = accum_pixel(*acc, c.map(|v| add[v as usize]));
                         }
                     }
-                }
+                });
             }
             GL_MULT | GL_ADD => {
-                for y in rows {
-                    for a in &mut fb.accum[y * width + x0..y * width + x1] {
+                for_bands(threads, fb, r, |_, a, _, _| {
+                    for a in &mut a[x0..x1] {
                         for ch in a.iter_mut() {
                             *ch = to_fixed(if op == GL_MULT { from_fixed(*ch) * value } else { from_fixed(*ch) + value });
                         }
                     }
-                }
+                });
             }
             _ => {
                 // GL_RETURN: value * acc, clamped, through the masks, into
                 // each draw buffer.
-                let both = fb.draw_both;
-                let table: Option<Vec<u8>> = ((x1 - x0) * rows.len() * 4 >= RETURN_TABLE_MIN).then(|| (0..=u16::MAX).map(|a| returned(value, a as i16)).collect());
+                let table: Option<Vec<u8>> = ((x1 - x0) * (r.y1 - r.y0) as usize * 4 >= RETURN_TABLE_MIN).then(|| (0..=u16::MAX).map(|a| returned(value, a as i16)).collect());
                 let byte = |a: i16| match &table {
                     Some(t) => t[a as u16 as usize],
                     None => returned(value, a),
                 };
-                for y in rows {
-                    let span = y * width + x0..y * width + x1;
+                for_bands(threads, fb, r, |_, acc, color, mut other| {
+                    let (acc, color) = (&acc[x0..x1], &mut color[x0..x1]);
                     if let (Some(t), [true, true, true, true], false) = (&table, mask, both) {
                         // The common case: a whole row of whole pixels.
-                        for (out, acc) in fb.color[span.clone()].iter_mut().zip(&fb.accum[span]) {
+                        for (out, acc) in color.iter_mut().zip(acc) {
                             *out = acc.map(|a| t[a as u16 as usize]);
                         }
-                        continue;
+                        return;
                     }
-                    for (i, acc) in span.clone().zip(&fb.accum[span]) {
-                        let mut out = fb.color[i];
+                    for (i, acc) in acc.iter().enumerate() {
+                        let mut out = color[i];
                         for ch in 0..4 {
                             if mask[ch] {
                                 out[ch] = byte(acc[ch]);
                             }
                         }
-                        fb.color[i] = out;
-                        if both {
-                            let o = &mut fb.other_color[i];
+                        color[i] = out;
+                        if let (true, Some(other)) = (both, other.as_deref_mut()) {
+                            let o = &mut other[x0 + i];
                             for ch in 0..4 {
                                 if mask[ch] {
                                     o[ch] = out[ch];
@@ -183,7 +231,7 @@ impl Context {
                             }
                         }
                     }
-                }
+                });
             }
         }
     }

@@ -48,11 +48,14 @@
 use super::clip::Plane;
 use super::fragment;
 use super::runs;
-use super::setup::{to_window, ONE};
+use super::fog::Fog;
+use super::fragment::{Buffers, FragmentState};
+use super::setup::{to_window, WindowVertex, ONE};
 use super::smooth;
+use super::texture::TextureStage;
 use super::vertex::ClipVertex;
 use super::RenderState;
-use crate::framebuffer::Framebuffer;
+use crate::framebuffer::{Framebuffer, Rect};
 use glam::Vec4;
 
 /// Largest aliased line width (GL_ALIASED_LINE_WIDTH_RANGE's maximum).
@@ -307,8 +310,6 @@ pub fn fragments_stepped(xa: i64, ya: i64, xb: i64, yb: i64, lo: i64, hi: i64, m
 /// Draws one segment given in clip coordinates. `flat_color` is the
 /// provoking vertex's colour; `s` is the stipple counter.
 pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &ClipVertex, b: &ClipVertex, flat_color: Vec4, s: &mut u32) {
-    // Drawn now: after the binned triangles.
-    super::tile::sync(rs, fb);
     let r = rs.draw_rect;
     if r.is_empty() {
         return;
@@ -317,83 +318,42 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
     let (wa, wb) = (to_window(rs, &a), to_window(rs, &b));
     let snap = |c: f64| (c * ONE as f64).round() as i64;
     let (xa, ya, xb, yb) = (snap(wa.x), snap(wa.y), snap(wb.x), snap(wb.y));
-    let (dx, dy) = (xb - xa, yb - ya);
-    if dx == 0 && dy == 0 {
+    if xa == xb && ya == yb {
         return;
     }
-    let x_major = dx.abs() >= dy.abs();
-    let w = raster_width(lp.width);
-    let shift = (w - 1) * ONE / 2;
-    let (sxa, sya, sxb, syb) = if x_major { (xa, ya - shift, xb, yb - shift) } else { (xa - shift, ya, xb - shift, yb) };
-    let (lo, hi) = if x_major { (r.x0 as i64, r.x1 as i64) } else { (r.y0 as i64, r.y1 as i64) };
-
-    // Attribute interpolation (3.6-3.8) from the snapped endpoints.
-    let inv = 1.0 / ONE as f64;
-    let (fxa, fya) = (xa as f64 * inv, ya as f64 * inv);
-    let (fdx, fdy) = (dx as f64 * inv, dy as f64 * inv);
-    let len2 = fdx * fdx + fdy * fdy;
-    // The parameter change of one pixel along the major axis (texture LOD).
-    let step = 1.0 / fdx.abs().max(fdy.abs());
     let flat = if rs.flat { Some(fragment::color_to_u8(flat_color)) } else { None };
-    let fs = &rs.fragment;
-    // The fragment colour at parameter t (3.4.1 equation 3.7): texturing,
-    // the colour sum and fog when on, perspective-correct through 1/w.
-    let color_at = |t: f64| -> Vec4 {
-        let (ka, kb) = ((1.0 - t) * wa.q, t * wb.q);
-        let primary = match flat {
-            Some(c) => Vec4::from_array(c.map(|v| v as f32 / 255.0)),
-            None => ((wa.color.as_dvec4() * ka + wb.color.as_dvec4() * kb) / (ka + kb)).as_vec4().clamp(Vec4::ZERO, Vec4::ONE),
-        };
-        let mut c = match &rs.texture {
-            Some(stage) => {
-                let c = stage.shade(&super::texture::line_coords(stage, &wa.tex, wa.q, &wb.tex, wb.q, t, step), primary);
-                // The colour sum (3.9) after texturing.
-                let sec = ((wa.secondary.as_dvec4() * ka + wb.secondary.as_dvec4() * kb) / (ka + kb)).as_vec4();
-                (c.truncate() + sec.truncate()).extend(c.w).clamp(Vec4::ZERO, Vec4::ONE)
+    let line = LineRun::new(wa, wb, [xa, ya, xb, yb], flat, lp, rs.smooth.line.is_some(), *s);
+    let env = LineEnv { fs: &rs.fragment, texture: rs.texture.as_deref(), fog: rs.fog.as_ref() };
+    if !rs.reference && !(line.smooth && line.stipple.is_some()) {
+        // The fast path (stippled smooth lines keep the reference code).
+        let bbox = line.bounds(r);
+        // A stippled segment's band walks it from its start (the counter
+        // at a band's first column is not known otherwise): binned only
+        // when it spans at most one band's height.
+        let walks = line.stipple.is_some() && (bbox.y1 - bbox.y0) as usize > super::tile::BAND;
+        if super::tile::binning(rs) && !fb.draw_both && !walks {
+            // Shaded later, band by band, in the tile workers; the
+            // counter moves on as drawing would move it.
+            *s = line.stipple_end();
+            if !bbox.is_empty() && super::tile::push_line(rs, line, bbox) {
+                super::tile::submit(rs, fb);
             }
-            None => primary,
-        };
-        if let Some(f) = &rs.fog {
-            c = f.apply(c, ((wa.fog as f64 * ka + wb.fog as f64 * kb) / (ka + kb)) as f32);
+            return;
         }
-        c
-    };
-    // t of the pixel centre projected on the segment (3.4.1 equation 3.6).
-    let t_at = |px: i64, py: i64| (((px as f64 + 0.5 - fxa) * fdx + (py as f64 + 0.5 - fya) * fdy) / len2).clamp(0.0, 1.0);
-    if !rs.reference {
-        // The fast path: the same fragments, colours and depths, handed to
-        // the framebuffer in runs (`runs`), depth only when tested, the
-        // colour once per segment when it cannot vary along it (no texture
-        // or fog, flat shading or equal colours at both ends: the
-        // interpolation of equal f32 values rounds back to them).
-        let sink = runs::Sink::new(fs, fb);
-        let depth = |px: i64, py: i64| fragment::depth_to_fixed(wa.z + t_at(px, py) * (wb.z - wa.z));
-        let constant = (rs.texture.is_none() && rs.fog.is_none() && (flat.is_some() || wa.color == wb.color)).then(|| color_at(0.0));
-        let hw = smooth::smooth_size(lp.width) / 2.0;
-        match (rs.smooth.line, constant) {
-            // Stippled smooth lines keep the reference path below.
-            (Some(_), _) if lp.stipple.is_some() => {}
-            (Some(_), Some(c)) => {
-                let (cu, cw) = (fragment::color_to_u8(c), c.w as f64);
-                return smooth_line_fast(rs, fb, &sink, [fxa, fya, fdx, fdy], hw, depth, |_, _| (cu, cw));
-            }
-            (Some(_), None) => {
-                return smooth_line_fast(rs, fb, &sink, [fxa, fya, fdx, fdy], hw, depth, |px, py| {
-                    let c = color_at(t_at(px, py));
-                    (fragment::color_to_u8(c), c.w as f64)
-                });
-            }
-            (None, Some(c)) => {
-                let cu = fragment::color_to_u8(c);
-                return aliased_fast(rs, fb, &sink, lp, [sxa, sya, sxb, syb], x_major, w, (lo, hi), s, depth, |_, _| cu);
-            }
-            (None, None) => {
-                return aliased_fast(rs, fb, &sink, lp, [sxa, sya, sxb, syb], x_major, w, (lo, hi), s, depth, |px, py| fragment::color_to_u8(color_at(t_at(px, py))));
-            }
-        }
+        // Drawn now: after the binned primitives.
+        super::tile::sync(rs, fb);
+        let sink = runs::Sink::new(&rs.fragment, fb);
+        let width = fb.width;
+        *s = line.draw(&env, &sink, fb, width, r);
+        return;
     }
+    super::tile::sync(rs, fb);
+    let fs = &rs.fragment;
+    let (t_at, color_at) = (|px, py| line.t_at(px, py), |t| line.color_at(&env, t));
+    let (wa, wb) = (&line.wa, &line.wb);
     if let Some(quality) = rs.smooth.line {
-        return smooth_line(rs, fb, lp, [fxa, fya, fdx, fdy], s, quality, |fb, px, py, cov| {
+        let f = line.unit();
+        return smooth_line(rs, fb, lp, f, s, quality, |fb, px, py, cov| {
             let t = t_at(px, py);
             let c = color_at(t);
             let mut color = fragment::color_to_u8(c);
@@ -409,6 +369,8 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
         let z = wa.z + t * (wb.z - wa.z);
         fragment::shade_fragment(fs, fb, px as usize, py as usize, z, fragment::color_to_u8(color_at(t)));
     };
+    let ([sxa, sya, sxb, syb], x_major, (lo, hi)) = (line.shifted(), line.x_major(), line.major_range(r));
+    let w = line.w;
     // With stipple, fragments outside the draw rectangle still advance the
     // counter, so the whole (guard-band-clipped) segment is walked.
     let (lo, hi) = if lp.stipple.is_some() { (i64::MIN / 4, i64::MAX / 4) } else { (lo, hi) };
@@ -430,60 +392,247 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
     });
 }
 
-/// The fast path's aliased segment: `fragments` and the stipple as in
-/// `draw_line`'s reference code, each width-1 fragment's column (x-major)
-/// or row (y-major) of `w` cut to the draw rectangle and run through `sink`.
-#[allow(clippy::too_many_arguments)]
-fn aliased_fast(
-    rs: &RenderState,
-    fb: &mut Framebuffer,
-    sink: &runs::Sink,
-    lp: &LineParams,
-    [sxa, sya, sxb, syb]: [i64; 4],
-    x_major: bool,
+/// What a segment's fragments read of the state besides its own record.
+pub struct LineEnv<'a> {
+    pub fs: &'a FragmentState,
+    pub texture: Option<&'a TextureStage>,
+    pub fog: Option<&'a Fog>,
+}
+
+/// A segment after clipping and snapping, as the fast path draws it (at
+/// once, or later in the tile workers band by band: everything a fragment
+/// depends on is here or in [`LineEnv`], nothing on the rectangle drawn).
+#[derive(Clone, Copy, Debug)]
+pub struct LineRun {
+    wa: WindowVertex,
+    wb: WindowVertex,
+    /// The snapped endpoints (1/ONE pixel).
+    xa: i64,
+    ya: i64,
+    xb: i64,
+    yb: i64,
+    /// The flat colour, when flat shaded.
+    flat: Option<[u8; 4]>,
+    /// Aliased width, and half the smooth width.
     w: i64,
-    (lo, hi): (i64, i64),
-    s: &mut u32,
-    depth: impl Fn(i64, i64) -> u32,
-    color: impl Fn(i64, i64) -> [u8; 4],
-) {
-    let r = rs.draw_rect;
-    let (rx0, ry0, rx1, ry1) = (r.x0 as i64, r.y0 as i64, r.x1 as i64, r.y1 as i64);
-    let width = fb.width;
-    let (lo, hi) = if lp.stipple.is_some() { (i64::MIN / 4, i64::MAX / 4) } else { (lo, hi) };
-    fragments_stepped(sxa, sya, sxb, syb, lo, hi, |px, py| {
-        if let Some((repeat, pattern)) = lp.stipple {
-            let bit = (*s / repeat) % 16;
-            *s = s.wrapping_add(1);
-            if pattern & (1 << bit) == 0 {
-                return;
-            }
-        }
-        if x_major {
-            let (y0, y1) = (py.max(ry0), (py + w).min(ry1));
-            if px < rx0 || px >= rx1 || y0 >= y1 {
-                return;
-            }
-            let i0 = y0 as usize * width + px as usize;
-            sink.run(fb, i0, (y1 - y0) as usize, width, |k| depth(px, y0 + k as i64), |k| color(px, y0 + k as i64));
+    hw: f64,
+    smooth: bool,
+    stipple: Option<(u32, u16)>,
+    /// The stipple counter at the segment's start.
+    s0: u32,
+    /// `unit()` and its squared length, computed once.
+    f: [f64; 4],
+    len2: f64,
+}
+
+impl LineRun {
+    fn new(wa: WindowVertex, wb: WindowVertex, [xa, ya, xb, yb]: [i64; 4], flat: Option<[u8; 4]>, lp: &LineParams, smooth: bool, s0: u32) -> LineRun {
+        let inv = 1.0 / ONE as f64;
+        let f = [xa as f64 * inv, ya as f64 * inv, (xb - xa) as f64 * inv, (yb - ya) as f64 * inv];
+        let len2 = f[2] * f[2] + f[3] * f[3];
+        LineRun { wa, wb, xa, ya, xb, yb, flat, w: raster_width(lp.width), hw: smooth::smooth_size(lp.width) / 2.0, smooth, stipple: lp.stipple, s0, f, len2 }
+    }
+
+    fn x_major(&self) -> bool {
+        (self.xb - self.xa).abs() >= (self.yb - self.ya).abs()
+    }
+
+    /// The width-1 segment whose fragments start the wide line's columns
+    /// (x-major) or rows: moved by -(w - 1) / 2 along the minor axis.
+    fn shifted(&self) -> [i64; 4] {
+        let shift = (self.w - 1) * ONE / 2;
+        let (xa, ya, xb, yb) = (self.xa, self.ya, self.xb, self.yb);
+        if self.x_major() {
+            [xa, ya - shift, xb, yb - shift]
         } else {
-            let (x0, x1) = (px.max(rx0), (px + w).min(rx1));
-            if py < ry0 || py >= ry1 || x0 >= x1 {
-                return;
-            }
-            let i0 = py as usize * width + x0 as usize;
-            sink.run(fb, i0, (x1 - x0) as usize, 1, |k| depth(x0 + k as i64, py), |k| color(x0 + k as i64, py));
+            [xa - shift, ya, xb - shift, yb]
         }
-    });
+    }
+
+    /// The major-axis pixels of `r`.
+    fn major_range(&self, r: Rect) -> (i64, i64) {
+        if self.x_major() {
+            (r.x0 as i64, r.x1 as i64)
+        } else {
+            (r.y0 as i64, r.y1 as i64)
+        }
+    }
+
+    /// [x, y, dx, dy] of the snapped segment in pixels.
+    #[inline]
+    fn unit(&self) -> [f64; 4] {
+        self.f
+    }
+
+    /// t of the pixel centre projected on the segment (3.4.1 equation 3.6).
+    #[inline]
+    fn t_at(&self, px: i64, py: i64) -> f64 {
+        let [fxa, fya, fdx, fdy] = self.f;
+        (((px as f64 + 0.5 - fxa) * fdx + (py as f64 + 0.5 - fya) * fdy) / self.len2).clamp(0.0, 1.0)
+    }
+
+    /// The fragment colour at parameter t (3.4.1 equation 3.7): texturing,
+    /// the colour sum and fog when on, perspective-correct through 1/w.
+    fn color_at(&self, env: &LineEnv, t: f64) -> Vec4 {
+        let (wa, wb) = (&self.wa, &self.wb);
+        let [_, _, fdx, fdy] = self.unit();
+        // The parameter change of one pixel along the major axis (texture LOD).
+        let step = 1.0 / fdx.abs().max(fdy.abs());
+        let (ka, kb) = ((1.0 - t) * wa.q, t * wb.q);
+        let primary = match self.flat {
+            Some(c) => Vec4::from_array(c.map(|v| v as f32 / 255.0)),
+            None => ((wa.color.as_dvec4() * ka + wb.color.as_dvec4() * kb) / (ka + kb)).as_vec4().clamp(Vec4::ZERO, Vec4::ONE),
+        };
+        let mut c = match env.texture {
+            Some(stage) => {
+                let c = stage.shade(&super::texture::line_coords(stage, &wa.tex, wa.q, &wb.tex, wb.q, t, step), primary);
+                // The colour sum (3.9) after texturing.
+                let sec = ((wa.secondary.as_dvec4() * ka + wb.secondary.as_dvec4() * kb) / (ka + kb)).as_vec4();
+                (c.truncate() + sec.truncate()).extend(c.w).clamp(Vec4::ZERO, Vec4::ONE)
+            }
+            None => primary,
+        };
+        if let Some(f) = env.fog {
+            c = f.apply(c, ((wa.fog as f64 * ka + wb.fog as f64 * kb) / (ka + kb)) as f32);
+        }
+        c
+    }
+
+    /// A rectangle of `r` holding every fragment the segment may produce
+    /// there (a superset: the endpoints widened by the width and two pixels).
+    pub fn bounds(&self, r: Rect) -> Rect {
+        let m = if self.smooth { self.hw.ceil() as i64 + 2 } else { self.w + 2 };
+        let px = |c: i64| c.div_euclid(ONE);
+        let fit = |v: i64, lo: i32, hi: i32| v.max(lo as i64).min(hi as i64) as i32;
+        Rect {
+            x0: fit(px(self.xa.min(self.xb)) - m, r.x0, r.x1),
+            x1: fit(px(self.xa.max(self.xb)) + m + 1, r.x0, r.x1),
+            y0: fit(px(self.ya.min(self.yb)) - m, r.y0, r.y1),
+            y1: fit(px(self.ya.max(self.yb)) + m + 1, r.y0, r.y1),
+        }
+    }
+
+    /// About how many fragments the segment has (work, for `tile`).
+    pub fn work(&self) -> u64 {
+        let len = ((self.xb - self.xa).abs().max((self.yb - self.ya).abs()) / ONE) as u64 + 1;
+        let across = if self.smooth { 2 * self.hw.ceil() as u64 + 2 } else { self.w as u64 };
+        len.saturating_mul(across)
+    }
+
+    /// The stipple counter after the segment: drawing counts every
+    /// width-1 fragment of the whole segment (aliased lines; the fast path
+    /// draws no stippled smooth line).
+    pub fn stipple_end(&self) -> u32 {
+        if self.stipple.is_none() || self.smooth {
+            return self.s0;
+        }
+        let [sxa, sya, sxb, syb] = self.shifted();
+        let mut n = 0u32;
+        fragments_stepped(sxa, sya, sxb, syb, i64::MIN / 4, i64::MAX / 4, |_, _| n = n.wrapping_add(1));
+        self.s0.wrapping_add(n)
+    }
+
+    /// The fast path: the segment's fragments within `r` (inside the
+    /// draw rectangle and the framebuffer, `width` wide) in runs through
+    /// `sink`, depth only when tested, the colour once per segment when it
+    /// cannot vary along it (no texture or fog, flat shading or equal
+    /// colours at both ends: the interpolation of equal f32 values rounds
+    /// back to them). Returns the stipple counter after the segment.
+    pub fn draw(&self, env: &LineEnv, sink: &runs::Sink, fb: &mut impl Buffers, width: usize, r: Rect) -> u32 {
+        let (wa, wb) = (&self.wa, &self.wb);
+        let depth = |px: i64, py: i64| fragment::depth_to_fixed(wa.z + self.t_at(px, py) * (wb.z - wa.z));
+        let constant = (env.texture.is_none() && env.fog.is_none() && (self.flat.is_some() || wa.color == wb.color)).then(|| self.color_at(env, 0.0));
+        let mut s = self.s0;
+        match (self.smooth, constant) {
+            (true, Some(c)) => {
+                let (cu, cw) = (fragment::color_to_u8(c), c.w as f64);
+                smooth_line_fast(r, fb, width, sink, self.unit(), self.hw, depth, |_, _| (cu, cw));
+            }
+            (true, None) => {
+                smooth_line_fast(r, fb, width, sink, self.unit(), self.hw, depth, |px, py| {
+                    let c = self.color_at(env, self.t_at(px, py));
+                    (fragment::color_to_u8(c), c.w as f64)
+                });
+            }
+            (false, Some(c)) => {
+                let cu = fragment::color_to_u8(c);
+                self.aliased_fast(r, fb, width, sink, &mut s, depth, |_, _| cu);
+            }
+            (false, None) => {
+                self.aliased_fast(r, fb, width, sink, &mut s, depth, |px, py| fragment::color_to_u8(self.color_at(env, self.t_at(px, py))));
+            }
+        }
+        s
+    }
+
+    /// The major-axis pixels whose fragments may fall in rows [y0, y1) of
+    /// an x-major, unstippled segment (a superset: the line's height at a
+    /// column is within a pixel of its fragment, whose run is `w` high);
+    /// all of `lo..hi` otherwise. A tile worker's band walks only these.
+    fn band_columns(&self, (lo, hi): (i64, i64), r: Rect) -> (i64, i64) {
+        let [sxa, sya, sxb, syb] = self.shifted();
+        let (dx, dy) = (sxb - sxa, syb - sya);
+        if !self.x_major() || self.stipple.is_some() || dy == 0 {
+            return (lo, hi);
+        }
+        // Columns where the line's height is within [y0 - w - 2, y1 + 2].
+        let inv = 1.0 / ONE as f64;
+        let at = |y: i64| sxa as f64 * inv + ((y as f64) - sya as f64 * inv) * (dx as f64 / dy as f64);
+        let (ya, yb) = (r.y0 as i64 - self.w - 2, r.y1 as i64 + 2);
+        let (p, q) = (at(ya), at(yb));
+        let (first, last) = (p.min(q).floor() - 2.0, p.max(q).ceil() + 2.0);
+        if !(first.is_finite() && last.is_finite()) {
+            return (lo, hi);
+        }
+        (lo.max(first as i64), hi.min(last as i64 + 1))
+    }
+
+    /// The fast path's aliased segment: `fragments` and the stipple as in
+    /// `draw_line`'s reference code, each width-1 fragment's column
+    /// (x-major) or row (y-major) of `w` cut to `r` and run through `sink`.
+    #[allow(clippy::too_many_arguments)]
+    fn aliased_fast(&self, r: Rect, fb: &mut impl Buffers, width: usize, sink: &runs::Sink, s: &mut u32, depth: impl Fn(i64, i64) -> u32, color: impl Fn(i64, i64) -> [u8; 4]) {
+        let (rx0, ry0, rx1, ry1) = (r.x0 as i64, r.y0 as i64, r.x1 as i64, r.y1 as i64);
+        let ([sxa, sya, sxb, syb], x_major, w, stipple) = (self.shifted(), self.x_major(), self.w, self.stipple);
+        // With stipple, fragments outside `r` still advance the counter, so
+        // the whole (guard-band-clipped) segment is walked.
+        let (lo, hi) = if stipple.is_some() { (i64::MIN / 4, i64::MAX / 4) } else { self.band_columns(self.major_range(r), r) };
+        fragments_stepped(sxa, sya, sxb, syb, lo, hi, |px, py| {
+            if let Some((repeat, pattern)) = stipple {
+                let bit = (*s / repeat) % 16;
+                *s = s.wrapping_add(1);
+                if pattern & (1 << bit) == 0 {
+                    return;
+                }
+            }
+            if x_major {
+                let (y0, y1) = (py.max(ry0), (py + w).min(ry1));
+                if px < rx0 || px >= rx1 || y0 >= y1 {
+                    return;
+                }
+                let i0 = y0 as usize * width + px as usize;
+                sink.run(fb, i0, (y1 - y0) as usize, width, |k| depth(px, y0 + k as i64), |k| color(px, y0 + k as i64));
+            } else {
+                let (x0, x1) = (px.max(rx0), (px + w).min(rx1));
+                if py < ry0 || py >= ry1 || x0 >= x1 {
+                    return;
+                }
+                let i0 = py as usize * width + x0 as usize;
+                sink.run(fb, i0, (x1 - x0) as usize, 1, |k| depth(x0 + k as i64, py), |k| color(x0 + k as i64, py));
+            }
+        });
+    }
 }
 
 /// The fast path's unstippled smooth segment [x, y, dx, dy] of half width
 /// `hw`: row by row, the pixels of positive coverage (`smooth::LineRect`)
 /// in runs through `sink`; `color` gives a pixel's colour and its alpha
 /// before coverage, which scales it as in `draw_line`'s reference code.
+#[allow(clippy::too_many_arguments)]
 fn smooth_line_fast(
-    rs: &RenderState,
-    fb: &mut Framebuffer,
+    r: Rect,
+    fb: &mut impl Buffers,
+    width: usize,
     sink: &runs::Sink,
     [x, y, dx, dy]: [f64; 4],
     hw: f64,
@@ -491,8 +640,6 @@ fn smooth_line_fast(
     color: impl Fn(i64, i64) -> ([u8; 4], f64),
 ) {
     let Some(lr) = smooth::LineRect::new(x, y, dx, dy, hw) else { return };
-    let r = rs.draw_rect;
-    let width = fb.width;
     let mut cov: Vec<f64> = Vec::with_capacity(64);
     for py in lr.rows(r) {
         let cols = lr.cols(py, r);

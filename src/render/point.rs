@@ -17,7 +17,8 @@ use super::setup::{to_window, ONE};
 use super::smooth;
 use super::vertex::ClipVertex;
 use super::RenderState;
-use crate::framebuffer::Framebuffer;
+use super::fragment::Buffers;
+use crate::framebuffer::{Framebuffer, Rect};
 
 /// Largest aliased point size (GL_ALIASED_POINT_SIZE_RANGE's maximum).
 pub const MAX_SIZE: f32 = 64.0;
@@ -36,8 +37,6 @@ pub fn first_pixel(c: f64, w: i64) -> i64 {
 
 /// Draws one point given in clip coordinates.
 pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVertex) {
-    // Drawn now: after the binned triangles.
-    super::tile::sync(rs, fb);
     let r = rs.draw_rect;
     let p = v.pos;
     if r.is_empty() || !p.is_finite() || !(p.w > 0.0) {
@@ -65,6 +64,8 @@ pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVer
         c = f.apply(c, v.fog);
     }
     if let Some(quality) = rs.smooth.point {
+        // Drawn now: after the binned primitives.
+        super::tile::sync(rs, fb);
         let (width, fade) = smooth::faded_point(size, rs.smooth.fade_threshold);
         let alpha = c.w.clamp(0.0, 1.0) as f64 * fade as f64;
         let color = fragment::color_to_u8(c);
@@ -85,18 +86,60 @@ pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVer
         return;
     }
     if !rs.reference {
-        // The fast path: one run per row, the depth converted once.
-        let sink = runs::Sink::new(&rs.fragment, fb);
-        let z = fragment::depth_to_fixed(wv.z);
-        for y in y0.max(r.y0 as i64)..(y0 + w).min(r.y1 as i64) {
-            let i0 = fb.index(xs.start as usize, y as usize);
-            sink.run(fb, i0, (xs.end - xs.start) as usize, 1, |_| z, |_| color);
+        // The fast path: one run per row, the depth converted once; binned
+        // with the triangles when threaded (`tile`).
+        let p = PointRun { x0, y0, w, z: fragment::depth_to_fixed(wv.z), color };
+        let bbox = p.rect(r);
+        if bbox.is_empty() {
+            return;
         }
+        if super::tile::binning(rs) && !fb.draw_both {
+            if super::tile::push_point(rs, p, bbox) {
+                super::tile::submit(rs, fb);
+            }
+            return;
+        }
+        super::tile::sync(rs, fb);
+        let sink = runs::Sink::new(&rs.fragment, fb);
+        let width = fb.width;
+        p.draw(&sink, fb, width, bbox);
         return;
     }
+    super::tile::sync(rs, fb);
     for y in y0.max(r.y0 as i64)..(y0 + w).min(r.y1 as i64) {
         for x in xs.clone() {
             fragment::shade_fragment(&rs.fragment, fb, x as usize, y as usize, wv.z, color);
+        }
+    }
+}
+
+/// A non-antialiased point as the fast path draws it: its w x w pixels
+/// from (x0, y0), one depth and one colour.
+#[derive(Clone, Copy, Debug)]
+pub struct PointRun {
+    pub x0: i64,
+    pub y0: i64,
+    pub w: i64,
+    pub z: u32,
+    pub color: [u8; 4],
+}
+
+impl PointRun {
+    /// Its pixels within `r`.
+    pub fn rect(&self, r: Rect) -> Rect {
+        let fit = |v: i64, lo: i32, hi: i32| v.max(lo as i64).min(hi as i64) as i32;
+        Rect { x0: fit(self.x0, r.x0, r.x1), x1: fit(self.x0 + self.w, r.x0, r.x1), y0: fit(self.y0, r.y0, r.y1), y1: fit(self.y0 + self.w, r.y0, r.y1) }
+    }
+
+    /// Its fragments within `r` (inside the framebuffer, `width` wide),
+    /// one run per row.
+    pub fn draw(&self, sink: &runs::Sink, fb: &mut impl Buffers, width: usize, r: Rect) {
+        let r = self.rect(r);
+        if r.is_empty() {
+            return;
+        }
+        for y in r.y0 as usize..r.y1 as usize {
+            sink.run(fb, y * width + r.x0 as usize, (r.x1 - r.x0) as usize, 1, |_| self.z, |_| self.color);
         }
     }
 }

@@ -15,8 +15,42 @@
 //! form that fast.rs proves equal to `Blend::apply` (tested here on every
 //! operand).
 
-use super::fragment::{self, key, Blend, BlendEquation, BlendFactor, ColorOp, FragmentState};
+use super::fragment::{self, key, Blend, BlendEquation, BlendFactor, Buffers, ColorOp, FragmentState, SpanPixels};
 use crate::framebuffer::Framebuffer;
+
+/// Whole rows of the framebuffer (a tile worker's band) indexed as the
+/// framebuffer is, `y * width + x`: where binned lines and points run
+/// (`tile`), each worker writing only its band.
+pub struct Band<'a> {
+    /// Rows [y0, y1) from the band's first pixel.
+    pub px: SpanPixels<'a>,
+    /// The framebuffer index of the band's first pixel.
+    pub base: usize,
+}
+
+impl Buffers for Band<'_> {
+    #[inline(always)]
+    fn stencil(&mut self, i: usize) -> &mut u8 {
+        self.px.stencil(i - self.base)
+    }
+    #[inline(always)]
+    fn depth(&mut self, i: usize) -> &mut u32 {
+        self.px.depth(i - self.base)
+    }
+    #[inline(always)]
+    fn color(&mut self, i: usize) -> &mut [u8; 4] {
+        self.px.color(i - self.base)
+    }
+    #[inline(always)]
+    fn other_color(&mut self, _: usize) -> Option<&mut [u8; 4]> {
+        // Nothing is binned while drawing to GL_FRONT_AND_BACK.
+        None
+    }
+    #[inline(always)]
+    fn pass(&mut self) {
+        self.px.passed += 1;
+    }
+}
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Mode {
@@ -42,7 +76,12 @@ fn is_over(b: &Blend) -> bool {
 
 impl<'a> Sink<'a> {
     pub fn new(fs: &'a FragmentState, fb: &Framebuffer) -> Sink<'a> {
-        let untested = !fs.alpha_test && !fs.stencil_test && !fs.depth_test && fs.color_mask == [true; 4] && !fb.draw_both;
+        Sink::with(fs, fb.draw_both)
+    }
+
+    /// [`Sink::new`] for a target drawing to two colour buffers or not.
+    pub fn with(fs: &'a FragmentState, draw_both: bool) -> Sink<'a> {
+        let untested = !fs.alpha_test && !fs.stencil_test && !fs.depth_test && fs.color_mask == [true; 4] && !draw_both;
         let mode = match fs.color {
             ColorOp::Replace if untested => Mode::Store,
             ColorOp::Blend(b) if untested && is_over(&b) => Mode::Over,
@@ -60,27 +99,25 @@ impl<'a> Sink<'a> {
     /// the draw rectangle) with depth `depth(k)` (24-bit fixed point) and
     /// colour `color(k)` through the per-fragment operations.
     #[inline]
-    pub fn run(&self, fb: &mut Framebuffer, i0: usize, n: usize, stride: usize, depth: impl Fn(usize) -> u32, color: impl Fn(usize) -> [u8; 4]) {
+    pub fn run(&self, fb: &mut impl Buffers, i0: usize, n: usize, stride: usize, depth: impl Fn(usize) -> u32, color: impl Fn(usize) -> [u8; 4]) {
         let fix = self.fs.alpha_fix;
         match self.mode {
             Mode::Store => {
-                let px = &mut fb.color[i0..];
                 for k in 0..n {
                     let mut c = color(k);
                     c[3] |= fix;
-                    px[k * stride] = c;
+                    *fb.color(i0 + k * stride) = c;
                 }
-                fb.samples_passed = fb.samples_passed.wrapping_add(n as u64);
+                fb.pass_n(n as u64);
             }
             Mode::Over => {
-                let px = &mut fb.color[i0..];
                 for k in 0..n {
-                    let d = &mut px[k * stride];
+                    let d = fb.color(i0 + k * stride);
                     let mut c = over_pixel(color(k), *d);
                     c[3] |= fix;
                     *d = c;
                 }
-                fb.samples_passed = fb.samples_passed.wrapping_add(n as u64);
+                fb.pass_n(n as u64);
             }
             Mode::General => {
                 let fs = self.fs;

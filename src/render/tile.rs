@@ -5,7 +5,16 @@
 //! calling thread only orients and culls them and appends a cheap record to
 //! the context's [`Batch`] (fixed-point vertices, window depth, 1/w and the
 //! attributes setup reads, and an index into the batch's list of captured
-//! states, `shade_state::ShadeState`, one per state change).
+//! states, `shade_state::ShadeState`, one per state change). Lines and
+//! points of the fast path are binned the same way (round 5): clipped and
+//! snapped on the calling thread (`line::LineRun`, `point::PointRun`, a
+//! record with the box of the pixels they may touch), drawn by each worker
+//! within its band (`runs::Band`). A segment's fragments do not depend on
+//! the rectangle drawn, and a stippled segment carries the counter it
+//! starts with (the calling thread counts its fragments to move the
+//! counter on for the next segment of a strip), so bands see exactly the
+//! 1-thread fragments. The batch being filled takes no lock (see
+//! [`BatchCell`]).
 //!
 //! Asynchronous flush (round 4): when a batch is full ([`MAX_BATCH`]), or
 //! holds [`SUBMIT_WORK`] while the workers are idle, [`submit`] hands it
@@ -44,7 +53,8 @@
 //! (`Context::execute`'s list, every immediate (`exec`/`client`) entry
 //! point and every window-system call: present, MakeCurrent, resize,
 //! queries, pixel commands, clears), and by the renderer before it draws
-//! points, lines, antialiased or polygon-mode triangles or to two colour
+//! smooth points, stippled smooth lines, antialiased or polygon-mode
+//! triangles, anything on the reference path, or to two colour
 //! buffers at once. Later state changes cannot reach binned triangles:
 //! they carry their own copy of the state (textures are copy-on-write).
 //! GLX contexts bound to a drawable still wait at the end of every call
@@ -57,8 +67,11 @@
 //! ([`PARALLEL_WORK`]) are shaded on the calling thread.
 
 use super::fragment::fast::Kernel;
-use super::fragment::SpanPixels;
+use super::fragment::{Buffers, SpanPixels};
+use super::line::{LineEnv, LineRun};
+use super::point::PointRun;
 use super::pool;
+use super::runs;
 use super::raster;
 use super::setup::{planes_of, Attributes, TriangleSetup};
 use super::shade_state::ShadeState;
@@ -66,6 +79,7 @@ use super::texture::MAX_UNITS;
 use super::RenderState;
 use crate::framebuffer::{Framebuffer, Rect};
 use glam::Vec4;
+use std::cell::UnsafeCell;
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
@@ -153,8 +167,17 @@ struct Binned {
     state: u32,
     /// Index in [`Batch::extras`], or `u32::MAX`.
     extra: u32,
+    /// [`TRIANGLE`], or a line (index in [`Batch::lines`]) or a point
+    /// ([`POINT`] | index in [`Batch::points`]), whose other fields
+    /// except `bbox` and `state` are unused.
+    prim: u32,
     front_facing: bool,
 }
+
+/// [`Binned::prim`] of a triangle.
+const TRIANGLE: u32 = u32::MAX;
+/// The bit of [`Binned::prim`] marking a point.
+const POINT: u32 = 1 << 31;
 
 /// One vertex of a binned triangle as setup reads it.
 struct BinAttributes<'a> {
@@ -193,12 +216,16 @@ impl Attributes for BinAttributes<'_> {
 /// The triangles binned since the last flush.
 #[derive(Default)]
 pub struct Batch {
+    /// Every primitive in submission order (lines and points by index).
     tris: Vec<Binned>,
     extras: Vec<BinExtra>,
+    lines: Vec<LineRun>,
+    points: Vec<PointRun>,
     /// The states the triangles were drawn under, in order.
     states: Vec<Arc<ShadeState>>,
-    /// Pixels of the triangles' bounding boxes.
-    pixels: u64,
+    /// Work in pixels: the triangles' bounding boxes, the lines' and
+    /// points' fragments, plus [`SETUP_PIXELS`] per primitive.
+    work: u64,
 }
 
 impl std::fmt::Debug for Batch {
@@ -207,14 +234,19 @@ impl std::fmt::Debug for Batch {
     }
 }
 
-/// A context's batch and whether it holds anything: checked without the
-/// lock, so that the commands of a scene that bins nothing cost no
-/// locking. Only the thread using the context changes either. Beside it,
-/// the batch handed to the workers before it ([`Flight`]), if any.
-#[derive(Debug)]
+/// A context's batch and whether it holds anything. Beside it, the batch
+/// handed to the workers before it ([`Flight`]), if any.
+///
+/// The batch being filled belongs to the thread using the context: only
+/// calls made with the context current (binning, [`submit`], [`flush`],
+/// every one of them holding the context's framebuffer mutably) touch it,
+/// and a context is current in one thread at a time, so it takes no lock
+/// (round 5: a mutex locked and unlocked per triangle was half of
+/// display_list_1m's 2-thread samples). It reaches the workers by being
+/// moved into a [`Flight`] under the `flights` mutex, once per batch.
 pub struct BatchCell {
     pending: AtomicBool,
-    batch: Mutex<Batch>,
+    batch: UnsafeCell<Batch>,
     flights: Mutex<Flights>,
     /// A batch is in flight (`Flights::current`), read without the lock.
     flying: AtomicBool,
@@ -227,11 +259,21 @@ pub struct BatchCell {
     parallel_work: AtomicU64,
 }
 
+// Safety: `batch` is only touched by the thread the context is current in
+// (see the type's comment); everything else is atomics and mutexes.
+unsafe impl Sync for BatchCell {}
+
+impl std::fmt::Debug for BatchCell {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        write!(f, "BatchCell(pending: {})", self.pending.load(Ordering::Relaxed))
+    }
+}
+
 impl Default for BatchCell {
     fn default() -> BatchCell {
         BatchCell {
             pending: AtomicBool::new(false),
-            batch: Mutex::default(),
+            batch: UnsafeCell::default(),
             flights: Mutex::default(),
             flying: AtomicBool::new(false),
             left: Arc::default(),
@@ -259,8 +301,13 @@ impl std::fmt::Debug for Flights {
 /// A context's batch, shared by clones of its RenderState.
 pub type SharedBatch = Arc<BatchCell>;
 
-fn lock(b: &SharedBatch) -> std::sync::MutexGuard<'_, Batch> {
-    b.batch.lock().unwrap_or_else(|e| e.into_inner())
+/// The batch being filled.
+///
+/// Safety: called only by the thread the context is current in, and the
+/// reference is not held across another call of this function.
+#[allow(clippy::mut_from_ref)]
+unsafe fn filling(b: &SharedBatch) -> &mut Batch {
+    &mut *b.batch.get()
 }
 
 fn lock_flights(b: &SharedBatch) -> std::sync::MutexGuard<'_, Flights> {
@@ -319,15 +366,10 @@ pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Option<Rect> {
 #[inline]
 pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rect, zq: [(f64, f64); 3], v: [&A; 3], flat_color: Vec4, back: bool, front_facing: bool) -> bool {
     let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
-    let mut b = lock(&rs.batch);
-    rs.batch.pending.store(true, Ordering::Relaxed);
-    let b = &mut *b;
-    let (state, flat, extra) = rs.shade.with(rs, |st| {
-        if !b.states.last().is_some_and(|l| Arc::ptr_eq(l, st)) {
-            b.states.push(st.clone());
-        }
-        (b.states.len() as u32 - 1, st.flat, st.texture.is_some() || st.fog.is_some())
-    });
+    // Safety: binning runs on the context's thread (its framebuffer is
+    // borrowed mutably by the caller).
+    let b = unsafe { filling(&rs.batch) };
+    let (state, flat, extra) = state_of(rs, b);
     let extra = if extra {
         b.extras.push(BinExtra {
             tex: std::array::from_fn(|i| std::array::from_fn(|u| v[i].tex(u))),
@@ -348,12 +390,74 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
         }
     };
     let v = std::array::from_fn(|i| BinVertex { z: zq[i].0, q: zq[i].1, color: color(i) });
-    b.pixels += area;
-    b.tris.push(Binned { x, y, v, bbox, state, extra, front_facing });
-    // Full, or worth handing to workers that have nothing to do.
-    let cell = &rs.batch;
-    b.tris.len() >= cell.max_batch.load(Ordering::Relaxed)
-        || (b.pixels + SETUP_PIXELS * b.tris.len() as u64 >= cell.submit_work.load(Ordering::Relaxed) && cell.left.load(Ordering::Relaxed) == 0)
+    b.tris.push(Binned { x, y, v, bbox, state, extra, prim: TRIANGLE, front_facing });
+    added(&rs.batch, b, area + SETUP_PIXELS)
+}
+
+/// The batch's index of the state `rs` draws under (added when it
+/// changed), whether it is flat shaded and whether it reads texture
+/// coordinates or fog.
+#[inline]
+fn state_of(rs: &RenderState, b: &mut Batch) -> (u32, bool, bool) {
+    rs.shade.with(rs, |st| {
+        if !b.states.last().is_some_and(|l| Arc::ptr_eq(l, st)) {
+            b.states.push(st.clone());
+        }
+        (b.states.len() as u32 - 1, st.flat, st.texture.is_some() || st.fog.is_some())
+    })
+}
+
+/// Counts `work` more in the batch just added to; true when it should be
+/// handed to the workers now: full, or worth handing to workers that have
+/// nothing to do.
+#[inline]
+fn added(cell: &SharedBatch, b: &mut Batch, work: u64) -> bool {
+    cell.pending.store(true, Ordering::Relaxed);
+    b.work += work;
+    b.tris.len() >= cell.max_batch.load(Ordering::Relaxed) || (b.work >= cell.submit_work.load(Ordering::Relaxed) && cell.left.load(Ordering::Relaxed) == 0)
+}
+
+/// A record of a line or point: its box and state only.
+fn prim_record(bbox: Rect, state: u32, prim: u32) -> Binned {
+    let v = BinVertex { z: 0.0, q: 0.0, color: Vec4::ZERO };
+    Binned { x: [0; 3], y: [0; 3], v: [v; 3], bbox, state, extra: u32::MAX, prim, front_facing: true }
+}
+
+/// Adds a line segment to the batch, to be drawn band by band in the
+/// workers; `bbox` holds every fragment it may produce (within the draw
+/// rectangle, not empty). True as for [`push`].
+pub fn push_line(rs: &RenderState, line: LineRun, bbox: Rect) -> bool {
+    // Safety: as in `push`.
+    let b = unsafe { filling(&rs.batch) };
+    let (state, _, _) = state_of(rs, b);
+    let work = line.work();
+    b.tris.push(prim_record(bbox, state, b.lines.len() as u32));
+    b.lines.push(line);
+    added(&rs.batch, b, work + SETUP_PIXELS)
+}
+
+/// Adds a point to the batch (as [`push_line`]).
+pub fn push_point(rs: &RenderState, p: PointRun, bbox: Rect) -> bool {
+    // Safety: as in `push`.
+    let b = unsafe { filling(&rs.batch) };
+    let (state, _, _) = state_of(rs, b);
+    let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
+    b.tris.push(prim_record(bbox, state, POINT | b.points.len() as u32));
+    b.points.push(p);
+    added(&rs.batch, b, area + SETUP_PIXELS)
+}
+
+/// Draws a binned line or point's fragments within `r` into `fb`
+/// (`width` wide, the whole framebuffer or a band of it).
+fn draw_prim(b: &Batch, t: &Binned, st: &ShadeState, fb: &mut impl Buffers, width: usize, r: Rect) {
+    // Nothing is binned while drawing to two colour buffers.
+    let sink = runs::Sink::with(&st.fragment, false);
+    if t.prim & POINT != 0 {
+        b.points[(t.prim & !POINT) as usize].draw(&sink, fb, width, r);
+    } else {
+        let env = LineEnv { fs: &st.fragment, texture: st.texture.as_deref(), fog: st.fog.as_ref() };
+        b.lines[t.prim as usize].draw(&env, &sink, fb, width, r);
+    }
 }
 
 /// Sets up a binned triangle and hands its covered runs within `rect` to
@@ -503,8 +607,10 @@ impl Flight {
         let b = &mut self.batch;
         b.tris.clear();
         b.extras.clear();
+        b.lines.clear();
+        b.points.clear();
         b.states.clear();
-        b.pixels = 0;
+        b.work = 0;
         for bin in &mut self.bins {
             bin.clear();
         }
@@ -531,6 +637,14 @@ impl pool::Work for Flight {
                     continue;
                 }
                 let (st, extra) = of(t);
+                if t.prim != TRIANGLE {
+                    // Safety: the band's rows, which no other thread holds.
+                    let px = unsafe { raw.span(y, 0, (tile.y1 as usize - y) * raw.width) };
+                    let mut band = runs::Band { px, base: y * raw.width };
+                    draw_prim(b, t, st, &mut band, raw.width, r);
+                    local += band.px.passed;
+                    continue;
+                }
                 shade_binned(t, st, extra, r, |kernel, setup, py, lo, hi| {
                     // Safety: inside the surface and inside this tile, which
                     // no other thread holds.
@@ -565,13 +679,14 @@ fn take_batch(cell: &SharedBatch, fl: &mut Flights) -> Option<Box<Flight>> {
     if !cell.pending.load(Ordering::Relaxed) && !cell.flying.load(Ordering::Relaxed) {
         return None;
     }
-    let mut b = lock(cell);
+    // Safety: take_batch runs on the context's thread (`submit`, `flush`).
+    let b = unsafe { filling(cell) };
     cell.pending.store(false, Ordering::Relaxed);
     if b.tris.is_empty() {
         return None;
     }
     let mut flight = fl.spare.take().unwrap_or_else(|| Flight::empty(cell.left.clone()));
-    std::mem::swap(&mut flight.batch, &mut *b);
+    std::mem::swap(&mut flight.batch, b);
     Some(flight)
 }
 
@@ -591,7 +706,7 @@ pub fn submit(rs: &RenderState, fb: &mut Framebuffer) {
 /// Starts `flight` on the workers (or shades it now if it is small).
 fn launch(rs: &RenderState, fl: &mut Flights, mut flight: Box<Flight>, fb: &mut Framebuffer) {
     let b = &flight.batch;
-    if rs.threads <= 1 || b.pixels + SETUP_PIXELS * (b.tris.len() as u64) < rs.batch.parallel_work.load(Ordering::Relaxed) {
+    if rs.threads <= 1 || b.work < rs.batch.parallel_work.load(Ordering::Relaxed) {
         shade_here(&flight.batch, fb);
         flight.clear();
         fl.spare = Some(flight);
@@ -610,8 +725,13 @@ fn launch(rs: &RenderState, fl: &mut Flights, mut flight: Box<Flight>, fb: &mut 
 /// Shades a batch on the calling thread, triangle by triangle.
 fn shade_here(b: &Batch, fb: &mut Framebuffer) {
     let surface = Rect::new(0, 0, fb.width as i32, fb.height as i32);
+    let width = fb.width;
     for t in &b.tris {
         let (st, extra) = (&*b.states[t.state as usize], b.extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
+        if t.prim != TRIANGLE {
+            draw_prim(b, t, st, fb, width, t.bbox.intersect(surface));
+            continue;
+        }
         shade_binned(t, st, extra, t.bbox.intersect(surface), |k, setup, py, lo, hi| {
             let mut px = SpanPixels::of(fb, py, lo, hi);
             k(&st.fragment, setup, &mut px, py, lo, hi);

@@ -258,7 +258,7 @@ impl<'a> SpanPixels<'a> {
 
 /// Where [`fragment`] reads and writes: the whole framebuffer (index
 /// `y * width + x`) or one span (index from its start).
-pub(crate) trait Buffers {
+pub trait Buffers {
     fn stencil(&mut self, i: usize) -> &mut u8;
     fn depth(&mut self, i: usize) -> &mut u32;
     fn color(&mut self, i: usize) -> &mut [u8; 4];
@@ -266,6 +266,13 @@ pub(crate) trait Buffers {
     fn other_color(&mut self, i: usize) -> Option<&mut [u8; 4]>;
     /// One more fragment passed the depth test.
     fn pass(&mut self);
+    /// `n` more fragments passed.
+    #[inline(always)]
+    fn pass_n(&mut self, n: u64) {
+        for _ in 0..n {
+            self.pass();
+        }
+    }
 }
 
 impl Buffers for Framebuffer {
@@ -292,6 +299,10 @@ impl Buffers for Framebuffer {
     #[inline(always)]
     fn pass(&mut self) {
         self.samples_passed = self.samples_passed.wrapping_add(1);
+    }
+    #[inline(always)]
+    fn pass_n(&mut self, n: u64) {
+        self.samples_passed = self.samples_passed.wrapping_add(n);
     }
 }
 
