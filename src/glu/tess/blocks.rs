@@ -102,6 +102,13 @@ impl<T> BlockList<T> {
         }
     }
 
+    /// Visits every element in order.
+    pub fn for_each_mut(&mut self, mut f: impl FnMut(&mut T)) {
+        for run in &mut self.runs {
+            run.iter_mut().for_each(&mut f);
+        }
+    }
+
     /// Empties the list, handing each element to `f`.
     pub fn clear_with(&mut self, mut f: impl FnMut(T)) {
         for mut run in self.runs.drain(..) {

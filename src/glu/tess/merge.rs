@@ -88,6 +88,27 @@ impl Grid {
         best.map(|b| b.1)
     }
 
+    /// Makes room for about `total` vertices in all (the `n` first of
+    /// `verts` already in), so that the inserts that follow do not rehash
+    /// as the table grows. Lookups give the same answers either way. A grid
+    /// still scanned linearly stays so (small polygons: cheaper).
+    pub fn reserve(&mut self, verts: &[Vert], n: usize, total: usize) {
+        if !self.hashed || 2 * total <= self.head.len() {
+            return;
+        }
+        self.hashed = true;
+        let size = (4 * total).next_power_of_two();
+        self.head.clear();
+        self.head.resize(size, NONE);
+        self.shift = 64 - size.trailing_zeros();
+        if self.next.len() < n {
+            self.next.resize(n, NONE);
+        }
+        for j in 0..n {
+            self.link(verts, j);
+        }
+    }
+
     /// Adds vertex `i`; every vertex below `i` must be in the grid already
     /// (the tessellator inserts each vertex it creates, in order).
     pub fn insert(&mut self, verts: &[Vert], i: usize) {

@@ -31,8 +31,13 @@
 //! up, having output nothing, on anything else. Then the general path:
 //! [`merge`] (near-coincident vertices), [`split`] (the arrangement:
 //! crossings and touching), [`sweep`] (windings, the region, triangles).
-//! Every buffer they use lives in the tessellator object and is reused by
-//! the next polygon.
+//! Two shortcuts between them: a planar polygon (64 vertices or more) with
+//! an edge off the region's boundary, which the fast path cannot
+//! triangulate, goes from it straight to [`sweep`] (nothing to merge or
+//! split) in its vertex order; and when the fast path gives up after
+//! sorting the input, the general path sorts only the vertices the
+//! splitter added and merges them into that order. Every buffer they use
+//! lives in the tessellator object and is reused by the next polygon.
 //!
 //! Cost: the fast path is O(n log n) plus O(sqrt n) per vertex for its
 //! active list ([`blocks`]). The general path finds edge pairs with a
@@ -427,6 +432,12 @@ struct Scratch {
     p3: Vec<[f64; 3]>,
     data: Vec<*mut c_void>,
     id: Vec<usize>,
+    /// Per input vertex: did it become a vertex of its own (not merged)?
+    rep: Vec<bool>,
+    /// The general path's sweep order, from the fast path's sorted input
+    /// and the sorted new (crossing) vertices.
+    fresh: Vec<(u64, u64, u32)>,
+    sorted: Vec<(u64, u64, u32)>,
     segs: Vec<Seg>,
     grid: Grid,
     split: split::Scratch,
@@ -651,26 +662,46 @@ impl Job {
                 }
             }
         }
-        let Scratch { p2, verts, p3, data, id, segs, grid, split, sweep: sw, simple: si } = sc;
+        let Scratch { p2, verts, p3, data, id, rep, fresh, sorted, segs, grid, split, sweep: sw, simple: si } = sc;
         // Already a planar arrangement (checked as it goes): one sweep.
         verts.clear();
         verts.extend(p2.iter().map(|&p| Vert { p }));
-        if simple::tessellate(verts, contours.starts, self.rule, self.boundary_only, si, &mut sw.pool, &mut sw.region) {
-            data.clear();
-            data.extend(all().map(|v| v.data));
-            self.emit(&sw.region, data);
-            return;
+        match simple::tessellate(verts, contours.starts, self.rule, self.boundary_only, si, &mut sw.pool, &mut sw.region) {
+            simple::Outcome::Done => {
+                data.clear();
+                data.extend(all().map(|v| v.data));
+                self.emit(&sw.region, data);
+                return;
+            }
+            simple::Outcome::Planar => {
+                // Nothing to merge or split: the contours' edges as they are,
+                // in the fast path's vertex order.
+                data.clear();
+                data.extend(all().map(|v| v.data));
+                segs.clear();
+                for (k, &s) in contours.starts.iter().enumerate() {
+                    let e = contours.starts.get(k + 1).copied().unwrap_or(verts.len());
+                    segs.extend((s..e).map(|i| Seg { a: i, b: if i + 1 < e { i + 1 } else { s } }));
+                }
+                sweep::region(verts, segs, self.rule, self.boundary_only, Some(&si.keyed), sw);
+                self.emit(&sw.region, data);
+                return;
+            }
+            simple::Outcome::No => {}
         }
         // Merge near-coincident vertices.
         verts.clear();
         p3.clear();
         data.clear();
         id.clear();
+        rep.clear();
         grid.reset(p2.len());
         for (q, iv) in p2.iter().zip(all()) {
+            rep.push(false);
             match grid.find(verts, *q) {
                 Some(i) => id.push(i),
                 None => {
+                    *rep.last_mut().unwrap() = true;
                     verts.push(Vert { p: *q });
                     p3.push(iv.p);
                     data.push(iv.data);
@@ -691,11 +722,36 @@ impl Job {
             }
             base += len;
         }
+        let merged = verts.len();
         let mut comb = Comb { job: self, p3, data, failed: false };
         if !split::split_all(verts, grid, segs, &mut comb, split) {
             return;
         }
-        sweep::region(verts, segs, self.rule, self.boundary_only, sw);
+        // The sweep order: the fast path sorted the input already (if it
+        // got that far); the merged vertices keep that order (their ids grow
+        // with their input index), so only the new vertices need sorting,
+        // then one merge of the two runs, the order a full sort would give.
+        let order = if si.keyed.len() == p2.len() {
+            fresh.clear();
+            fresh.extend(verts[merged..].iter().enumerate().map(|(k, v)| (sweep::ord_key(v.p[0]), sweep::ord_key(v.p[1]), (merged + k) as u32)));
+            fresh.sort_unstable();
+            sorted.clear();
+            let mut old = si.keyed.iter().filter(|k| rep[k.2 as usize]).map(|k| (k.0, k.1, id[k.2 as usize] as u32)).peekable();
+            let mut new = fresh.iter().copied().peekable();
+            loop {
+                let next = match (old.peek(), new.peek()) {
+                    (Some(a), Some(b)) if a <= b => old.next(),
+                    (Some(_), None) => old.next(),
+                    (_, Some(_)) => new.next(),
+                    (None, None) => break,
+                };
+                sorted.extend(next);
+            }
+            Some(&sorted[..])
+        } else {
+            None
+        };
+        sweep::region(verts, segs, self.rule, self.boundary_only, order, sw);
         self.emit(&sw.region, data);
     }
 

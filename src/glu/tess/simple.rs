@@ -10,12 +10,20 @@
 //! every pair that becomes adjacent finds one; the test is conservative,
 //! "within EPS" counts as touching), computes each edge's winding from the
 //! edge below it, and triangulates with [`sweep`]'s monotone chains. It
-//! gives up (returns false, having output nothing) at the first sign of
+//! gives up ([`Outcome::No`], having output nothing) at the first sign of
 //! anything the general path handles: near-coincident vertices, edges
-//! that cross, touch or overlap, an edge with the selected region on both
-//! sides or neither (an empty selection, or same-direction nested
-//! contours under NONZERO), or a vertex where the active list is not as a
-//! planar arrangement would have it (floating-point doubt).
+//! that cross, touch or overlap, or a vertex where the active list is not
+//! as a planar arrangement would have it (floating-point doubt).
+//!
+//! An edge with the selected region on both sides or neither (an empty
+//! selection, or same-direction nested contours under NONZERO) is not a
+//! boundary edge, which this sweep's triangulation cannot step over; from
+//! there (on polygons of [`PLANAR_MIN`] vertices or more; smaller ones give
+//! up) it only finishes the planarity check and answers
+//! [`Outcome::Planar`]: the input is already the arrangement the merger
+//! and splitter would build (they would find nothing), so the caller hands
+//! the contours' edges straight to [`sweep::region`] with this sweep's
+//! vertex order.
 //!
 //! Edge e is the contour edge from vertex e to its successor; vertex ids
 //! are input indices (nothing is merged). The active list is a
@@ -24,6 +32,20 @@
 
 use super::blocks::BlockList;
 use super::sweep::{orient, Pool, Reg, Region, Rule, Side, Tri, Vert, EPS};
+
+/// What the fast path did with a polygon.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Outcome {
+    /// Tessellated: `region` holds the result.
+    Done,
+    /// A planar arrangement (no near-coincident vertices, no crossing or
+    /// touching edges, contours of three vertices or more) with an edge
+    /// that is not on the region's boundary: `region` is to be ignored;
+    /// [`Scratch::sorted`] holds the vertices in sweep order.
+    Planar,
+    /// Anything else: the general path's business.
+    No,
+}
 
 /// An active edge: its ends in sweep order, the winding number above it,
 /// and the region above it (if that region is selected).
@@ -34,25 +56,23 @@ struct Entry {
     reg: Option<Reg>,
 }
 
+/// From this many vertices, an edge off the region's boundary does not end
+/// the sweep: it finishes the planarity check for [`Outcome::Planar`].
+const PLANAR_MIN: usize = 64;
+
 /// Buffers kept from one polygon to the next.
 #[derive(Default)]
 pub struct Scratch {
-    keyed: Vec<(u64, u64, u32)>,
+    /// The vertices in sweep order: (x key, y key, index); empty if the
+    /// polygon was refused before they were sorted.
+    pub(super) keyed: Vec<(u64, u64, u32)>,
     rank: Vec<u32>,
     next: Vec<u32>,
     prev: Vec<u32>,
     active: BlockList<Entry>,
 }
 
-#[inline]
-fn ord_key(x: f64) -> u64 {
-    let b = x.to_bits();
-    if b >> 63 == 1 {
-        !b
-    } else {
-        b | 1 << 63
-    }
-}
+use super::sweep::ord_key;
 
 /// Does p lie within EPS of the open segment a-b? (As the splitter tests.)
 #[inline]
@@ -97,14 +117,14 @@ fn interact(v: &[Vert], a: u32, b: u32, c: u32, d: u32) -> bool {
 
 /// Tessellates contours `starts` (first indices; the last runs to the end)
 /// of `verts` into `region` (boundary always, triangles unless
-/// `boundary_only`). False (and `region` to be ignored) if the input is not
-/// a planar arrangement this path can take.
-pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: bool, sc: &mut Scratch, pool: &mut Pool, region: &mut Region) -> bool {
+/// `boundary_only`); see [`Outcome`].
+pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: bool, sc: &mut Scratch, pool: &mut Pool, region: &mut Region) -> Outcome {
     let n = verts.len();
     region.boundary.clear();
     region.triangles.clear();
+    sc.keyed.clear();
     if n < 3 || n >= u32::MAX as usize / 2 {
-        return false;
+        return Outcome::No;
     }
     // Successors and predecessors along the contours.
     sc.next.clear();
@@ -117,7 +137,7 @@ pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_
             continue; // empty contours add nothing
         }
         if e < s + 3 {
-            return false;
+            return Outcome::No;
         }
         for i in s..e {
             let j = if i + 1 < e { i + 1 } else { s };
@@ -144,21 +164,21 @@ pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_
                 break;
             }
             if (q[1] - p[1]).abs() <= EPS {
-                return false;
+                return Outcome::No;
             }
         }
     }
     let Scratch { keyed, rank, next, prev, active } = sc;
     active.clear_with(drop);
     let mut t = Tri { verts, out: &mut region.triangles, pool };
-    let ok = sweep(verts, keyed, rank, next, prev, rule, boundary_only, active, &mut t, &mut region.boundary);
+    let out = sweep(verts, keyed, rank, next, prev, rule, boundary_only, active, &mut t, &mut region.boundary);
     // Regions left behind after giving up: back to the pool.
     active.clear_with(|e| {
         if let Some(r) = e.reg {
             t.discard(r);
         }
     });
-    ok
+    out
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -173,10 +193,25 @@ fn sweep(
     active: &mut BlockList<Entry>,
     t: &mut Tri,
     boundary: &mut Vec<(usize, usize)>,
-) -> bool {
+) -> Outcome {
     let at = |i: u32| verts[i as usize].p;
     // v is above (left of) the entry's edge.
     let above = |e: &Entry, pv: [f64; 2]| orient(at(e.lo), at(e.hi), pv);
+    // False once an edge off the region's boundary was met: from then on
+    // only the planarity checks run (no windings, boundary or regions).
+    let mut region = true;
+    // Small polygons give up at once instead: finishing the check costs
+    // about what merging and splitting them would (the book's crossing
+    // shapes meet an off-boundary edge before their first crossing).
+    let check_on = verts.len() >= PLANAR_MIN;
+    // Drops the regions built so far.
+    let abandon = |active: &mut BlockList<Entry>, t: &mut Tri| {
+        active.for_each_mut(|e| {
+            if let Some(r) = e.reg.take() {
+                t.discard(r);
+            }
+        });
+    };
     for k in keyed {
         let v = k.2;
         let pv = at(v);
@@ -190,7 +225,7 @@ fn sweep(
                 let pos = active.partition_point(|e| above(e, pv) >= 0.0);
                 let o = orient(pv, at(p), at(q));
                 if o == 0.0 {
-                    return false;
+                    return Outcome::No;
                 }
                 // o > 0: q is left of v→p, so v→p is the lower edge.
                 let (l, u) = if o > 0.0 { (p, q) } else { (q, p) };
@@ -199,29 +234,35 @@ fn sweep(
                 let w0 = if pos > 0 { active.get(pos - 1).w } else { 0 };
                 let (w1, w2) = (w0 + dir(l), w0 + dir(l) + dir(u));
                 let (i0, i1, i2) = (rule.inside(w0 as i64), rule.inside(w1 as i64), rule.inside(w2 as i64));
-                if i0 == i1 || i1 == i2 {
-                    return false;
+                if region && (i0 == i1 || i1 == i2) {
+                    if !check_on {
+                        return Outcome::No;
+                    }
+                    region = false;
+                    abandon(active, t);
                 }
                 // The two new edges are adjacent too (nearly overlapping?).
                 if interact(verts, v, l, v, u) {
-                    return false;
+                    return Outcome::No;
                 }
                 if pos > 0 {
                     let b = active.get(pos - 1);
                     if interact(verts, b.lo, b.hi, v, l) {
-                        return false;
+                        return Outcome::No;
                     }
                 }
                 if pos < active.len() {
                     let a = active.get(pos);
                     if interact(verts, a.lo, a.hi, v, u) {
-                        return false;
+                        return Outcome::No;
                     }
                 }
-                push_boundary(boundary, v, l, i1);
-                push_boundary(boundary, v, u, i2);
                 let (mut rl, mut ru) = (None, None);
-                if !boundary_only {
+                if region {
+                    push_boundary(boundary, v, l, i1);
+                    push_boundary(boundary, v, u, i2);
+                }
+                if region && !boundary_only {
                     let r = if pos > 0 { active.get_mut(pos - 1).reg.take() } else { None };
                     if i1 {
                         rl = Some(t.start(v as usize));
@@ -243,7 +284,7 @@ fn sweep(
                 // Both edges end here: they must be adjacent entries.
                 let pos = active.partition_point(|e| above(e, pv) > 0.0);
                 if pos + 1 >= active.len() || active.get(pos).hi != v || active.get(pos + 1).hi != v {
-                    return false;
+                    return Outcome::No;
                 }
                 let r_below = if pos > 0 { active.get_mut(pos - 1).reg.take() } else { None };
                 let r_above = active.get_mut(pos + 1).reg.take();
@@ -263,7 +304,7 @@ fn sweep(
                 if pos > 0 && pos < active.len() {
                     let (b, a) = (active.get(pos - 1), active.get(pos));
                     if interact(verts, b.lo, b.hi, a.lo, a.hi) {
-                        return false;
+                        return Outcome::No;
                     }
                 }
             }
@@ -272,29 +313,35 @@ fn sweep(
                 let far = if a_out { p } else { q };
                 let pos = active.partition_point(|e| above(e, pv) > 0.0);
                 if pos >= active.len() || active.get(pos).hi != v || (pos + 1 < active.len() && active.get(pos + 1).hi == v) {
-                    return false;
+                    return Outcome::No;
                 }
                 let w0 = if pos > 0 { active.get(pos - 1).w } else { 0 };
                 let w1 = w0 + if far == q { 1 } else { -1 };
                 let i1 = rule.inside(w1 as i64);
-                if rule.inside(w0 as i64) == i1 {
-                    return false;
+                if region && rule.inside(w0 as i64) == i1 {
+                    if !check_on {
+                        return Outcome::No;
+                    }
+                    region = false;
+                    abandon(active, t);
                 }
                 if pos > 0 {
                     let b = active.get(pos - 1);
                     if interact(verts, b.lo, b.hi, v, far) {
-                        return false;
+                        return Outcome::No;
                     }
                 }
                 if pos + 1 < active.len() {
                     let a = active.get(pos + 1);
                     if interact(verts, a.lo, a.hi, v, far) {
-                        return false;
+                        return Outcome::No;
                     }
                 }
-                push_boundary(boundary, v, far, i1);
                 let mut reg = None;
-                if !boundary_only {
+                if region {
+                    push_boundary(boundary, v, far, i1);
+                }
+                if region && !boundary_only {
                     if pos > 0 {
                         if let Some(r) = active.get_mut(pos - 1).reg.take() {
                             active.get_mut(pos - 1).reg = Some(t.add(r, v as usize, Side::Upper));
@@ -310,7 +357,11 @@ fn sweep(
             }
         }
     }
-    true
+    if region {
+        Outcome::Done
+    } else {
+        Outcome::Planar
+    }
 }
 
 /// The boundary edge lo→hi (lo left of hi), directed with the region on its left.
@@ -323,7 +374,7 @@ fn push_boundary(boundary: &mut Vec<(usize, usize)>, lo: u32, hi: u32, inside_ab
 mod tests {
     use super::*;
 
-    fn run(contours: &[&[[f64; 2]]], rule: Rule) -> Option<Region> {
+    fn outcome(contours: &[&[[f64; 2]]], rule: Rule) -> (Outcome, Region) {
         let verts: Vec<Vert> = contours.iter().flat_map(|c| c.iter().map(|&p| Vert { p })).collect();
         let mut starts = Vec::new();
         let mut n = 0;
@@ -332,7 +383,12 @@ mod tests {
             n += c.len();
         }
         let (mut sc, mut pool, mut region) = (Scratch::default(), Pool::default(), Region::default());
-        tessellate(&verts, &starts, rule, false, &mut sc, &mut pool, &mut region).then_some(region)
+        (tessellate(&verts, &starts, rule, false, &mut sc, &mut pool, &mut region), region)
+    }
+
+    fn run(contours: &[&[[f64; 2]]], rule: Rule) -> Option<Region> {
+        let (o, r) = outcome(contours, rule);
+        (o == Outcome::Done).then_some(r)
     }
 
     fn area(r: &Region, v: &[[f64; 2]]) -> f64 {
@@ -353,11 +409,20 @@ mod tests {
             assert_eq!(r.boundary.len(), 8);
         }
         // Nested the same way round: NONZERO has an edge with the region on both sides.
+        // Small: left to the general path.
         let inner: Vec<[f64; 2]> = hole.iter().rev().copied().collect();
-        assert!(run(&[&sq, &inner], Rule::NonZero).is_none());
+        assert_eq!(outcome(&[&sq, &inner], Rule::NonZero).0, Outcome::No);
         assert!(run(&[&sq, &inner], Rule::Odd).is_some());
-        // Nothing selected: left to the general path.
-        assert!(run(&[&sq], Rule::Negative).is_none());
+        // From PLANAR_MIN vertices, still a planar arrangement: handed to
+        // the region sweep as is.
+        let circle: Vec<[f64; 2]> = (0..PLANAR_MIN).map(|i| (i as f64 / PLANAR_MIN as f64 * std::f64::consts::TAU).sin_cos()).map(|(s, c)| [2.0 * c + 0.5, 2.0 * s + 0.5]).collect();
+        assert_eq!(outcome(&[&circle, &inner], Rule::NonZero).0, Outcome::Planar);
+        assert_eq!(outcome(&[&circle, &hole], Rule::NonZero).0, Outcome::Done);
+        // Nothing selected: the same.
+        assert_eq!(outcome(&[&circle], Rule::Negative).0, Outcome::Planar);
+        // An edge off the boundary first, a crossing later: not planar.
+        let far = [[3.0, 0.0], [4.0, 1.0], [4.0, 0.0], [3.0, 1.0]];
+        assert_eq!(outcome(&[&circle, &inner, &far], Rule::NonZero).0, Outcome::No);
     }
 
     #[test]
@@ -379,11 +444,14 @@ mod tests {
             &[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.5, 1.0], [1.0, 1e-14]],
         ];
         for (i, c) in cases.iter().enumerate() {
-            assert!(run(&[c], Rule::Odd).is_none(), "case {i}");
+            for rule in [Rule::Odd, Rule::Negative] {
+                assert_eq!(outcome(&[c], rule).0, Outcome::No, "case {i}, {rule:?}");
+            }
         }
         // Two triangles crossing each other (each simple).
         let a = [[0.0, 0.0], [2.0, 0.0], [1.0, 2.0]];
         let b = [[0.0, 1.0], [2.0, 1.0], [1.0, -1.0]];
-        assert!(run(&[&a, &b], Rule::Odd).is_none());
+        assert_eq!(outcome(&[&a, &b], Rule::Odd).0, Outcome::No);
+        assert_eq!(outcome(&[&a, &b], Rule::AbsGeqTwo).0, Outcome::No);
     }
 }

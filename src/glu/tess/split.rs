@@ -44,6 +44,7 @@ pub struct Scratch {
     /// Vertices split at in the last pass, and the pieces meeting there.
     hot: Vec<bool>,
     inc: Vec<(u32, u32)>,
+    pieces: Vec<Piece>,
 }
 
 /// Splits `segs` in place at every crossing and at every vertex lying on
@@ -61,6 +62,9 @@ pub struct Scratch {
 /// shares another vertex with it.
 pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, comb: &mut dyn Combiner, sc: &mut Scratch) -> bool {
     candidate_pairs(verts, segs, sc);
+    // Each pair makes at most one new vertex (bounded, in case of very many pairs).
+    let n = verts.len();
+    grid.reserve(verts, n, n + sc.pairs.len().min(8 * n + 1024));
     sc.splits.clear();
     for k in 0..sc.pairs.len() {
         let (i, j) = sc.pairs[k];
@@ -155,30 +159,63 @@ fn touching_at_split_vertices(verts: &[Vert], segs: &[Seg], sc: &mut Scratch) {
         }
     }
     let out = &mut sc.splits;
+    let pieces = &mut sc.pieces;
     for v in 0..nv {
+        // The pieces at v, in list order, with what the tests below need
+        // of each (the same expressions as `lies_on`, so the same results).
+        pieces.clear();
         let mut a = sc.seg_start[v];
         while a != NONE {
-            let mut b = sc.inc[a as usize].1;
-            while b != NONE {
-                let (x, y) = (sc.inc[a as usize].0, sc.inc[b as usize].0);
-                let (i, j) = (x.min(y), x.max(y));
-                let (s, r) = (segs[i as usize], segs[j as usize]);
-                // The ends other than v (s and r both have v as an end).
-                let p = if s.a == v { s.b } else { s.a };
-                let q = if r.a == v { r.b } else { r.a };
-                if p != q {
-                    if let Some(t) = lies_on(verts[q].p, verts[s.a].p, verts[s.b].p) {
-                        out.push((i, t, q as u32));
+            let (i, link) = sc.inc[a as usize];
+            let s = segs[i as usize];
+            let (pa, pb) = (verts[s.a].p, verts[s.b].p);
+            let (dx, dy) = (pb[0] - pa[0], pb[1] - pa[1]);
+            let far = if s.a == v { s.b } else { s.a };
+            pieces.push(Piece { seg: i, far: far as u32, pf: verts[far].p, a: pa, d: [dx, dy], l2: dx * dx + dy * dy });
+            a = link;
+        }
+        for (k, x) in pieces.iter().enumerate() {
+            for y in &pieces[k + 1..] {
+                let (s, r) = if x.seg <= y.seg { (x, y) } else { (y, x) };
+                if s.far != r.far {
+                    if let Some(t) = lies_on_piece(r.pf, s) {
+                        out.push((s.seg, t, r.far));
                     }
-                    if let Some(t) = lies_on(verts[p].p, verts[r.a].p, verts[r.b].p) {
-                        out.push((j, t, p as u32));
+                    if let Some(t) = lies_on_piece(s.pf, r) {
+                        out.push((r.seg, t, s.far));
                     }
                 }
-                b = sc.inc[b as usize].1;
             }
-            a = sc.inc[a as usize].1;
         }
     }
+}
+
+/// A piece at a split vertex: its segment, its other end (id and point),
+/// its start point, direction and squared length.
+#[derive(Clone, Copy)]
+struct Piece {
+    seg: u32,
+    far: u32,
+    pf: [f64; 2],
+    a: [f64; 2],
+    d: [f64; 2],
+    l2: f64,
+}
+
+/// [`lies_on`] for a piece, with its direction and length precomputed
+/// (operation for operation the same arithmetic).
+#[inline]
+fn lies_on_piece(p: [f64; 2], s: &Piece) -> Option<f64> {
+    let (a, [dx, dy], l2) = (s.a, s.d, s.l2);
+    if !(l2 > 0.0) {
+        return None;
+    }
+    let dot = (p[0] - a[0]) * dx + (p[1] - a[1]) * dy;
+    if !(dot > 0.0 && dot < l2) {
+        return None;
+    }
+    let o = dx * (p[1] - a[1]) - dy * (p[0] - a[0]);
+    (o * o <= EPS * EPS * l2).then(|| dot / l2)
 }
 
 /// Below this many edges, all pairs are tested (cheaper than a grid).

@@ -92,10 +92,9 @@ fn lex_less(p: [f64; 2], q: [f64; 2]) -> bool {
     p[0] < q[0] || (p[0] == q[0] && p[1] < q[1])
 }
 
-/// Computes windings and the selected region; triangulates it unless `boundary_only`.
 /// An integer with the order of `f64::total_cmp`.
 #[inline]
-fn ord_key(x: f64) -> u64 {
+pub fn ord_key(x: f64) -> u64 {
     let b = x.to_bits();
     if b >> 63 == 1 {
         !b
@@ -125,7 +124,11 @@ pub struct Scratch {
 
 /// Computes windings and the selected region into `sc.region`;
 /// triangulates it unless `boundary_only`.
-pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc: &mut Scratch) {
+///
+/// `sorted`, if given, is every vertex in sweep order as (x key, y key,
+/// index) sorted (the fast path's order, when it hands over a planar
+/// arrangement of the same vertices); otherwise the vertices are sorted here.
+pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sorted: Option<&[(u64, u64, u32)]>, sc: &mut Scratch) {
     let nv = verts.len();
     let Scratch { edges, order, keyed, out, inc, below, active1, bedges, inside_above, active2, outs, pool, region } = sc;
     let Region { boundary, triangles: tris } = region;
@@ -194,11 +197,16 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sc:
     }
     edges.truncate(kept);
     // Sweep order of vertices (integer keys sort faster than float compares).
-    keyed.clear();
-    keyed.extend(verts.iter().enumerate().map(|(i, v)| (ord_key(v.p[0]), ord_key(v.p[1]), i as u32)));
-    keyed.sort_unstable();
     order.clear();
-    order.extend(keyed.iter().map(|k| k.2));
+    match sorted {
+        Some(k) => order.extend(k.iter().map(|k| k.2)),
+        None => {
+            keyed.clear();
+            keyed.extend(verts.iter().enumerate().map(|(i, v)| (ord_key(v.p[0]), ord_key(v.p[1]), i as u32)));
+            keyed.sort_unstable();
+            order.extend(keyed.iter().map(|k| k.2));
+        }
+    }
     // Outgoing edges of v: es[out[v]..out[v + 1]] (es sorted by lo); incoming counts.
     let build_out = |es: &[Edge], out: &mut Vec<u32>, inc: &mut Vec<u32>| {
         out.clear();
