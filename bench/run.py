@@ -250,8 +250,19 @@ def plot(results, sizes, scenes, impls):
     # the hint's two points side by side (issue 9 item 3).
     panels = [s for s in scenes if not (s.endswith("_fast") and s[:-5] in scenes)]
     n = len(panels)
-    fig, axes = plt.subplots(1, n, figsize=(3.2 * n, 3), squeeze=False)
-    for ax, scene in zip(axes[0], panels):
+    # Panels in a grid of at most six columns (one row of 25 was unreadable).
+    cols = min(n, 6)
+    rows = (n + cols - 1) // cols
+
+    def grid():
+        fig, axes = plt.subplots(rows, cols, figsize=(3.2 * cols, 3 * rows), squeeze=False)
+        flat = [ax for row in axes for ax in row]
+        for ax in flat[n:]:
+            ax.set_visible(False)
+        return fig, flat
+
+    fig, axes = grid()
+    for ax, scene in zip(axes, panels):
         for variant, marker in ((scene, "o"), (scene + "_fast", "x")):
             for i in impls:
                 r = by.get((variant, size, i), {})
@@ -260,17 +271,17 @@ def plot(results, sizes, scenes, impls):
                     ax.scatter([r["median_ms"]], [e], color=colors[i], marker=marker,
                                label=i + (" FASTEST" if marker == "x" else ""))
         ax.set_title(scene, fontsize=8); ax.set_xlabel("median ms"); ax.set_ylabel("RMSE vs softpipe")
-    axes[0][0].legend(fontsize=6)
+    axes[0].legend(fontsize=6)
     fig.tight_layout(); fig.savefig(os.path.join(OUT, "time_vs_error.png"), dpi=80); plt.close(fig)
     # Time against resolution.
-    fig, axes = plt.subplots(1, n, figsize=(3.2 * n, 3), squeeze=False)
-    for ax, scene in zip(axes[0], panels):
+    fig, axes = grid()
+    for ax, scene in zip(axes, panels):
         for i in impls:
             pts = [(w * h / 1e6, by[(scene, f"{w}x{h}", i)]["median_ms"]) for (w, h) in sizes if "median_ms" in by.get((scene, f"{w}x{h}", i), {})]
             if pts:
                 ax.plot(*zip(*pts), marker="o", color=colors[i], label=i)
         ax.set_title(scene, fontsize=8); ax.set_xlabel("megapixels"); ax.set_ylabel("median ms")
-    axes[0][0].legend(fontsize=6)
+    axes[0].legend(fontsize=6)
     fig.tight_layout(); fig.savefig(os.path.join(OUT, "time_vs_resolution.png"), dpi=80); plt.close(fig)
     # Time against triangle count (the sphere scenes).
     fig, ax = plt.subplots(figsize=(4, 3))

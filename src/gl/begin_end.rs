@@ -312,8 +312,9 @@ impl Context {
     }
 
     /// The point size after GL 1.4's distance attenuation and clamping
-    /// (section 3.3). Fading applies only with multisampling, which softgl
-    /// does not have.
+    /// (section 3.3). d is the eye-coordinate distance |Pe| the spec
+    /// names, not |z_eye| (Mesa's, and piglit point-attenuation's, choice).
+    /// Fading applies only with multisampling, which softgl does not have.
     fn derived_point_size(&self, obj: Vec4) -> f32 {
         let p = &self.point;
         let [a, b, c] = p.attenuation;
