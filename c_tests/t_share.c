@@ -86,6 +86,25 @@ static void *caller(void *arg)
     return NULL;
 }
 
+/* In the current context: a new S x S RGBA8 renderbuffer attached to a new
+ * framebuffer object (returned in *fbo) and cleared to (r, g, b); the
+ * window's framebuffer is bound again after. */
+static GLuint cleared_renderbuffer(GLuint *fbo, float r, float g, float b)
+{
+    GLuint rb;
+    glGenRenderbuffers(1, &rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, S, S);
+    glGenFramebuffers(1, fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, *fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+    glClearColor(r, g, b, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glClearColor(0, 0, 0, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return rb;
+}
+
 /* A draws red into a renderbuffer through its framebuffer object and makes
  * a sampler; B sees both, but not A's framebuffer object. */
 static void share_renderbuffers_and_samplers(void)
@@ -94,16 +113,7 @@ static void share_renderbuffers_and_samplers(void)
     GLint v = 0;
     unsigned char p[4] = {0, 0, 0, 0};
     OSMesaMakeCurrent(A, abuf, GL_UNSIGNED_BYTE, S, S);
-    glGenRenderbuffers(1, &rb);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, S, S);
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
-    glClearColor(1, 0, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glClearColor(0, 0, 0, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    rb = cleared_renderbuffer(&fbo, 1, 0, 0);
     glGenSamplers(1, &smp);
     glSamplerParameteri(smp, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glFinish();
@@ -146,16 +156,7 @@ static void deleted_renderbuffer_stays_attached(void)
     GLint type = 0;
     unsigned char p[4];
     OSMesaMakeCurrent(A, abuf, GL_UNSIGNED_BYTE, S, S);
-    glGenRenderbuffers(1, &rb);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, S, S);
-    glGenFramebuffers(1, &afbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, afbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
-    glClearColor(0, 0, 1, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glClearColor(0, 0, 0, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    rb = cleared_renderbuffer(&afbo, 0, 0, 1);
     glFinish();
 
     OSMesaMakeCurrent(B, bbuf, GL_UNSIGNED_BYTE, S, S);
