@@ -11,6 +11,10 @@
  *   textured with it shows in the window.
  *   glFinish while the object is bound delivers the window to OSMesa.
  * - glBlitFramebuffer from the object to the window, scaled 2x (NEAREST).
+ * - Round trip: colour, depth and stencil patterns drawn (glDrawPixels)
+ *   into renderbuffers, and a colour pattern in an attached texture, read
+ *   back the same after the object is unbound and bound again (its images
+ *   reloaded from the attachments), pixel for pixel.
  * - glGenerateMipmapEXT: the 1x1 level of a 2x2 image is its mean.
  * - RGBA32F: values outside [0,1] and 1/3 come back from glGetTexImage
  *   (GL_FLOAT) bit for bit; TEXTURE_RED_TYPE is FLOAT (UNSIGNED_NORMALIZED
@@ -251,6 +255,107 @@ static void render_to_texture(void)
     h_expect_no_error("render to texture");
 }
 
+#define RW 13
+#define RH 7
+
+/* Reads colour, depth (as unsigned ints) and stencil of the RW x RH
+ * object. */
+static void read_all(unsigned char *c, GLuint *d, unsigned char *st)
+{
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, RW, RH, GL_RGBA, GL_UNSIGNED_BYTE, c);
+    if (d)
+        glReadPixels(0, 0, RW, RH, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, d);
+    if (st)
+        glReadPixels(0, 0, RW, RH, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, st);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+}
+
+static void round_trip(void)
+{
+    static unsigned char color[RW * RH * 4], c0[RW * RH * 4], c1[RW * RH * 4];
+    static unsigned char sten[RW * RH], s0[RW * RH], s1[RW * RH];
+    static float depth[RW * RH];
+    static GLuint d0[RW * RH], d1[RW * RH];
+    GLuint fb, rb[3], tex;
+    int i, bad = 0, depth_levels = 0;
+
+    for (i = 0; i < RW * RH; i++) {
+        color[4 * i + 0] = (unsigned char)(i * 7);
+        color[4 * i + 1] = (unsigned char)(255 - i);
+        color[4 * i + 2] = (unsigned char)(i * i);
+        color[4 * i + 3] = (unsigned char)(i * 3 + 1);
+        sten[i] = (unsigned char)(i * 5 + 2);
+        depth[i] = (float)i / (RW * RH);
+    }
+    glGenFramebuffersEXT(1, &fb);
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fb);
+    glGenRenderbuffersEXT(3, rb);
+    glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rb[0]);
+    glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_RGBA8, RW, RH);
+    glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rb[1]);
+    glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH_COMPONENT24, RW, RH);
+    glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rb[2]);
+    glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_STENCIL_INDEX8_EXT, RW, RH);
+    glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_RENDERBUFFER_EXT, rb[0]);
+    glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT, rb[1]);
+    glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_STENCIL_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT, rb[2]);
+    h_expect(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT) == GL_FRAMEBUFFER_COMPLETE_EXT,
+             "colour, depth and stencil renderbuffers complete");
+
+    pixel_projection(RW, RH);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glRasterPos2i(0, 0);
+    glDrawPixels(RW, RH, GL_RGBA, GL_UNSIGNED_BYTE, color);
+    /* Depth pixels carry the raster colour to the colour buffer: masked. */
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDrawPixels(RW, RH, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
+    glDisable(GL_DEPTH_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDrawPixels(RW, RH, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, sten);
+    glDepthFunc(GL_LESS);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    h_expect_no_error("patterns drawn into renderbuffers");
+    read_all(c0, d0, s0);
+    for (i = 0; i < RW * RH * 4; i++)
+        if (c0[i] != color[i]) {
+            h_expect(0, "colour pattern drawn into the renderbuffer: byte %d is %d, drew %d", i, c0[i], color[i]);
+            break;
+        }
+    h_expect(memcmp(s0, sten, sizeof sten) == 0, "stencil pattern drawn into the renderbuffer");
+    for (i = 1; i < RW * RH; i++)
+        depth_levels += d0[i] > d0[i - 1];
+    h_expect(depth_levels == RW * RH - 1, "depth pattern increases: %d steps", depth_levels);
+
+    /* Unbound and bound again: the images come back from the renderbuffers. */
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fb);
+    read_all(c1, d1, s1);
+    for (i = 0; i < RW * RH; i++)
+        bad += memcmp(&c0[4 * i], &c1[4 * i], 4) != 0 || d0[i] != d1[i] || s0[i] != s1[i];
+    h_expect(bad == 0, "renderbuffers after rebinding: %d pixels differ", bad);
+
+    /* The same colour pattern as a texture, attached in place of rb[0]. */
+    tex = make_texture(GL_RGBA8, RW, RH, GL_UNSIGNED_BYTE, NULL);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, RW, RH, GL_RGBA, GL_UNSIGNED_BYTE, color);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_2D, tex, 0);
+    read_all(c1, NULL, NULL);
+    h_expect(memcmp(c1, color, sizeof color) == 0, "attached texture read back as the framebuffer");
+
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+    pixel_projection(W, H);
+    glDeleteFramebuffersEXT(1, &fb);
+    glDeleteRenderbuffersEXT(3, rb);
+    glDeleteTextures(1, &tex);
+    h_expect_no_error("round trip");
+}
+
 static void mipmaps(void)
 {
     static const unsigned char img[2 * 2 * 4] = {
@@ -328,6 +433,7 @@ int main(void)
     h_expect(ext && strstr(ext, "GL_ARB_texture_float "), "GL_ARB_texture_float advertised");
     completeness();
     render_to_texture();
+    round_trip();
     mipmaps();
     float_textures();
     return h_finish();

@@ -36,7 +36,7 @@ use super::texture::image::{internal_format, is_depth_stencil};
 use super::texture::MAX_LEVELS;
 use super::validate::DIRTY_ALL;
 use crate::framebuffer::{Config, Framebuffer, DEPTH_MAX, MAX_SIZE};
-use crate::render::texture::{to_unorm8, Base, Texels, UNORM8};
+use crate::render::texture::{to_unorm8, Base, Image, Texels, UNORM8};
 use std::collections::{HashMap, HashSet};
 use std::sync::{Arc, Mutex, MutexGuard};
 
@@ -920,70 +920,59 @@ impl Context {
         let mut fb = Framebuffer::new(config);
         fb.resize(w, h).ok()?;
         if let Some(r) = &color {
-            for y in 0..h {
-                for x in 0..w {
-                    fb.color[y * w + x] = self.read_color_at(r, x, y);
-                }
-            }
+            self.read_attached(r, w, h, &mut fb.color, [0; 4], |rb, k| rb.color.get(k).copied(), |img, base, i| match &img.texels {
+                Texels::Rgba8(v) if matches!(base, Base::Rgba | Base::Rgb) => v[i],
+                t => super::texture::image::texel_to_rgba(base, t.get(i)).map(to_unorm8),
+            });
         }
         if let Some(r) = &depth {
-            for y in 0..h {
-                for x in 0..w {
-                    fb.depth[y * w + x] = self.read_depth_at(r, x, y);
-                }
-            }
+            self.read_attached(r, w, h, &mut fb.depth, 0, |rb, k| rb.depth.get(k).copied(), |img, _, i| {
+                let d = img.texels.get(i)[0] as f64;
+                (d.clamp(0.0, 1.0) * DEPTH_MAX as f64).round() as u32
+            });
         }
         if let Some(r) = &stencil {
-            for y in 0..h {
-                for x in 0..w {
-                    fb.stencil[y * w + x] = self.read_stencil_at(r, x, y);
-                }
-            }
+            self.read_attached(r, w, h, &mut fb.stencil, 0, |rb, k| rb.stencil.get(k).copied(), |img, _, i| img.texels.get(i)[3] as u8);
         }
         let snap = Snapshot { color: if color.is_some() { fb.color.to_vec() } else { Vec::new() }, depth: fb.depth.clone(), stencil: fb.stencil.clone() };
         Some((fb, snap))
     }
 
-    fn read_color_at(&self, r: &Resolved, x: usize, y: usize) -> [u8; 4] {
+    /// Copies the `w` x `h` corner of an attached image into `dst` (rows
+    /// `w` long), taking the renderbuffer's lock or finding the texture
+    /// image once for the whole copy. A texel missing (storage replaced by
+    /// a sharing context, image gone) reads as `zero`.
+    #[allow(clippy::too_many_arguments)]
+    fn read_attached<T: Copy>(
+        &self,
+        r: &Resolved,
+        w: usize,
+        h: usize,
+        dst: &mut [T],
+        zero: T,
+        from_rb: impl Fn(&Renderbuffer, usize) -> Option<T>,
+        from_tex: impl Fn(&Image, Base, usize) -> T,
+    ) {
         match r.kind {
             ResolvedKind::Renderbuffer(ref obj) => {
                 let rb = rb(obj);
-                rb.color.get(y * rb.width as usize + x).copied().unwrap_or([0; 4])
-            }
-            ResolvedKind::Texture { name, slot, stride, start, base, .. } => {
-                let Some(img) = self.texture.objects.get(&name).and_then(|o| o.images[slot].as_ref()) else { return [0; 4] };
-                let i = start + y * stride + x;
-                match &img.texels {
-                    Texels::Rgba8(v) if matches!(base, Base::Rgba | Base::Rgb) => v[i],
-                    t => super::texture::image::texel_to_rgba(base, t.get(i)).map(to_unorm8),
+                let rw = rb.width as usize;
+                for y in 0..h {
+                    for x in 0..w {
+                        dst[y * w + x] = from_rb(&rb, y * rw + x).unwrap_or(zero);
+                    }
                 }
             }
-        }
-    }
-
-    fn read_depth_at(&self, r: &Resolved, x: usize, y: usize) -> u32 {
-        match r.kind {
-            ResolvedKind::Renderbuffer(ref obj) => {
-                let rb = rb(obj);
-                rb.depth.get(y * rb.width as usize + x).copied().unwrap_or(0)
-            }
-            ResolvedKind::Texture { name, slot, stride, start, .. } => {
-                let Some(img) = self.texture.objects.get(&name).and_then(|o| o.images[slot].as_ref()) else { return 0 };
-                let d = img.texels.get(start + y * stride + x)[0] as f64;
-                (d.clamp(0.0, 1.0) * DEPTH_MAX as f64).round() as u32
-            }
-        }
-    }
-
-    fn read_stencil_at(&self, r: &Resolved, x: usize, y: usize) -> u8 {
-        match r.kind {
-            ResolvedKind::Renderbuffer(ref obj) => {
-                let rb = rb(obj);
-                rb.stencil.get(y * rb.width as usize + x).copied().unwrap_or(0)
-            }
-            ResolvedKind::Texture { name, slot, stride, start, .. } => {
-                let Some(img) = self.texture.objects.get(&name).and_then(|o| o.images[slot].as_ref()) else { return 0 };
-                img.texels.get(start + y * stride + x)[3] as u8
+            ResolvedKind::Texture { name, slot, stride, start, base, .. } => {
+                let Some(img) = self.texture.objects.get(&name).and_then(|o| o.images[slot].as_ref()) else {
+                    dst[..w * h].fill(zero);
+                    return;
+                };
+                for y in 0..h {
+                    for x in 0..w {
+                        dst[y * w + x] = from_tex(img, base, start + y * stride + x);
+                    }
+                }
             }
         }
     }
