@@ -45,7 +45,12 @@ const GL_CURRENT_SECONDARY_COLOR: u32 = 0x8459;
 const GL_VERTEX_ARRAY_POINTER: u32 = 0x808E;
 const GL_FEEDBACK_BUFFER_POINTER: u32 = 0x0DF0;
 const GL_SELECTION_BUFFER_POINTER: u32 = 0x0DF3;
+const GL_2D: u32 = 0x0600;
 const GL_3D: u32 = 0x0601;
+const GL_SELECTION_BUFFER_SIZE: u32 = 0x0DF4;
+const GL_FEEDBACK_BUFFER_SIZE: u32 = 0x0DF1;
+const GL_FEEDBACK_BUFFER_TYPE: u32 = 0x0DF2;
+const GL_INDEX_BITS: u32 = 0x0D51;
 
 const W: i32 = 32;
 const H: i32 = 32;
@@ -1406,7 +1411,8 @@ fn ext_vertex_array_entry_points() {
 }
 
 /// GL_SELECTION_BUFFER_POINTER and GL_FEEDBACK_BUFFER_POINTER return the
-/// buffers given to glSelectBuffer and glFeedbackBuffer.
+/// buffers given to glSelectBuffer and glFeedbackBuffer; the _SIZE names
+/// (and GL_FEEDBACK_BUFFER_TYPE) their sizes and type (GL 1.5 table 6.31).
 #[test]
 fn selection_and_feedback_buffer_pointers() {
     let _c = setup();
@@ -1416,8 +1422,11 @@ fn selection_and_feedback_buffer_pointers() {
         let mut p: *mut c_void = 1 as *mut c_void;
         glGetPointerv(GL_SELECTION_BUFFER_POINTER, &mut p);
         assert!(p.is_null());
-        glSelectBuffer(16, sel.as_mut_ptr());
-        glFeedbackBuffer(16, GL_3D, fb.as_mut_ptr());
+        assert_eq!([get_i(GL_SELECTION_BUFFER_SIZE), get_i(GL_FEEDBACK_BUFFER_SIZE), get_i(GL_FEEDBACK_BUFFER_TYPE)], [0, 0, GL_2D as i32]);
+        glSelectBuffer(13, sel.as_mut_ptr());
+        glFeedbackBuffer(11, GL_3D, fb.as_mut_ptr());
+        assert_eq!([get_i(GL_SELECTION_BUFFER_SIZE), get_i(GL_FEEDBACK_BUFFER_SIZE), get_i(GL_FEEDBACK_BUFFER_TYPE)], [13, 11, GL_3D as i32]);
+        assert_eq!(get_i(GL_INDEX_BITS), 0, "RGBA visuals have no index bits");
         glGetPointerv(GL_SELECTION_BUFFER_POINTER, &mut p);
         assert_eq!(p as *mut u32, sel.as_mut_ptr());
         glGetPointerv(GL_FEEDBACK_BUFFER_POINTER, &mut p);

@@ -102,6 +102,9 @@ impl Context {
             GL_ACCUM_CLEAR_VALUE => Some(Value::Normalized(self.accum_clear.iter().map(|&c| c as f64).collect())),
             0x0C40 /* GL_RENDER_MODE */ => ints([self.select.mode as i64]),
             0x0D70 /* GL_NAME_STACK_DEPTH */ => ints([self.name_stack_depth() as i64]),
+            0x0DF4 /* GL_SELECTION_BUFFER_SIZE */ => ints([self.select.buffer_sizes().0 as i64]),
+            0x0DF1 /* GL_FEEDBACK_BUFFER_SIZE */ => ints([self.select.buffer_sizes().1 as i64]),
+            0x0DF2 /* GL_FEEDBACK_BUFFER_TYPE */ => ints([self.select.buffer_sizes().2 as i64]),
             GL_MAX_NAME_STACK_DEPTH => ints([super::select::MAX_NAME_STACK_DEPTH as i64]),
             GL_MAX_EVAL_ORDER => ints([super::eval::MAX_EVAL_ORDER as i64]),
             0x0DD0 /* GL_MAP1_GRID_DOMAIN */ => Some(Value::Floats(vec![self.eval.grid1.1 as f64, self.eval.grid1.2 as f64])),
@@ -200,6 +203,8 @@ impl Context {
             GL_DEPTH_BITS => ints([has(fb.depth_bits)]),
             GL_STENCIL_BITS => ints([has(fb.stencil_bits)]),
             GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS | GL_ACCUM_ALPHA_BITS => ints([has(fb.accum_bits)]),
+            // RGBA visuals only: no colour-index bits.
+            0x0D51 /* GL_INDEX_BITS */ => ints([0]),
             GL_RGBA_MODE => Some(Value::Bools(vec![true])),
             GL_INDEX_MODE | GL_STEREO => Some(Value::Bools(vec![false])),
             GL_DOUBLEBUFFER => Some(Value::Bools(vec![self.double_buffered])),

@@ -67,6 +67,12 @@ impl SelectState {
     pub fn buffer_pointers(&self) -> (usize, usize) {
         (self.select_buf as usize, self.feedback_buf as usize)
     }
+
+    /// GL_SELECTION_BUFFER_SIZE, GL_FEEDBACK_BUFFER_SIZE and
+    /// GL_FEEDBACK_BUFFER_TYPE: as last given (0, 0, GL_2D initially).
+    pub fn buffer_sizes(&self) -> (usize, usize, u32) {
+        (self.select_size, self.feedback_size, self.feedback_type)
+    }
 }
 
 impl Default for SelectState {
