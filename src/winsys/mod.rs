@@ -7,6 +7,8 @@ pub mod bound;
 pub mod current;
 pub mod dump;
 pub mod font_outlines;
+#[cfg(windows)]
+pub mod gdi;
 pub mod glx;
 pub mod osmesa;
 pub mod wgl;

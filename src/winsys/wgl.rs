@@ -1,6 +1,7 @@
-//! A wgl-like window-system shim (the WGL functions of Windows'
-//! opengl32.dll and the pixel-format functions gdi32 forwards to it), for
-//! programs written against wgl that run on Linux, headless.
+//! The WGL functions of Windows' opengl32.dll and the pixel-format
+//! functions gdi32 forwards to it: on Windows over the program's window
+//! DCs ([`super::gdi`]), and for programs written against wgl that run on
+//! Linux, headless, over offscreen DCs.
 //!
 //! Device contexts: on Linux there is no GDI, so an HDC is an offscreen
 //! surface of a given size that softgl makes: `softglCreateDC(w, h)`
@@ -192,9 +193,18 @@ pub struct DcState {
     pub front_size: (usize, usize),
     /// Frames shown so far.
     pub frames: u64,
+    /// Windows: the real DC frames are also drawn into (0: softgl's own
+    /// offscreen DC).
+    pub native: usize,
 }
 
 impl DcState {
+    /// A black DC of w x h pixels with no pixel format and the System font
+    /// (16 pixels, bold) selected.
+    pub fn new(w: usize, h: usize, native: usize) -> DcState {
+        DcState { width: w, height: h, pixel_format: 0, font: (16, FW_BOLD, DEFAULT_CHARSET), front: vec![[0, 0, 0, 255]; w * h], front_size: (w, h), frames: 0, native }
+    }
+
     fn show(&mut self, fb: &Framebuffer) {
         let n = fb.width * fb.height;
         self.front.clear();
@@ -203,6 +213,10 @@ impl DcState {
         // last followed it.
         self.front_size = (fb.width, fb.height);
         self.frames += 1;
+        #[cfg(windows)]
+        if self.native != 0 {
+            super::gdi::blit(self.native, &self.front, fb.width, fb.height);
+        }
         dump::frame(fb);
     }
 }
@@ -233,11 +247,18 @@ fn register(set: &Mutex<Option<HashSet<usize>>>, h: usize, add: bool) -> bool {
     }
 }
 
-/// The DC a handle names, if it is live.
+/// The DC a handle names, if it is live: one of softglCreateDC's, or on
+/// Windows a real DC ([`super::gdi`]).
 fn dc(hdc: Hdc) -> Option<&'static Dc> {
-    // SAFETY: live handles are boxed Dcs that stay allocated until
-    // softglDestroyDC removes them from the set (under the same check).
-    live(&DCS, hdc as usize).then(|| unsafe { &*(hdc as *const Dc) })
+    if live(&DCS, hdc as usize) {
+        // SAFETY: live handles are boxed Dcs that stay allocated until
+        // softglDestroyDC removes them from the set (under the same check).
+        return Some(unsafe { &*(hdc as *const Dc) });
+    }
+    #[cfg(windows)]
+    return super::gdi::native_dc(hdc);
+    #[cfg(not(windows))]
+    None
 }
 
 /// softglCreateDC: an offscreen device context of width x height pixels
@@ -247,8 +268,7 @@ pub fn create_dc(width: c_int, height: c_int) -> Hdc {
     if width < 1 || height < 1 || width as usize > MAX_SIZE || height as usize > MAX_SIZE {
         return null_mut();
     }
-    let (w, h) = (width as usize, height as usize);
-    let state = DcState { width: w, height: h, pixel_format: 0, font: (16, FW_BOLD, DEFAULT_CHARSET), front: vec![[0, 0, 0, 255]; w * h], front_size: (w, h), frames: 0 };
+    let state = DcState::new(width as usize, height as usize, 0);
     let p = Box::into_raw(Box::new(Dc { state: Arc::new(Mutex::new(state)) }));
     register(&DCS, p as usize, true);
     p as Hdc
@@ -374,6 +394,9 @@ fn context(h: Hglrc) -> Option<*mut WglContext> {
 pub fn create_context(hdc: Hdc) -> Hglrc {
     let Some(d) = dc(hdc) else { return null_mut() };
     let format = lock_dc(&d.state).pixel_format;
+    // A window's DC whose format gdi32 set without softgl (Wine).
+    #[cfg(windows)]
+    let format = if format == 0 && lock_dc(&d.state).native != 0 { super::gdi::format_from_gdi(hdc) } else { format };
     if format == 0 {
         return null_mut(); // Windows: ERROR_INVALID_PIXEL_FORMAT
     }

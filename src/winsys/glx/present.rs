@@ -56,6 +56,12 @@ unsafe impl Send for XSurface {}
 
 /// Whether `dpy` talks to its server over a local socket, where shared
 /// memory is possible.
+#[cfg(not(unix))]
+unsafe fn is_local(_: &xlib::Xlib, _: *mut Display) -> bool {
+    false
+}
+
+#[cfg(unix)]
 unsafe fn is_local(x: &xlib::Xlib, dpy: *mut Display) -> bool {
     let fd = (x.XConnectionNumber)(dpy);
     let mut addr: libc::sockaddr_storage = std::mem::zeroed();
@@ -195,6 +201,13 @@ impl XSurface {
     }
 
     /// Makes a segment of `size` bytes and has the server attach it.
+    #[cfg(not(unix))]
+    unsafe fn attach(&self, _: usize) -> Option<Segment> {
+        None
+    }
+
+    /// Makes a segment of `size` bytes and has the server attach it.
+    #[cfg(unix)]
     unsafe fn attach(&self, size: usize) -> Option<Segment> {
         let (x, e) = (xlib()?, xext()?);
         if (e.XShmQueryExtension)(self.dpy) == 0 {
@@ -231,6 +244,7 @@ impl XSurface {
                 // The server detaches before the memory goes.
                 (x.XSync)(self.dpy, 0);
             }
+            #[cfg(unix)]
             libc::shmdt(s.info.shmaddr as *const libc::c_void);
         }
     }

@@ -145,8 +145,26 @@ pub struct XErrorEvent {
     pub minor_code: u8,
 }
 
+/// The shared library `name`, loaded (null when it cannot be: always on
+/// Windows, which has no Xlib).
+unsafe fn open_library(name: &std::ffi::CStr) -> *mut c_void {
+    #[cfg(unix)]
+    return libc::dlopen(name.as_ptr(), libc::RTLD_LAZY | libc::RTLD_LOCAL);
+    #[cfg(not(unix))]
+    {
+        let _ = name;
+        std::ptr::null_mut()
+    }
+}
+
 unsafe fn sym<T: Copy>(lib: *mut c_void, name: &[u8]) -> Option<T> {
+    #[cfg(unix)]
     let p = libc::dlsym(lib, name.as_ptr() as *const c_char);
+    #[cfg(not(unix))]
+    let p: *mut c_void = {
+        let _ = (lib, name);
+        std::ptr::null_mut()
+    };
     if p.is_null() {
         None
     } else {
@@ -156,7 +174,7 @@ unsafe fn sym<T: Copy>(lib: *mut c_void, name: &[u8]) -> Option<T> {
 }
 
 unsafe fn load() -> Option<Xlib> {
-    let lib = libc::dlopen(c"libX11.so.6".as_ptr(), libc::RTLD_LAZY | libc::RTLD_LOCAL);
+    let lib = open_library(c"libX11.so.6");
     if lib.is_null() {
         return None;
     }
@@ -212,7 +230,7 @@ pub struct Xext {
 }
 
 unsafe fn load_xext() -> Option<Xext> {
-    let lib = libc::dlopen(c"libXext.so.6".as_ptr(), libc::RTLD_LAZY | libc::RTLD_LOCAL);
+    let lib = open_library(c"libXext.so.6");
     if lib.is_null() {
         return None;
     }
@@ -239,15 +257,25 @@ pub fn xext() -> Option<&'static Xext> {
 /// later atexit handlers may still destroy contexts) goes on.
 static EXITING: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
 
-extern "C" fn mark_exiting() {
+/// The calling thread's identity (never 0).
+fn this_thread() -> usize {
     // SAFETY: pthread_self has no preconditions.
-    EXITING.store(unsafe { libc::pthread_self() } as usize, std::sync::atomic::Ordering::SeqCst);
+    #[cfg(unix)]
+    return unsafe { libc::pthread_self() } as usize;
+    #[cfg(not(unix))]
+    {
+        thread_local!(static ID: u8 = const { 0 });
+        ID.with(|t| t as *const u8 as usize)
+    }
+}
+
+extern "C" fn mark_exiting() {
+    EXITING.store(this_thread(), std::sync::atomic::Ordering::SeqCst);
 }
 
 fn park_if_exiting() {
     let e = EXITING.load(std::sync::atomic::Ordering::SeqCst);
-    // SAFETY: pthread_self has no preconditions.
-    if e != 0 && e != unsafe { libc::pthread_self() } as usize {
+    if e != 0 && e != this_thread() {
         loop {
             std::thread::park();
         }
