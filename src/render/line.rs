@@ -41,7 +41,10 @@
 //! piece), computes the colour once when it cannot vary along the segment,
 //! depth only when it is tested, steps the column's line height instead
 //! of dividing (`fragments_stepped`) and takes unstippled smooth lines'
-//! coverage in closed form (`smooth::LineRect`). Aliased results are
+//! coverage in closed form (`smooth::LineRect`, a row four pixels at a
+//! time with AVX2; a constant colour under the untested OVER blend goes
+//! to the framebuffer a whole row at once, `runs::Sink::over_covered`,
+//! the same bits as cutting it into runs). Aliased results are
 //! identical (tests/line_reference_diff.rs); smooth coverages agree within
 //! 1e-9 (see `smooth::LineRect`).
 
