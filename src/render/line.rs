@@ -41,7 +41,10 @@
 //! piece), computes the colour once when it cannot vary along the segment,
 //! depth only when it is tested, steps the column's line height instead
 //! of dividing (`fragments_stepped`) and takes unstippled smooth lines'
-//! coverage in closed form (`smooth::LineRect`). Aliased results are
+//! coverage in closed form (`smooth::LineRect`, a row four pixels at a
+//! time with AVX2; a constant colour under the untested OVER blend goes
+//! to the framebuffer a whole row at once, `runs::Sink::over_covered`,
+//! the same bits as cutting it into runs). Aliased results are
 //! identical (tests/line_reference_diff.rs); smooth coverages agree within
 //! 1e-9 (see `smooth::LineRect`).
 
@@ -546,10 +549,10 @@ impl LineRun {
         match (self.smooth, constant) {
             (true, Some(c)) => {
                 let (cu, cw) = (fragment::color_to_u8(c), c.w as f64);
-                smooth_line_fast(r, fb, width, sink, self.unit(), self.hw, depth, |_, _| (cu, cw));
+                smooth_line_fast(r, fb, width, sink, self.unit(), self.hw, Some((cu, cw)), depth, |_, _| (cu, cw));
             }
             (true, None) => {
-                smooth_line_fast(r, fb, width, sink, self.unit(), self.hw, depth, |px, py| {
+                smooth_line_fast(r, fb, width, sink, self.unit(), self.hw, None, depth, |px, py| {
                     let c = self.color_at(env, self.t_at(px, py));
                     (fragment::color_to_u8(c), c.w as f64)
                 });
@@ -628,6 +631,10 @@ impl LineRun {
 /// `hw`: row by row, the pixels of positive coverage (`smooth::LineRect`)
 /// in runs through `sink`; `color` gives a pixel's colour and its alpha
 /// before coverage, which scales it as in `draw_line`'s reference code.
+/// `constant` is that colour when it is the same for every pixel: under
+/// the untested OVER blend a row then goes to the sink whole
+/// (`Sink::over_covered`: the same fragments, without cutting the row
+/// into runs).
 #[allow(clippy::too_many_arguments)]
 fn smooth_line_fast(
     r: Rect,
@@ -636,15 +643,22 @@ fn smooth_line_fast(
     sink: &runs::Sink,
     [x, y, dx, dy]: [f64; 4],
     hw: f64,
+    constant: Option<([u8; 4], f64)>,
     depth: impl Fn(i64, i64) -> u32,
     color: impl Fn(i64, i64) -> ([u8; 4], f64),
 ) {
     let Some(lr) = smooth::LineRect::new(x, y, dx, dy, hw) else { return };
-    let mut cov: Vec<f64> = Vec::with_capacity(64);
+    let mut buf: Vec<f64> = Vec::with_capacity(64);
+    let over = constant.filter(|_| sink.is_over());
     for py in lr.rows(r) {
         let cols = lr.cols(py, r);
-        cov.clear();
-        cov.extend(cols.clone().map(|px| lr.coverage(px, py)));
+        let cov = lr.row_coverage(py, cols.clone(), &mut buf);
+        if let Some((rgb, a)) = over {
+            if !cov.is_empty() {
+                sink.over_covered(fb, py as usize * width + cols.start as usize, cov, rgb, a);
+            }
+            continue;
+        }
         let mut k = 0;
         while k < cov.len() {
             if cov[k] <= 0.0 {

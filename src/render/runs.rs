@@ -42,6 +42,10 @@ impl Buffers for Band<'_> {
         self.px.color(i - self.base)
     }
     #[inline(always)]
+    fn colors(&mut self, i: usize, n: usize) -> &mut [[u8; 4]] {
+        self.px.colors(i - self.base, n)
+    }
+    #[inline(always)]
     fn other_color(&mut self, _: usize) -> Option<&mut [u8; 4]> {
         // Nothing is binned while drawing to GL_FRONT_AND_BACK.
         None
@@ -67,6 +71,8 @@ pub struct Sink<'a> {
     fs: &'a FragmentState,
     mode: Mode,
     key: u8,
+    /// `over_covered` runs four pixels at a time (the CPU has AVX2).
+    avx2: bool,
 }
 
 fn is_over(b: &Blend) -> bool {
@@ -87,7 +93,34 @@ impl<'a> Sink<'a> {
             ColorOp::Blend(b) if untested && is_over(&b) => Mode::Over,
             _ => Mode::General,
         };
-        Sink { fs, mode, key: key(fs) }
+        let avx2 = cfg!(target_arch = "x86_64") && mode == Mode::Over && fragment::simd::level() == fragment::simd::Level::Avx2;
+        Sink { fs, mode, key: key(fs), avx2 }
+    }
+
+    /// Is the state the untested SRC_ALPHA / ONE_MINUS_SRC_ALPHA blend
+    /// ([`Sink::over_covered`] applies)?
+    pub fn is_over(&self) -> bool {
+        self.mode == Mode::Over
+    }
+
+    /// An OVER sink's run of a constant colour `rgb` whose alpha `a` is
+    /// scaled by a coverage per pixel: pixels i0, i0 + 1, ... of `fb`,
+    /// one per entry of `cov`; a pixel of coverage <= 0 gets no fragment.
+    /// The same bits as [`Sink::run`] with colour (rgb, alpha_u8(a * cov))
+    /// on each positive-coverage piece (AVX2: four pixels at a time).
+    pub fn over_covered(&self, fb: &mut impl Buffers, i0: usize, cov: &[f64], rgb: [u8; 4], a: f64) {
+        debug_assert!(self.mode == Mode::Over);
+        let fix = self.fs.alpha_fix;
+        let px = fb.colors(i0, cov.len());
+        let mut done = 0;
+        let mut passed = 0u64;
+        #[cfg(target_arch = "x86_64")]
+        if self.avx2 {
+            // SAFETY: AVX2 is present (`with`).
+            (done, passed) = unsafe { over_covered_avx2(px, cov, rgb, a, fix) };
+        }
+        passed += over_covered_scalar(&mut px[done..], &cov[done..], rgb, a, fix);
+        fb.pass_n(passed);
     }
 
     /// Does the state read fragment depths? (Else `depth` is never called.)
@@ -184,6 +217,65 @@ fn over_pixel(s: [u8; 4], d: [u8; 4]) -> [u8; 4] {
     }
 }
 
+/// [`Sink::over_covered`] a pixel at a time, as [`Sink::run`] would
+/// blend each positive-coverage pixel; returns the fragments.
+#[inline(always)]
+fn over_covered_scalar(px: &mut [[u8; 4]], cov: &[f64], rgb: [u8; 4], a: f64, fix: u8) -> u64 {
+    let mut passed = 0;
+    for (d, &c) in px.iter_mut().zip(cov) {
+        if c > 0.0 {
+            let mut s = rgb;
+            s[3] = super::smooth::alpha_u8(a * c);
+            let mut o = over_pixel(s, *d);
+            o[3] |= fix;
+            *d = o;
+            passed += 1;
+        }
+    }
+    passed
+}
+
+/// [`Sink::over_covered`]'s whole groups of four pixels: the alpha as
+/// `smooth::alpha_u8` computes it (clamp, scale, add 1/2, truncate, in
+/// f64), then `over_pixel`'s integers on 16-bit lanes; pixels of coverage
+/// <= 0 keep their value. Returns the pixels done and the fragments.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn over_covered_avx2(px: &mut [[u8; 4]], cov: &[f64], rgb: [u8; 4], a: f64, fix: u8) -> (usize, u64) {
+    use std::arch::x86_64::*;
+    let n = px.len().min(cov.len()) & !3;
+    let (va, zero, one) = (_mm256_set1_pd(a), _mm256_setzero_pd(), _mm256_set1_pd(1.0));
+    let (k255, half) = (_mm256_set1_pd(255.0), _mm256_set1_pd(0.5));
+    let color = _mm_set1_epi32(i32::from_le_bytes([rgb[0], rgb[1], rgb[2], 0]));
+    let fixv = _mm_set1_epi32((fix as i32) << 24);
+    let (c255, c127, c1) = (_mm256_set1_epi16(255), _mm256_set1_epi16(127), _mm256_set1_epi16(1));
+    // The low 32 bits of each 64-bit lane (a lane mask to pixel masks).
+    let lows = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    let mut passed = 0u64;
+    let mut k = 0;
+    while k < n {
+        let c = _mm256_loadu_pd(cov.as_ptr().add(k));
+        let pos = _mm256_cmp_pd::<_CMP_GT_OQ>(c, zero);
+        passed += (_mm256_movemask_pd(pos) as u32).count_ones() as u64;
+        let t = _mm256_min_pd(_mm256_max_pd(_mm256_mul_pd(va, c), zero), one);
+        let alpha = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(t, k255), half));
+        let src = _mm_or_si128(color, _mm_slli_epi32::<24>(alpha));
+        let p = px.as_mut_ptr().add(k) as *mut __m128i;
+        let dst = _mm_loadu_si128(p);
+        let (s16, d16) = (_mm256_cvtepu8_epi16(src), _mm256_cvtepu8_epi16(dst));
+        let a16 = _mm256_shufflehi_epi16::<0xFF>(_mm256_shufflelo_epi16::<0xFF>(s16));
+        let ia = _mm256_sub_epi16(c255, a16);
+        let v = _mm256_add_epi16(_mm256_add_epi16(_mm256_mullo_epi16(s16, a16), _mm256_mullo_epi16(d16, ia)), c127);
+        let q = _mm256_srli_epi16::<8>(_mm256_add_epi16(_mm256_add_epi16(v, c1), _mm256_srli_epi16::<8>(v)));
+        let packed = _mm256_permute4x64_epi64::<0b1000>(_mm256_packus_epi16(q, q));
+        let out = _mm_or_si128(_mm256_castsi256_si128(packed), fixv);
+        let keep = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(_mm256_castpd_si256(pos), lows));
+        _mm_storeu_si128(p, _mm_blendv_epi8(dst, out, keep));
+        k += 4;
+    }
+    (n, passed)
+}
+
 #[cfg(not(target_arch = "x86_64"))]
 #[inline(always)]
 fn over_pixel(s: [u8; 4], d: [u8; 4]) -> [u8; 4] {
@@ -193,6 +285,65 @@ fn over_pixel(s: [u8; 4], d: [u8; 4]) -> [u8; 4] {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The four-pixel OVER of a covered constant colour stores what the
+    /// pixel-at-a-time loop stores (`over`, equal to `Blend::apply`
+    /// below) and counts the same fragments: coverages of 0, negative,
+    /// tiny, above 1 and in between, alphas including 0 and 1, with and
+    /// without the alpha fix.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn over_covered_avx2_matches_per_pixel() {
+        if !std::arch::is_x86_feature_detected!("avx2") {
+            return;
+        }
+        let mut seed = 77u64;
+        let mut rnd = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed >> 11
+        };
+        let mut blended = 0;
+        for case in 0..20000 {
+            let n = (rnd() % 23) as usize;
+            let cov: Vec<f64> = (0..n)
+                .map(|_| match rnd() % 8 {
+                    0 => 0.0,
+                    1 => -0.25,
+                    2 => 1e-13,
+                    3 => 1.0,
+                    4 => 1.5,
+                    _ => (rnd() % 100_001) as f64 / 100_000.0,
+                })
+                .collect();
+            let a = match case % 5 {
+                0 => 0.0,
+                1 => 1.0,
+                _ => (rnd() % 1001) as f64 / 1000.0,
+            };
+            let rgb = (rnd() as u32).to_le_bytes();
+            let fix = if case % 3 == 0 { 255 } else { 0 };
+            let dst: Vec<[u8; 4]> = (0..n).map(|_| (rnd() as u32).to_le_bytes()).collect();
+            let mut want = dst.clone();
+            let mut want_n = 0;
+            for (d, &c) in want.iter_mut().zip(&cov) {
+                if c > 0.0 {
+                    let mut s = rgb;
+                    s[3] = crate::render::smooth::alpha_u8(a * c);
+                    *d = over(s, *d);
+                    d[3] |= fix;
+                    want_n += 1;
+                }
+            }
+            let mut got = dst.clone();
+            // SAFETY: AVX2 detected above.
+            let (done, mut got_n) = unsafe { over_covered_avx2(&mut got, &cov, rgb, a, fix) };
+            assert_eq!(done, n & !3);
+            got_n += over_covered_scalar(&mut got[done..], &cov[done..], rgb, a, fix);
+            assert_eq!((got, got_n), (want, want_n), "case {case}: cov {cov:?} a {a} rgb {rgb:?} fix {fix}");
+            blended += want_n;
+        }
+        assert!(blended > 100_000, "{blended}");
+    }
 
     /// The integer OVER equals `Blend::apply` on every source value,
     /// alpha and destination value.

@@ -262,6 +262,8 @@ pub trait Buffers {
     fn stencil(&mut self, i: usize) -> &mut u8;
     fn depth(&mut self, i: usize) -> &mut u32;
     fn color(&mut self, i: usize) -> &mut [u8; 4];
+    /// Colour pixels [i, i + n) (one row piece).
+    fn colors(&mut self, i: usize, n: usize) -> &mut [[u8; 4]];
     /// The other colour buffer's pixel under GL_FRONT_AND_BACK.
     fn other_color(&mut self, i: usize) -> Option<&mut [u8; 4]>;
     /// One more fragment passed the depth test.
@@ -287,6 +289,10 @@ impl Buffers for Framebuffer {
     #[inline(always)]
     fn color(&mut self, i: usize) -> &mut [u8; 4] {
         &mut self.color[i]
+    }
+    #[inline(always)]
+    fn colors(&mut self, i: usize, n: usize) -> &mut [[u8; 4]] {
+        &mut self.color[i..i + n]
     }
     #[inline(always)]
     fn other_color(&mut self, i: usize) -> Option<&mut [u8; 4]> {
@@ -318,6 +324,10 @@ impl Buffers for SpanPixels<'_> {
     #[inline(always)]
     fn color(&mut self, i: usize) -> &mut [u8; 4] {
         &mut self.color[i]
+    }
+    #[inline(always)]
+    fn colors(&mut self, i: usize, n: usize) -> &mut [[u8; 4]] {
+        &mut self.color[i..i + n]
     }
     #[inline(always)]
     fn other_color(&mut self, i: usize) -> Option<&mut [u8; 4]> {
