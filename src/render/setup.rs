@@ -302,7 +302,7 @@ fn signed_zero(zero: f64, d_sign: u64) -> f64 {
 /// The planes of a positively oriented triangle: window depth and 1/w
 /// per vertex in `zq`, the other attributes from `v`.
 #[allow(clippy::too_many_arguments)]
-#[inline(always)]
+#[inline]
 pub(crate) fn planes_of<P: SetupParams, A: Attributes>(rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
     let inv = 1.0 / ONE as f64;
     let x = ex.map(|c| c as f64 * inv);
