@@ -235,6 +235,11 @@ impl Runs {
             return false;
         }
         self.len = 0;
+        // No pixel centre in the box (most triangles smaller than a
+        // pixel): no run, and no edge set-up.
+        if row0 >= row1 || col0 >= col1 {
+            return true;
+        }
         if stipple.is_none() && col1 - col0 <= NARROW {
             self.find_narrow(x, y, row0, row1, col0, col1);
             return true;
@@ -358,12 +363,12 @@ pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, 
 /// colour buffers (only it writes both), else the reference path's or the
 /// fast one specialized for the state and the triangle's attributes (as
 /// `fast::select` picks it, once per state: `shade_state`).
-#[inline]
+#[inline(always)]
 pub fn kernel(rs: &RenderState, fb: &Framebuffer, setup: &TriangleSetup) -> Kernel {
     if fb.draw_both || rs.reference {
         fragment::reference::shade_span
     } else {
-        rs.shade.with(rs, |st| st.kernel(setup))
+        rs.shade.kernel(rs, setup)
     }
 }
 

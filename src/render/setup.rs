@@ -251,6 +251,54 @@ pub(crate) fn planes(rs: &RenderState, v: [&WindowVertex; 3], ex: [i64; 3], ey: 
     planes_of(rs, v.map(|w| (w.z, w.q)), v, ex, ey, flat_color, back, front_facing)
 }
 
+/// The edge vectors and determinant a triangle's planes are solved with.
+#[derive(Clone, Copy)]
+struct PlaneDivisor {
+    dx1: f64,
+    dy1: f64,
+    dx2: f64,
+    dy2: f64,
+    det: f64,
+    det_sign: u64,
+    /// det is finite and not zero (it can round to zero, or be NaN, only
+    /// for degenerate input).
+    zero_quotients: bool,
+}
+
+impl PlaneDivisor {
+    #[inline(always)]
+    fn new(dx1: f64, dy1: f64, dx2: f64, dy2: f64, det: f64) -> PlaneDivisor {
+        PlaneDivisor { dx1, dy1, dx2, dy2, det, det_sign: det.to_bits() & SIGN, zero_quotients: det != 0.0 && det.is_finite() }
+    }
+
+    /// The plane of the values `a` at the three vertices:
+    /// dx = (da1 dy2 - da2 dy1) / det, dy = (da2 dx1 - da1 dx2) / det.
+    /// An attribute equal at the three vertices (flat-coloured triangles,
+    /// 1/w without perspective, the depth of a face parallel to the
+    /// screen) has zero numerators; a zero divided by a finite non-zero
+    /// det is exactly the zero whose sign is the exclusive or of theirs
+    /// (IEEE 754), so its two divisions are skipped with the same bits.
+    #[inline(always)]
+    fn plane(&self, a: [f64; 3]) -> Plane {
+        let (da1, da2) = (a[1] - a[0], a[2] - a[0]);
+        let (nx, ny) = (da1 * self.dy2 - da2 * self.dy1, da2 * self.dx1 - da1 * self.dx2);
+        if nx == 0.0 && ny == 0.0 && self.zero_quotients {
+            Plane { a0: a[0], dx: signed_zero(nx, self.det_sign), dy: signed_zero(ny, self.det_sign) }
+        } else {
+            Plane { a0: a[0], dx: nx / self.det, dy: ny / self.det }
+        }
+    }
+}
+
+const SIGN: u64 = 1 << 63;
+
+/// zero / d for a zero `zero` and a finite non-zero d of sign bit
+/// `d_sign`: a zero with the sign bits' exclusive or.
+#[inline(always)]
+fn signed_zero(zero: f64, d_sign: u64) -> f64 {
+    f64::from_bits((zero.to_bits() ^ d_sign) & SIGN)
+}
+
 /// The planes of a positively oriented triangle: window depth and 1/w
 /// per vertex in `zq`, the other attributes from `v`.
 #[allow(clippy::too_many_arguments)]
@@ -261,12 +309,11 @@ pub(crate) fn planes_of<P: SetupParams, A: Attributes>(rs: &P, zq: [(f64, f64); 
     let y = ey.map(|c| c as f64 * inv);
     let (dx1, dy1, dx2, dy2) = (x[1] - x[0], y[1] - y[0], x[2] - x[0], y[2] - y[0]);
     let det = dx1 * dy2 - dx2 * dy1;
-    let plane = |a: [f64; 3]| {
-        let (da1, da2) = (a[1] - a[0], a[2] - a[0]);
-        Plane { a0: a[0], dx: (da1 * dy2 - da2 * dy1) / det, dy: (da2 * dx1 - da1 * dx2) / det }
-    };
+    let d = PlaneDivisor::new(dx1, dy1, dx2, dy2, det);
+    let plane = |a: [f64; 3]| d.plane(a);
     let q = zq.map(|p| p.1);
     let perspective = !(q[0] == q[1] && q[1] == q[2]);
+    let q_plane = plane(q);
     let (flat, color) = if rs.flat() {
         (Some(super::fragment::color_to_u8(flat_color)), [Plane::default(); 4])
     } else {
@@ -274,7 +321,18 @@ pub(crate) fn planes_of<P: SetupParams, A: Attributes>(rs: &P, zq: [(f64, f64); 
         // Written out: `[0, 1, 2].map` with this closure stayed an
         // out-of-line call copying the colours through memory.
         let c = if back { [v[0].back_color(), v[1].back_color(), v[2].back_color()] } else { [v[0].color(), v[1].color(), v[2].color()] }.map(|c| c.to_array());
-        (None, std::array::from_fn(|ch| plane([c[0][ch] as f64 * s[0], c[1][ch] as f64 * s[1], c[2][ch] as f64 * s[2]])))
+        let channel = |ch: usize| {
+            if perspective && c[0][ch] == 1.0 && c[1][ch] == 1.0 && c[2][ch] == 1.0 {
+                // 1 * q is q: the plane of q's very values (most often
+                // opaque alpha), already solved.
+                q_plane
+            } else {
+                plane([c[0][ch] as f64 * s[0], c[1][ch] as f64 * s[1], c[2][ch] as f64 * s[2]])
+            }
+        };
+        // Written out: `array::from_fn` with this closure stayed an
+        // out-of-line loop.
+        (None, [channel(0), channel(1), channel(2), channel(3)])
     };
     let mut z = plane(zq.map(|p| p.0));
     if let Some((factor, units)) = rs.offset_fill() {
@@ -302,10 +360,190 @@ pub(crate) fn planes_of<P: SetupParams, A: Attributes>(rs: &P, zq: [(f64, f64); 
         x0: x[0],
         y0: y[0],
         z,
-        q: plane(q),
+        q: q_plane,
         color,
         perspective,
         flat,
         front_facing,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `PlaneDivisor::plane` gives the bits of dividing both numerators by
+    /// det, on random triangles whose attributes are constant (the skipped
+    /// divisions) or not, with zeros of both signs, det of both signs,
+    /// tiny, huge, zero, infinite and NaN, and non-finite attributes.
+    #[test]
+    fn constant_planes_match_division() {
+        let mut seed = 5u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed >> 11
+        };
+        let specials = [0.0, -0.0, 1.0, -1.0, 0.5, 1e-300, -1e-300, 5e-324, 1e300, -1e300, f64::INFINITY, f64::NEG_INFINITY, f64::NAN];
+        let (mut skipped, mut divided) = (0, 0);
+        for n in 0..300_000 {
+            let pick = |next: &mut dyn FnMut() -> u64| {
+                let r = next();
+                if r % 8 == 0 {
+                    specials[(r >> 3) as usize % specials.len()]
+                } else {
+                    ((r >> 3) as f64 / (1u64 << 50) as f64 - 0.5) * [1.0, 1e-3, 1e3, 1e-200, 1e200][(r >> 60) as usize % 5]
+                }
+            };
+            let (dx1, dy1, dx2, dy2) = (pick(&mut next), pick(&mut next), pick(&mut next), pick(&mut next));
+            // Mostly the triangle's own det, sometimes an unrelated one.
+            let det = if n % 5 == 0 { pick(&mut next) } else { dx1 * dy2 - dx2 * dy1 };
+            let a0 = pick(&mut next);
+            let a = match n % 4 {
+                0 => [a0, a0, a0],
+                1 => [a0, -a0, a0],
+                2 => [a0, pick(&mut next), a0],
+                _ => [a0, pick(&mut next), pick(&mut next)],
+            };
+            let d = PlaneDivisor::new(dx1, dy1, dx2, dy2, det);
+            let got = d.plane(a);
+            let (da1, da2) = (a[1] - a[0], a[2] - a[0]);
+            let (nx, ny) = (da1 * dy2 - da2 * dy1, da2 * dx1 - da1 * dx2);
+            let want = Plane { a0: a[0], dx: nx / det, dy: ny / det };
+            assert_eq!(
+                [got.a0, got.dx, got.dy].map(f64::to_bits),
+                [want.a0, want.dx, want.dy].map(f64::to_bits),
+                "{a:?} {dx1} {dy1} {dx2} {dy2} {det}"
+            );
+            if nx == 0.0 && ny == 0.0 && det != 0.0 && det.is_finite() {
+                skipped += 1;
+            } else {
+                divided += 1;
+            }
+        }
+        assert!(skipped > 50_000 && divided > 50_000, "{skipped} {divided}");
+    }
+
+    /// Setup state for `planes_of` without textures.
+    struct Params {
+        flat: bool,
+        offset: Option<(f32, f32)>,
+        fog: Option<crate::render::fog::Fog>,
+    }
+
+    impl SetupParams for Params {
+        fn flat(&self) -> bool {
+            self.flat
+        }
+        fn offset_fill(&self) -> Option<(f32, f32)> {
+            self.offset
+        }
+        fn texture(&self) -> Option<&std::sync::Arc<crate::render::texture::TextureStage>> {
+            None
+        }
+        fn fog(&self) -> Option<crate::render::fog::Fog> {
+            self.fog
+        }
+        fn color_sum(&self) -> bool {
+            false
+        }
+    }
+
+    /// Every plane divided out as written in the spec's terms, with no
+    /// shortcut: what `planes_of` must equal bit for bit.
+    fn plane_by_division(ex: [i64; 3], ey: [i64; 3], a: [f64; 3]) -> Plane {
+        let x = ex.map(|c| c as f64 / ONE as f64);
+        let y = ey.map(|c| c as f64 / ONE as f64);
+        let (dx1, dy1, dx2, dy2) = (x[1] - x[0], y[1] - y[0], x[2] - x[0], y[2] - y[0]);
+        let det = dx1 * dy2 - dx2 * dy1;
+        let (da1, da2) = (a[1] - a[0], a[2] - a[0]);
+        Plane { a0: a[0], dx: (da1 * dy2 - da2 * dy1) / det, dy: (da2 * dx1 - da1 * dx2) / det }
+    }
+
+    fn bits(p: &Plane) -> [u64; 3] {
+        [p.a0, p.dx, p.dy].map(f64::to_bits)
+    }
+
+    /// `planes_of` (constant planes without division, an all-one colour
+    /// channel sharing the 1/w plane) equals dividing every plane, on
+    /// random small and large triangles with and without perspective,
+    /// constant and varying colours, channels of exactly 1 and 0, depth
+    /// constant or not, fog, polygon offset and both facings' colours.
+    #[test]
+    fn planes_match_dividing_every_plane() {
+        let mut seed = 17u64;
+        let mut next = move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed >> 11
+        };
+        let fog = crate::render::fog::Fog { mode: crate::render::fog::GL_LINEAR, density: 1.0, start: 0.0, end: 1.0, color: Vec4::ONE, per_fragment: true };
+        let (mut shared, mut constant, mut perspective_n) = (0, 0, 0);
+        for n in 0..100_000 {
+            let size = [3 * ONE, 40 * ONE, 3000 * ONE][n % 3];
+            let mut coord = || (next() % size as u64) as i64 - size / 2;
+            let (ex, ey) = ([coord(), coord(), coord()], [coord(), coord(), coord()]);
+            let area = (ex[1] - ex[0]) * (ey[2] - ey[0]) - (ex[2] - ex[0]) * (ey[1] - ey[0]);
+            if area <= 0 {
+                continue;
+            }
+            let mut unit = || (next() % 1_000_001) as f32 / 1_000_000.0;
+            let q: [f64; 3] = if n % 4 == 0 { [0.25; 3] } else { [0.1 + unit() as f64, 0.1 + unit() as f64, 0.1 + unit() as f64] };
+            let z: [f64; 3] = if n % 5 == 0 { [0.5; 3] } else { [unit() as f64, unit() as f64, unit() as f64] };
+            let mut colour = |k: usize| -> [Vec4; 3] {
+                let c = Vec4::new(unit(), unit(), unit(), 1.0);
+                match (n / 2 + k) % 4 {
+                    // Flat colour per triangle, opaque.
+                    0 => [c; 3],
+                    // Smooth, opaque, a channel 0 and one 1.
+                    1 => [0, 1, 2].map(|_| Vec4::new(unit(), 0.0, 1.0, 1.0)),
+                    // Smooth, channels 1 at two vertices of three.
+                    2 => [Vec4::new(unit(), 1.0, unit(), 1.0), Vec4::new(unit(), 1.0, 1.0, 1.0), Vec4::new(1.0, unit(), 1.0, unit())],
+                    _ => [0, 1, 2].map(|_| Vec4::new(unit(), unit(), unit(), 1.0)),
+                }
+            };
+            let (front, backc) = (colour(0), colour(1));
+            let fogv = [unit(), unit(), unit()];
+            let w: [WindowVertex; 3] = std::array::from_fn(|i| WindowVertex {
+                x: ex[i] as f64 / ONE as f64,
+                y: ey[i] as f64 / ONE as f64,
+                z: z[i],
+                q: q[i],
+                color: front[i],
+                back_color: backc[i],
+                tex: [Vec4::ZERO; crate::render::texture::MAX_UNITS],
+                fog: fogv[i],
+                secondary: Vec4::ZERO,
+                back_secondary: Vec4::ZERO,
+            });
+            let back = n % 7 == 3;
+            let params = Params { flat: n % 11 == 5, offset: (n % 13 == 1).then_some((1.5, 2.0)), fog: (n % 3 == 0).then_some(fog) };
+            let zq = [0, 1, 2].map(|i| (z[i], q[i]));
+            let t = planes_of(&params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+            let perspective = !(q[0] == q[1] && q[1] == q[2]);
+            assert_eq!(t.perspective, perspective);
+            perspective_n += perspective as usize;
+            let s = if perspective { q } else { [1.0; 3] };
+            assert_eq!(bits(&t.q), bits(&plane_by_division(ex, ey, q)), "q of {ex:?} {ey:?}");
+            let mut zp = plane_by_division(ex, ey, z);
+            if let Some((factor, units)) = params.offset {
+                zp.a0 += zp.dx.abs().max(zp.dy.abs()) * factor as f64 + units as f64 * OFFSET_UNIT;
+            }
+            assert_eq!(bits(&t.z), bits(&zp), "z of {ex:?} {ey:?}");
+            if params.flat {
+                assert!(t.flat.is_some());
+            } else {
+                let c = if back { backc } else { front };
+                for ch in 0..4 {
+                    let want = plane_by_division(ex, ey, [0, 1, 2].map(|i| c[i][ch] as f64 * s[i]));
+                    assert_eq!(bits(&t.color[ch]), bits(&want), "channel {ch} of {c:?} {ex:?} {ey:?} {q:?}");
+                    shared += (perspective && c.iter().all(|v| v[ch] == 1.0)) as usize;
+                    constant += (c[0][ch] == c[1][ch] && c[1][ch] == c[2][ch] && !perspective) as usize;
+                }
+            }
+            if let Some((p, _)) = &t.fog {
+                let want = plane_by_division(ex, ey, [0, 1, 2].map(|i| fogv[i] as f64 * s[i]));
+                assert_eq!(bits(p), bits(&want));
+            }
+        }
+        assert!(shared > 10_000 && constant > 10_000 && perspective_n > 10_000, "{shared} {constant} {perspective_n}");
     }
 }

@@ -23,7 +23,7 @@ use super::fragment::{self, FragmentState};
 use super::setup::{Plane, TexPlanes, TriangleSetup};
 use super::texture::{TextureStage, MAX_UNITS};
 use super::RenderState;
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
@@ -141,7 +141,10 @@ impl ShadeState {
     /// from the triangle rather than the state.
     #[inline(always)]
     fn kernel_index(t: &TriangleSetup) -> usize {
-        let constant = t.color.iter().all(|p| p.dx == 0.0 && p.dy == 0.0);
+        // Every slope == 0.0 (either zero; a NaN is not): no bit but the
+        // sign bits set, tested at once without a branch per slope.
+        let bits = t.color.iter().fold(0u64, |b, p| b | p.dx.to_bits() | p.dy.to_bits());
+        let constant = bits << 1 == 0;
         (t.perspective as usize) << 1 | constant as usize
     }
 
@@ -156,7 +159,23 @@ impl ShadeState {
 /// A render state's last capture. Clones start empty (a clone may be
 /// changed without a new stamp).
 #[derive(Default)]
-pub struct ShadeCache(RefCell<Option<Arc<ShadeState>>>);
+pub struct ShadeCache(RefCell<Option<Arc<ShadeState>>>, Cell<KernelCache>);
+
+/// The last capture's stamp and kernels, copied out of it: a triangle's
+/// kernel choice is a stamp compare and an index (no borrow of the
+/// `RefCell`, no reference count, no call).
+#[derive(Clone, Copy)]
+struct KernelCache {
+    /// 0: empty (no validated state has stamp 0).
+    stamp: u64,
+    kernels: [Kernel; 4],
+}
+
+impl Default for KernelCache {
+    fn default() -> Self {
+        KernelCache { stamp: 0, kernels: [fragment::reference::shade_span; 4] }
+    }
+}
 
 impl Clone for ShadeCache {
     fn clone(&self) -> Self {
@@ -171,6 +190,31 @@ impl std::fmt::Debug for ShadeCache {
 }
 
 impl ShadeCache {
+    /// The span kernel for a triangle set up under `rs` (whose cache this
+    /// is) on the fast path (`rs.reference` is false): what
+    /// `with(rs, |st| st.kernel(t))` gives.
+    #[inline(always)]
+    pub fn kernel(&self, rs: &RenderState, t: &TriangleSetup) -> Kernel {
+        let c = self.1.get();
+        if c.stamp == rs.stamp && c.stamp != 0 && !rs.reference {
+            return c.kernels[ShadeState::kernel_index(t)];
+        }
+        self.kernel_captured(rs, t)
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn kernel_captured(&self, rs: &RenderState, t: &TriangleSetup) -> Kernel {
+        self.with(rs, |st| {
+            // Only fast-path captures are copied out (the test above
+            // leaves reference states to `with`).
+            if !st.reference {
+                self.1.set(KernelCache { stamp: st.stamp, kernels: st.kernels });
+            }
+            st.kernel(t)
+        })
+    }
+
     /// Runs `f` with the capture of `rs` (whose cache this is), capturing
     /// it first when the state changed.
     #[inline]
