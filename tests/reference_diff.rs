@@ -721,6 +721,17 @@ fn textured_kernels_match_reference() {
     if let Err(e) = sse2 {
         panic!("SSE2: {e}");
     }
+    // The 8-wide kernel's AVX2 form: the AVX-512 one is the default on
+    // CPUs that have it (there this pass and the ones above differ).
+    #[cfg(target_arch = "x86_64")]
+    {
+        softgl::render::fragment::textured::force_avx2_on_this_thread(true);
+        let avx2 = compare_textured(36, 400, (61, 47), 1);
+        softgl::render::fragment::textured::force_avx2_on_this_thread(false);
+        if let Err(e) = avx2 {
+            panic!("AVX2: {e}");
+        }
+    }
     if let Err(e) = compare_textured(34, 60, (301, 203), 2) {
         panic!("tiled: {e}");
     }

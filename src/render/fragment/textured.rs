@@ -55,6 +55,14 @@ type Kernel = super::fast::Kernel;
 /// smaller).
 const MAX_LEVELS: usize = 16;
 
+/// Tests: the 8-wide textured kernel in its AVX2 form on this thread even
+/// where the CPU has AVX-512 (`avx2::pick`).
+#[cfg(target_arch = "x86_64")]
+#[doc(hidden)]
+pub fn force_avx2_on_this_thread(on: bool) {
+    avx2::force_avx2_on_this_thread(on)
+}
+
 /// The textured kernel for a triangle, if its state is the common case.
 /// `approximate`: GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST; the
 /// 8-wide kernel then filters in 8-bit fixed point (`avx2`'s
@@ -70,29 +78,7 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Optio
     if super::simd::level_here() == super::simd::Level::Avx2 {
         // Eight pixels at a time where the sampler allows (avx2.rs).
         if unit(tp).is_some_and(|(_, s)| avx2::takes(s)) {
-            return Some(if approximate {
-                match (d, store) {
-                    (D_LESS, true) => avx2::kernel::<D_LESS, true, true>,
-                    (D_LEQUAL, true) => avx2::kernel::<D_LEQUAL, true, true>,
-                    (D_OFF, true) => avx2::kernel::<D_OFF, true, true>,
-                    (_, true) => avx2::kernel::<D_ANY, true, true>,
-                    (D_LESS, false) => avx2::kernel::<D_LESS, false, true>,
-                    (D_LEQUAL, false) => avx2::kernel::<D_LEQUAL, false, true>,
-                    (D_OFF, false) => avx2::kernel::<D_OFF, false, true>,
-                    _ => avx2::kernel::<D_ANY, false, true>,
-                }
-            } else {
-                match (d, store) {
-                    (D_LESS, true) => avx2::kernel::<D_LESS, true, false>,
-                    (D_LEQUAL, true) => avx2::kernel::<D_LEQUAL, true, false>,
-                    (D_OFF, true) => avx2::kernel::<D_OFF, true, false>,
-                    (_, true) => avx2::kernel::<D_ANY, true, false>,
-                    (D_LESS, false) => avx2::kernel::<D_LESS, false, false>,
-                    (D_LEQUAL, false) => avx2::kernel::<D_LEQUAL, false, false>,
-                    (D_OFF, false) => avx2::kernel::<D_OFF, false, false>,
-                    _ => avx2::kernel::<D_ANY, false, false>,
-                }
-            });
+            return Some(avx2::pick(d, store, approximate));
         }
         return Some(match (d, store) {
             (D_LESS, true) => kernel_avx2::<D_LESS, true>,

@@ -24,12 +24,21 @@
 //! says which); depth stays exact. `tests/reference_diff.rs` bounds its
 //! error against the reference path.
 //!
-//! c / 255 (correctly rounded, as the scalar kernel's division) is
-//! computed as `c HI + c LO` with HI = 257 / 2^16 (c HI is exact) and
-//! LO = 1/255 - HI rounded: equal to the division for every byte (tested),
-//! a multiply and a fused multiply-add instead of a division (the one
-//! FMA here: fma(c, HI, c LO) is that sum rounded once, c HI being exact).
-//! The kernel therefore needs FMA besides AVX2 (`takes` checks).
+//! c / 255 (correctly rounded, as the scalar kernel's division) comes from
+//! integer bits (`unorm`): for a byte c > 0, n = c 0x010101 < 2^24 is
+//! converted exactly, n 2^-24 is an exponent change, and c / 255 =
+//! n 2^-24 (1 + 2^-24 + 2^-48 + ...) lies strictly between n 2^-24 plus
+//! half an ulp and plus one ulp, so it rounds to n 2^-24 plus one ulp:
+//! the float's bits plus 1 - (24 << 23). `vpshufb` builds n from a packed
+//! texel (bytes c, c, c, 0). Tested for every byte in every channel.
+//! The kernel needs FMA besides AVX2 (`takes` checks; the GL_FASTEST
+//! kernel's polynomials may use it).
+//!
+//! `span_wide` (CPUs with AVX-512 F, VL, BW, DQ) is the same kernel with
+//! the f64 lanes in one 512-bit register, the two rows of a bilinear
+//! footprint converted and lerped across in 16 lanes at once, and λ's
+//! log2 in one register (`Isa`): the same operations lane by lane, so the
+//! same bits as `span` (tests run both).
 //!
 //! Taken: the states `super::select` takes whose per-level filter is the
 //! same on both sides of the magnification switch (mag LINEAR with min
@@ -42,7 +51,7 @@
 //! pixels and the last pixels of a span (fewer than 8) go through the
 //! scalar kernel.
 
-use super::super::fast::{D_ANY, D_LEQUAL, D_LESS, D_OFF};
+use super::super::fast::{Kernel, D_ANY, D_LEQUAL, D_LESS, D_OFF};
 use super::super::{write_color, FragmentState, SpanPixels};
 use super::{same_plane, EnvFn, Level, Sampler};
 use crate::framebuffer::DEPTH_MAX;
@@ -54,9 +63,9 @@ use std::arch::x86_64::*;
 
 const SCALAR_LOADS: bool = true;
 
-/// c / 255 = c HI + c LO for bytes c (see the module documentation).
-const HI: f32 = 257.0 / 65536.0;
-const LO: f32 = (1.0f64 / 255.0 - 257.0 / 65536.0) as f32;
+/// Added to the bits of float(c 0x010101) to give c / 255 (`unorm`):
+/// 2^-24 (the exponent down by 24) and one ulp up.
+const UNORM_BITS: i32 = 1 - (24 << 23);
 
 /// How a span's lanes pick their levels.
 #[derive(Clone, Copy, PartialEq)]
@@ -100,13 +109,80 @@ pub(super) fn takes(s: &UnitSampler) -> bool {
     std::arch::is_x86_feature_detected!("fma") && plan(&Sampler::new(s)).is_some()
 }
 
-/// `FX`: GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST, so texturing
-/// may be approximated (`fixed_color`).
-pub(super) fn kernel<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+/// The kernel for a depth key, whether colours are stored as they are,
+/// and `fx`: GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST, so
+/// texturing may be approximated (`fastest`). AVX-512 (`span_wide`) when
+/// the CPU has it, unless a test asked for AVX2 on this thread.
+pub(super) fn pick(d: u8, store: bool, fx: bool) -> Kernel {
+    if wide() && !NARROW_HERE.with(|c| c.get()) {
+        pick_in::<true>(d, store, fx)
+    } else {
+        pick_in::<false>(d, store, fx)
+    }
+}
+
+fn pick_in<const W: bool>(d: u8, store: bool, fx: bool) -> Kernel {
+    match (d, store, fx) {
+        (D_LESS, true, true) => kernel::<D_LESS, true, true, W>,
+        (D_LEQUAL, true, true) => kernel::<D_LEQUAL, true, true, W>,
+        (D_OFF, true, true) => kernel::<D_OFF, true, true, W>,
+        (_, true, true) => kernel::<D_ANY, true, true, W>,
+        (D_LESS, false, true) => kernel::<D_LESS, false, true, W>,
+        (D_LEQUAL, false, true) => kernel::<D_LEQUAL, false, true, W>,
+        (D_OFF, false, true) => kernel::<D_OFF, false, true, W>,
+        (_, false, true) => kernel::<D_ANY, false, true, W>,
+        (D_LESS, true, false) => kernel::<D_LESS, true, false, W>,
+        (D_LEQUAL, true, false) => kernel::<D_LEQUAL, true, false, W>,
+        (D_OFF, true, false) => kernel::<D_OFF, true, false, W>,
+        (_, true, false) => kernel::<D_ANY, true, false, W>,
+        (D_LESS, false, false) => kernel::<D_LESS, false, false, W>,
+        (D_LEQUAL, false, false) => kernel::<D_LEQUAL, false, false, W>,
+        (D_OFF, false, false) => kernel::<D_OFF, false, false, W>,
+        _ => kernel::<D_ANY, false, false, W>,
+    }
+}
+
+thread_local! {
+    /// Tests: select the AVX2 form on this thread even where AVX-512 is.
+    static NARROW_HERE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Makes textured kernel selection on the calling thread take the AVX2
+/// form (`span`) even on CPUs with AVX-512: for differential tests.
+pub(super) fn force_avx2_on_this_thread(on: bool) {
+    NARROW_HERE.with(|c| c.set(on));
+}
+
+fn kernel<const D: u8, const STORE: bool, const FX: bool, const W: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     // SAFETY: `super::select` hands this out only at simd::Level::Avx2,
     // which is only reported when the CPU has AVX2, and when `takes`
-    // found FMA.
-    unsafe { span::<D, STORE, FX>(fs, t, px, y, x0, x1) }
+    // found FMA; W only when `wide` found AVX-512 F, VL, BW and DQ.
+    unsafe {
+        if W {
+            span_wide::<D, STORE, FX>(fs, t, px, y, x0, x1)
+        } else {
+            span::<D, STORE, FX>(fs, t, px, y, x0, x1)
+        }
+    }
+}
+
+/// Whether the CPU has AVX-512 (F, VL, BW, DQ) and `SOFTGL_SIMD` does not
+/// ask for `avx2`: the kernel then runs as `span_wide` (see `Isa`).
+fn wide() -> bool {
+    use std::sync::atomic::{AtomicU8, Ordering};
+    static WIDE: AtomicU8 = AtomicU8::new(0);
+    match WIDE.load(Ordering::Relaxed) {
+        1 => return false,
+        2 => return true,
+        _ => {}
+    }
+    let has = std::arch::is_x86_feature_detected!("avx512f")
+        && std::arch::is_x86_feature_detected!("avx512vl")
+        && std::arch::is_x86_feature_detected!("avx512bw")
+        && std::arch::is_x86_feature_detected!("avx512dq")
+        && std::env::var("SOFTGL_SIMD").as_deref() != Ok("avx2");
+    WIDE.store(1 + has as u8, Ordering::Relaxed);
+    has
 }
 
 /// Pixels [a, b) of the span through the scalar kernel.
@@ -130,31 +206,214 @@ type Rgba = [__m256; 4];
 // are only called from `span` (AVX2), into which they are inlined, and
 // the intrinsics with them (a `target_feature` helper may stay a call).
 
-/// A plane's row term plus slope times the pixel centres, as `Row::at`.
-#[inline(always)]
-unsafe fn at8(r: f64, dx: f64, c: &D8) -> D8 {
-    let (r, dx) = (_mm256_set1_pd(r), _mm256_set1_pd(dx));
-    [_mm256_add_pd(r, _mm256_mul_pd(dx, c[0])), _mm256_add_pd(r, _mm256_mul_pd(dx, c[1]))]
+/// The instruction set a span runs with, as its eight f64 lanes (the
+/// group's pixels): two AVX2 registers (`D8`, `span`) or one AVX-512
+/// register (`span_wide`), with the steps that have a wider form. Both
+/// forms run the same IEEE operation on each lane (separate multiplies and
+/// adds, as the scalar kernel), so they give the same bits; the wide one
+/// in fewer instructions.
+trait Isa: Copy {
+    /// The AVX-512 form (`span_wide`).
+    const WIDE: bool;
+    /// `lod::log2_8`.
+    unsafe fn log2(x: __m256) -> __m256;
+    /// `filter_pairs`.
+    unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba;
+    /// GL_FASTEST: `filter_fixed`.
+    unsafe fn filter_fixed(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) -> __m256i;
+    /// GL_FASTEST: packed RGBA8 lanes a + (b - a) w / 256 rounded (`lerp16`),
+    /// w (i32 lanes) in [0, 256].
+    unsafe fn lerp_packed(a: __m256i, b: __m256i, w: __m256i) -> __m256i;
+    /// GL_FASTEST MODULATE: round(t c / 255) per channel of packed lanes.
+    unsafe fn modulate(t: __m256i, c: __m256i) -> __m256i;
+    /// The pixel centres x + 0..7 + 1/2 - x0 (`Row::at`'s argument).
+    unsafe fn centres(x: f64, x0: f64) -> Self;
+    unsafe fn splat(v: f64) -> Self;
+    /// r + dx c per lane, as `Row::at`.
+    unsafe fn at(r: f64, dx: f64, c: &Self) -> Self;
+    unsafe fn mul(&self, b: &Self) -> Self;
+    /// 1 / v.
+    unsafe fn recip(&self) -> Self;
+    /// Rounded to f32 (`as f32`).
+    unsafe fn to_f32(&self) -> __m256;
+    /// ((d - self qd) iq) as f32: a coordinate's derivative.
+    unsafe fn deriv(&self, d: f64, qd: f64, iq: &Self) -> __m256;
+    /// `depth_to_fixed`: (min(max(v, 0), 1) DEPTH_MAX + 1/2) truncated
+    /// (a NaN gives 0).
+    unsafe fn depth(&self) -> __m256i;
+    /// Every lane non-zero and finite.
+    unsafe fn nonzero_finite(&self) -> bool;
 }
 
-#[inline(always)]
-unsafe fn mul8(a: &D8, b: &D8) -> D8 {
-    [_mm256_mul_pd(a[0], b[0]), _mm256_mul_pd(a[1], b[1])]
+impl Isa for D8 {
+    const WIDE: bool = false;
+
+    #[inline(always)]
+    unsafe fn log2(x: __m256) -> __m256 {
+        lod::log2_8(x)
+    }
+
+    #[inline(always)]
+    unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
+        filter_pairs(p, l, s, t, rep)
+    }
+
+    #[inline(always)]
+    unsafe fn filter_fixed(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) -> __m256i {
+        filter_fixed(p, l, s, t, linear, rep)
+    }
+
+    #[inline(always)]
+    unsafe fn lerp_packed(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
+        lerp_packed(a, b, w)
+    }
+
+    #[inline(always)]
+    unsafe fn modulate(t: __m256i, c: __m256i) -> __m256i {
+        modulate(t, c)
+    }
+
+    #[inline(always)]
+    unsafe fn centres(x: f64, x0: f64) -> Self {
+        let (xs, half, x0) = (_mm256_set1_pd(x), _mm256_set1_pd(0.5), _mm256_set1_pd(x0));
+        [
+            _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(0.0, 1.0, 2.0, 3.0)), half), x0),
+            _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(4.0, 5.0, 6.0, 7.0)), half), x0),
+        ]
+    }
+
+    #[inline(always)]
+    unsafe fn splat(v: f64) -> Self {
+        [_mm256_set1_pd(v); 2]
+    }
+
+    #[inline(always)]
+    unsafe fn at(r: f64, dx: f64, c: &Self) -> Self {
+        let (r, dx) = (_mm256_set1_pd(r), _mm256_set1_pd(dx));
+        [_mm256_add_pd(r, _mm256_mul_pd(dx, c[0])), _mm256_add_pd(r, _mm256_mul_pd(dx, c[1]))]
+    }
+
+    #[inline(always)]
+    unsafe fn mul(&self, b: &Self) -> Self {
+        [_mm256_mul_pd(self[0], b[0]), _mm256_mul_pd(self[1], b[1])]
+    }
+
+    #[inline(always)]
+    unsafe fn recip(&self) -> Self {
+        let one = _mm256_set1_pd(1.0);
+        [_mm256_div_pd(one, self[0]), _mm256_div_pd(one, self[1])]
+    }
+
+    #[inline(always)]
+    unsafe fn to_f32(&self) -> __m256 {
+        _mm256_set_m128(_mm256_cvtpd_ps(self[1]), _mm256_cvtpd_ps(self[0]))
+    }
+
+    #[inline(always)]
+    unsafe fn deriv(&self, d: f64, qd: f64, iq: &Self) -> __m256 {
+        let (d, qd) = (_mm256_set1_pd(d), _mm256_set1_pd(qd));
+        let lo = _mm256_mul_pd(_mm256_sub_pd(d, _mm256_mul_pd(self[0], qd)), iq[0]);
+        let hi = _mm256_mul_pd(_mm256_sub_pd(d, _mm256_mul_pd(self[1], qd)), iq[1]);
+        [lo, hi].to_f32()
+    }
+
+    #[inline(always)]
+    unsafe fn depth(&self) -> __m256i {
+        let (zero, one, scale, half) = (_mm256_setzero_pd(), _mm256_set1_pd(1.0), _mm256_set1_pd(DEPTH_MAX as f64), _mm256_set1_pd(0.5));
+        // max(v, 0): NaN gives 0, as the scalar clamp-then-cast.
+        let lo = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(_mm256_min_pd(_mm256_max_pd(self[0], zero), one), scale), half));
+        let hi = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(_mm256_min_pd(_mm256_max_pd(self[1], zero), one), scale), half));
+        _mm256_set_m128i(hi, lo)
+    }
+
+    #[inline(always)]
+    unsafe fn nonzero_finite(&self) -> bool {
+        let (zero, inf, nz) = (_mm256_setzero_pd(), _mm256_set1_pd(f64::INFINITY), _mm256_set1_pd(-0.0));
+        let nonzero = all_pd(_mm256_cmp_pd::<_CMP_NEQ_OQ>(self[0], zero), _mm256_cmp_pd::<_CMP_NEQ_OQ>(self[1], zero));
+        let finite = all_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(_mm256_andnot_pd(nz, self[0]), inf), _mm256_cmp_pd::<_CMP_LT_OQ>(_mm256_andnot_pd(nz, self[1]), inf));
+        nonzero && finite
+    }
 }
 
-/// f64 lanes to f32 (rounded to nearest, as `as f32`).
-#[inline(always)]
-unsafe fn to_f32(a: &D8) -> __m256 {
-    _mm256_set_m128(_mm256_cvtpd_ps(a[1]), _mm256_cvtpd_ps(a[0]))
-}
+/// The AVX-512 form: only instantiated by `span_wide` (AVX-512 F and DQ).
+impl Isa for __m512d {
+    const WIDE: bool = true;
 
-/// `((d - v * qd) * iq) as f32`: a coordinate's derivative.
-#[inline(always)]
-unsafe fn deriv(d: f64, v: &D8, qd: f64, iq: &D8) -> __m256 {
-    let (d, qd) = (_mm256_set1_pd(d), _mm256_set1_pd(qd));
-    let lo = _mm256_mul_pd(_mm256_sub_pd(d, _mm256_mul_pd(v[0], qd)), iq[0]);
-    let hi = _mm256_mul_pd(_mm256_sub_pd(d, _mm256_mul_pd(v[1], qd)), iq[1]);
-    to_f32(&[lo, hi])
+    #[inline(always)]
+    unsafe fn log2(x: __m256) -> __m256 {
+        lod::log2_8_wide(x)
+    }
+
+    #[inline(always)]
+    unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
+        filter_pairs_wide(p, l, s, t, rep)
+    }
+
+    #[inline(always)]
+    unsafe fn filter_fixed(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) -> __m256i {
+        filter_fixed_wide(p, l, s, t, linear, rep)
+    }
+
+    #[inline(always)]
+    unsafe fn lerp_packed(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
+        narrow_z(lerp16z(widen_z(a), widen_z(b), weights_z(w)))
+    }
+
+    #[inline(always)]
+    unsafe fn modulate(t: __m256i, c: __m256i) -> __m256i {
+        let x = _mm512_add_epi16(_mm512_mullo_epi16(widen_z(t), widen_z(c)), _mm512_set1_epi16(128));
+        narrow_z(_mm512_srli_epi16::<8>(_mm512_add_epi16(x, _mm512_srli_epi16::<8>(x))))
+    }
+
+    #[inline(always)]
+    unsafe fn centres(x: f64, x0: f64) -> Self {
+        let steps = _mm512_setr_pd(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
+        _mm512_sub_pd(_mm512_add_pd(_mm512_add_pd(_mm512_set1_pd(x), steps), _mm512_set1_pd(0.5)), _mm512_set1_pd(x0))
+    }
+
+    #[inline(always)]
+    unsafe fn splat(v: f64) -> Self {
+        _mm512_set1_pd(v)
+    }
+
+    #[inline(always)]
+    unsafe fn at(r: f64, dx: f64, c: &Self) -> Self {
+        _mm512_add_pd(_mm512_set1_pd(r), _mm512_mul_pd(_mm512_set1_pd(dx), *c))
+    }
+
+    #[inline(always)]
+    unsafe fn mul(&self, b: &Self) -> Self {
+        _mm512_mul_pd(*self, *b)
+    }
+
+    #[inline(always)]
+    unsafe fn recip(&self) -> Self {
+        _mm512_div_pd(_mm512_set1_pd(1.0), *self)
+    }
+
+    #[inline(always)]
+    unsafe fn to_f32(&self) -> __m256 {
+        _mm512_cvtpd_ps(*self)
+    }
+
+    #[inline(always)]
+    unsafe fn deriv(&self, d: f64, qd: f64, iq: &Self) -> __m256 {
+        _mm512_cvtpd_ps(_mm512_mul_pd(_mm512_sub_pd(_mm512_set1_pd(d), _mm512_mul_pd(*self, _mm512_set1_pd(qd))), *iq))
+    }
+
+    #[inline(always)]
+    unsafe fn depth(&self) -> __m256i {
+        // max(v, 0): NaN gives 0 (vmaxpd returns the second operand).
+        let v = _mm512_min_pd(_mm512_max_pd(*self, _mm512_setzero_pd()), _mm512_set1_pd(1.0));
+        _mm512_cvttpd_epi32(_mm512_add_pd(_mm512_mul_pd(v, _mm512_set1_pd(DEPTH_MAX as f64)), _mm512_set1_pd(0.5)))
+    }
+
+    #[inline(always)]
+    unsafe fn nonzero_finite(&self) -> bool {
+        let nonzero = _mm512_cmp_pd_mask::<_CMP_NEQ_OQ>(*self, _mm512_setzero_pd());
+        let finite = _mm512_cmp_pd_mask::<_CMP_LT_OQ>(_mm512_andnot_pd(_mm512_set1_pd(-0.0), *self), _mm512_set1_pd(f64::INFINITY));
+        nonzero & finite == 0xFF
+    }
 }
 
 /// min(max(v, 0), 1): NaN gives 0 (glam's clamp and `to_u8`).
@@ -168,25 +427,49 @@ unsafe fn lerp(a: __m256, b: __m256, t: __m256) -> __m256 {
     _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), t))
 }
 
-/// Bytes (as i32 lanes) to c / 255.
+/// c 0x010101 (i32 lanes, c a byte) to c / 255 (see the module
+/// documentation): convert, exponent down by 24 and one ulp up; c = 0
+/// gives a negative number there, which the max makes +0.
 #[inline(always)]
-unsafe fn unorm(c: __m256i) -> __m256 {
-    let f = _mm256_cvtepi32_ps(c);
-    // fma(c, HI, c LO) rounds c HI + (c LO rounded) once, as the add does:
-    // c HI is exact (c 257 < 2^24), so the product needs no rounding.
-    _mm256_fmadd_ps(f, _mm256_set1_ps(HI), _mm256_mul_ps(f, _mm256_set1_ps(LO)))
+unsafe fn unorm(n: __m256i) -> __m256 {
+    let b = _mm256_add_epi32(_mm256_castps_si256(_mm256_cvtepi32_ps(n)), _mm256_set1_epi32(UNORM_BITS));
+    _mm256_castsi256_ps(_mm256_max_epi32(b, _mm256_setzero_si256()))
+}
+
+/// The `vpshufb` control taking byte K of each 32-bit lane to bytes 0, 1,
+/// 2 and zeroing byte 3: c 0x010101 from channel K.
+const fn spread(k: i32) -> [i32; 4] {
+    const fn w(d: i32, k: i32) -> i32 {
+        (4 * d + k) * 0x010101 | i32::MIN
+    }
+    [w(0, k), w(1, k), w(2, k), w(3, k)]
+}
+const SPREAD: [[i32; 4]; 4] = [spread(0), spread(1), spread(2), spread(3)];
+
+/// Channel `k` of packed RGBA8 lanes as c 0x010101.
+#[inline(always)]
+unsafe fn spread8(v: __m256i, k: usize) -> __m256i {
+    let [a, b, c, d] = SPREAD[k];
+    _mm256_shuffle_epi8(v, _mm256_setr_epi32(a, b, c, d, a, b, c, d))
 }
 
 /// Eight RGBA8 texels to four channels of c / 255.
 #[inline(always)]
 unsafe fn channels(v: __m256i) -> Rgba {
-    let ff = _mm256_set1_epi32(0xFF);
-    [
-        unorm(_mm256_and_si256(v, ff)),
-        unorm(_mm256_and_si256(_mm256_srli_epi32::<8>(v), ff)),
-        unorm(_mm256_and_si256(_mm256_srli_epi32::<16>(v), ff)),
-        unorm(_mm256_srli_epi32::<24>(v)),
-    ]
+    [unorm(spread8(v, 0)), unorm(spread8(v, 1)), unorm(spread8(v, 2)), unorm(spread8(v, 3))]
+}
+
+/// `channels` of sixteen texels (AVX-512 BW).
+#[inline(always)]
+unsafe fn channels16(v: __m512i) -> [__m512; 4] {
+    let mut out = [_mm512_setzero_ps(); 4];
+    for k in 0..4 {
+        let [a, b, c, d] = SPREAD[k];
+        let n = _mm512_shuffle_epi8(v, _mm512_setr_epi32(a, b, c, d, a, b, c, d, a, b, c, d, a, b, c, d));
+        let bits = _mm512_add_epi32(_mm512_castps_si512(_mm512_cvtepi32_ps(n)), _mm512_set1_epi32(UNORM_BITS));
+        out[k] = _mm512_castsi512_ps(_mm512_max_epi32(bits, _mm512_setzero_si512()));
+    }
+    out
 }
 
 /// REPEAT (power-of-two n) or CLAMP_TO_EDGE of indices into [0, n).
@@ -271,6 +554,15 @@ unsafe fn filter(l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) 
 /// the same texels `filter` reads through its four wraps.
 #[inline(always)]
 unsafe fn pairs(p: &PaddedLevel, l: &Level, i0: __m256i, j0: __m256i, rep: [bool; 2]) -> [__m256i; 4] {
+    let (r0, r1) = rows(p, l, i0, j0, rep);
+    let ((c00, c01), (c10, c11)) = (split(r0), split(r1));
+    [c00, c01, c10, c11]
+}
+
+/// The footprint's rows j0 and j0 + 1 as 64-bit elements (the texel pair
+/// of each lane, lanes 0-3 then 4-7), for `pairs`.
+#[inline(always)]
+unsafe fn rows(p: &PaddedLevel, l: &Level, i0: __m256i, j0: __m256i, rep: [bool; 2]) -> ([__m256i; 2], [__m256i; 2]) {
     let m1 = _mm256_set1_epi32(-1);
     // REPEAT: i0 mod w; CLAMP_TO_EDGE: clamp(i0, -1, w - 1) (the padding
     // holds the edge texel at -1 and w).
@@ -298,8 +590,7 @@ unsafe fn pairs(p: &PaddedLevel, l: &Level, i0: __m256i, j0: __m256i, rep: [bool
             [_mm256_i32gather_epi64::<4>(base, _mm256_castsi256_si128(off1)), _mm256_i32gather_epi64::<4>(base, _mm256_extracti128_si256::<1>(off1))],
         )
     };
-    let ((c00, c01), (c10, c11)) = (split(r0), split(r1));
-    [c00, c01, c10, c11]
+    (r0, r1)
 }
 
 /// [a0 b0 a1 b1 | a2 b2 a3 b3], [a4 b4 ..] -> [a0 .. a7], [b0 .. b7].
@@ -316,6 +607,31 @@ unsafe fn split(r: [__m256i; 2]) -> (__m256i, __m256i) {
 unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
     let (i0, j0, wa, wb) = footprint(l, s, t);
     blend(pairs(p, l, i0, j0, rep), wa, wb)
+}
+
+/// `filter_pairs` in 16 lanes (AVX-512 F, BW, DQ): the left texels of both
+/// rows [top-left | bottom-left] and the right ones [top-right |
+/// bottom-right] in one register each, so their conversion and the lerp
+/// across by `wa` run once for both rows; then the lerp down by `wb` in 8
+/// lanes. Lane by lane the operations of `blend`.
+#[inline(always)]
+unsafe fn filter_pairs_wide(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
+    let (i0, j0, wa, wb) = footprint(l, s, t);
+    let (r0, r1) = rows(p, l, i0, j0, rep);
+    let (r0, r1) = (_mm512_inserti64x4::<1>(_mm512_castsi256_si512(r0[0]), r0[1]), _mm512_inserti64x4::<1>(_mm512_castsi256_si512(r1[0]), r1[1]));
+    // Each 64-bit element is (texel i0, texel i0 + 1): the even 32-bit
+    // halves of both rows are the left texels, the odd ones the right.
+    let even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    let odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
+    let (left, right) = (channels16(_mm512_permutex2var_epi32(r0, even, r1)), channels16(_mm512_permutex2var_epi32(r0, odd, r1)));
+    let wa2 = _mm512_insertf32x8::<1>(_mm512_castps256_ps512(wa), wa);
+    let mut out = [_mm256_setzero_ps(); 4];
+    for c in 0..4 {
+        // [top | bottom] = left + (right - left) wa.
+        let tb = _mm512_add_ps(left[c], _mm512_mul_ps(_mm512_sub_ps(right[c], left[c]), wa2));
+        out[c] = lerp(_mm512_castps512_ps256(tb), _mm512_extractf32x8_ps::<1>(tb), wb);
+    }
+    out
 }
 
 /// 16-bit halves of packed RGBA8 lanes: pixels 0, 1, 4, 5 and 2, 3, 6, 7
@@ -352,6 +668,71 @@ unsafe fn lerp16(a: Half16, b: Half16, w: Half16) -> Half16 {
 unsafe fn lerp16h(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
     let s = _mm256_add_epi16(_mm256_mullo_epi16(a, _mm256_sub_epi16(_mm256_set1_epi16(256), w)), _mm256_mullo_epi16(b, w));
     _mm256_srli_epi16::<8>(_mm256_add_epi16(s, _mm256_set1_epi16(128)))
+}
+
+/// `Isa::lerp_packed` in 16-bit halves.
+#[inline(always)]
+unsafe fn lerp_packed(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
+    narrow(lerp16(widen(a), widen(b), weights16(w)))
+}
+
+/// `Isa::modulate` in 16-bit halves: round(t c / 255) = (x + x / 256) /
+/// 256 with x = t c + 128.
+#[inline(always)]
+unsafe fn modulate(t: __m256i, c: __m256i) -> __m256i {
+    let (t16, c16) = (widen(t), widen(c));
+    let k128 = _mm256_set1_epi16(128);
+    let x = [_mm256_add_epi16(_mm256_mullo_epi16(t16[0], c16[0]), k128), _mm256_add_epi16(_mm256_mullo_epi16(t16[1], c16[1]), k128)];
+    narrow([
+        _mm256_srli_epi16::<8>(_mm256_add_epi16(x[0], _mm256_srli_epi16::<8>(x[0]))),
+        _mm256_srli_epi16::<8>(_mm256_add_epi16(x[1], _mm256_srli_epi16::<8>(x[1]))),
+    ])
+}
+
+/// The AVX-512 BW forms of the 16-bit steps: a pixel's four channels as
+/// 16-bit lanes of one register (all eight pixels in one), the same
+/// integer operations lane by lane as `lerp16h` and `modulate`.
+#[inline(always)]
+unsafe fn widen_z(v: __m256i) -> __m512i {
+    _mm512_cvtepu8_epi16(v)
+}
+
+/// Lanes <= 255 back to bytes.
+#[inline(always)]
+unsafe fn narrow_z(v: __m512i) -> __m256i {
+    _mm512_cvtepi16_epi8(v)
+}
+
+/// Per-pixel weights (i32 lanes, <= 256) on each of the pixel's four
+/// 16-bit lanes.
+#[inline(always)]
+unsafe fn weights_z(w: __m256i) -> __m512i {
+    // 16-bit lane 4p + c takes lane 2p (pixel p's low half).
+    const IDX: [i16; 32] = [0, 0, 0, 0, 2, 2, 2, 2, 4, 4, 4, 4, 6, 6, 6, 6, 8, 8, 8, 8, 10, 10, 10, 10, 12, 12, 12, 12, 14, 14, 14, 14];
+    _mm512_permutexvar_epi16(_mm512_loadu_si512(IDX.as_ptr().cast()), _mm512_castsi256_si512(w))
+}
+
+#[inline(always)]
+unsafe fn lerp16z(a: __m512i, b: __m512i, w: __m512i) -> __m512i {
+    let s = _mm512_add_epi16(_mm512_mullo_epi16(a, _mm512_sub_epi16(_mm512_set1_epi16(256), w)), _mm512_mullo_epi16(b, w));
+    _mm512_srli_epi16::<8>(_mm512_add_epi16(s, _mm512_set1_epi16(128)))
+}
+
+/// `filter_fixed` with the lerps in one AVX-512 register.
+#[inline(always)]
+unsafe fn filter_fixed_wide(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) -> __m256i {
+    if !linear {
+        return nearest(l, s, t, rep);
+    }
+    let k128 = _mm256_set1_ps(128.0);
+    let a = _mm256_cvtps_epi32(_mm256_sub_ps(_mm256_mul_ps(s, _mm256_set1_ps(l.wf * 256.0)), k128));
+    let b = _mm256_cvtps_epi32(_mm256_sub_ps(_mm256_mul_ps(t, _mm256_set1_ps(l.hf * 256.0)), k128));
+    let ff = _mm256_set1_epi32(0xFF);
+    let (wa, wb) = (weights_z(_mm256_and_si256(a, ff)), weights_z(_mm256_and_si256(b, ff)));
+    let [c00, c01, c10, c11] = pairs(p, l, _mm256_srai_epi32::<8>(a), _mm256_srai_epi32::<8>(b), rep);
+    let top = lerp16z(widen_z(c00), widen_z(c01), wa);
+    let bottom = lerp16z(widen_z(c10), widen_z(c11), wa);
+    narrow_z(lerp16z(top, bottom, wb))
 }
 
 /// GL_FASTEST bilinear filtering (llvmpipe's way): the coordinates in
@@ -422,9 +803,9 @@ unsafe fn to_byte(v: __m256) -> __m256i {
 /// Level `l` filtered at (s, t) (`filter`), through the padded copy when
 /// there is one and the filter is LINEAR.
 #[inline(always)]
-unsafe fn level_filter(k: &Ctx, l: usize, s: __m256, t: __m256) -> Rgba {
+unsafe fn level_filter<L: Isa>(k: &Ctx, l: usize, s: __m256, t: __m256) -> Rgba {
     match k.pad {
-        Some(p) if k.linear => filter_pairs(&p.levels[l], &k.smp.levels[l], s, t, k.smp.repeat),
+        Some(p) if k.linear => L::filter_pairs(&p.levels[l], &k.smp.levels[l], s, t, k.smp.repeat),
         _ => filter(&k.smp.levels[l], s, t, k.linear, k.smp.repeat),
     }
 }
@@ -451,9 +832,9 @@ unsafe fn pack_bytes(col: &Rgba) -> __m256i {
 /// ends, coordinates beyond ±2^22 texels, ρ or λ not finite.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-unsafe fn fastest<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], m: __m256i, bits: u32, z: __m256i, stored: __m256i) -> Option<u32> {
+unsafe fn fastest<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], m: __m256i, bits: u32, z: __m256i, stored: __m256i) -> Option<Front> {
     let smp = k.smp;
-    let pad = k.pad?;
+    k.pad?;
     let cx = x as f64 + 0.5 - k.x0;
     let at = |r: (f64, f64), cx: f64| r.0 + r.1 * cx;
     let (qa, qb) = (at(k.q, cx), at(k.q, cx + 8.0));
@@ -512,44 +893,50 @@ unsafe fn fastest<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u3
         let lambda = _mm256_add_ps(_mm256_set1_ps(l0), _mm256_mul_ps(_mm256_set1_ps((l8 - l0) * 0.125), steps));
         (la, frac) = levels(k, lambda);
     }
+    if D != D_OFF && (D != D_ANY || k.fs.depth_write) {
+        _mm256_storeu_si256(dp.cast(), _mm256_blendv_epi8(stored, z, m));
+    }
+    Some(Front { sf, tf, la, frac, primary, fog: _mm256_setzero_ps(), m, bits, cp })
+}
+
+/// The rest of a GL_FASTEST group after `fastest` (as `back` after
+/// `front`): texels, MODULATE or REPLACE, the colours written.
+#[inline(always)]
+unsafe fn fastest_back<const STORE: bool, L: Isa>(k: &Ctx, g: &Front) {
+    let smp = k.smp;
+    let Some(pad) = k.pad else { return };
+    let Front { sf, tf, la, frac, primary, m, bits, cp, .. } = *g;
     // Texels: once per distinct level among the passing lanes.
-    let frac8 = weights16(_mm256_cvtps_epi32(_mm256_mul_ps(frac, _mm256_set1_ps(256.0))));
+    let frac8 = _mm256_cvtps_epi32(_mm256_mul_ps(frac, _mm256_set1_ps(256.0)));
     let mut texel = _mm256_setzero_si256();
     let mut lv = [0i32; 8];
     _mm256_storeu_si256(lv.as_mut_ptr().cast(), la);
     let mut pending = bits;
     let weighted_lanes = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_NEQ_UQ>(frac, _mm256_setzero_ps()));
+    // Levels in rising order (`next_level`); the second level of lanes
+    // straddling l and l + 1 is carried to the lanes whose first it is.
+    let (mut carried, mut carry) = (usize::MAX, _mm256_setzero_si256());
     while pending != 0 {
-        let l = lv[pending.trailing_zeros() as usize] as usize;
+        let l = next_level(&lv, pending) as usize;
         let same = _mm256_cmpeq_epi32(la, _mm256_set1_epi32(l as i32));
         let lanes = _mm256_movemask_ps(_mm256_castsi256_ps(same)) as u32 & pending;
         pending &= !lanes;
-        let mut v = filter_fixed(&pad.levels[l], &smp.levels[l], sf, tf, k.linear, smp.repeat);
+        let mut v = if l == carried { carry } else { L::filter_fixed(&pad.levels[l], &smp.levels[l], sf, tf, k.linear, smp.repeat) };
         let weighted = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_and_si256(weighted_lanes, same))) as u32 & lanes;
         if k.lod_mode == Lod::Linear && weighted != 0 && l < smp.q {
-            let v2 = filter_fixed(&pad.levels[l + 1], &smp.levels[l + 1], sf, tf, k.linear, smp.repeat);
-            v = narrow(lerp16(widen(v), widen(v2), frac8));
+            let v2 = L::filter_fixed(&pad.levels[l + 1], &smp.levels[l + 1], sf, tf, k.linear, smp.repeat);
+            if pending != 0 {
+                (carried, carry) = (l + 1, v2);
+            }
+            v = L::lerp_packed(v, v2, frac8);
         }
         texel = if lanes == bits { v } else { _mm256_blendv_epi8(texel, v, same) };
     }
-    if D != D_OFF && (D != D_ANY || k.fs.depth_write) {
-        _mm256_storeu_si256(dp.cast(), _mm256_blendv_epi8(stored, z, m));
-    }
     let rgba = match k.env {
         EnvFn::Replace { .. } => texel,
-        _ => {
-            // round(t c / 255) = (x + x / 256) / 256 with x = t c + 128.
-            let (t16, c16) = (widen(texel), widen(pack_bytes(&primary)));
-            let k128 = _mm256_set1_epi16(128);
-            let x = [_mm256_add_epi16(_mm256_mullo_epi16(t16[0], c16[0]), k128), _mm256_add_epi16(_mm256_mullo_epi16(t16[1], c16[1]), k128)];
-            narrow([
-                _mm256_srli_epi16::<8>(_mm256_add_epi16(x[0], _mm256_srli_epi16::<8>(x[0]))),
-                _mm256_srli_epi16::<8>(_mm256_add_epi16(x[1], _mm256_srli_epi16::<8>(x[1]))),
-            ])
-        }
+        _ => L::modulate(texel, pack_bytes(&primary)),
     };
     write::<STORE>(k, cp, rgba, m, bits);
-    Some(bits.count_ones())
 }
 
 /// λ at pixel centre `cx` (relative to the triangle's x0) as the
@@ -569,8 +956,14 @@ fn lambda_at(k: &Ctx, cx: f64) -> Option<f32> {
         return None;
     }
     let log2 = if rho2 >= f32::MIN_POSITIVE { log2_approx(rho2) } else { lod::log2(rho2) };
-    let l = (0.5 * log2 + smp.bias).clamp(smp.min_lod, smp.max_lod);
-    (!l.is_nan()).then_some(l)
+    // `clamp` (min_lod <= max_lod: `super::select` checks) written out:
+    // f32::clamp stayed a call here.
+    let l = 0.5 * log2 + smp.bias;
+    if l.is_nan() {
+        None
+    } else {
+        Some(l.max(smp.min_lod).min(smp.max_lod))
+    }
 }
 
 /// log2 x for positive normal finite x, within 4e-5 (GL_FASTEST's λ,
@@ -649,6 +1042,16 @@ unsafe fn levels(k: &Ctx, lambda: __m256) -> (__m256i, __m256) {
     (la, frac)
 }
 
+/// The next level to filter among the lanes `pending` (not empty): the
+/// lower of the first and the last pending lane's, so that a group whose
+/// levels rise or fall along the span takes them in rising order and
+/// level l + 1, filtered as the second level of l's lanes, is carried to
+/// the lanes whose first level it is.
+#[inline(always)]
+fn next_level(levels: &[i32; 8], pending: u32) -> i32 {
+    levels[pending.trailing_zeros() as usize].min(levels[31 - pending.leading_zeros() as usize])
+}
+
 /// Lanes all true in both halves of an f64 compare.
 #[inline(always)]
 unsafe fn all_pd(a: __m256d, b: __m256d) -> bool {
@@ -691,23 +1094,57 @@ const W_OWN: u8 = 2;
 /// and `cp`, lanes `live` only: the number that passed the depth test, or
 /// None (nothing written) when a lane needs the scalar kernel.
 #[inline(always)]
-unsafe fn group<const D: u8, const STORE: bool, const FX: bool>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Option<u32> {
-    let xs = _mm256_set1_pd(x as f64);
-    let (half, x0) = (_mm256_set1_pd(0.5), _mm256_set1_pd(k.x0));
-    let c: D8 = [
-        _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(0.0, 1.0, 2.0, 3.0)), half), x0),
-        _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(4.0, 5.0, 6.0, 7.0)), half), x0),
-    ];
+unsafe fn group<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Option<u32> {
+    match front::<D, STORE, FX, L>(k, x, dp, cp, live) {
+        Step::Done(n) => Some(n),
+        Step::Scalar => None,
+        Step::Texture(f) => {
+            back::<STORE, FX, L>(k, &f);
+            Some(f.bits.count_ones())
+        }
+    }
+}
+
+/// A group between `front` and `back`: its texture coordinates, levels
+/// and weights, primary colour and fog factor, and which lanes to write.
+#[derive(Clone, Copy)]
+struct Front {
+    sf: __m256,
+    tf: __m256,
+    la: __m256i,
+    frac: __m256,
+    primary: Rgba,
+    fog: __m256,
+    m: __m256i,
+    bits: u32,
+    cp: *mut [u8; 4],
+}
+
+enum Step {
+    /// Nothing to write (no lane passed the depth test).
+    Done(u32),
+    /// Nothing written: the scalar kernel takes the group.
+    Scalar,
+    /// Depth tested and written; `back` textures and writes the colours
+    /// (`fastest_back` under GL_FASTEST).
+    Texture(Front),
+}
+
+/// A group up to its texturing: the depth test and write, s / q and t / q,
+/// λ and the levels, the primary colour and the fog factor (all of
+/// `group` that does not read texels). The span loop runs the next
+/// group's `front` before this group's `back` (pixels of different groups
+/// are disjoint), so that the long dependent chain of one (q, 1 / q, the
+/// derivatives, log2, the levels) overlaps the other's texel loads and
+/// lerps instead of stalling them.
+#[inline(always)]
+unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Step {
+    let c = L::centres(x as f64, k.x0);
     // Depth (section 4.1.6): depth_to_fixed lane by lane.
     let mut m = live;
     let (mut z, mut stored) = (_mm256_setzero_si256(), _mm256_setzero_si256());
     if D != D_OFF {
-        let zv = at8(k.z.0, k.z.1, &c);
-        let (zero, one, scale) = (_mm256_setzero_pd(), _mm256_set1_pd(1.0), _mm256_set1_pd(DEPTH_MAX as f64));
-        // max(v, 0): NaN gives 0, as the scalar clamp-then-cast.
-        let lo = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(_mm256_min_pd(_mm256_max_pd(zv[0], zero), one), scale), half));
-        let hi = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(_mm256_min_pd(_mm256_max_pd(zv[1], zero), one), scale), half));
-        z = _mm256_set_m128i(hi, lo);
+        z = L::at(k.z.0, k.z.1, &c).depth();
         stored = _mm256_loadu_si256(dp.cast());
         let sign = _mm256_set1_epi32(i32::MIN);
         let pass = match D {
@@ -728,26 +1165,23 @@ unsafe fn group<const D: u8, const STORE: bool, const FX: bool>(k: &Ctx, x: usiz
     }
     let bits = _mm256_movemask_ps(_mm256_castsi256_ps(m)) as u32;
     if bits == 0 {
-        return Some(0);
+        return Step::Done(0);
     }
     if FX {
-        return fastest::<D, STORE>(k, x, dp, cp, m, bits, z, stored);
+        return match fastest::<D, STORE>(k, x, dp, cp, m, bits, z, stored) {
+            Some(f) => Step::Texture(f),
+            None => Step::Scalar,
+        };
     }
     // Texture coordinates (reference::textured_color): s / q, t / q.
-    let q = at8(k.q.0, k.q.1, &c);
-    let zero = _mm256_setzero_pd();
-    let inf = _mm256_set1_pd(f64::INFINITY);
-    let nz = _mm256_set1_pd(-0.0);
-    let nonzero = all_pd(_mm256_cmp_pd::<_CMP_NEQ_OQ>(q[0], zero), _mm256_cmp_pd::<_CMP_NEQ_OQ>(q[1], zero));
-    let finite = all_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(_mm256_andnot_pd(nz, q[0]), inf), _mm256_cmp_pd::<_CMP_LT_OQ>(_mm256_andnot_pd(nz, q[1]), inf));
-    if !(nonzero && finite) {
-        return None;
+    let q = L::at(k.q.0, k.q.1, &c);
+    if !q.nonzero_finite() {
+        return Step::Scalar;
     }
-    let one = _mm256_set1_pd(1.0);
-    let iq: D8 = [_mm256_div_pd(one, q[0]), _mm256_div_pd(one, q[1])];
-    let s = mul8(&at8(k.s.0, k.s.1, &c), &iq);
-    let tt = mul8(&at8(k.t.0, k.t.1, &c), &iq);
-    let (sf, tf) = (to_f32(&s), to_f32(&tt));
+    let iq = q.recip();
+    let s = L::at(k.s.0, k.s.1, &c).mul(&iq);
+    let tt = L::at(k.t.0, k.t.1, &c).mul(&iq);
+    let (sf, tf) = (s.to_f32(), tt.to_f32());
     let smp = k.smp;
     let (n0, n1) = (_mm256_set1_ps(smp.levels[0].wf), _mm256_set1_ps(smp.levels[0].hf));
     // Finite and within ±2^22 texels of level 0 (exact floors and
@@ -758,15 +1192,15 @@ unsafe fn group<const D: u8, const STORE: bool, const FX: bool>(k: &Ctx, x: usiz
         _mm256_cmp_ps::<_CMP_LT_OQ>(_mm256_mul_ps(_mm256_andnot_ps(sign, tf), n1), limit),
     );
     if _mm256_movemask_ps(in_range) != 0xFF {
-        return None;
+        return Step::Scalar;
     }
     // Level of detail (3.8.8) and each lane's level and weight.
     let (mut la, mut frac) = (_mm256_setzero_si256(), _mm256_setzero_ps());
     if k.lod_mode != Lod::None {
-        let dx0 = _mm256_mul_ps(deriv(k.s.1, &s, k.q.1, &iq), n0);
-        let dx1 = _mm256_mul_ps(deriv(k.t.1, &tt, k.q.1, &iq), n1);
-        let dy0 = _mm256_mul_ps(deriv(k.dy[0], &s, k.dy[2], &iq), n0);
-        let dy1 = _mm256_mul_ps(deriv(k.dy[1], &tt, k.dy[2], &iq), n1);
+        let dx0 = _mm256_mul_ps(s.deriv(k.s.1, k.q.1, &iq), n0);
+        let dx1 = _mm256_mul_ps(tt.deriv(k.t.1, k.q.1, &iq), n1);
+        let dy0 = _mm256_mul_ps(s.deriv(k.dy[0], k.dy[2], &iq), n0);
+        let dy1 = _mm256_mul_ps(tt.deriv(k.dy[1], k.dy[2], &iq), n1);
         let lx = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(dx0, dx0), _mm256_mul_ps(dx1, dx1)));
         let ly = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(dy0, dy0), _mm256_mul_ps(dy1, dy1)));
         // f32::max: a NaN lx gives ly, as maxps does; a NaN ly fails below.
@@ -774,35 +1208,57 @@ unsafe fn group<const D: u8, const STORE: bool, const FX: bool>(k: &Ctx, x: usiz
         let normal = _mm256_and_ps(_mm256_cmp_ps::<_CMP_GE_OQ>(rho, _mm256_set1_ps(f32::MIN_POSITIVE)), _mm256_cmp_ps::<_CMP_LT_OQ>(rho, _mm256_set1_ps(f32::INFINITY)));
         let regular = _mm256_or_ps(normal, _mm256_cmp_ps::<_CMP_EQ_OQ>(rho, _mm256_setzero_ps()));
         if _mm256_movemask_ps(regular) != 0xFF {
-            return None;
+            return Step::Scalar;
         }
-        let lambda = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(lod::log2_8(rho), _mm256_set1_ps(smp.bias)), _mm256_set1_ps(smp.min_lod)), _mm256_set1_ps(smp.max_lod));
+        let lambda = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(L::log2(rho), _mm256_set1_ps(smp.bias)), _mm256_set1_ps(smp.min_lod)), _mm256_set1_ps(smp.max_lod));
         (la, frac) = levels(k, lambda);
     }
     if D != D_OFF && (D != D_ANY || k.fs.depth_write) {
         _mm256_storeu_si256(dp.cast(), _mm256_blendv_epi8(stored, z, m));
     }
     // The primary colour, perspective-corrected by 1/w.
-    let w: D8 = match k.w_mode {
+    let w = match k.w_mode {
         W_SHARED => iq,
-        W_OWN => {
-            let wv = at8(k.w.0, k.w.1, &c);
-            [_mm256_div_pd(one, wv[0]), _mm256_div_pd(one, wv[1])]
-        }
-        _ => [one, one],
+        W_OWN => L::at(k.w.0, k.w.1, &c).recip(),
+        _ => L::splat(1.0),
     };
     let primary: Rgba = match &k.flat {
         Some(f) => *f,
         None => {
             let mut p = [_mm256_setzero_ps(); 4];
             for ch in 0..4 {
-                let v = at8(k.colors[ch].0, k.colors[ch].1, &c);
-                let v = if k.w_mode == W_NONE { v } else { mul8(&v, &w) };
-                p[ch] = clamp01(to_f32(&v));
+                let v = L::at(k.colors[ch].0, k.colors[ch].1, &c);
+                let v = if k.w_mode == W_NONE { v } else { v.mul(&w) };
+                p[ch] = clamp01(v.to_f32());
             }
             p
         }
     };
+    let fog = match &k.fog {
+        Some(((fr, fdx), f)) => {
+            let v = L::at(*fr, *fdx, &c);
+            let v = if k.w_mode == W_NONE { v } else { v.mul(&w) }.to_f32();
+            let mut vals = [0f32; 8];
+            _mm256_storeu_ps(vals.as_mut_ptr(), v);
+            for v in vals.iter_mut() {
+                *v = if f.per_fragment { f.factor(*v) } else { v.clamp(0.0, 1.0) };
+            }
+            _mm256_loadu_ps(vals.as_ptr())
+        }
+        None => _mm256_setzero_ps(),
+    };
+    Step::Texture(Front { sf, tf, la, frac, primary, fog, m, bits, cp })
+}
+
+/// The rest of a group after `front`: its texels, the environment, fog,
+/// and the colours written.
+#[inline(always)]
+unsafe fn back<const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, g: &Front) {
+    if FX {
+        return fastest_back::<STORE, L>(k, g);
+    }
+    let smp = k.smp;
+    let Front { sf, tf, la, frac, primary, fog: fv, m, bits, cp } = *g;
     let rgba = {
         // Texels: once per distinct level among the passing lanes.
         let mut texel = [_mm256_setzero_ps(); 4];
@@ -810,15 +1266,22 @@ unsafe fn group<const D: u8, const STORE: bool, const FX: bool>(k: &Ctx, x: usiz
         _mm256_storeu_si256(levels.as_mut_ptr().cast(), la);
         let mut pending = bits;
         let weighted_lanes = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_NEQ_UQ>(frac, _mm256_setzero_ps()));
+        // Levels in rising order (`next_level`); the second level of
+        // lanes straddling l and l + 1 is carried to the lanes whose
+        // first it is (a filter depends only on the level and (s, t)).
+        let (mut carried, mut carry) = (-1, [_mm256_setzero_ps(); 4]);
         while pending != 0 {
-            let l = levels[pending.trailing_zeros() as usize];
+            let l = next_level(&levels, pending);
             let same = _mm256_cmpeq_epi32(la, _mm256_set1_epi32(l));
             let lanes = _mm256_movemask_ps(_mm256_castsi256_ps(same)) as u32 & pending;
             pending &= !lanes;
-            let mut v = level_filter(k, l as usize, sf, tf);
+            let mut v = if l == carried { carry } else { level_filter::<L>(k, l as usize, sf, tf) };
             let weighted = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_and_si256(weighted_lanes, same))) as u32 & lanes;
             if k.lod_mode == Lod::Linear && weighted != 0 && (l as usize) < smp.q {
-                let v2 = level_filter(k, l as usize + 1, sf, tf);
+                let v2 = level_filter::<L>(k, l as usize + 1, sf, tf);
+                if pending != 0 {
+                    (carried, carry) = (l + 1, v2);
+                }
                 for ch in 0..4 {
                     v[ch] = lerp(v[ch], v2[ch], frac);
                 }
@@ -833,15 +1296,7 @@ unsafe fn group<const D: u8, const STORE: bool, const FX: bool>(k: &Ctx, x: usiz
             }
         }
         let mut col = env_apply(k.env, &primary, &texel);
-        if let Some(((fr, fdx), f)) = &k.fog {
-            let v = at8(*fr, *fdx, &c);
-            let v = to_f32(&if k.w_mode == W_NONE { v } else { mul8(&v, &w) });
-            let mut vals = [0f32; 8];
-            _mm256_storeu_ps(vals.as_mut_ptr(), v);
-            for v in vals.iter_mut() {
-                *v = if f.per_fragment { f.factor(*v) } else { v.clamp(0.0, 1.0) };
-            }
-            let fv = _mm256_loadu_ps(vals.as_ptr());
+        if let Some((_, f)) = &k.fog {
             let inv = _mm256_sub_ps(_mm256_set1_ps(1.0), fv);
             let fc = f.color.to_array();
             for ch in 0..3 {
@@ -852,12 +1307,25 @@ unsafe fn group<const D: u8, const STORE: bool, const FX: bool>(k: &Ctx, x: usiz
         pack_bytes(&col)
     };
     write::<STORE>(k, cp, rgba, m, bits);
-    Some(bits.count_ones())
 }
 
 #[inline]
 #[target_feature(enable = "avx2,fma")]
 unsafe fn span<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    span_body::<D, STORE, FX, D8>(fs, t, px, y, x0, x1)
+}
+
+/// `span` with AVX-512 (see `wide`).
+#[inline]
+#[target_feature(enable = "avx2,fma,avx512f,avx512vl,avx512bw,avx512dq")]
+unsafe fn span_wide<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
+    span_body::<D, STORE, FX, __m512d>(fs, t, px, y, x0, x1)
+}
+
+/// The span loop, inlined into `span` and `span_wide` (`L`: the f64
+/// lanes of each).
+#[inline(always)]
+unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     if x1 < x0 + 8 {
         return super::kernel_avx2::<D, STORE>(fs, t, px, y, x0, x1);
     }
@@ -896,17 +1364,47 @@ unsafe fn span<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentStat
         lambda_kept: std::cell::Cell::new((f64::NAN, 0.0)),
     };
     if FX && !(pad.is_some() && k.fog.is_none() && matches!(k.env, EnvFn::Modulate { color: true, .. } | EnvFn::Replace { color: true, alpha: true })) {
-        return span::<D, STORE, false>(fs, t, px, y, x0, x1);
+        return if L::WIDE { span_wide::<D, STORE, false>(fs, t, px, y, x0, x1) } else { span::<D, STORE, false>(fs, t, px, y, x0, x1) };
     }
     let n = x1 - x0;
     let mut passed = 0u64;
     let mut i = 0;
     let all = _mm256_set1_epi32(-1);
+    // A group's `back` runs after the next group's `front` (`front`);
+    // `waiting` is the group whose `back` is due. It is done
+    // before the span's slices are touched any other way (the scalar
+    // kernel, the last pixels), and the raw pointers are taken anew after.
+    let mut waiting: Option<Front> = None;
+    let (mut cbase, mut dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
     while i < n {
         let len = (n - i).min(8);
+        if len == 8 {
+            let dp = if D != D_OFF { dbase.add(i) } else { std::ptr::null_mut() };
+            match front::<D, STORE, FX, L>(&k, x0 + i, dp, cbase.add(i), all) {
+                Step::Done(p) => passed += p as u64,
+                Step::Texture(f) => {
+                    passed += f.bits.count_ones() as u64;
+                    if let Some(w) = waiting.replace(f) {
+                        back::<STORE, FX, L>(&k, &w);
+                    }
+                }
+                Step::Scalar => {
+                    if let Some(w) = waiting.take() {
+                        back::<STORE, FX, L>(&k, &w);
+                    }
+                    scalar::<D, STORE>(fs, t, px, y, x0, i, i + len);
+                    (cbase, dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
+                }
+            }
+            i += len;
+            continue;
+        }
+        if let Some(w) = waiting.take() {
+            back::<STORE, FX, L>(&k, &w);
+        }
         let got = if len == 8 {
-            let dp = if D != D_OFF { px.depth.as_mut_ptr().add(i) } else { std::ptr::null_mut() };
-            group::<D, STORE, FX>(&k, x0 + i, dp, px.color.as_mut_ptr().add(i), all)
+            let dp = if D != D_OFF { dbase.add(i) } else { std::ptr::null_mut() };
+            group::<D, STORE, FX, L>(&k, x0 + i, dp, cbase.add(i), all)
         } else {
             // The last pixels: on a stack copy, the missing lanes off.
             let (mut zb, mut cb) = ([0u32; 8], [[0u8; 4]; 8]);
@@ -915,7 +1413,7 @@ unsafe fn span<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentStat
             }
             cb[..len].copy_from_slice(&px.color[i..n]);
             let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(len as i32), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
-            let got = group::<D, STORE, FX>(&k, x0 + i, zb.as_mut_ptr(), cb.as_mut_ptr(), live);
+            let got = group::<D, STORE, FX, L>(&k, x0 + i, zb.as_mut_ptr(), cb.as_mut_ptr(), live);
             if got.is_some() {
                 if D != D_OFF {
                     px.depth[i..n].copy_from_slice(&zb[..len]);
@@ -928,7 +1426,11 @@ unsafe fn span<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentStat
             Some(p) => passed += p as u64,
             None => scalar::<D, STORE>(fs, t, px, y, x0, i, i + len),
         }
+        (cbase, dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
         i += len;
+    }
+    if let Some(w) = waiting.take() {
+        back::<STORE, FX, L>(&k, &w);
     }
     px.passed += passed;
 }
@@ -952,29 +1454,58 @@ mod tests {
         assert!(worst < 4e-5, "worst error {worst}");
     }
 
-    /// c HI + c LO is c / 255 for every byte, in lanes as in scalar.
+    /// The bit form of c / 255 (`unorm`, module documentation) is the
+    /// division for every byte: in scalar, in `channels` at every channel
+    /// position and lane, and in `channels16` when the CPU has AVX-512.
     #[test]
     fn unorm8_by_multiplies() {
         for c in 0..=255u32 {
-            let f = c as f32;
-            assert_eq!((f * HI + f * LO).to_bits(), (f / 255.0).to_bits(), "{c}");
+            let f = (c * 0x010101) as f32;
+            let bits = (f.to_bits() as i32).wrapping_add(UNORM_BITS).max(0) as u32;
+            assert_eq!(bits, (c as f32 / 255.0).to_bits(), "{c}");
         }
         if !(std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")) {
             return;
         }
+        let wide = std::arch::is_x86_feature_detected!("avx512f") && std::arch::is_x86_feature_detected!("avx512bw");
         for c in 0..=255u32 {
-            let v = c | (255 - c) << 8 | (c / 3) << 16 | (c ^ 0x5A) << 24;
+            // Lane l holds c in channel l % 4 and other bytes elsewhere.
+            let v: [u32; 16] = std::array::from_fn(|l| {
+                let other = (c ^ 0xA5).wrapping_add(l as u32 * 37) & 0xFF;
+                let k = l % 4;
+                (other * 0x01010101) & !(0xFF << (8 * k)) | c << (8 * k)
+            });
+            let want = c as f32 / 255.0;
             let mut out = [[0f32; 8]; 4];
             unsafe {
-                let ch = channels(_mm256_set1_epi32(v as i32));
+                let ch = channels(_mm256_loadu_si256(v.as_ptr().cast()));
                 for k in 0..4 {
                     _mm256_storeu_ps(out[k].as_mut_ptr(), ch[k]);
                 }
             }
-            let want = v.to_ne_bytes().map(|b| b as f32 / 255.0);
-            for k in 0..4 {
-                assert_eq!(out[k][3].to_bits(), want[k].to_bits(), "{v:#x} channel {k}");
+            for l in 0..8 {
+                assert_eq!(out[l % 4][l].to_bits(), want.to_bits(), "channels: {c} in lane {l}");
+                for k in 0..4 {
+                    assert_eq!(out[k][l].to_bits(), (v[l].to_le_bytes()[k] as f32 / 255.0).to_bits(), "channels: lane {l} channel {k}");
+                }
             }
+            if wide {
+                let mut out = [[0f32; 16]; 4];
+                unsafe { wide_channels(&v, &mut out) };
+                for l in 0..16 {
+                    for k in 0..4 {
+                        assert_eq!(out[k][l].to_bits(), (v[l].to_le_bytes()[k] as f32 / 255.0).to_bits(), "channels16: lane {l} channel {k}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[target_feature(enable = "avx2,avx512f,avx512bw")]
+    unsafe fn wide_channels(v: &[u32; 16], out: &mut [[f32; 16]; 4]) {
+        let ch = channels16(_mm512_loadu_si512(v.as_ptr().cast()));
+        for k in 0..4 {
+            _mm512_storeu_ps(out[k].as_mut_ptr(), ch[k]);
         }
     }
 }
