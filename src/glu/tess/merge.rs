@@ -97,7 +97,7 @@ impl Grid {
             return;
         }
         self.hashed = true;
-        let size = (4 * total).next_power_of_two();
+        let size = (2 * total).next_power_of_two();
         self.head.clear();
         self.head.resize(size, NONE);
         self.shift = 64 - size.trailing_zeros();

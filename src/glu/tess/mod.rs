@@ -36,7 +36,9 @@
 //! triangulate, goes from it straight to [`sweep`] (nothing to merge or
 //! split) in its vertex order; and when the fast path gives up after
 //! sorting the input, the general path sorts only the vertices the
-//! splitter added and merges them into that order. Every buffer they use
+//! splitter added and merges them into that order (and, if it got past
+//! its near-coincident vertex check, skips the merge lookups: there is
+//! nothing to merge). Every buffer they use
 //! lives in the tessellator object and is reused by the next polygon.
 //!
 //! Cost: the fast path is O(n log n) plus O(sqrt n) per vertex for its
@@ -696,17 +698,30 @@ impl Job {
         id.clear();
         rep.clear();
         grid.reset(p2.len());
-        for (q, iv) in p2.iter().zip(all()) {
-            rep.push(false);
-            match grid.find(verts, *q) {
-                Some(i) => id.push(i),
-                None => {
-                    *rep.last_mut().unwrap() = true;
-                    verts.push(Vert { p: *q });
-                    p3.push(iv.p);
-                    data.push(iv.data);
-                    grid.insert(verts, verts.len() - 1);
-                    id.push(verts.len() - 1);
+        if si.distinct {
+            // The fast path found no two vertices within EPS (the test a
+            // lookup makes): each is its own; the grid only needs them in.
+            for (i, (q, iv)) in p2.iter().zip(all()).enumerate() {
+                rep.push(true);
+                verts.push(Vert { p: *q });
+                p3.push(iv.p);
+                data.push(iv.data);
+                grid.insert(verts, i);
+                id.push(i);
+            }
+        } else {
+            for (q, iv) in p2.iter().zip(all()) {
+                rep.push(false);
+                match grid.find(verts, *q) {
+                    Some(i) => id.push(i),
+                    None => {
+                        *rep.last_mut().unwrap() = true;
+                        verts.push(Vert { p: *q });
+                        p3.push(iv.p);
+                        data.push(iv.data);
+                        grid.insert(verts, verts.len() - 1);
+                        id.push(verts.len() - 1);
+                    }
                 }
             }
         }

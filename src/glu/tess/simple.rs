@@ -66,6 +66,9 @@ pub struct Scratch {
     /// The vertices in sweep order: (x key, y key, index); empty if the
     /// polygon was refused before they were sorted.
     pub(super) keyed: Vec<(u64, u64, u32)>,
+    /// No two vertices within EPS (max norm) of each other: the check
+    /// below passed, so the general path has nothing to merge.
+    pub(super) distinct: bool,
     rank: Vec<u32>,
     next: Vec<u32>,
     prev: Vec<u32>,
@@ -123,6 +126,7 @@ pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_
     region.boundary.clear();
     region.triangles.clear();
     sc.keyed.clear();
+    sc.distinct = false;
     if n < 3 || n >= u32::MAX as usize / 2 {
         return Outcome::No;
     }
@@ -168,7 +172,8 @@ pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_
             }
         }
     }
-    let Scratch { keyed, rank, next, prev, active } = sc;
+    sc.distinct = true;
+    let Scratch { keyed, rank, next, prev, active, .. } = sc;
     active.clear_with(drop);
     let mut t = Tri { verts, out: &mut region.triangles, pool };
     let out = sweep(verts, keyed, rank, next, prev, rule, boundary_only, active, &mut t, &mut region.boundary);

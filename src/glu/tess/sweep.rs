@@ -165,10 +165,16 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
         }
     }
     // Per group: insertion sort (groups are small), then merge runs of the
-    // same hi and drop edges whose traversals cancel.
+    // same hi and drop edges whose traversals cancel. The kept edges stay
+    // grouped by lo: `out` becomes their offsets as it goes (entry v is
+    // rewritten after being read, v + 1 still holds this group's end) and
+    // `inc` their count per hi.
     let mut kept = 0;
+    inc.clear();
+    inc.resize(nv, 0);
     for v in 0..nv {
         let (g0, g1) = (out[v] as usize, out[v + 1] as usize);
+        out[v] = kept as u32;
         let g = &mut edges[g0..g1];
         if g.len() > 16 {
             g.sort_unstable_by_key(|e| (ord_key(e.key), e.hi));
@@ -190,11 +196,13 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
                 i += 1;
             }
             if e.w != 0 {
+                inc[e.hi] += 1;
                 edges[kept] = e;
                 kept += 1;
             }
         }
     }
+    out[nv] = kept as u32;
     edges.truncate(kept);
     // Sweep order of vertices (integer keys sort faster than float compares).
     order.clear();
@@ -222,8 +230,8 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
         }
     };
 
-    // Sweep 1: the winding number below every edge.
-    build_out(edges, out, inc);
+    // Sweep 1: the winding number below every edge (`out` and `inc` are
+    // those of `edges`, from the grouping above).
     below.clear();
     below.resize(edges.len(), 0);
     {
@@ -231,14 +239,25 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
         active.clear();
         for &v in order.iter() {
             let v = v as usize;
-            let pos = locate(active, v, inc[v], verts, |x| edges[x.0].hi, |x| (edges[x.0].lo, edges[x.0].hi));
+            let (pos, run) = locate(active, v, inc[v], verts, |x| edges[x.0].hi, |x| (edges[x.0].lo, edges[x.0].hi));
             let mut w = if pos > 0 { active[pos - 1].1 } else { 0 };
             let (o0, o1) = (out[v] as usize, out[v + 1] as usize);
-            // (Inserts one by one: usually one or two, cheaper than a splice.)
-            for (k, e) in (o0..o1).enumerate() {
+            // The edges leaving v take the slots of those ending there (a
+            // crossing: two for two, no memmove); the rest are inserted one
+            // by one (usually one or two, cheaper than a splice) or removed.
+            let mut i = pos;
+            for e in o0..o1 {
                 below[e] = w;
                 w += edges[e].w;
-                active.insert(pos + k, (e, w));
+                if i < pos + run {
+                    active[i] = (e, w);
+                } else {
+                    active.insert(i, (e, w));
+                }
+                i += 1;
+            }
+            if i < pos + run {
+                active.drain(i..pos + run);
             }
         }
     }
@@ -278,17 +297,20 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
                 insert_start(active, v, outs, bedges, inside_above, verts, &mut t);
                 continue;
             };
-            let hi = active.iter().rposition(|x| bedges[x.0].hi == v).unwrap_or(lo);
+            // (All `inc` of them in one run, normally: no second scan.)
+            let run = active[lo..].iter().take_while(|x| bedges[x.0].hi == v).count();
+            let hi = if run == inc[v] as usize { lo + run - 1 } else { active.iter().rposition(|x| bedges[x.0].hi == v).unwrap_or(lo) };
             let r_below = if lo > 0 { active[lo - 1].1.take() } else { None };
             let r_above = active[hi].1.take();
-            for (_, r) in active.drain(lo..=hi) {
-                if let Some(r) = r {
+            for x in &mut active[lo..=hi] {
+                if let Some(r) = x.1.take() {
                     t.close(r, v);
                 }
             }
             let r_below = r_below.map(|r| t.add(r, v, Side::Upper));
             let r_above = r_above.map(|r| t.add(r, v, Side::Lower));
             if outs.is_empty() {
+                active.drain(lo..=hi);
                 match (r_below, r_above) {
                     (Some(b), Some(a)) => active[lo - 1].1 = Some(t.merge(b, a)),
                     (Some(b), None) => active[lo - 1].1 = Some(b),
@@ -314,7 +336,7 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
                     None if inside_above[outs[k - 1].0] => Some(t.start(v)),
                     None => None,
                 };
-                insert_all(active, lo, outs);
+                replace_run(active, lo, hi + 1, outs);
             }
         } else {
             insert_start(active, v, outs, bedges, inside_above, verts, &mut t);
@@ -322,29 +344,48 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
     }
 }
 
-/// Finds where vertex v goes in the active list: removes the entries ending
-/// at v (if `inc` > 0) and returns the position of the first, or binary
-/// searches by orientation.
-fn locate<T>(active: &mut Vec<T>, v: usize, inc: u32, verts: &[Vert], hi_of: impl Fn(&T) -> usize, ends: impl Fn(&T) -> (usize, usize)) -> usize {
+/// Finds where vertex v goes in the active list: the position of the
+/// first entry ending at v (if `inc` > 0) and the length of their run, left
+/// in place for the caller to overwrite, or a binary search by orientation
+/// (run 0).
+fn locate<T>(active: &mut Vec<T>, v: usize, inc: u32, verts: &[Vert], hi_of: impl Fn(&T) -> usize, ends: impl Fn(&T) -> (usize, usize)) -> (usize, usize) {
     if inc > 0 {
         let first = active.iter().position(|x| hi_of(x) == v);
         if let Some(first) = first {
             // Normally the `inc` entries ending at v are contiguous: one
-            // drain; otherwise (floating-point doubt) remove them all.
+            // run; otherwise (floating-point doubt) remove them all.
             let run = active[first..].iter().take_while(|x| hi_of(x) == v).count();
             if run == inc as usize {
-                active.drain(first..first + run);
-            } else {
-                active.retain(|x| hi_of(x) != v);
+                return (first, run);
             }
-            return first.min(active.len());
+            active.retain(|x| hi_of(x) != v);
+            return (first.min(active.len()), 0);
         }
     }
     let pv = verts[v].p;
-    active.partition_point(|x| {
+    let pos = active.partition_point(|x| {
         let (a, b) = ends(x);
         orient(verts[a].p, verts[b].p, pv) >= 0.0
-    })
+    });
+    (pos, 0)
+}
+
+/// Puts `outs` in place of `active[lo..hi]`: overwrites what both have,
+/// then inserts the rest (usually one or two) or removes the surplus; the
+/// same list as a drain and inserts, with less memmove.
+fn replace_run<T>(active: &mut Vec<T>, lo: usize, hi: usize, outs: &mut Vec<T>) {
+    let mut i = lo;
+    for x in outs.drain(..) {
+        if i < hi {
+            active[i] = x;
+        } else {
+            active.insert(i, x);
+        }
+        i += 1;
+    }
+    if i < hi {
+        active.drain(i..hi);
+    }
 }
 
 fn insert_start(active: &mut Vec<(usize, Option<Reg>)>, v: usize, outs: &mut Vec<(usize, Option<Reg>)>, bedges: &[Edge], inside_above: &[bool], verts: &[Vert], t: &mut Tri) {
@@ -564,6 +605,36 @@ impl Tri<'_> {
             let upper = self.step(ch, v, Side::Lower);
             let other = self.chain(&[h, v], Side::Upper);
             (self.reg(other), self.reg(upper))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `replace_run` leaves the list a drain of `lo..hi` followed by
+    /// inserting `outs` at `lo` would, for every run and replacement length.
+    #[test]
+    fn replace_run_is_drain_then_insert() {
+        for len in 0..7usize {
+            for lo in 0..=len {
+                for hi in lo..=len {
+                    for m in 0..5usize {
+                        let base: Vec<u32> = (0..len as u32).collect();
+                        let outs: Vec<u32> = (0..m as u32).map(|k| 100 + k).collect();
+                        let mut want = base.clone();
+                        want.drain(lo..hi);
+                        for (k, &x) in outs.iter().enumerate() {
+                            want.insert(lo + k, x);
+                        }
+                        let (mut got, mut o) = (base.clone(), outs.clone());
+                        replace_run(&mut got, lo, hi, &mut o);
+                        assert_eq!(got, want, "len {len}, {lo}..{hi}, {m} new");
+                        assert!(o.is_empty());
+                    }
+                }
+            }
         }
     }
 }
