@@ -83,8 +83,17 @@ pub fn outside_begin_end<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
     })
 }
 
-/// For entry points that need no context (GLU, window-system calls): only
-/// the panic guard.
+/// GLU's entry points: the floating-point and panic guards only. GLU is
+/// a client of GL; the GL calls it makes shade binned triangles when they
+/// must.
+#[inline]
+pub fn guarded_client<R: Zero>(f: impl FnOnce() -> R) -> R {
+    let _fp = FpGuard::enter();
+    catch_unwind(AssertUnwindSafe(f)).unwrap_or_else(|_| R::zero())
+}
+
+/// For window-system entry points, which need no context: the panic
+/// guard, after the current context's binned triangles are shaded.
 #[inline]
 pub fn guarded<R: Zero>(f: impl FnOnce() -> R) -> R {
     let _fp = FpGuard::enter();

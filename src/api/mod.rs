@@ -38,8 +38,15 @@ pub enum Kind {
     /// method applies the Begin/End rule itself (glArrayElement is allowed
     /// between Begin and End, the others are not).
     draw,
-    /// Needs no context: GLU and the window-system calls.
+    /// Needs no context: the window-system calls. The current context's
+    /// binned triangles are shaded first (they present, resize and switch
+    /// contexts).
     free,
+    /// A GLU function: needs no context, and reaches GL only through the
+    /// public entry points, which shade binned triangles where they must;
+    /// so unlike `free` it leaves the batch open (a gluSphere between two
+    /// others must not cost a hand-off to the tile workers).
+    glu,
     /// Exported so programs link and load, but not implemented yet: does
     /// nothing and returns zero. Listed as such in the README.
     todo,
@@ -167,6 +174,13 @@ macro_rules! entry_point {
         #[allow(unused_parens)]
         pub unsafe extern "system" fn $name($($arg: $ty),*) -> $ret {
             $crate::api::dispatch::guarded(|| $body)
+        }
+    };
+    (glu $name:ident ( $($arg:ident : $ty:ty),* ) -> $ret:ty { $body:expr }) => {
+        #[no_mangle]
+        #[allow(unused_parens)]
+        pub unsafe extern "system" fn $name($($arg: $ty),*) -> $ret {
+            $crate::api::dispatch::guarded_client(|| $body)
         }
     };
     (todo $name:ident ( $($arg:ident : $ty:ty),* ) -> $ret:ty { }) => {

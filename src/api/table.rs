@@ -807,65 +807,65 @@ super::entry_points! {
     exec glFlushMappedBufferRange(target: GLenum, offset: GLintptr, length: GLsizeiptr) { |c| c.flush_mapped_buffer_range(target, offset, length) }
 
     // ---- glu.h ----
-    free gluErrorString(error: GLenum) -> *const GLubyte { glu::strings::error_string(error) }
-    free gluGetString(name: GLenum) -> *const GLubyte { glu::strings::get_string(name) }
-    free gluCheckExtension(extName: *const GLubyte, extString: *const GLubyte) -> GLboolean { glu::strings::check_extension(extName, extString) }
-    free gluOrtho2D(left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble) { glu::matrix::ortho_2d(left, right, bottom, top) }
-    free gluPerspective(fovy: GLdouble, aspect: GLdouble, zNear: GLdouble, zFar: GLdouble) { glu::matrix::perspective(fovy, aspect, zNear, zFar) }
-    free gluLookAt(eyeX: GLdouble, eyeY: GLdouble, eyeZ: GLdouble, centerX: GLdouble, centerY: GLdouble, centerZ: GLdouble, upX: GLdouble, upY: GLdouble, upZ: GLdouble) { glu::matrix::look_at([eyeX, eyeY, eyeZ], [centerX, centerY, centerZ], [upX, upY, upZ]) }
-    free gluPickMatrix(x: GLdouble, y: GLdouble, delX: GLdouble, delY: GLdouble, viewport: *mut GLint) { glu::matrix::pick_matrix(x, y, delX, delY, viewport) }
-    free gluProject(objX: GLdouble, objY: GLdouble, objZ: GLdouble, model: *const GLdouble, proj: *const GLdouble, view: *const GLint, winX: *mut GLdouble, winY: *mut GLdouble, winZ: *mut GLdouble) -> GLint { glu::matrix::project([objX, objY, objZ], model, proj, view, [winX, winY, winZ]) }
-    free gluUnProject(winX: GLdouble, winY: GLdouble, winZ: GLdouble, model: *const GLdouble, proj: *const GLdouble, view: *const GLint, objX: *mut GLdouble, objY: *mut GLdouble, objZ: *mut GLdouble) -> GLint { glu::matrix::unproject([winX, winY, winZ, 1.0], model, proj, view, 0.0, 1.0, [objX, objY, objZ, std::ptr::null_mut()]) }
-    free gluUnProject4(winX: GLdouble, winY: GLdouble, winZ: GLdouble, clipW: GLdouble, model: *const GLdouble, proj: *const GLdouble, view: *const GLint, nearVal: GLdouble, farVal: GLdouble, objX: *mut GLdouble, objY: *mut GLdouble, objZ: *mut GLdouble, objW: *mut GLdouble) -> GLint { glu::matrix::unproject([winX, winY, winZ, clipW], model, proj, view, nearVal, farVal, [objX, objY, objZ, objW]) }
-    free gluScaleImage(format: GLenum, wIn: GLsizei, hIn: GLsizei, typeIn: GLenum, dataIn: *const c_void, wOut: GLsizei, hOut: GLsizei, typeOut: GLenum, dataOut: *mut c_void) -> GLint { glu::scale::scale_image(&mut glu::scale::GlPixels, format, wIn, hIn, typeIn, dataIn, wOut, hOut, typeOut, dataOut) }
-    free gluBuild1DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint { glu::mipmap::build_mipmaps(&mut glu::mipmap::GlTex, 1, target, internalFormat, [width, 1, 1], format, type_, data) }
-    free gluBuild2DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint { glu::mipmap::build_mipmaps(&mut glu::mipmap::GlTex, 2, target, internalFormat, [width, height, 1], format, type_, data) }
-    free gluBuild3DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint { glu::mipmap::build_mipmaps(&mut glu::mipmap::GlTex, 3, target, internalFormat, [width, height, depth], format, type_, data) }
-    free gluBuild1DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint { glu::mipmap::build_mipmap_levels(&mut glu::mipmap::GlTex, 1, target, internalFormat, [width, 1, 1], format, type_, level, base, max, data) }
-    free gluBuild2DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint { glu::mipmap::build_mipmap_levels(&mut glu::mipmap::GlTex, 2, target, internalFormat, [width, height, 1], format, type_, level, base, max, data) }
-    free gluBuild3DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint { glu::mipmap::build_mipmap_levels(&mut glu::mipmap::GlTex, 3, target, internalFormat, [width, height, depth], format, type_, level, base, max, data) }
-    free gluNewQuadric() -> *mut GLUquadric { glu::quadric::new_quadric() }
-    free gluDeleteQuadric(quad: *mut GLUquadric) { glu::quadric::delete_quadric(quad) }
-    free gluQuadricCallback(quad: *mut GLUquadric, which: GLenum, CallBackFunc: GLproc) { glu::quadric::with(quad, |q| q.set_callback(which, CallBackFunc)) }
-    free gluQuadricDrawStyle(quad: *mut GLUquadric, draw: GLenum) { glu::quadric::with(quad, |q| q.set_draw_style(draw)) }
-    free gluQuadricNormals(quad: *mut GLUquadric, normal: GLenum) { glu::quadric::with(quad, |q| q.set_normals(normal)) }
-    free gluQuadricOrientation(quad: *mut GLUquadric, orientation: GLenum) { glu::quadric::with(quad, |q| q.set_orientation(orientation)) }
-    free gluQuadricTexture(quad: *mut GLUquadric, texture: GLboolean) { glu::quadric::with(quad, |q| q.set_texture(truth(texture))) }
-    free gluSphere(quad: *mut GLUquadric, radius: GLdouble, slices: GLint, stacks: GLint) { glu::quadric::with(quad, |q| q.sphere(&mut glu::quadric::GlSink, radius, slices, stacks)) }
-    free gluCylinder(quad: *mut GLUquadric, base: GLdouble, top: GLdouble, height: GLdouble, slices: GLint, stacks: GLint) { glu::quadric::with(quad, |q| q.cylinder(&mut glu::quadric::GlSink, base, top, height, slices, stacks)) }
-    free gluDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint) { glu::quadric::with(quad, |q| q.disk(&mut glu::quadric::GlSink, inner, outer, slices, loops)) }
-    free gluPartialDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint, start: GLdouble, sweep: GLdouble) { glu::quadric::with(quad, |q| q.partial_disk(&mut glu::quadric::GlSink, inner, outer, slices, loops, start, sweep)) }
-    free gluNewTess() -> *mut GLUtesselator { glu::tess::new_tess() }
-    free gluDeleteTess(tess: *mut GLUtesselator) { glu::tess::delete_tess(tess) }
-    free gluTessBeginPolygon(tess: *mut GLUtesselator, data: *mut c_void) { glu::tess::begin_polygon(tess, data) }
-    free gluTessBeginContour(tess: *mut GLUtesselator) { glu::tess::begin_contour(tess) }
-    free gluTessVertex(tess: *mut GLUtesselator, location: *mut GLdouble, data: *mut c_void) { glu::tess::vertex(tess, location, data) }
-    free gluTessEndContour(tess: *mut GLUtesselator) { glu::tess::end_contour(tess) }
-    free gluTessEndPolygon(tess: *mut GLUtesselator) { glu::tess::end_polygon(tess) }
-    free gluTessCallback(tess: *mut GLUtesselator, which: GLenum, CallBackFunc: GLproc) { glu::tess::callback(tess, which, CallBackFunc) }
-    free gluTessProperty(tess: *mut GLUtesselator, which: GLenum, data: GLdouble) { glu::tess::property(tess, which, data) }
-    free gluGetTessProperty(tess: *mut GLUtesselator, which: GLenum, data: *mut GLdouble) { glu::tess::get_property(tess, which, data) }
-    free gluTessNormal(tess: *mut GLUtesselator, valueX: GLdouble, valueY: GLdouble, valueZ: GLdouble) { glu::tess::normal(tess, valueX, valueY, valueZ) }
-    free gluBeginPolygon(tess: *mut GLUtesselator) { glu::tess::begin_polygon_11(tess) }
-    free gluNextContour(tess: *mut GLUtesselator, type_: GLenum) { glu::tess::next_contour(tess, type_) }
-    free gluEndPolygon(tess: *mut GLUtesselator) { glu::tess::end_polygon_11(tess) }
-    free gluNewNurbsRenderer() -> *mut GLUnurbs { glu::nurbs::new_nurbs() }
-    free gluDeleteNurbsRenderer(nurb: *mut GLUnurbs) { glu::nurbs::delete_nurbs(nurb) }
-    free gluNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, value: GLfloat) { glu::nurbs::with(nurb, |n| n.set_property(property, value)) }
-    free gluGetNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, data: *mut GLfloat) { glu::nurbs::get_property(nurb, property, data) }
-    free gluLoadSamplingMatrices(nurb: *mut GLUnurbs, model: *const GLfloat, perspective: *const GLfloat, view: *const GLint) { glu::nurbs::with(nurb, |n| n.load_sampling_matrices(model, perspective, view)) }
-    free gluNurbsCallback(nurb: *mut GLUnurbs, which: GLenum, CallBackFunc: GLproc) { glu::nurbs::with(nurb, |n| n.set_callback(which, CallBackFunc)) }
-    free gluNurbsCallbackData(nurb: *mut GLUnurbs, userData: *mut c_void) { glu::nurbs::with(nurb, |n| n.set_callback_data(userData)) }
-    free gluNurbsCallbackDataEXT(nurb: *mut GLUnurbs, userData: *mut c_void) { glu::nurbs::with(nurb, |n| n.set_callback_data(userData)) }
-    free gluBeginCurve(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_curve()) }
-    free gluNurbsCurve(nurb: *mut GLUnurbs, knotCount: GLint, knots: *mut GLfloat, stride: GLint, control: *mut GLfloat, order: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.nurbs_curve(knotCount, knots, stride, control, order, type_)) }
-    free gluEndCurve(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_curve()) }
-    free gluBeginSurface(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_surface()) }
-    free gluNurbsSurface(nurb: *mut GLUnurbs, sKnotCount: GLint, sKnots: *mut GLfloat, tKnotCount: GLint, tKnots: *mut GLfloat, sStride: GLint, tStride: GLint, control: *mut GLfloat, sOrder: GLint, tOrder: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.nurbs_surface(sKnotCount, sKnots, tKnotCount, tKnots, sStride, tStride, control, sOrder, tOrder, type_)) }
-    free gluEndSurface(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_surface()) }
-    free gluBeginTrim(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_trim()) }
-    free gluPwlCurve(nurb: *mut GLUnurbs, count: GLint, data: *mut GLfloat, stride: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.pwl_curve(count, data, stride, type_)) }
-    free gluEndTrim(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_trim()) }
+    glu gluErrorString(error: GLenum) -> *const GLubyte { glu::strings::error_string(error) }
+    glu gluGetString(name: GLenum) -> *const GLubyte { glu::strings::get_string(name) }
+    glu gluCheckExtension(extName: *const GLubyte, extString: *const GLubyte) -> GLboolean { glu::strings::check_extension(extName, extString) }
+    glu gluOrtho2D(left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble) { glu::matrix::ortho_2d(left, right, bottom, top) }
+    glu gluPerspective(fovy: GLdouble, aspect: GLdouble, zNear: GLdouble, zFar: GLdouble) { glu::matrix::perspective(fovy, aspect, zNear, zFar) }
+    glu gluLookAt(eyeX: GLdouble, eyeY: GLdouble, eyeZ: GLdouble, centerX: GLdouble, centerY: GLdouble, centerZ: GLdouble, upX: GLdouble, upY: GLdouble, upZ: GLdouble) { glu::matrix::look_at([eyeX, eyeY, eyeZ], [centerX, centerY, centerZ], [upX, upY, upZ]) }
+    glu gluPickMatrix(x: GLdouble, y: GLdouble, delX: GLdouble, delY: GLdouble, viewport: *mut GLint) { glu::matrix::pick_matrix(x, y, delX, delY, viewport) }
+    glu gluProject(objX: GLdouble, objY: GLdouble, objZ: GLdouble, model: *const GLdouble, proj: *const GLdouble, view: *const GLint, winX: *mut GLdouble, winY: *mut GLdouble, winZ: *mut GLdouble) -> GLint { glu::matrix::project([objX, objY, objZ], model, proj, view, [winX, winY, winZ]) }
+    glu gluUnProject(winX: GLdouble, winY: GLdouble, winZ: GLdouble, model: *const GLdouble, proj: *const GLdouble, view: *const GLint, objX: *mut GLdouble, objY: *mut GLdouble, objZ: *mut GLdouble) -> GLint { glu::matrix::unproject([winX, winY, winZ, 1.0], model, proj, view, 0.0, 1.0, [objX, objY, objZ, std::ptr::null_mut()]) }
+    glu gluUnProject4(winX: GLdouble, winY: GLdouble, winZ: GLdouble, clipW: GLdouble, model: *const GLdouble, proj: *const GLdouble, view: *const GLint, nearVal: GLdouble, farVal: GLdouble, objX: *mut GLdouble, objY: *mut GLdouble, objZ: *mut GLdouble, objW: *mut GLdouble) -> GLint { glu::matrix::unproject([winX, winY, winZ, clipW], model, proj, view, nearVal, farVal, [objX, objY, objZ, objW]) }
+    glu gluScaleImage(format: GLenum, wIn: GLsizei, hIn: GLsizei, typeIn: GLenum, dataIn: *const c_void, wOut: GLsizei, hOut: GLsizei, typeOut: GLenum, dataOut: *mut c_void) -> GLint { glu::scale::scale_image(&mut glu::scale::GlPixels, format, wIn, hIn, typeIn, dataIn, wOut, hOut, typeOut, dataOut) }
+    glu gluBuild1DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint { glu::mipmap::build_mipmaps(&mut glu::mipmap::GlTex, 1, target, internalFormat, [width, 1, 1], format, type_, data) }
+    glu gluBuild2DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint { glu::mipmap::build_mipmaps(&mut glu::mipmap::GlTex, 2, target, internalFormat, [width, height, 1], format, type_, data) }
+    glu gluBuild3DMipmaps(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, data: *const c_void) -> GLint { glu::mipmap::build_mipmaps(&mut glu::mipmap::GlTex, 3, target, internalFormat, [width, height, depth], format, type_, data) }
+    glu gluBuild1DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint { glu::mipmap::build_mipmap_levels(&mut glu::mipmap::GlTex, 1, target, internalFormat, [width, 1, 1], format, type_, level, base, max, data) }
+    glu gluBuild2DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint { glu::mipmap::build_mipmap_levels(&mut glu::mipmap::GlTex, 2, target, internalFormat, [width, height, 1], format, type_, level, base, max, data) }
+    glu gluBuild3DMipmapLevels(target: GLenum, internalFormat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, level: GLint, base: GLint, max: GLint, data: *const c_void) -> GLint { glu::mipmap::build_mipmap_levels(&mut glu::mipmap::GlTex, 3, target, internalFormat, [width, height, depth], format, type_, level, base, max, data) }
+    glu gluNewQuadric() -> *mut GLUquadric { glu::quadric::new_quadric() }
+    glu gluDeleteQuadric(quad: *mut GLUquadric) { glu::quadric::delete_quadric(quad) }
+    glu gluQuadricCallback(quad: *mut GLUquadric, which: GLenum, CallBackFunc: GLproc) { glu::quadric::with(quad, |q| q.set_callback(which, CallBackFunc)) }
+    glu gluQuadricDrawStyle(quad: *mut GLUquadric, draw: GLenum) { glu::quadric::with(quad, |q| q.set_draw_style(draw)) }
+    glu gluQuadricNormals(quad: *mut GLUquadric, normal: GLenum) { glu::quadric::with(quad, |q| q.set_normals(normal)) }
+    glu gluQuadricOrientation(quad: *mut GLUquadric, orientation: GLenum) { glu::quadric::with(quad, |q| q.set_orientation(orientation)) }
+    glu gluQuadricTexture(quad: *mut GLUquadric, texture: GLboolean) { glu::quadric::with(quad, |q| q.set_texture(truth(texture))) }
+    glu gluSphere(quad: *mut GLUquadric, radius: GLdouble, slices: GLint, stacks: GLint) { glu::quadric::with(quad, |q| q.sphere(&mut glu::quadric::GlSink, radius, slices, stacks)) }
+    glu gluCylinder(quad: *mut GLUquadric, base: GLdouble, top: GLdouble, height: GLdouble, slices: GLint, stacks: GLint) { glu::quadric::with(quad, |q| q.cylinder(&mut glu::quadric::GlSink, base, top, height, slices, stacks)) }
+    glu gluDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint) { glu::quadric::with(quad, |q| q.disk(&mut glu::quadric::GlSink, inner, outer, slices, loops)) }
+    glu gluPartialDisk(quad: *mut GLUquadric, inner: GLdouble, outer: GLdouble, slices: GLint, loops: GLint, start: GLdouble, sweep: GLdouble) { glu::quadric::with(quad, |q| q.partial_disk(&mut glu::quadric::GlSink, inner, outer, slices, loops, start, sweep)) }
+    glu gluNewTess() -> *mut GLUtesselator { glu::tess::new_tess() }
+    glu gluDeleteTess(tess: *mut GLUtesselator) { glu::tess::delete_tess(tess) }
+    glu gluTessBeginPolygon(tess: *mut GLUtesselator, data: *mut c_void) { glu::tess::begin_polygon(tess, data) }
+    glu gluTessBeginContour(tess: *mut GLUtesselator) { glu::tess::begin_contour(tess) }
+    glu gluTessVertex(tess: *mut GLUtesselator, location: *mut GLdouble, data: *mut c_void) { glu::tess::vertex(tess, location, data) }
+    glu gluTessEndContour(tess: *mut GLUtesselator) { glu::tess::end_contour(tess) }
+    glu gluTessEndPolygon(tess: *mut GLUtesselator) { glu::tess::end_polygon(tess) }
+    glu gluTessCallback(tess: *mut GLUtesselator, which: GLenum, CallBackFunc: GLproc) { glu::tess::callback(tess, which, CallBackFunc) }
+    glu gluTessProperty(tess: *mut GLUtesselator, which: GLenum, data: GLdouble) { glu::tess::property(tess, which, data) }
+    glu gluGetTessProperty(tess: *mut GLUtesselator, which: GLenum, data: *mut GLdouble) { glu::tess::get_property(tess, which, data) }
+    glu gluTessNormal(tess: *mut GLUtesselator, valueX: GLdouble, valueY: GLdouble, valueZ: GLdouble) { glu::tess::normal(tess, valueX, valueY, valueZ) }
+    glu gluBeginPolygon(tess: *mut GLUtesselator) { glu::tess::begin_polygon_11(tess) }
+    glu gluNextContour(tess: *mut GLUtesselator, type_: GLenum) { glu::tess::next_contour(tess, type_) }
+    glu gluEndPolygon(tess: *mut GLUtesselator) { glu::tess::end_polygon_11(tess) }
+    glu gluNewNurbsRenderer() -> *mut GLUnurbs { glu::nurbs::new_nurbs() }
+    glu gluDeleteNurbsRenderer(nurb: *mut GLUnurbs) { glu::nurbs::delete_nurbs(nurb) }
+    glu gluNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, value: GLfloat) { glu::nurbs::with(nurb, |n| n.set_property(property, value)) }
+    glu gluGetNurbsProperty(nurb: *mut GLUnurbs, property: GLenum, data: *mut GLfloat) { glu::nurbs::get_property(nurb, property, data) }
+    glu gluLoadSamplingMatrices(nurb: *mut GLUnurbs, model: *const GLfloat, perspective: *const GLfloat, view: *const GLint) { glu::nurbs::with(nurb, |n| n.load_sampling_matrices(model, perspective, view)) }
+    glu gluNurbsCallback(nurb: *mut GLUnurbs, which: GLenum, CallBackFunc: GLproc) { glu::nurbs::with(nurb, |n| n.set_callback(which, CallBackFunc)) }
+    glu gluNurbsCallbackData(nurb: *mut GLUnurbs, userData: *mut c_void) { glu::nurbs::with(nurb, |n| n.set_callback_data(userData)) }
+    glu gluNurbsCallbackDataEXT(nurb: *mut GLUnurbs, userData: *mut c_void) { glu::nurbs::with(nurb, |n| n.set_callback_data(userData)) }
+    glu gluBeginCurve(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_curve()) }
+    glu gluNurbsCurve(nurb: *mut GLUnurbs, knotCount: GLint, knots: *mut GLfloat, stride: GLint, control: *mut GLfloat, order: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.nurbs_curve(knotCount, knots, stride, control, order, type_)) }
+    glu gluEndCurve(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_curve()) }
+    glu gluBeginSurface(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_surface()) }
+    glu gluNurbsSurface(nurb: *mut GLUnurbs, sKnotCount: GLint, sKnots: *mut GLfloat, tKnotCount: GLint, tKnots: *mut GLfloat, sStride: GLint, tStride: GLint, control: *mut GLfloat, sOrder: GLint, tOrder: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.nurbs_surface(sKnotCount, sKnots, tKnotCount, tKnots, sStride, tStride, control, sOrder, tOrder, type_)) }
+    glu gluEndSurface(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_surface()) }
+    glu gluBeginTrim(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.begin_trim()) }
+    glu gluPwlCurve(nurb: *mut GLUnurbs, count: GLint, data: *mut GLfloat, stride: GLint, type_: GLenum) { glu::nurbs::with(nurb, |n| n.pwl_curve(count, data, stride, type_)) }
+    glu gluEndTrim(nurb: *mut GLUnurbs) { glu::nurbs::with(nurb, |n| n.end_trim()) }
 
     // ---- osmesa.h ----
     free OSMesaCreateContext(format: GLenum, sharelist: *mut OsContext) -> *mut OsContext { osmesa::create_context_ext(format, 24, 8, 0, sharelist) }
