@@ -96,8 +96,7 @@ pub fn guarded_client<R: Zero>(f: impl FnOnce() -> R) -> R {
 /// guard, after the current context's binned triangles are shaded.
 #[inline]
 pub fn guarded<R: Zero>(f: impl FnOnce() -> R) -> R {
-    let _fp = FpGuard::enter();
-    catch_unwind(AssertUnwindSafe(|| {
+    guarded_client(|| {
         // Window-system calls present, resize and switch contexts: the
         // current context's binned triangles are shaded first
         // (render::tile).
@@ -108,6 +107,5 @@ pub fn guarded<R: Zero>(f: impl FnOnce() -> R) -> R {
             unsafe { crate::winsys::bound::with_bound(&mut *p, |c| c.sync_render()) };
         }
         f()
-    }))
-    .unwrap_or_else(|_| R::zero())
+    })
 }
