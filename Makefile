@@ -52,11 +52,13 @@ exports-test: lib
 c-test: lib headless
 	bash c_tests/run.sh
 
-# opengl32.dll + glu32.dll cross-built with mingw-w64 and a Windows program
-# run against them under Wine (windows/run_test.sh; skipped, status 77,
-# where the Rust Windows target or Wine cannot be installed).
+# opengl32.dll + glu32.dll cross-built with mingw-w64, 64-bit
+# (build/windows) and 32-bit stdcall (build/windows32), and Windows
+# programs run against them under Wine (windows/run_test.sh; skipped,
+# status 77, where the Rust Windows target or Wine cannot be installed).
 windows:
 	bash windows/build.sh
+	bash windows/build.sh i686
 
 windows-test:
 	@bash windows/run_test.sh; rc=$$?; if [ $$rc -eq 77 ]; then echo "SKIP windows-test (no Windows toolchain or Wine here)"; else exit $$rc; fi
