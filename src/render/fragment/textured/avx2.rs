@@ -997,9 +997,12 @@ unsafe fn recip(v: __m256) -> __m256 {
 #[inline(always)]
 unsafe fn write<const STORE: bool>(k: &Ctx, cp: *mut [u8; 4], rgba: __m256i, m: __m256i, bits: u32) {
     if STORE {
-        let old = _mm256_loadu_si256(cp.cast());
         let afix = _mm256_set1_epi32(((k.fs.alpha_fix as u32) << 24) as i32);
-        _mm256_storeu_si256(cp.cast(), _mm256_blendv_epi8(old, _mm256_or_si256(rgba, afix), m));
+        let new = _mm256_or_si256(rgba, afix);
+        // All eight lanes written: no read of the old colours (a cache
+        // miss the group would wait for in large windows).
+        let out = if bits == 0xFF { new } else { _mm256_blendv_epi8(_mm256_loadu_si256(cp.cast()), new, m) };
+        _mm256_storeu_si256(cp.cast(), out);
     } else {
         let mut src = [[0u8; 4]; 8];
         _mm256_storeu_si256(src.as_mut_ptr().cast(), rgba);
@@ -1201,10 +1204,14 @@ unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
         let dx1 = _mm256_mul_ps(tt.deriv(k.t.1, k.q.1, &iq), n1);
         let dy0 = _mm256_mul_ps(s.deriv(k.dy[0], k.dy[2], &iq), n0);
         let dy1 = _mm256_mul_ps(tt.deriv(k.dy[1], k.dy[2], &iq), n1);
-        let lx = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(dx0, dx0), _mm256_mul_ps(dx1, dx1)));
-        let ly = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(dy0, dy0), _mm256_mul_ps(dy1, dy1)));
-        // f32::max: a NaN lx gives ly, as maxps does; a NaN ly fails below.
-        let rho = _mm256_max_ps(lx, ly);
+        // ρ = max(√x2, √y2) (the reference's) as √max(x2, y2): the
+        // square root is monotonic and correctly rounded, so the same
+        // bits with one root. NaN: f32::max takes ly for a NaN lx, as
+        // maxps takes y2 for a NaN x2; a NaN y2 gives NaN, which fails
+        // below (the scalar kernel then runs), as before.
+        let x2 = _mm256_add_ps(_mm256_mul_ps(dx0, dx0), _mm256_mul_ps(dx1, dx1));
+        let y2 = _mm256_add_ps(_mm256_mul_ps(dy0, dy0), _mm256_mul_ps(dy1, dy1));
+        let rho = _mm256_sqrt_ps(_mm256_max_ps(x2, y2));
         let normal = _mm256_and_ps(_mm256_cmp_ps::<_CMP_GE_OQ>(rho, _mm256_set1_ps(f32::MIN_POSITIVE)), _mm256_cmp_ps::<_CMP_LT_OQ>(rho, _mm256_set1_ps(f32::INFINITY)));
         let regular = _mm256_or_ps(normal, _mm256_cmp_ps::<_CMP_EQ_OQ>(rho, _mm256_setzero_ps()));
         if _mm256_movemask_ps(regular) != 0xFF {
