@@ -8,8 +8,8 @@
 //! lane, the 2x2 (or 1) texels of each level by gathers, their conversion
 //! c / 255, the lerps `a + (b - a) t`, the environment, fog and the
 //! conversion to bytes: every lane runs the scalar kernel's IEEE
-//! operations in the same order (no fused multiply-add but the one in
-//! `unorm`, which rounds as the separate operations do), so no tolerance
+//! operations in the same order (no fused multiply-add but those of
+//! `lod`'s log2 series, which the scalar form fuses too), so no tolerance
 //! is needed.
 //!
 //! LINEAR filtering reads the bilinear footprint from the sampler's padded
@@ -22,7 +22,9 @@
 //! GL_FASTEST / GL_DONT_CARE (`FX`): `fastest` replaces the texturing of
 //! a group by an approximation in 8-bit fixed point (its documentation
 //! says which); depth stays exact. `tests/reference_diff.rs` bounds its
-//! error against the reference path.
+//! error against the reference path. Its λ at the groups' ends is computed
+//! for eight groups at once (`lambda_next`), in the bits of the per-group
+//! scalar `lambda_at`.
 //!
 //! c / 255 (correctly rounded, as the scalar kernel's division) comes from
 //! integer bits (`unorm`): for a byte c > 0, n = c 0x010101 < 2^24 is
