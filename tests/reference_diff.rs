@@ -1018,6 +1018,35 @@ const TUNNEL_RMSE: f64 = 0.6;
 const TUNNEL_OVER2: f64 = 0.01;
 const TUNNEL_MAX: u8 = 16;
 
+/// GL_FASTEST's λ computed eight groups ahead (`lambda_next` in
+/// textured/avx2.rs) gives the bits of λ computed per group: the tunnel
+/// (spans of every length, tail groups) at two sizes, in the AVX-512 and
+/// AVX2 forms, with and without, byte for byte.
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn fastest_lambda_ahead_is_exact() {
+    use softgl::render::fragment::textured::{force_avx2_on_this_thread, lambda_ahead_on_this_thread};
+    for size in [(240, 180), (301, 203)] {
+        for narrow in [false, true] {
+            force_avx2_on_this_thread(narrow);
+            for frame in [0, 7, 13] {
+                let mut ahead = context(false, size, 1);
+                tunnel(&mut ahead, GL_FASTEST, frame);
+                lambda_ahead_on_this_thread(false);
+                let mut per_group = context(false, size, 1);
+                tunnel(&mut per_group, GL_FASTEST, frame);
+                lambda_ahead_on_this_thread(true);
+                let same = ahead.fb.color == per_group.fb.color;
+                if !same {
+                    force_avx2_on_this_thread(false);
+                }
+                assert!(same, "{size:?} frame {frame}, AVX2 form {narrow}: λ ahead differs from λ per group");
+            }
+        }
+    }
+    force_avx2_on_this_thread(false);
+}
+
 #[test]
 fn fastest_textured_tunnel_error_is_bounded() {
     let size = (240, 180);

@@ -63,6 +63,15 @@ pub fn force_avx2_on_this_thread(on: bool) {
     avx2::force_avx2_on_this_thread(on)
 }
 
+/// Tests: the GL_FASTEST kernel on this thread computes λ per group in
+/// scalar instead of eight groups ahead (`avx2::lambda_next`), which must
+/// give the same bits.
+#[cfg(target_arch = "x86_64")]
+#[doc(hidden)]
+pub fn lambda_ahead_on_this_thread(on: bool) {
+    avx2::lambda_ahead_on_this_thread(on)
+}
+
 /// The textured kernel for a triangle, if its state is the common case.
 /// `approximate`: GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST; the
 /// 8-wide kernel then filters in 8-bit fixed point (`avx2`'s

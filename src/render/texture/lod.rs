@@ -13,9 +13,17 @@
 //!
 //! Method: x = 2^e m with m in [√½, √2); log2 m = 2/ln 2 · atanh r with
 //! r = (m - 1) / (m + 1), |r| < 0.172, as an odd series in r to r^13
-//! (truncation below 2^-41), all in f64 with separate multiplies and adds
-//! in one fixed order (no fused multiply-add), so the SIMD lanes repeat
-//! the scalar operations exactly.
+//! (truncation below 2^-41), all in f64 in one fixed order of IEEE
+//! operations, so the SIMD lanes repeat the scalar ones exactly. The
+//! series in r² is evaluated in Estrin's order with fused multiply-adds
+//! (`f64::mul_add`, a single rounding wherever it runs, so still
+//! reproducible lane by lane): the chain after the division is four
+//! dependent steps (r², r⁴, r⁸, then two fused multiply-adds) instead of
+//! Horner's twelve, which is what the textured kernels wait for per
+//! group (docs/perf-notes.md, round 7).
+//!
+//! The f64 series: C0 + C1 r² + ... + C6 r¹² as
+//! (C0 + C1 r²) + (C2 + C3 r²) r⁴ + ((C4 + C5 r²) + C6 r⁴) r⁸.
 
 /// 2 / (k ln 2) for k = 1, 3, ..., 13: the series of log2 m in r.
 const C: [f64; 7] = {
@@ -36,12 +44,20 @@ fn normal(bits: u32, extra: i32) -> f32 {
     let e = (bits >> 23) as i32 - 127 + big as i32 + extra;
     let m = f32::from_bits(mant | if big { 0x3F00_0000 } else { 0x3F80_0000 }) as f64;
     let r = (m - 1.0) / (m + 1.0);
-    let r2 = r * r;
-    let mut p = C[6];
-    for k in (0..6).rev() {
-        p = p * r2 + C[k];
-    }
-    (e as f64 + r * p) as f32
+    (r.mul_add(series(r * r), e as f64)) as f32
+}
+
+/// The series in r² in Estrin's order (module documentation): the
+/// operations every form repeats.
+#[inline(always)]
+fn series(r2: f64) -> f64 {
+    let r4 = r2 * r2;
+    let r8 = r4 * r4;
+    let a = C[1].mul_add(r2, C[0]);
+    let b = C[3].mul_add(r2, C[2]);
+    let c = C[5].mul_add(r2, C[4]);
+    let hi = C[6].mul_add(r4, c);
+    hi.mul_add(r8, b.mul_add(r4, a))
 }
 
 /// log2 x: -inf at ±0, NaN below 0 and for NaN, +inf at +inf.
@@ -66,10 +82,10 @@ pub fn log2(x: f32) -> f32 {
 /// caller checks.
 ///
 /// # Safety
-/// The CPU must have AVX2.
+/// The CPU must have AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
 #[inline]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 pub unsafe fn log2_8(x: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 {
     use std::arch::x86_64::*;
     let bits = _mm256_castps_si256(x);
@@ -90,10 +106,10 @@ pub unsafe fn log2_8(x: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 
 /// operations per lane, so the same bits, in half the instructions.
 ///
 /// # Safety
-/// The CPU must have AVX2 and AVX-512 F.
+/// The CPU must have AVX2, FMA and AVX-512 F.
 #[cfg(target_arch = "x86_64")]
 #[inline]
-#[target_feature(enable = "avx2,avx512f")]
+#[target_feature(enable = "avx2,fma,avx512f")]
 pub unsafe fn log2_8_wide(x: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 {
     use std::arch::x86_64::*;
     let bits = _mm256_castps_si256(x);
@@ -105,11 +121,17 @@ pub unsafe fn log2_8_wide(x: std::arch::x86_64::__m256) -> std::arch::x86_64::__
     let one = _mm512_set1_pd(1.0);
     let r = _mm512_div_pd(_mm512_sub_pd(m, one), _mm512_add_pd(m, one));
     let r2 = _mm512_mul_pd(r, r);
-    let mut p = _mm512_set1_pd(C[6]);
-    for k in (0..6).rev() {
-        p = _mm512_add_pd(_mm512_mul_pd(p, r2), _mm512_set1_pd(C[k]));
-    }
-    let v = _mm512_cvtpd_ps(_mm512_add_pd(_mm512_cvtepi32_pd(e), _mm512_mul_pd(r, p)));
+    // `series`.
+    // (No closure for the constants: it would not inherit the target
+    // features, and its intrinsics would become calls.)
+    let c: [_; 7] = [_mm512_set1_pd(C[0]), _mm512_set1_pd(C[1]), _mm512_set1_pd(C[2]), _mm512_set1_pd(C[3]), _mm512_set1_pd(C[4]), _mm512_set1_pd(C[5]), _mm512_set1_pd(C[6])];
+    let r4 = _mm512_mul_pd(r2, r2);
+    let r8 = _mm512_mul_pd(r4, r4);
+    let a = _mm512_fmadd_pd(c[1], r2, c[0]);
+    let b = _mm512_fmadd_pd(c[3], r2, c[2]);
+    let hi = _mm512_fmadd_pd(c[6], r4, _mm512_fmadd_pd(c[5], r2, c[4]));
+    let p = _mm512_fmadd_pd(hi, r8, _mm512_fmadd_pd(b, r4, a));
+    let v = _mm512_cvtpd_ps(_mm512_fmadd_pd(r, p, _mm512_cvtepi32_pd(e)));
     let zero = _mm256_cmp_ps::<_CMP_EQ_OQ>(x, _mm256_setzero_ps());
     _mm256_blendv_ps(v, _mm256_set1_ps(f32::NEG_INFINITY), zero)
 }
@@ -117,18 +139,24 @@ pub unsafe fn log2_8_wide(x: std::arch::x86_64::__m256) -> std::arch::x86_64::__
 /// Four lanes of `normal`'s f64 part: m (already in [√½, √2)) and e.
 #[cfg(target_arch = "x86_64")]
 #[inline]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 unsafe fn half(m: std::arch::x86_64::__m128, e: std::arch::x86_64::__m128i) -> std::arch::x86_64::__m128 {
     use std::arch::x86_64::*;
     let m = _mm256_cvtps_pd(m);
     let one = _mm256_set1_pd(1.0);
     let r = _mm256_div_pd(_mm256_sub_pd(m, one), _mm256_add_pd(m, one));
     let r2 = _mm256_mul_pd(r, r);
-    let mut p = _mm256_set1_pd(C[6]);
-    for k in (0..6).rev() {
-        p = _mm256_add_pd(_mm256_mul_pd(p, r2), _mm256_set1_pd(C[k]));
-    }
-    _mm256_cvtpd_ps(_mm256_add_pd(_mm256_cvtepi32_pd(e), _mm256_mul_pd(r, p)))
+    // `series`.
+    // (No closure for the constants: it would not inherit the target
+    // features, and its intrinsics would become calls.)
+    let c: [_; 7] = [_mm256_set1_pd(C[0]), _mm256_set1_pd(C[1]), _mm256_set1_pd(C[2]), _mm256_set1_pd(C[3]), _mm256_set1_pd(C[4]), _mm256_set1_pd(C[5]), _mm256_set1_pd(C[6])];
+    let r4 = _mm256_mul_pd(r2, r2);
+    let r8 = _mm256_mul_pd(r4, r4);
+    let a = _mm256_fmadd_pd(c[1], r2, c[0]);
+    let b = _mm256_fmadd_pd(c[3], r2, c[2]);
+    let hi = _mm256_fmadd_pd(c[6], r4, _mm256_fmadd_pd(c[5], r2, c[4]));
+    let p = _mm256_fmadd_pd(hi, r8, _mm256_fmadd_pd(b, r4, a));
+    _mm256_cvtpd_ps(_mm256_fmadd_pd(r, p, _mm256_cvtepi32_pd(e)))
 }
 
 #[cfg(test)]
@@ -178,7 +206,7 @@ mod tests {
     #[test]
     fn log2_8_matches_scalar() {
         use std::arch::x86_64::*;
-        if !std::arch::is_x86_feature_detected!("avx2") {
+        if !(std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")) {
             return;
         }
         let v: Vec<f32> = values().into_iter().filter(|&x| x == 0.0 || (x >= f32::MIN_POSITIVE && x < f32::INFINITY)).collect();
@@ -196,7 +224,7 @@ mod tests {
     #[test]
     fn log2_8_wide_matches_scalar() {
         use std::arch::x86_64::*;
-        if !(std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("avx512f")) {
+        if !(std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") && std::arch::is_x86_feature_detected!("avx512f")) {
             eprintln!("no AVX-512: log2_8_wide not tested");
             return;
         }

@@ -8,8 +8,8 @@
 //! lane, the 2x2 (or 1) texels of each level by gathers, their conversion
 //! c / 255, the lerps `a + (b - a) t`, the environment, fog and the
 //! conversion to bytes: every lane runs the scalar kernel's IEEE
-//! operations in the same order (no fused multiply-add but the one in
-//! `unorm`, which rounds as the separate operations do), so no tolerance
+//! operations in the same order (no fused multiply-add but those of
+//! `lod`'s log2 series, which the scalar form fuses too), so no tolerance
 //! is needed.
 //!
 //! LINEAR filtering reads the bilinear footprint from the sampler's padded
@@ -22,7 +22,9 @@
 //! GL_FASTEST / GL_DONT_CARE (`FX`): `fastest` replaces the texturing of
 //! a group by an approximation in 8-bit fixed point (its documentation
 //! says which); depth stays exact. `tests/reference_diff.rs` bounds its
-//! error against the reference path.
+//! error against the reference path. Its λ at the groups' ends is computed
+//! for eight groups at once (`lambda_next`), in the bits of the per-group
+//! scalar `lambda_at`.
 //!
 //! c / 255 (correctly rounded, as the scalar kernel's division) comes from
 //! integer bits (`unorm`): for a byte c > 0, n = c 0x010101 < 2^24 is
@@ -147,6 +149,17 @@ thread_local! {
     static NARROW_HERE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
+thread_local! {
+    /// Tests: no λ ahead (`lambda_next`) on this thread.
+    static NO_AHEAD_HERE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Whether GL_FASTEST spans on the calling thread take λ eight groups
+/// ahead (`lambda_next`, the default) or per group: for differential tests.
+pub(super) fn lambda_ahead_on_this_thread(on: bool) {
+    NO_AHEAD_HERE.with(|c| c.set(!on));
+}
+
 /// Makes textured kernel selection on the calling thread take the AVX2
 /// form (`span`) even on CPUs with AVX-512: for differential tests.
 pub(super) fn force_avx2_on_this_thread(on: bool) {
@@ -228,6 +241,9 @@ trait Isa: Copy {
     unsafe fn modulate(t: __m256i, c: __m256i) -> __m256i;
     /// The pixel centres x + 0..7 + 1/2 - x0 (`Row::at`'s argument).
     unsafe fn centres(x: f64, x0: f64) -> Self;
+    /// (x + 8 j + 1/2 - x0) + 8 for j = 0..7 (`lambda_8`).
+    unsafe fn strided(x: f64, x0: f64) -> Self;
+    unsafe fn store(&self, out: &mut [f64; 8]);
     unsafe fn splat(v: f64) -> Self;
     /// r + dx c per lane, as `Row::at`.
     unsafe fn at(r: f64, dx: f64, c: &Self) -> Self;
@@ -280,6 +296,21 @@ impl Isa for D8 {
             _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(0.0, 1.0, 2.0, 3.0)), half), x0),
             _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(4.0, 5.0, 6.0, 7.0)), half), x0),
         ]
+    }
+
+    #[inline(always)]
+    unsafe fn strided(x: f64, x0: f64) -> Self {
+        let (xs, half, x0, eight) = (_mm256_set1_pd(x), _mm256_set1_pd(0.5), _mm256_set1_pd(x0), _mm256_set1_pd(8.0));
+        [
+            _mm256_add_pd(_mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(0.0, 8.0, 16.0, 24.0)), half), x0), eight),
+            _mm256_add_pd(_mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(xs, _mm256_setr_pd(32.0, 40.0, 48.0, 56.0)), half), x0), eight),
+        ]
+    }
+
+    #[inline(always)]
+    unsafe fn store(&self, out: &mut [f64; 8]) {
+        _mm256_storeu_pd(out.as_mut_ptr(), self[0]);
+        _mm256_storeu_pd(out.as_mut_ptr().add(4), self[1]);
     }
 
     #[inline(always)]
@@ -369,6 +400,17 @@ impl Isa for __m512d {
     unsafe fn centres(x: f64, x0: f64) -> Self {
         let steps = _mm512_setr_pd(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
         _mm512_sub_pd(_mm512_add_pd(_mm512_add_pd(_mm512_set1_pd(x), steps), _mm512_set1_pd(0.5)), _mm512_set1_pd(x0))
+    }
+
+    #[inline(always)]
+    unsafe fn strided(x: f64, x0: f64) -> Self {
+        let steps = _mm512_setr_pd(0.0, 8.0, 16.0, 24.0, 32.0, 40.0, 48.0, 56.0);
+        _mm512_add_pd(_mm512_sub_pd(_mm512_add_pd(_mm512_add_pd(_mm512_set1_pd(x), steps), _mm512_set1_pd(0.5)), _mm512_set1_pd(x0)), _mm512_set1_pd(8.0))
+    }
+
+    #[inline(always)]
+    unsafe fn store(&self, out: &mut [f64; 8]) {
+        _mm512_storeu_pd(out.as_mut_ptr(), *self);
     }
 
     #[inline(always)]
@@ -832,7 +874,7 @@ unsafe fn pack_bytes(col: &Rgba) -> __m256i {
 /// ends, coordinates beyond ±2^22 texels, ρ or λ not finite.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-unsafe fn fastest<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], m: __m256i, bits: u32, z: __m256i, stored: __m256i) -> Option<Front> {
+unsafe fn fastest<const D: u8, const STORE: bool, L: Isa>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], m: __m256i, bits: u32, z: __m256i, stored: __m256i) -> Option<Front> {
     let smp = k.smp;
     k.pad?;
     let cx = x as f64 + 0.5 - k.x0;
@@ -888,7 +930,7 @@ unsafe fn fastest<const D: u8, const STORE: bool>(k: &Ctx, x: usize, dp: *mut u3
     if k.lod_mode != Lod::None {
         let (kept_cx, kept) = k.lambda_kept.get();
         let l0 = if kept_cx == cx { kept } else { lambda_at(k, cx)? };
-        let l8 = lambda_at(k, cx + 8.0)?;
+        let l8 = lambda_next::<L>(k, x)?;
         k.lambda_kept.set((cx + 8.0, l8));
         let lambda = _mm256_add_ps(_mm256_set1_ps(l0), _mm256_mul_ps(_mm256_set1_ps((l8 - l0) * 0.125), steps));
         (la, frac) = levels(k, lambda);
@@ -966,18 +1008,112 @@ fn lambda_at(k: &Ctx, cx: f64) -> Option<f32> {
     }
 }
 
+/// `lambda_at(k, cx + 8.0)` for the group at window x (cx its pixel 0's
+/// centre): looked up in the values `lambda_8` computed for the next eight
+/// groups at once, so that λ's long dependent chain (a division, the
+/// derivatives, the polynomial) runs once per eight groups on eight lanes
+/// instead of once per group in scalar; the same bits.
+#[inline(always)]
+unsafe fn lambda_next<L: Isa>(k: &Ctx, x: usize) -> Option<f32> {
+    if k.no_ahead {
+        return lambda_at(k, x as f64 + 0.5 - k.x0 + 8.0);
+    }
+    let (base, valid, vals) = k.lambda_ahead.get();
+    let (valid, vals, j) = if x >= base && (x - base) % 8 == 0 && (x - base) / 8 < 8 {
+        (valid, vals, (x - base) / 8)
+    } else {
+        let (valid, vals) = lambda_8::<L>(k, x);
+        k.lambda_ahead.set((x, valid, vals));
+        (valid, vals, 0)
+    };
+    if valid & (1 << j) != 0 {
+        Some(vals[j])
+    } else {
+        None
+    }
+}
+
+/// `lambda_at(k, cx_j + 8.0)` for the groups j = 0..7 at window x + 8 j
+/// (cx_j = (x + 8 j) + 1/2 - x0, as `fastest` computes it), the same
+/// operations lane by lane; lanes whose ρ² is not a normal finite number
+/// (NaN, 0, subnormal, infinite: where the scalar takes another branch)
+/// are computed by `lambda_at` itself. Only the groups that start inside
+/// the span are computed. Returns the lanes with a value and the values.
+#[inline(always)]
+unsafe fn lambda_8<L: Isa>(k: &Ctx, x: usize) -> (u32, [f32; 8]) {
+    let smp = k.smp;
+    let groups = (k.x_end.saturating_sub(x)).div_ceil(8).min(8);
+    let cx = L::strided(x as f64, k.x0);
+    let q = L::at(k.q.0, k.q.1, &cx);
+    let iq = q.recip();
+    let s = L::at(k.s.0, k.s.1, &cx).mul(&iq);
+    let t = L::at(k.t.0, k.t.1, &cx).mul(&iq);
+    let (n0, n1) = (_mm256_set1_ps(smp.levels[0].wf), _mm256_set1_ps(smp.levels[0].hf));
+    let dx0 = _mm256_mul_ps(s.deriv(k.s.1, k.q.1, &iq), n0);
+    let dx1 = _mm256_mul_ps(t.deriv(k.t.1, k.q.1, &iq), n1);
+    let dy0 = _mm256_mul_ps(s.deriv(k.dy[0], k.dy[2], &iq), n0);
+    let dy1 = _mm256_mul_ps(t.deriv(k.dy[1], k.dy[2], &iq), n1);
+    let x2 = _mm256_add_ps(_mm256_mul_ps(dx0, dx0), _mm256_mul_ps(dx1, dx1));
+    let y2 = _mm256_add_ps(_mm256_mul_ps(dy0, dy0), _mm256_mul_ps(dy1, dy1));
+    // f32::max where both are numbers; other lanes go to `lambda_at`.
+    let rho2 = _mm256_max_ps(x2, y2);
+    let normal = _mm256_and_ps(_mm256_cmp_ps::<_CMP_GE_OQ>(rho2, _mm256_set1_ps(f32::MIN_POSITIVE)), _mm256_cmp_ps::<_CMP_LT_OQ>(rho2, _mm256_set1_ps(f32::INFINITY)));
+    let numbers = _mm256_cmp_ps::<_CMP_ORD_Q>(x2, y2);
+    let regular = _mm256_movemask_ps(_mm256_and_ps(normal, numbers)) as u32;
+    let l = _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(0.5), log2_approx_8(rho2)), _mm256_set1_ps(smp.bias));
+    let l = _mm256_min_ps(_mm256_max_ps(l, _mm256_set1_ps(smp.min_lod)), _mm256_set1_ps(smp.max_lod));
+    let mut vals = [0f32; 8];
+    _mm256_storeu_ps(vals.as_mut_ptr(), l);
+    let want = (1u32 << groups) - 1;
+    let mut valid = regular & want;
+    let mut odd = !regular & want;
+    if odd != 0 {
+        let mut c = [0f64; 8];
+        L::store(&cx, &mut c);
+        while odd != 0 {
+            let j = odd.trailing_zeros() as usize;
+            odd &= odd - 1;
+            if let Some(v) = lambda_at(k, c[j]) {
+                vals[j] = v;
+                valid |= 1 << j;
+            }
+        }
+    }
+    (valid, vals)
+}
+
+/// `log2_approx` on eight lanes (positive normal finite values): the same
+/// operations, so the same bits.
+#[inline(always)]
+unsafe fn log2_approx_8(x: __m256) -> __m256 {
+    const P: [f32; 5] = LOG2_APPROX;
+    let b = _mm256_castps_si256(x);
+    let one = _mm256_set1_ps(1.0);
+    let t = _mm256_sub_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_and_si256(b, _mm256_set1_epi32(0x7F_FFFF)), _mm256_castps_si256(one))), one);
+    let p4 = _mm256_mul_ps(t, _mm256_set1_ps(P[4]));
+    let p3 = _mm256_mul_ps(t, _mm256_add_ps(_mm256_set1_ps(P[3]), p4));
+    let p2 = _mm256_mul_ps(t, _mm256_add_ps(_mm256_set1_ps(P[2]), p3));
+    let p1 = _mm256_mul_ps(t, _mm256_add_ps(_mm256_set1_ps(P[1]), p2));
+    let p = _mm256_mul_ps(t, _mm256_add_ps(_mm256_set1_ps(P[0]), p1));
+    let e = _mm256_cvtepi32_ps(_mm256_sub_epi32(_mm256_srli_epi32::<23>(b), _mm256_set1_epi32(127)));
+    _mm256_add_ps(e, p)
+}
+
 /// log2 x for positive normal finite x, within 4e-5 (GL_FASTEST's λ,
 /// whose fraction becomes an 8-bit weight): the exponent plus a degree-5
 /// polynomial in the mantissa's fraction t (least squares for log2(1 + t)
 /// on [0, 1]), no division.
 #[inline(always)]
 fn log2_approx(x: f32) -> f32 {
-    const P: [f32; 5] = [1.441_825_8, -0.708_682_1, 0.415_421_95, -0.194_422_67, 0.045_885_527];
+    const P: [f32; 5] = LOG2_APPROX;
     let b = x.to_bits();
     let t = f32::from_bits((b & 0x7F_FFFF) | 0x3F80_0000) - 1.0;
     let p = t * (P[0] + t * (P[1] + t * (P[2] + t * (P[3] + t * P[4]))));
     ((b >> 23) as i32 - 127) as f32 + p
 }
+
+/// `log2_approx`'s coefficients (of t, t², ..., t⁵).
+const LOG2_APPROX: [f32; 5] = [1.441_825_8, -0.708_682_1, 0.415_421_95, -0.194_422_67, 0.045_885_527];
 
 /// A plane's values at pixel centres cx + 0..7 in f32 lanes: its value
 /// at cx (f64, rounded once) plus its slope times `steps`.
@@ -997,9 +1133,12 @@ unsafe fn recip(v: __m256) -> __m256 {
 #[inline(always)]
 unsafe fn write<const STORE: bool>(k: &Ctx, cp: *mut [u8; 4], rgba: __m256i, m: __m256i, bits: u32) {
     if STORE {
-        let old = _mm256_loadu_si256(cp.cast());
         let afix = _mm256_set1_epi32(((k.fs.alpha_fix as u32) << 24) as i32);
-        _mm256_storeu_si256(cp.cast(), _mm256_blendv_epi8(old, _mm256_or_si256(rgba, afix), m));
+        let new = _mm256_or_si256(rgba, afix);
+        // All eight lanes written: no read of the old colours (a cache
+        // miss the group would wait for in large windows).
+        let out = if bits == 0xFF { new } else { _mm256_blendv_epi8(_mm256_loadu_si256(cp.cast()), new, m) };
+        _mm256_storeu_si256(cp.cast(), out);
     } else {
         let mut src = [[0u8; 4]; 8];
         _mm256_storeu_si256(src.as_mut_ptr().cast(), rgba);
@@ -1084,6 +1223,13 @@ struct Ctx<'a> {
     /// GL_FASTEST: λ at a pixel centre (cx, λ), computed for the previous
     /// group's end and reused as the next group's start.
     lambda_kept: std::cell::Cell<(f64, f32)>,
+    /// GL_FASTEST: λ at pixel 8 of the groups at x, x + 8, ..., x + 56
+    /// (`lambda_next`): (x, lanes that hold `lambda_at`'s value, λ).
+    lambda_ahead: std::cell::Cell<(usize, u32, [f32; 8])>,
+    /// The span's end (window x, exclusive).
+    x_end: usize,
+    /// Tests: λ per group, not ahead (`lambda_ahead_on_this_thread`).
+    no_ahead: bool,
 }
 
 const W_NONE: u8 = 0;
@@ -1168,7 +1314,7 @@ unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
         return Step::Done(0);
     }
     if FX {
-        return match fastest::<D, STORE>(k, x, dp, cp, m, bits, z, stored) {
+        return match fastest::<D, STORE, L>(k, x, dp, cp, m, bits, z, stored) {
             Some(f) => Step::Texture(f),
             None => Step::Scalar,
         };
@@ -1201,10 +1347,14 @@ unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
         let dx1 = _mm256_mul_ps(tt.deriv(k.t.1, k.q.1, &iq), n1);
         let dy0 = _mm256_mul_ps(s.deriv(k.dy[0], k.dy[2], &iq), n0);
         let dy1 = _mm256_mul_ps(tt.deriv(k.dy[1], k.dy[2], &iq), n1);
-        let lx = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(dx0, dx0), _mm256_mul_ps(dx1, dx1)));
-        let ly = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(dy0, dy0), _mm256_mul_ps(dy1, dy1)));
-        // f32::max: a NaN lx gives ly, as maxps does; a NaN ly fails below.
-        let rho = _mm256_max_ps(lx, ly);
+        // ρ = max(√x2, √y2) (the reference's) as √max(x2, y2): the
+        // square root is monotonic and correctly rounded, so the same
+        // bits with one root. NaN: f32::max takes ly for a NaN lx, as
+        // maxps takes y2 for a NaN x2; a NaN y2 gives NaN, which fails
+        // below (the scalar kernel then runs), as before.
+        let x2 = _mm256_add_ps(_mm256_mul_ps(dx0, dx0), _mm256_mul_ps(dx1, dx1));
+        let y2 = _mm256_add_ps(_mm256_mul_ps(dy0, dy0), _mm256_mul_ps(dy1, dy1));
+        let rho = _mm256_sqrt_ps(_mm256_max_ps(x2, y2));
         let normal = _mm256_and_ps(_mm256_cmp_ps::<_CMP_GE_OQ>(rho, _mm256_set1_ps(f32::MIN_POSITIVE)), _mm256_cmp_ps::<_CMP_LT_OQ>(rho, _mm256_set1_ps(f32::INFINITY)));
         let regular = _mm256_or_ps(normal, _mm256_cmp_ps::<_CMP_EQ_OQ>(rho, _mm256_setzero_ps()));
         if _mm256_movemask_ps(regular) != 0xFF {
@@ -1362,6 +1512,9 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
         flat: t.flat.map(|c| c.map(|v| _mm256_set1_ps(v as f32 / 255.0))),
         fog: t.fog.as_ref().map(|(plane, f)| (row(plane), *f)),
         lambda_kept: std::cell::Cell::new((f64::NAN, 0.0)),
+        lambda_ahead: std::cell::Cell::new((usize::MAX, 0, [0.0; 8])),
+        x_end: x1,
+        no_ahead: FX && NO_AHEAD_HERE.with(|c| c.get()),
     };
     if FX && !(pad.is_some() && k.fog.is_none() && matches!(k.env, EnvFn::Modulate { color: true, .. } | EnvFn::Replace { color: true, alpha: true })) {
         return if L::WIDE { span_wide::<D, STORE, false>(fs, t, px, y, x0, x1) } else { span::<D, STORE, false>(fs, t, px, y, x0, x1) };
@@ -1452,6 +1605,33 @@ mod tests {
             }
         }
         assert!(worst < 4e-5, "worst error {worst}");
+    }
+
+    /// The 8-lane `log2_approx` (GL_FASTEST's λ ahead) gives the scalar
+    /// bits on normal values from 2^-126 to 2^127.
+    #[test]
+    fn log2_approx_8_matches_scalar() {
+        if !(std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")) {
+            return;
+        }
+        for e in -126..=127 {
+            for k in (0..4096u32).step_by(8) {
+                let x: [f32; 8] = std::array::from_fn(|l| {
+                    let k = k + l as u32;
+                    f32::from_bits((((e + 127) as u32) << 23) | (k * 2048 + (k * 7919) % 2048))
+                });
+                let mut out = [0f32; 8];
+                unsafe { approx8(&x, &mut out) };
+                for l in 0..8 {
+                    assert_eq!(out[l].to_bits(), log2_approx(x[l]).to_bits(), "log2_approx_8({:e})", x[l]);
+                }
+            }
+        }
+    }
+
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn approx8(x: &[f32; 8], out: &mut [f32; 8]) {
+        _mm256_storeu_ps(out.as_mut_ptr(), log2_approx_8(_mm256_loadu_ps(x.as_ptr())));
     }
 
     /// The bit form of c / 255 (`unorm`, module documentation) is the
