@@ -122,6 +122,14 @@ const PARALLEL_WORK: u64 = 32 * 1024;
 /// A triangle's setup and span scan, counted as this many pixels.
 const SETUP_PIXELS: u64 = 32;
 
+/// A batch threshold from the environment (`SOFTGL_SUBMIT_WORK`,
+/// `SOFTGL_PARALLEL_WORK`, read per context), for measuring smaller
+/// streamed batches (round 7: not yet timed on an idle machine, so the
+/// defaults stay).
+fn tuned(name: &str, default: u64) -> u64 {
+    std::env::var(name).ok().and_then(|v| v.parse().ok()).unwrap_or(default)
+}
+
 /// SOFTGL_THREADS, or the number of cores.
 pub fn threads_default() -> usize {
     static N: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
@@ -278,8 +286,8 @@ impl Default for BatchCell {
             flying: AtomicBool::new(false),
             left: Arc::default(),
             max_batch: AtomicUsize::new(MAX_BATCH),
-            submit_work: AtomicU64::new(SUBMIT_WORK),
-            parallel_work: AtomicU64::new(PARALLEL_WORK),
+            submit_work: AtomicU64::new(tuned("SOFTGL_SUBMIT_WORK", SUBMIT_WORK)),
+            parallel_work: AtomicU64::new(tuned("SOFTGL_PARALLEL_WORK", PARALLEL_WORK)),
         }
     }
 }
