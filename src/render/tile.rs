@@ -65,6 +65,13 @@
 //! default is every core, and 1 shades each triangle immediately with no
 //! binning and no threads at all. Batches with little work
 //! ([`PARALLEL_WORK`]) are shaded on the calling thread.
+//! `SOFTGL_SUBMIT_WORK` and `SOFTGL_PARALLEL_WORK` override the two
+//! thresholds for measurements (round 7: streaming smaller batches to the
+//! workers, so that a small frame's front end overlaps its shading, is not
+//! yet shown to pay; the pool's hand-off no longer costs a system call
+//! while a worker is awake). Whole-frame operations outside the batch
+//! (glAccum, large glClear and glReadPixels) are cut into bands of rows
+//! by `pool::for_pieces` and `gl::accum`.
 
 use super::fragment::fast::Kernel;
 use super::fragment::{Buffers, SpanPixels};
