@@ -310,3 +310,106 @@ fn lines_points_and_accum_do_not_depend_on_thread_count() {
     }
     assert!(softgl::render::tile::flights_started() - before > 50, "primitives went to the workers");
 }
+
+const W3: i32 = 640;
+const H3: i32 = 480;
+
+/// Whole-frame operations large enough to be cut into bands of rows for
+/// the threads (round 7): clears (whole, masked, scissored), glReadPixels
+/// into plain and padded, offset client layouts, and accumulation
+/// sequences whose recorded clear is dropped by a covering GL_LOAD, filled
+/// before a GL_ACCUM, or filled when a later clear does not cover it; tall
+/// stippled strips between them.
+unsafe fn frame_ops_scene(threads: usize) -> Vec<Vec<u8>> {
+    let mut buf = vec![0u8; (W3 * H3 * 4) as usize];
+    let ctx = context_of(threads, &mut buf, W3, H3);
+    let mut r = Rng(0xf4a3e);
+    let mut out = Vec::new();
+    glClearColor(0.3, 0.2, 0.1, 0.5);
+    glClearStencil(0x5a);
+    glClearAccum(0.25, -0.5, 0.75, 0.1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    triangles(&mut r, 40);
+    read_of(&mut out, W3, H3);
+    // A masked colour clear and a scissored depth and stencil clear.
+    glColorMask(1, 0, 1, 0);
+    glClearColor(0.9, 0.9, 0.05, 0.9);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glColorMask(1, 1, 1, 1);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(37, 21, 555, 433);
+    glClearDepth(0.3);
+    glStencilMask(0x0f);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glStencilMask(0xff);
+    glDisable(GL_SCISSOR_TEST);
+    triangles(&mut r, 40);
+    read_of(&mut out, W3, H3);
+    // Padded, offset client layout; a sub-rectangle.
+    for (row_len, align, skip) in [(W3 + 13, 8, 3), (0, 1, 0)] {
+        glPixelStorei(GL_PACK_ROW_LENGTH, row_len);
+        glPixelStorei(GL_PACK_ALIGNMENT, align);
+        glPixelStorei(GL_PACK_SKIP_ROWS, skip);
+        glPixelStorei(GL_PACK_SKIP_PIXELS, skip);
+        let stride = ((if row_len > 0 { row_len } else { 600 }) * 4 + align - 1) / align * align;
+        let mut px = vec![0xeeu8; (stride * (470 + skip) + 64) as usize];
+        glReadPixels(20, 7, 600, 470, GL_RGBA, GL_UNSIGNED_BYTE, px.as_mut_ptr() as *mut c_void);
+        out.push(px);
+    }
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+    // Tall stippled strips across many bands.
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(2, 0x33F1);
+    glBegin(GL_LINE_STRIP);
+    for _ in 0..12 {
+        glColor3ub(r.next() as u8, r.next() as u8, r.next() as u8);
+        glVertex3f(r.unit() * 1.8 - 0.9, if r.next() % 2 == 0 { -0.99 } else { 0.99 }, 0.0);
+    }
+    glEnd();
+    glDisable(GL_LINE_STIPPLE);
+    // LOAD over a full-window recorded clear; ACCUM; a scissored clear
+    // (recorded) then ACCUM (fills it first); a full clear then a
+    // scissored one (the first filled); MULT, ADD, RETURN.
+    glAccum(GL_LOAD, 0.5);
+    triangles(&mut r, 30);
+    glAccum(GL_ACCUM, 0.25);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(100, 50, 300, 300);
+    glClear(GL_ACCUM_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    glAccum(GL_ACCUM, 0.5);
+    glAccum(GL_RETURN, 1.0);
+    read_of(&mut out, W3, H3);
+    glClearAccum(-0.1, 0.2, 0.4, 0.9);
+    glClear(GL_ACCUM_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(10, 300, 500, 100);
+    glClearAccum(0.6, 0.6, -0.6, 0.2);
+    glClear(GL_ACCUM_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    glAccum(GL_MULT, 0.9);
+    glAccum(GL_ADD, 0.05);
+    glAccum(GL_RETURN, 1.5);
+    read_of(&mut out, W3, H3);
+    OSMesaDestroyContext(ctx);
+    out
+}
+
+#[test]
+fn whole_frame_ops_do_not_depend_on_thread_count() {
+    let one = unsafe { frame_ops_scene(1) };
+    for (k, w) in one.windows(2).enumerate() {
+        assert!(w[0] != w[1], "step {} changes something", k + 1);
+    }
+    for threads in [2, 3] {
+        let many = unsafe { frame_ops_scene(threads) };
+        for (k, (a, b)) in one.iter().zip(&many).enumerate() {
+            let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
+            assert_eq!(diff, 0, "read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
+        }
+    }
+}

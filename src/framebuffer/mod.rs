@@ -90,6 +90,10 @@ pub struct Framebuffer {
     pub depth: Vec<u32>,
     pub stencil: Vec<u8>,
     pub accum: Vec<[i16; 4]>,
+    /// A glClear of the accumulation buffer not yet written into `accum`:
+    /// the rectangle and the fixed-point value (`gl::accum`; a GL_LOAD
+    /// that covers the rectangle makes the fill unnecessary).
+    pub accum_clear: Option<(Rect, [i16; 4])>,
     /// Fragments that have passed the depth test (or reached it with the
     /// test off) since the context began: occlusion queries (gl::queries)
     /// take differences of it. Wraps.
@@ -166,6 +170,7 @@ impl Framebuffer {
             depth: Vec::new(),
             stencil: Vec::new(),
             accum: Vec::new(),
+            accum_clear: None,
             samples_passed: 0,
         }
     }
@@ -319,6 +324,7 @@ impl Framebuffer {
             depth,
             stencil,
             accum,
+            accum_clear: None,
             samples_passed: self.samples_passed,
         };
         Ok(())

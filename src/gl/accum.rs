@@ -6,6 +6,22 @@
 //! test is on (as for glClear), read colours from the read buffer
 //! (glReadBuffer) as [0, 1] values, and GL_RETURN writes every draw buffer
 //! through the colour write mask only: no other fragment operation applies.
+//!
+//! Precision: the spec (4.2.4) leaves the accumulation buffer's bits to the
+//! implementation and asks only that values in [-1, 1] be kept; 16 bits a
+//! channel (15 + sign) is more than the 8-bit colour buffers it is loaded
+//! from. Every operation is the single-precision arithmetic written in the
+//! scalar functions below; the SIMD rows (SSE2 for ACCUM, AVX2 for every
+//! operation, chosen at run time by `fragment::simd::level`) run the same
+//! IEEE operations in the same order per channel, so they give the same
+//! bits (tests below), and need finite `value`s (else the scalar code runs).
+//!
+//! glClear of the accumulation buffer is recorded, not done
+//! (`Framebuffer::accum_clear`): the next glAccum fills it in first,
+//! unless it is a GL_LOAD covering the cleared rectangle, which overwrites
+//! every pixel the fill would have written (the usual LOAD-first sequence
+//! then writes the 8 bytes a pixel once, not twice). Large rectangles are
+//! cut into bands of rows for the rasterizer's threads.
 
 use super::context::Context;
 use super::enums::*;
@@ -84,6 +100,124 @@ mod simd {
     pub fn accum_row(_acc: &mut [[i16; 4]], _src: &[[u8; 4]], _add: &[f32; 256]) -> bool {
         false
     }
+
+    /// Every operation two pixels (eight channels) at a time in 256-bit
+    /// lanes, each the scalar code's IEEE steps: `from_fixed` (i16 to f32,
+    /// divide by 32767), the byte's value `value * (c / 255)`, the
+    /// operation, then `to_fixed` (clamp to [-1, 1], times 32767, round
+    /// half away from zero as `round_small`) or RETURN's byte (times
+    /// value, clamp to [0, 1], times 255, plus 1/2, truncate). No fused
+    /// multiply-add (each product is rounded as in the scalar code). The
+    /// caller checks AVX2 and that `value` is finite (no NaN can arise:
+    /// the clamps and conversions below differ from the scalar ones on
+    /// NaN only). An odd last pixel goes through `tail`.
+    #[cfg(target_arch = "x86_64")]
+    pub mod avx2 {
+        use super::super::ONE;
+        use std::arch::x86_64::*;
+
+        #[inline(always)]
+        unsafe fn from_fixed(p: *const [i16; 4]) -> __m256 {
+            let a = _mm_loadu_si128(p as *const __m128i);
+            _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepi16_epi32(a)), _mm256_set1_ps(ONE))
+        }
+
+        #[inline(always)]
+        unsafe fn byte_value(p: *const [u8; 4], value: __m256) -> __m256 {
+            let c = _mm_loadl_epi64(p as *const __m128i);
+            _mm256_mul_ps(value, _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(c)), _mm256_set1_ps(255.0)))
+        }
+
+        #[inline(always)]
+        unsafe fn store_fixed(p: *mut [i16; 4], v: __m256) {
+            let v = _mm256_mul_ps(_mm256_min_ps(_mm256_set1_ps(1.0), _mm256_max_ps(_mm256_set1_ps(-1.0), v)), _mm256_set1_ps(ONE));
+            let t = _mm256_cvttps_epi32(v);
+            let frac = _mm256_sub_ps(v, _mm256_cvtepi32_ps(t));
+            // Masks are -1 where true: t + 1 at or above half, t - 1 at or below minus half.
+            let up = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_GE_OQ>(frac, _mm256_set1_ps(0.5)));
+            let down = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LE_OQ>(frac, _mm256_set1_ps(-0.5)));
+            let r = _mm256_add_epi32(_mm256_sub_epi32(t, up), down);
+            let packed = _mm_packs_epi32(_mm256_castsi256_si128(r), _mm256_extracti128_si256::<1>(r));
+            _mm_storeu_si128(p as *mut __m128i, packed);
+        }
+
+        /// GL_ACCUM: acc = to_fixed(from_fixed(acc) + value * c / 255).
+        #[target_feature(enable = "avx2")]
+        pub unsafe fn accum_row(acc: &mut [[i16; 4]], src: &[[u8; 4]], value: f32, tail: impl Fn(&mut [i16; 4], [u8; 4])) {
+            let n = acc.len().min(src.len());
+            let v = _mm256_set1_ps(value);
+            let (a, c) = (acc.as_mut_ptr(), src.as_ptr());
+            let mut i = 0;
+            while i + 2 <= n {
+                store_fixed(a.add(i), _mm256_add_ps(from_fixed(a.add(i)), byte_value(c.add(i), v)));
+                i += 2;
+            }
+            if i < n {
+                tail(&mut acc[i], src[i]);
+            }
+        }
+
+        /// GL_LOAD: acc = to_fixed(value * c / 255).
+        #[target_feature(enable = "avx2")]
+        pub unsafe fn load_row(acc: &mut [[i16; 4]], src: &[[u8; 4]], value: f32, tail: impl Fn(&mut [i16; 4], [u8; 4])) {
+            let n = acc.len().min(src.len());
+            let v = _mm256_set1_ps(value);
+            let (a, c) = (acc.as_mut_ptr(), src.as_ptr());
+            let mut i = 0;
+            while i + 2 <= n {
+                store_fixed(a.add(i), byte_value(c.add(i), v));
+                i += 2;
+            }
+            if i < n {
+                tail(&mut acc[i], src[i]);
+            }
+        }
+
+        /// GL_MULT (`mult`) or GL_ADD: acc = to_fixed(from_fixed(acc) * or + value).
+        #[target_feature(enable = "avx2")]
+        pub unsafe fn mult_add_row(acc: &mut [[i16; 4]], mult: bool, value: f32, tail: impl Fn(&mut [i16; 4])) {
+            let n = acc.len();
+            let v = _mm256_set1_ps(value);
+            let a = acc.as_mut_ptr();
+            let mut i = 0;
+            while i + 2 <= n {
+                let f = from_fixed(a.add(i));
+                store_fixed(a.add(i), if mult { _mm256_mul_ps(f, v) } else { _mm256_add_ps(f, v) });
+                i += 2;
+            }
+            if i < n {
+                tail(&mut acc[i]);
+            }
+        }
+
+        /// GL_RETURN of whole pixels (all four channels written): the
+        /// colour byte of `value * from_fixed(acc)`.
+        #[target_feature(enable = "avx2")]
+        pub unsafe fn return_row(acc: &[[i16; 4]], dst: &mut [[u8; 4]], value: f32, tail: impl Fn(&mut [u8; 4], [i16; 4])) {
+            let n = acc.len().min(dst.len());
+            let v = _mm256_set1_ps(value);
+            let (a, d) = (acc.as_ptr(), dst.as_mut_ptr());
+            let mut i = 0;
+            while i + 2 <= n {
+                let x = _mm256_mul_ps(v, from_fixed(a.add(i)));
+                let x = _mm256_min_ps(_mm256_set1_ps(1.0), _mm256_max_ps(_mm256_setzero_ps(), x));
+                let x = _mm256_add_ps(_mm256_mul_ps(x, _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5));
+                let t = _mm256_cvttps_epi32(x);
+                let w = _mm_packs_epi32(_mm256_castsi256_si128(t), _mm256_extracti128_si256::<1>(t));
+                _mm_storel_epi64(d.add(i) as *mut __m128i, _mm_packus_epi16(w, w));
+                i += 2;
+            }
+            if i < n {
+                tail(&mut dst[i], acc[i]);
+            }
+        }
+    }
+}
+
+/// Whether the AVX2 rows may run for `value` (see `simd::avx2`).
+#[inline]
+fn avx2_for(value: f32) -> bool {
+    cfg!(target_arch = "x86_64") && value.is_finite() && crate::render::fragment::simd::level() == crate::render::fragment::simd::Level::Avx2
 }
 
 /// GL_RETURN's byte for an accumulation value: value * acc, clamped,
@@ -144,11 +278,25 @@ fn for_bands(threads: usize, fb: &mut Framebuffer, r: Rect, row: impl Fn(usize, 
     });
 }
 
+/// Whether `outer` holds every pixel of `inner`.
+fn covers(outer: Rect, inner: Rect) -> bool {
+    inner.is_empty() || (outer.x0 <= inner.x0 && outer.y0 <= inner.y0 && outer.x1 >= inner.x1 && outer.y1 >= inner.y1)
+}
+
+/// Writes a recorded accumulation clear into the buffer, in bands.
+fn fill_pending_clear(threads: usize, fb: &mut Framebuffer) {
+    if let Some((r, v)) = fb.accum_clear.take() {
+        let (x0, x1) = (r.x0 as usize, r.x1 as usize);
+        for_bands(threads, fb, r, |_, a, _, _| a[x0..x1].fill(v));
+    }
+}
+
 impl Context {
     /// glAccum. Whole rows at a time; the colour of a byte c is c / 255
     /// times `value`, the same f32 expression per byte whether computed per
-    /// pixel or once into a 256-entry table, so the tables change no
-    /// result (tests below compare with the per-pixel arithmetic).
+    /// pixel, in lanes or once into a 256-entry table, so the tables and
+    /// lanes change no result (tests below compare with the per-pixel
+    /// arithmetic).
     pub fn accum(&mut self, op: u32, value: f32) {
         if !matches!(op, GL_ACCUM | GL_LOAD | GL_RETURN | GL_MULT | GL_ADD) {
             return self.set_error(GL_INVALID_ENUM);
@@ -165,10 +313,16 @@ impl Context {
         let read_back = matches!(self.pixel_read_buffer, GL_BACK | 0x0402 /* BACK_LEFT */);
         let threads = self.derived.render.threads;
         let fb = &mut self.fb;
+        // A recorded clear: a LOAD over all of it overwrites it unseen.
+        if fb.accum_clear.is_some_and(|(c, _)| op == GL_LOAD && covers(r, c)) {
+            fb.accum_clear = None;
+        }
+        fill_pending_clear(threads, fb);
         // The read buffer of ACCUM and LOAD: the drawn one, or the other.
         let read_other = !(read_back == fb.color_is_back || !fb.is_double_buffered());
         let both = fb.draw_both;
         let (x0, x1) = (r.x0 as usize, r.x1 as usize);
+        let lanes = avx2_for(value);
         // Each row is independent of the others: bands of rows in parallel.
         match op {
             GL_ACCUM | GL_LOAD => {
@@ -177,37 +331,65 @@ impl Context {
                 for_bands(threads, fb, r, |_, a, color, other| {
                     let s: &[[u8; 4]] = if read_other { other.expect("a second colour buffer") } else { color };
                     let (s, a) = (&s[x0..x1], &mut a[x0..x1]);
+                    let load_px = |acc: &mut [i16; 4], c: [u8; 4]| *acc = c.map(|v| load[v as usize]);
+                    let accum_px = |acc: &mut [i16; 4], c: [u8; 4]| *acc = accum_pixel(*acc, c.map(|v| add[v as usize]));
+                    #[cfg(target_arch = "x86_64")]
+                    if lanes {
+                        // Safety: AVX2 checked (`avx2_for`).
+                        unsafe {
+                            if op == GL_LOAD {
+                                simd::avx2::load_row(a, s, value, load_px);
+                            } else {
+                                simd::avx2::accum_row(a, s, value, accum_px);
+                            }
+                        }
+                        return;
+                    }
                     if op == GL_LOAD {
                         for (acc, c) in a.iter_mut().zip(s) {
-                            *acc = c.map(|v| load[v as usize]);
+                            load_px(acc, *c);
                         }
                     } else if !simd::accum_row(a, s, &add) {
                         for (acc, c) in a.iter_mut().zip(s) {
-                            *acc = accum_pixel(*acc, c.map(|v| add[v as usize]));
+                            accum_px(acc, *c);
                         }
                     }
                 });
             }
             GL_MULT | GL_ADD => {
-                for_bands(threads, fb, r, |_, a, _, _| {
-                    for a in &mut a[x0..x1] {
-                        for ch in a.iter_mut() {
-                            *ch = to_fixed(if op == GL_MULT { from_fixed(*ch) * value } else { from_fixed(*ch) + value });
-                        }
+                let px = |a: &mut [i16; 4]| {
+                    for ch in a.iter_mut() {
+                        *ch = to_fixed(if op == GL_MULT { from_fixed(*ch) * value } else { from_fixed(*ch) + value });
                     }
+                };
+                for_bands(threads, fb, r, |_, a, _, _| {
+                    #[cfg(target_arch = "x86_64")]
+                    if lanes {
+                        // Safety: AVX2 checked (`avx2_for`).
+                        unsafe { simd::avx2::mult_add_row(&mut a[x0..x1], op == GL_MULT, value, px) };
+                        return;
+                    }
+                    a[x0..x1].iter_mut().for_each(px);
                 });
             }
             _ => {
                 // GL_RETURN: value * acc, clamped, through the masks, into
                 // each draw buffer.
-                let table: Option<Vec<u8>> = ((x1 - x0) * (r.y1 - r.y0) as usize * 4 >= RETURN_TABLE_MIN).then(|| (0..=u16::MAX).map(|a| returned(value, a as i16)).collect());
+                let whole = mask == [true; 4] && !both;
+                let table: Option<Vec<u8>> = (!(lanes && whole) && (x1 - x0) * (r.y1 - r.y0) as usize * 4 >= RETURN_TABLE_MIN).then(|| (0..=u16::MAX).map(|a| returned(value, a as i16)).collect());
                 let byte = |a: i16| match &table {
                     Some(t) => t[a as u16 as usize],
                     None => returned(value, a),
                 };
                 for_bands(threads, fb, r, |_, acc, color, mut other| {
                     let (acc, color) = (&acc[x0..x1], &mut color[x0..x1]);
-                    if let (Some(t), [true, true, true, true], false) = (&table, mask, both) {
+                    #[cfg(target_arch = "x86_64")]
+                    if lanes && whole {
+                        // Safety: AVX2 checked (`avx2_for`).
+                        unsafe { simd::avx2::return_row(acc, color, value, |out, a| *out = a.map(|a| returned(value, a))) };
+                        return;
+                    }
+                    if let (Some(t), true) = (&table, whole) {
                         // The common case: a whole row of whole pixels.
                         for (out, acc) in color.iter_mut().zip(acc) {
                             *out = acc.map(|a| t[a as u16 as usize]);
@@ -236,16 +418,20 @@ impl Context {
         }
     }
 
-    /// The accumulation part of glClear.
+    /// The accumulation part of glClear: recorded, written by the next
+    /// glAccum (see the module comment). A clear covering the one recorded
+    /// before replaces it; otherwise that one is written first.
     pub fn clear_accum_buffer(&mut self, r: Rect) {
         if self.fb.accum.is_empty() {
             return;
         }
         let v = self.accum_clear.map(to_fixed);
-        let w = self.fb.width;
-        for y in r.y0 as usize..r.y1 as usize {
-            self.fb.accum[y * w + r.x0 as usize..y * w + r.x1 as usize].fill(v);
+        let threads = self.derived.render.threads;
+        let fb = &mut self.fb;
+        if fb.accum_clear.is_some_and(|(c, _)| !covers(r, c)) {
+            fill_pending_clear(threads, fb);
         }
+        fb.accum_clear = Some((r, v));
     }
 }
 
@@ -297,6 +483,135 @@ mod tests {
             for i in 0..n {
                 assert_eq!(got[i], accum_pixel(acc[i], src[i].map(|v| add[v as usize])), "value {value} acc {:?} src {:?}", acc[i], src[i]);
             }
+        }
+    }
+
+    /// The AVX2 rows against the scalar functions on every kind of
+    /// accumulation value (random, the extremes, rounding neighbourhoods)
+    /// and values that clamp both ways, on odd and even row lengths (the
+    /// odd pixel goes through the tail closure, made to mark it here so
+    /// that a row that skipped the lanes would be seen).
+    #[test]
+    #[cfg(target_arch = "x86_64")]
+    fn avx2_rows_match_scalar() {
+        if !is_x86_feature_detected!("avx2") {
+            return;
+        }
+        let mut seed = 4242u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 33) as u32
+        };
+        let special = [0i16, 1, -1, 16383, 16384, -16384, 32767, -32767, -32768, 100, -100];
+        for value in [0.25f32, 1.0, -1.0, 0.5001, 3.0, -0.003, 1e-6, 2.0e38, -3.0e38, 0.0, -0.0, 1.0 / 3.0] {
+            for n in [65537usize, 2, 1] {
+                let acc: Vec<[i16; 4]> = (0..n).map(|i| if i % 3 == 0 { [0; 4].map(|_: i16| special[next() as usize % special.len()]) } else { [0; 4].map(|_: i16| next() as i16) }).collect();
+                let src: Vec<[u8; 4]> = (0..n).map(|_| next().to_ne_bytes()).collect();
+                let add: [f32; 256] = std::array::from_fn(|c| value * (c as f32 / 255.0));
+                let odd = n % 2 == 1;
+                let mark = [i16::MIN + 7; 4];
+                // ACCUM
+                let mut got = acc.clone();
+                unsafe { simd::avx2::accum_row(&mut got, &src, value, |a, _| *a = mark) };
+                for i in 0..n {
+                    let want = if odd && i == n - 1 { mark } else { accum_pixel(acc[i], src[i].map(|v| add[v as usize])) };
+                    assert_eq!(got[i], want, "ACCUM value {value} acc {:?} src {:?}", acc[i], src[i]);
+                }
+                // LOAD
+                let mut got = acc.clone();
+                unsafe { simd::avx2::load_row(&mut got, &src, value, |a, _| *a = mark) };
+                for i in 0..n {
+                    let want = if odd && i == n - 1 { mark } else { src[i].map(|v| to_fixed(value * (v as f32 / 255.0))) };
+                    assert_eq!(got[i], want, "LOAD value {value} src {:?}", src[i]);
+                }
+                // MULT and ADD
+                for mult in [true, false] {
+                    let mut got = acc.clone();
+                    unsafe { simd::avx2::mult_add_row(&mut got, mult, value, |a| *a = mark) };
+                    for i in 0..n {
+                        let want = if odd && i == n - 1 { mark } else { acc[i].map(|a| to_fixed(if mult { from_fixed(a) * value } else { from_fixed(a) + value })) };
+                        assert_eq!(got[i], want, "mult {mult} value {value} acc {:?}", acc[i]);
+                    }
+                }
+                // RETURN
+                let mut got = src.clone();
+                unsafe { simd::avx2::return_row(&acc, &mut got, value, |o, _| *o = [7; 4]) };
+                for i in 0..n {
+                    let want = if odd && i == n - 1 { [7; 4] } else { acc[i].map(|a| returned(value, a)) };
+                    assert_eq!(got[i], want, "RETURN value {value} acc {:?}", acc[i]);
+                }
+            }
+        }
+    }
+
+    /// A recorded clear is written before any operation that reads the
+    /// buffer, dropped only by a LOAD that covers it, and replaced by a
+    /// clear that covers it: every sequence gives the buffer an immediate
+    /// fill would give.
+    #[test]
+    fn recorded_clear_is_an_immediate_clear() {
+        use crate::framebuffer::Config;
+        let (w, h) = (37usize, 23usize);
+        let mut seed = 777u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 33) as u32
+        };
+        for case in 0..400 {
+            let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 0, stencil_bits: 0, accum_bits: 16 });
+            c.fb.resize(w, h).unwrap();
+            c.surface_resized(w as i32, h as i32);
+            for px in c.fb.color.iter_mut() {
+                *px = next().to_ne_bytes();
+            }
+            for a in c.fb.accum.iter_mut() {
+                *a = [0; 4].map(|_: i16| next() as i16);
+            }
+            let mut model = c.fb.accum.clone();
+            for _ in 0..4 {
+                // A scissor box that is sometimes the whole window.
+                let whole = next() % 3 == 0;
+                let (x, y) = if whole { (0, 0) } else { ((next() % w as u32) as i32, (next() % h as u32) as i32) };
+                let (sw, sh) = if whole { (w as i32, h as i32) } else { ((next() % w as u32) as i32, (next() % h as u32) as i32) };
+                c.set_scissor(x, y, sw, sh);
+                c.set_enabled(GL_SCISSOR_TEST, !whole);
+                let r = c.scissored_surface();
+                match next() % 4 {
+                    0 => {
+                        let v = [0.0f32; 4].map(|_| (next() % 2001) as f32 / 1000.0 - 1.0);
+                        c.accum_clear = v;
+                        c.clear(GL_ACCUM_BUFFER_BIT);
+                        for yy in r.y0..r.y1 {
+                            for xx in r.x0..r.x1 {
+                                model[yy as usize * w + xx as usize] = v.map(to_fixed);
+                            }
+                        }
+                    }
+                    k => {
+                        let op = [GL_LOAD, GL_ACCUM, GL_MULT][k as usize - 1];
+                        let color = c.fb.color.to_vec();
+                        c.accum(op, 0.75);
+                        for yy in r.y0..r.y1 {
+                            for xx in r.x0..r.x1 {
+                                let i = yy as usize * w + xx as usize;
+                                let s = color[i];
+                                model[i] = std::array::from_fn(|ch| match op {
+                                    GL_LOAD => to_fixed(0.75 * (s[ch] as f32 / 255.0)),
+                                    GL_ACCUM => to_fixed(from_fixed(model[i][ch]) + 0.75 * (s[ch] as f32 / 255.0)),
+                                    _ => to_fixed(from_fixed(model[i][ch]) * 0.75),
+                                });
+                            }
+                        }
+                    }
+                }
+            }
+            c.set_enabled(GL_SCISSOR_TEST, false);
+            // The last operation reads the whole buffer (writing any
+            // recorded clear first).
+            c.accum(GL_MULT, 1.0);
+            let model: Vec<[i16; 4]> = model.iter().map(|a| a.map(|v| to_fixed(from_fixed(v) * 1.0))).collect();
+            let bad = (0..w * h).find(|&i| c.fb.accum[i] != model[i]);
+            assert!(bad.is_none(), "case {case}: pixel {bad:?}");
         }
     }
 

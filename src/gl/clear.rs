@@ -11,12 +11,23 @@ use glam::Vec4;
 
 const CLEAR_BITS: u32 = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
 
-/// Applies `f` to each row slice [x0, x1) of the rectangle in a buffer.
-fn rows<T>(buf: &mut [T], width: usize, r: crate::framebuffer::Rect, mut f: impl FnMut(&mut [T])) {
-    for y in r.y0 as usize..r.y1 as usize {
-        let start = y * width;
-        f(&mut buf[start + r.x0 as usize..start + r.x1 as usize]);
-    }
+/// Rectangles of at least this many pixels are cleared in bands of
+/// [`BAND_ROWS`] rows shared among the rasterizer's threads (round 7):
+/// smaller ones cost less than waking a worker.
+const PARALLEL_PIXELS: usize = 1 << 18;
+const BAND_ROWS: usize = 32;
+
+/// Applies `f` to each row slice [x0, x1) of the rectangle in a buffer,
+/// in bands of rows on `threads` threads when the rectangle is large (each
+/// row is written by one call, so the result does not depend on them).
+fn rows<T: Send>(threads: usize, buf: &mut [T], width: usize, r: crate::framebuffer::Rect, f: impl Fn(&mut [T]) + Sync) {
+    let (x0, x1, y0, y1) = (r.x0 as usize, r.x1 as usize, r.y0 as usize, r.y1 as usize);
+    let threads = if (x1 - x0) * (y1 - y0) >= PARALLEL_PIXELS { threads } else { 1 };
+    crate::render::pool::for_pieces(threads, &mut buf[y0 * width..y1 * width], BAND_ROWS * width, |_, band| {
+        for row in band.chunks_mut(width) {
+            f(&mut row[x0..x1]);
+        }
+    });
 }
 
 impl Context {
@@ -30,6 +41,7 @@ impl Context {
         }
         // Each draw buffer is cleared (4.2.3): both for FRONT_AND_BACK.
         self.sync_draw_buffer();
+        let threads = self.derived.render.threads;
         let fb: &mut Framebuffer = &mut self.fb;
         let w = fb.width;
         if mask & GL_COLOR_BUFFER_BIT != 0 {
@@ -43,9 +55,9 @@ impl Context {
             }
             for color in fb.draw_colors() {
                 if m == [true; 4] {
-                    rows(color, w, r, |row| row.fill(value));
+                    rows(threads, &mut color[..], w, r, |row| row.fill(value));
                 } else if m != [false; 4] {
-                    rows(color, w, r, |row| {
+                    rows(threads, &mut color[..], w, r, |row| {
                         for px in row {
                             for ch in 0..4 {
                                 if m[ch] {
@@ -59,7 +71,7 @@ impl Context {
         }
         if mask & GL_DEPTH_BUFFER_BIT != 0 && fb.has_depth() && self.depth.write_mask {
             let value = depth_to_fixed(self.depth.clear);
-            rows(&mut fb.depth, w, r, |row| row.fill(value));
+            rows(threads, &mut fb.depth, w, r, |row| row.fill(value));
         }
         if mask & GL_STENCIL_BUFFER_BIT != 0 && fb.has_stencil() {
             let bits = fb.config.stencil_bits as u32;
@@ -67,9 +79,9 @@ impl Context {
             let value = (self.stencil.clear as u32 & full) as u8;
             let m = (self.stencil.write_mask & full) as u8;
             if m == full as u8 {
-                rows(&mut fb.stencil, w, r, |row| row.fill(value));
+                rows(threads, &mut fb.stencil, w, r, |row| row.fill(value));
             } else if m != 0 {
-                rows(&mut fb.stencil, w, r, |row| {
+                rows(threads, &mut fb.stencil, w, r, |row| {
                     for s in row {
                         *s = (*s & !m) | (value & m);
                     }

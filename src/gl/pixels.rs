@@ -39,6 +39,10 @@ pub struct PixelStore {
     pub unpack: PixelModes,
 }
 
+/// glReadPixels of at least this many pixels copies bands of rows on the
+/// rasterizer's threads (round 7).
+const PARALLEL_READ: usize = 1 << 17;
+
 impl Context {
     /// glPixelStore (either form; floats are rounded for integer modes).
     pub fn pixel_store(&mut self, pname: u32, value: f64) {
@@ -136,12 +140,29 @@ impl Context {
         let inside = x >= 0 && y >= 0 && (x as i64 + w as i64) <= fb.width as i64 && (y as i64 + h as i64) <= fb.height as i64;
         if format == GL_RGBA && ty == GL_UNSIGNED_BYTE && inside && t.color_is_identity() {
             let layout = dest.layout;
-            for j in 0..h {
-                let src = &color[fb.index(x as usize, y as usize + j)..][..w];
-                let o = layout.offset(0, j, 0);
-                for (i, px) in src.iter().enumerate() {
-                    dest.data[o + 4 * i..o + 4 * i + 4].copy_from_slice(px);
+            let (fw, first) = (fb.width, fb.index(x as usize, y as usize));
+            let copy_row = |j: usize, out: &mut [u8]| {
+                let src = &color[first + j * fw..][..w];
+                for (o, px) in out[..4 * w].chunks_exact_mut(4).zip(src) {
+                    o.copy_from_slice(px);
                 }
+            };
+            let stride = layout.row_stride;
+            if stride >= 4 * w && w * h >= PARALLEL_READ {
+                // Large: bands of rows on the rasterizer's threads (each
+                // output row lies in one band: rows do not overlap).
+                let band = 32;
+                let data = &mut dest.data[layout.offset(0, 0, 0)..];
+                crate::render::pool::for_pieces(self.derived.render.threads, data, band * stride, |k, out| {
+                    for (r, row) in out.chunks_mut(stride).enumerate().take(h.saturating_sub(k * band)) {
+                        copy_row(k * band + r, row);
+                    }
+                });
+                return;
+            }
+            for j in 0..h {
+                let o = layout.offset(0, j, 0);
+                copy_row(j, &mut dest.data[o..]);
             }
             return;
         }

@@ -13,9 +13,44 @@
 //! to live from `start` to the end of `finish`. The pool runs one job at a
 //! time: a second context posting while another's job is posted gets no
 //! workers, and its job runs on its own thread in `finish`.
+//!
+//! Hand-off cost (round 7): small batches are streamed to the workers while
+//! the calling thread goes on with the front end, so a job must not cost a
+//! system call when the worker is awake. A worker that ran out of jobs
+//! spins (polling the posted generation) for up to [`SPIN`] before it
+//! sleeps on the condition variable, and [`start`] and the last worker
+//! leaving a job only signal a condition variable when someone sleeps on it
+//! (the counts are kept under the state's lock, so no wake-up is lost);
+//! [`finish`] likewise spins briefly for the workers still running before
+//! it sleeps.
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Condvar, Mutex, MutexGuard, OnceLock};
+use std::time::{Duration, Instant};
+
+/// How long an idle worker polls for the next job before it sleeps, and
+/// how long [`finish`] polls for running workers: long enough to cover the
+/// gap between two streamed batches of a frame, short enough that an idle
+/// program does not keep a core busy.
+const SPIN: Duration = Duration::from_micros(200);
+const FINISH_SPIN: Duration = Duration::from_micros(50);
+
+/// Polls `done` (with a pause between tries) for at most `limit`; true
+/// when it became true.
+fn spin_until(limit: Duration, done: impl Fn() -> bool) -> bool {
+    let start = Instant::now();
+    loop {
+        for _ in 0..64 {
+            if done() {
+                return true;
+            }
+            std::hint::spin_loop();
+        }
+        if start.elapsed() >= limit {
+            return done();
+        }
+    }
+}
 
 /// A job: takes pieces of work until none is left. Every participant
 /// calls `work` once, at the same time as the others.
@@ -46,6 +81,10 @@ struct State {
     running: usize,
     /// A worker's run of a job panicked.
     panicked: bool,
+    /// Workers asleep on `wake`.
+    sleeping: usize,
+    /// Threads asleep on `done` (in `finish`).
+    waiting: usize,
 }
 
 struct Pool {
@@ -56,6 +95,10 @@ struct Pool {
     /// not a lock: the thread finishing a job may not be the one that
     /// started it (a context can move between threads).
     busy: AtomicBool,
+    /// `State::generation`, readable without the lock (spinning workers).
+    posted: AtomicU64,
+    /// `State::running`, readable without the lock (a spinning `finish`).
+    running: AtomicUsize,
 }
 
 fn lock(s: &Mutex<State>) -> MutexGuard<'_, State> {
@@ -67,7 +110,14 @@ fn lock(s: &Mutex<State>) -> MutexGuard<'_, State> {
 fn pool(workers: usize) -> &'static Pool {
     static POOL: OnceLock<&'static Pool> = OnceLock::new();
     POOL.get_or_init(|| {
-        let p: &'static Pool = Box::leak(Box::new(Pool { state: Mutex::new(State::default()), wake: Condvar::new(), done: Condvar::new(), busy: AtomicBool::new(false) }));
+        let p: &'static Pool = Box::leak(Box::new(Pool {
+            state: Mutex::new(State::default()),
+            wake: Condvar::new(),
+            done: Condvar::new(),
+            busy: AtomicBool::new(false),
+            posted: AtomicU64::new(0),
+            running: AtomicUsize::new(0),
+        }));
         for i in 0..workers {
             let spawned = std::thread::Builder::new().name(format!("softgl-raster-{i}")).spawn(move || worker(p));
             if spawned.is_err() {
@@ -82,15 +132,21 @@ fn pool(workers: usize) -> &'static Pool {
 fn worker(p: &'static Pool) {
     let mut seen = 0u64;
     loop {
+        // Poll before sleeping: the next batch of a frame usually comes
+        // within microseconds, and then needs no system call either side.
+        spin_until(SPIN, || p.posted.load(Ordering::Acquire) != seen);
         let job = {
             let mut s = lock(&p.state);
             while s.generation == seen {
+                s.sleeping += 1;
                 s = p.wake.wait(s).unwrap_or_else(|e| e.into_inner());
+                s.sleeping -= 1;
             }
             seen = s.generation;
             match s.job {
                 Some(job) => {
                     s.running += 1;
+                    p.running.store(s.running, Ordering::Release);
                     job
                 }
                 None => continue,
@@ -100,8 +156,9 @@ fn worker(p: &'static Pool) {
         let ok = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| unsafe { (*job.0).work() })).is_ok();
         let mut s = lock(&p.state);
         s.running -= 1;
+        p.running.store(s.running, Ordering::Release);
         s.panicked |= !ok;
-        if s.running == 0 {
+        if s.running == 0 && s.waiting > 0 {
             p.done.notify_all();
         }
     }
@@ -131,13 +188,19 @@ pub unsafe fn start(threads: usize, job: &(dyn Work + '_)) -> Posted {
     let erased: *const (dyn Work + '_) = job;
     // Safety of the erased lifetime: the caller's contract above.
     let erased: *const (dyn Work + 'static) = std::mem::transmute(erased);
-    {
+    let sleeping = {
         let mut s = lock(&p.state);
         s.job = Some(Job(erased));
         s.generation += 1;
         s.panicked = false;
+        p.posted.store(s.generation, Ordering::Release);
+        s.sleeping
+    };
+    // Workers still spinning see `posted`; only sleeping ones need waking
+    // (a worker about to sleep checks the generation under the lock first).
+    if sleeping > 0 {
+        p.wake.notify_all();
     }
-    p.wake.notify_all();
     Posted { pool: Some(p) }
 }
 
@@ -150,8 +213,16 @@ pub fn finish(posted: Posted, job: &(dyn Work + '_)) {
     if let Some(p) = posted.pool {
         let mut s = lock(&p.state);
         s.job = None;
+        if s.running > 0 {
+            // Workers still at their last band: poll briefly, then sleep.
+            drop(s);
+            spin_until(FINISH_SPIN, || p.running.load(Ordering::Acquire) == 0);
+            s = lock(&p.state);
+        }
         while s.running > 0 {
+            s.waiting += 1;
             s = p.done.wait(s).unwrap_or_else(|e| e.into_inner());
+            s.waiting -= 1;
         }
         panicked = s.panicked;
         drop(s);
@@ -171,6 +242,31 @@ pub fn run(threads: usize, job: &(dyn Work + Sync)) {
     // Safety: finished before `job`'s borrow ends.
     let posted = unsafe { start(threads, job) };
     finish(posted, job);
+}
+
+/// Cuts `buf` into pieces of `piece` elements (the last may be shorter)
+/// and calls `f(k, piece_k)` for each, the pieces shared among `threads`
+/// (round 7: whole-frame operations such as glClear and glReadPixels cut
+/// into bands of rows). Each piece is handed to exactly one call, so the
+/// result does not depend on the thread count.
+pub fn for_pieces<T: Send>(threads: usize, buf: &mut [T], piece: usize, f: impl Fn(usize, &mut [T]) + Sync) {
+    let piece = piece.max(1);
+    if threads <= 1 || buf.len() <= piece {
+        for (k, p) in buf.chunks_mut(piece).enumerate() {
+            f(k, p);
+        }
+        return;
+    }
+    let pieces: Vec<Mutex<Option<&mut [T]>>> = buf.chunks_mut(piece).map(|p| Mutex::new(Some(p))).collect();
+    let next = AtomicUsize::new(0);
+    run(threads, &|| loop {
+        let k = next.fetch_add(1, Ordering::Relaxed);
+        let Some(slot) = pieces.get(k) else { break };
+        // Uncontended: each slot is taken once.
+        if let Some(p) = slot.lock().unwrap_or_else(|e| e.into_inner()).take() {
+            f(k, p);
+        }
+    });
 }
 
 #[cfg(test)]
@@ -193,6 +289,58 @@ mod tests {
                 pieces[k].fetch_add(1, Ordering::Relaxed);
             });
             assert!(pieces.iter().all(|p| p.load(Ordering::Relaxed) == 1), "round {round}");
+        }
+    }
+
+    /// The hand-off cost (run by hand: `cargo test --release --lib
+    /// handoff_cost -- --ignored --nocapture`): a job of one piece posted
+    /// while the calling thread goes on with `gap` of its own work, as a
+    /// streamed batch is; prints how often a worker took the piece and
+    /// the time `start` and `finish` cost the calling thread.
+    #[test]
+    #[ignore]
+    fn handoff_cost() {
+        use std::time::{Duration, Instant};
+        for gap_us in [2u64, 10, 50, 500] {
+            let gap = Duration::from_micros(gap_us);
+            let (n, mut overhead, mut by_worker) = (2000, Duration::ZERO, 0);
+            let caller = std::thread::current().id();
+            for _ in 0..n {
+                let taken = AtomicUsize::new(0);
+                let worker = std::sync::atomic::AtomicBool::new(false);
+                let job = || {
+                    if taken.fetch_add(1, Ordering::Relaxed) == 0 {
+                        worker.store(std::thread::current().id() != caller, Ordering::Relaxed);
+                    }
+                };
+                let t0 = Instant::now();
+                let posted = unsafe { start(2, &job) };
+                let t1 = Instant::now();
+                while t1.elapsed() < gap {
+                    std::hint::spin_loop();
+                }
+                let t2 = Instant::now();
+                finish(posted, &job);
+                overhead += (t1 - t0) + t2.elapsed();
+                by_worker += worker.load(Ordering::Relaxed) as usize;
+            }
+            println!("gap {gap_us} us: start + finish {:.2} us a job, worker took {by_worker} of {n}", overhead.as_secs_f64() * 1e6 / n as f64);
+        }
+    }
+
+    /// Every element is visited once, in the piece its index says.
+    #[test]
+    fn pieces_cover_the_buffer_once() {
+        for (len, piece) in [(0usize, 4usize), (1, 4), (17, 4), (1000, 16), (1000, 1), (64, 64), (65, 64)] {
+            for threads in [1, 2, 3] {
+                let mut buf = vec![0usize; len];
+                for_pieces(threads, &mut buf, piece, |k, p| {
+                    for (i, v) in p.iter_mut().enumerate() {
+                        *v += k * piece + i + 1;
+                    }
+                });
+                assert!(buf.iter().enumerate().all(|(i, &v)| v == i + 1), "len {len} piece {piece} threads {threads}");
+            }
         }
     }
 

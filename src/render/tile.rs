@@ -65,6 +65,13 @@
 //! default is every core, and 1 shades each triangle immediately with no
 //! binning and no threads at all. Batches with little work
 //! ([`PARALLEL_WORK`]) are shaded on the calling thread.
+//! `SOFTGL_SUBMIT_WORK` and `SOFTGL_PARALLEL_WORK` override the two
+//! thresholds for measurements (round 7: streaming smaller batches to the
+//! workers, so that a small frame's front end overlaps its shading, is not
+//! yet shown to pay; the pool's hand-off no longer costs a system call
+//! while a worker is awake). Whole-frame operations outside the batch
+//! (glAccum, large glClear and glReadPixels) are cut into bands of rows
+//! by `pool::for_pieces` and `gl::accum`.
 
 use super::fragment::fast::Kernel;
 use super::fragment::{Buffers, SpanPixels};
@@ -121,6 +128,14 @@ const PARALLEL_WORK: u64 = 32 * 1024;
 
 /// A triangle's setup and span scan, counted as this many pixels.
 const SETUP_PIXELS: u64 = 32;
+
+/// A batch threshold from the environment (`SOFTGL_SUBMIT_WORK`,
+/// `SOFTGL_PARALLEL_WORK`, read per context), for measuring smaller
+/// streamed batches (round 7: not yet timed on an idle machine, so the
+/// defaults stay).
+fn tuned(name: &str, default: u64) -> u64 {
+    std::env::var(name).ok().and_then(|v| v.parse().ok()).unwrap_or(default)
+}
 
 /// SOFTGL_THREADS, or the number of cores.
 pub fn threads_default() -> usize {
@@ -278,8 +293,8 @@ impl Default for BatchCell {
             flying: AtomicBool::new(false),
             left: Arc::default(),
             max_batch: AtomicUsize::new(MAX_BATCH),
-            submit_work: AtomicU64::new(SUBMIT_WORK),
-            parallel_work: AtomicU64::new(PARALLEL_WORK),
+            submit_work: AtomicU64::new(tuned("SOFTGL_SUBMIT_WORK", SUBMIT_WORK)),
+            parallel_work: AtomicU64::new(tuned("SOFTGL_PARALLEL_WORK", PARALLEL_WORK)),
         }
     }
 }
