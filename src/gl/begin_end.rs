@@ -306,12 +306,25 @@ impl Context {
         }
         a.pending = 0;
         let n0 = a.count - k;
-        let mode = a.mode;
-        let slots = std::array::from_fn(|i| ring_slot(mode, n0 + i));
+        // The queued vertices' slots follow each other around the ring
+        // (after a fan's centre, slot RING, its next vertex is in slot 0).
+        let s0 = ring_slot(a.mode, n0);
+        let slots: [usize; LANES] = std::array::from_fn(|i| match s0 {
+            RING if i == 0 => RING,
+            RING => i - 1,
+            _ if s0 + i >= RING => s0 + i - RING,
+            _ => s0 + i,
+        });
         let rs = &self.derived.render;
         vertex4::transform_place(&self.derived.mvp, rs, &a.queue, k, &mut a.verts, slots);
-        for (i, &slot) in slots.iter().enumerate().take(k) {
-            assemble_placed(rs, &mut self.fb, a, n0 + i, slot);
+        // One loop per mode: the assembly's choices fold away.
+        let fb = &mut self.fb;
+        match a.mode {
+            GL_TRIANGLES => assemble_batch::<GL_TRIANGLES>(rs, fb, a, n0, k, slots),
+            GL_TRIANGLE_STRIP => assemble_batch::<GL_TRIANGLE_STRIP>(rs, fb, a, n0, k, slots),
+            GL_TRIANGLE_FAN => assemble_batch::<GL_TRIANGLE_FAN>(rs, fb, a, n0, k, slots),
+            GL_QUADS => assemble_batch::<GL_QUADS>(rs, fb, a, n0, k, slots),
+            _ => assemble_batch::<GL_QUAD_STRIP>(rs, fb, a, n0, k, slots),
         }
     }
 
@@ -505,18 +518,35 @@ impl Context {
     }
 }
 
+/// The slot `d` places before `slot` on the ring (not for a fan's centre).
+#[inline(always)]
+fn ring_back(slot: usize, d: usize) -> usize {
+    if slot >= d { slot - d } else { slot + RING - d }
+}
+
+/// `assemble_placed` for the `k` vertices from `n0`, in `slots`, of a
+/// primitive of mode MODE.
+#[inline(always)]
+fn assemble_batch<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, a: &Assembly, n0: usize, k: usize, slots: [usize; LANES]) {
+    for (i, &slot) in slots.iter().enumerate().take(k) {
+        assemble_placed::<MODE>(rs, fb, a, n0 + i, slot);
+    }
+}
+
 /// The triangles the batched path's vertex `n` (placed, in `slot`)
 /// completes, as `assemble_into` forms them: the same vertices, order,
 /// provoking vertex and edge flags.
 #[inline(always)]
-fn assemble_placed(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, a: &Assembly, n: usize, slot: usize) {
+fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, a: &Assembly, n: usize, slot: usize) {
     let t = &a.verts;
     let direct = a.direct;
-    let ring = |m: usize| ring_slot(a.mode, m);
-    match a.mode {
+    // Vertex m <= n (m >= 1 in a fan): its slot counted back along the
+    // ring (a fan's vertices after its centre are consecutive too).
+    let ring = |m: usize| ring_back(slot, n - m);
+    match MODE {
         GL_TRIANGLES => {
             // Triangles start at slots that are multiples of 3.
-            if n % 3 == 2 {
+            if slot % 3 == 2 {
                 let (s0, s1) = (slot - 2, slot - 1);
                 fill(rs, fb, direct, [&t[s0], &t[s1], &t[slot]], 2, [t[s0].edge, t[s1].edge, t[slot].edge]);
             }
@@ -537,7 +567,7 @@ fn assemble_placed(rs: &render::RenderState, fb: &mut crate::framebuffer::Frameb
         }
         GL_QUADS => {
             // Quads start at slots that are multiples of 4.
-            if n % 4 == 3 {
+            if slot % 4 == 3 {
                 // `quad(q0, q1, q2, q3)` with q3 provoking.
                 let (q0, q1, q2) = (slot - 3, slot - 2, slot - 1);
                 let e = |v: &ClipVertex| v.edge;

@@ -233,14 +233,20 @@ mod tests {
                 m[11] = -1.0;
                 m[15] = 0.0;
             }
-            let mvp = Mat4::from_cols_array(&m);
+            // A quarter of the cases are exact: the identity matrix and a
+            // 512-pixel viewport, so clip coordinates are the object ones
+            // and window x = 256 + 256 x lands on the snap's rounding ties
+            // and on the clip planes' boundaries (|x| = 16 w, w = W_MIN).
+            let exact = case % 4 == 3;
+            let mvp = if exact { Mat4::IDENTITY } else { Mat4::from_cols_array(&m) };
             let (w, h) = match case % 9 {
+                _ if exact => (512.0, 512.0),
                 0 => (1e7, 1e7),
                 1 => (1.0, 1.0),
                 _ => ((unit() * 4000.0).floor() as f64, (unit() * 3000.0).floor() as f64),
             };
             rs.viewport_scale = [w / 2.0, h / 2.0, 0.5 * unit() as f64];
-            rs.viewport_offset = [w / 2.0 + (unit() * 100.0) as f64, h / 2.0 - (unit() * 100.0) as f64, 0.5];
+            rs.viewport_offset = [w / 2.0 + if exact { 0.0 } else { (unit() * 100.0) as f64 }, h / 2.0 - if exact { 0.0 } else { (unit() * 100.0) as f64 }, 0.5];
             let mut obj = Positions::ORIGIN;
             for lane in 0..LANES {
                 let mut p = [0.0f32; 4];
@@ -248,11 +254,19 @@ mod tests {
                     *c = match (unit() * 10.0) as u32 {
                         0 => specials[(unit() * specials.len() as f32) as usize % specials.len()],
                         1 | 2 => (unit() - 0.5) * 100.0,
+                        // Multiples of 1/131072: window x and y at every
+                        // 1/512 pixel (half a subpixel) when exact.
+                        3 | 4 if exact => ((unit() - 0.5) * 2.0 * 150_000.0).round() / 131_072.0,
                         _ => (unit() - 0.5) * 2.0,
                     };
                 }
                 if unit() < 0.7 {
                     p[3] = 1.0;
+                }
+                if exact && unit() < 0.2 {
+                    // On and beside the w >= W_MIN and guard-band planes.
+                    p[3] = [1e-20, 1e-21, 2e-20, 1e-20f32.next_up(), 1e-20f32.next_down(), 0.0, -1e-20][(unit() * 7.0) as usize % 7];
+                    p[0] = [16.0 * p[3], -16.0 * p[3], (16.0 * p[3]).next_up(), p[0]][(unit() * 4.0) as usize % 4];
                 }
                 obj.set(lane, p);
             }
