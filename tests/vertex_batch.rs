@@ -2,7 +2,9 @@
 //! `Assembly::fast`) against the general per-vertex path it stands beside:
 //! two contexts on the same (non-reference) rasterizer, one with
 //! `vertex_batching` off, draw the same random primitives (every mode,
-//! 0 to 13 vertices, random interleavings of glColor, glSecondaryColor,
+//! 0 to 13 vertices and sometimes up to 47: every batch length around the
+//! four the batched path transforms at once, and primitives split across
+//! many batches and wrapping its ring of slots; random interleavings of glColor, glSecondaryColor,
 //! glEdgeFlag, glNormal and glTexCoord between the vertices) under random
 //! state (shading, culling and front face, polygon modes, scissor,
 //! viewport, user clip planes, colour sum, lighting (one or two lights,
@@ -12,12 +14,16 @@
 //! through display lists (GL_COMPILE then glCallList, or
 //! GL_COMPILE_AND_EXECUTE) or from client arrays (glDrawArrays and
 //! glDrawElements; positions of 2 to 4 floats, colours of 3 or 4 floats
-//! or unsigned bytes, which take the specialized array loops). Colour, depth and stencil must be identical: the
+//! or unsigned bytes, which take the specialized array loops), with the
+//! frame shaded and read between glBegin and glEnd (queued vertices must
+//! be drawn first), or in feedback or selection mode (never batched: the
+//! same buffers). Colour, depth and stencil must be identical: the
 //! batched path does the same arithmetic in the same order.
 
 use softgl::framebuffer::Config;
 use softgl::gl::arrays::Array;
 use softgl::gl::enums::*;
+use softgl::gl::select::{NameOp, GL_4D_COLOR_TEXTURE, GL_FEEDBACK, GL_RENDER, GL_SELECT};
 use softgl::gl::fog::{GL_FOG_COORD, GL_FOG_COORD_SRC, GL_FOG_END, GL_FOG_MODE, GL_FOG_START, GL_FRAGMENT_DEPTH};
 use softgl::gl::texture::enums as t;
 use softgl::gl::{Command, Context};
@@ -149,7 +155,10 @@ struct Vertex {
 
 fn primitive(r: &mut Rng) -> (u32, Vec<Vertex>) {
     let mode = r.below(10) as u32; // GL_POINTS ..= GL_POLYGON
-    let n = r.below(14) as usize;
+    // Every length around the batch of four and, a quarter of the time,
+    // primitives long enough to wrap the batched path's ring of slots
+    // several times (split across many batches).
+    let n = if r.chance(25) { r.below(48) } else { r.below(14) } as usize;
     let scale = match r.below(10) {
         0 => 40.0, // far outside: clipped or rejected
         1 => 3.0,  // across the guard band's inside
@@ -248,14 +257,19 @@ fn from_arrays(c: &mut Context, r: &mut Rng, mode: u32, verts: &[Vertex]) {
 fn batched_vertices_match_the_general_path() {
     let (mut fast, mut general) = (context(true), context(false));
     let mut r = Rng(0x5eed_0001);
-    let (mut batchable, mut lit, mut drawn) = (0, 0, 0);
+    let (mut batchable, mut lit, mut drawn, mut feedback, mut mid_drawn) = (0, 0, 0, 0, 0);
     for case in 0..3000 {
         let (state_cmds, can_batch) = state(&mut r);
         let prims: Vec<(u32, Vec<Vertex>)> = (0..1 + r.below(3)).map(|_| primitive(&mut r)).collect();
-        let route = r.below(4); // immediate, list, compile-and-execute, arrays
+        // immediate, list, compile-and-execute, arrays, immediate with the
+        // frame shaded and read mid-primitive, feedback, selection
+        let route = r.below(7);
+        // Where route 4 shades the batch: after this many commands.
+        let mid = r.below(40) as usize;
         let seed = r.next();
         let clear = [r.unit(), r.unit(), r.unit(), 1.0];
-        for c in [&mut fast, &mut general] {
+        let mut seen: [(Vec<_>, Vec<f32>, Vec<u32>, i32); 2] = Default::default();
+        for (ci, c) in [&mut fast, &mut general].into_iter().enumerate() {
             c.submit(Command::ClearColor(clear));
             c.submit(Command::Disable(GL_SCISSOR_TEST));
             c.submit(Command::Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT));
@@ -281,6 +295,47 @@ fn batched_vertices_match_the_general_path() {
                         from_arrays(c, &mut ar, *mode, verts);
                     }
                 }
+                4 => {
+                    // A frame shown between glBegin and glEnd (the window
+                    // system shades the batch): the triangles the vertices
+                    // so far complete are in it, batched or not.
+                    let cmds: Vec<Command> = prims.iter().flat_map(|(mode, verts)| immediate(*mode, verts)).collect();
+                    for (k, cmd) in cmds.into_iter().enumerate() {
+                        c.submit(cmd);
+                        if k == mid {
+                            c.sync_render();
+                            seen[ci].0 = c.fb.color.iter().copied().collect();
+                        }
+                    }
+                }
+                5 => {
+                    // Feedback: no pixels, the same tokens and vertices.
+                    let mut buf = vec![0f32; 4096];
+                    c.feedback_buffer(buf.len() as i32, GL_4D_COLOR_TEXTURE, buf.as_mut_ptr());
+                    c.render_mode(GL_FEEDBACK);
+                    for (mode, verts) in &prims {
+                        for cmd in immediate(*mode, verts) {
+                            c.submit(cmd);
+                        }
+                    }
+                    seen[ci].3 = c.render_mode(GL_RENDER);
+                    seen[ci].1 = buf;
+                }
+                6 => {
+                    // Selection: the same hit records.
+                    let mut buf = vec![0u32; 256];
+                    c.select_buffer(buf.len() as i32, buf.as_mut_ptr());
+                    c.render_mode(GL_SELECT);
+                    c.submit(Command::NameStack(NameOp::Init));
+                    c.submit(Command::NameStack(NameOp::Push(7)));
+                    for (mode, verts) in &prims {
+                        for cmd in immediate(*mode, verts) {
+                            c.submit(cmd);
+                        }
+                    }
+                    seen[ci].3 = c.render_mode(GL_RENDER);
+                    seen[ci].2 = buf;
+                }
                 _ => {
                     for (mode, verts) in &prims {
                         for cmd in immediate(*mode, verts) {
@@ -299,6 +354,15 @@ fn batched_vertices_match_the_general_path() {
         if fast.fb.color.iter().any(|p| *p != fast.fb.color[0]) {
             drawn += 1;
         }
+        let [a, b] = &seen;
+        assert!(a.0 == b.0, "case {case}: the frame shaded mid-primitive differs\nstate: {state_cmds:?}\nprimitives: {prims:?}");
+        assert!(a.1 == b.1 && a.2 == b.2 && a.3 == b.3, "case {case} (route {route}): feedback or selection differs ({} / {})", a.3, b.3);
+        if route >= 5 {
+            feedback += (a.3 > 0) as u32;
+        }
+        if route == 4 && a.0.iter().any(|p| *p != a.0[0]) {
+            mid_drawn += 1;
+        }
         for i in 0..W * H {
             let (a, b) = (fast.fb.color[i], general.fb.color[i]);
             assert!(
@@ -314,4 +378,5 @@ fn batched_vertices_match_the_general_path() {
     // The comparison meant something: many cases took the batched path
     // and drew pixels.
     assert!(batchable > 1500 && lit > 400 && drawn > 1000, "batchable {batchable}, lit {lit}, drawn {drawn}");
+    assert!(feedback > 300 && mid_drawn > 100, "feedback {feedback}, mid-primitive frames drawn {mid_drawn}");
 }

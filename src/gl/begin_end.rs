@@ -13,6 +13,7 @@
 use super::context::Context;
 use super::enums::*;
 use super::select;
+use crate::render::vertex4::{self, Positions, LANES};
 use crate::render::{self, ClipVertex};
 use glam::Vec4;
 
@@ -51,11 +52,32 @@ pub struct Assembly {
     /// The glBegin's caller masked every floating-point exception: the
     /// entry points skip the guard until glEnd (`api::fpenv`).
     fp_trusted: bool,
+    /// With `fast`: the object positions of the last `pending` vertices,
+    /// whose attributes are already in their slots and whose positions
+    /// are transformed and placed four at a time (`flush_vertices`).
+    queue: Positions,
+    pending: usize,
 }
 
-/// Slots of the batched path: a ring of 3 for triangles, strips and fans,
-/// of 4 for quads and quad strips.
-const SLOTS: usize = 4;
+/// The batched path's ring of slots: vertex n of the primitive lives in
+/// slot n % RING (a fan's vertices after the first in (n - 1) % RING, its
+/// centre in slot RING). A multiple of 3 and 4, so a triangle's or
+/// quad's vertices are consecutive slots, and large enough that the
+/// queued vertices never overwrite one an unassembled triangle still
+/// needs (at most LANES queued and 3 before them).
+const RING: usize = 12;
+const SLOTS: usize = RING + 1;
+const _: () = assert!(RING % 12 == 0 && RING >= LANES + 3);
+
+/// The slot of vertex `n` of a batched primitive of mode `mode`.
+#[inline(always)]
+fn ring_slot(mode: u32, n: usize) -> usize {
+    if mode == GL_TRIANGLE_FAN {
+        if n == 0 { RING } else { (n - 1) % RING }
+    } else {
+        n % RING
+    }
+}
 
 impl Context {
     pub fn begin(&mut self, mode: u32) {
@@ -92,10 +114,11 @@ impl Context {
         }
         let plain = self.derived.lighting.is_none() && self.texture.vertex.units.is_empty() && rs.texture.is_none() && rs.fog.is_none();
         let fp_trusted = self.fp_caller_masked;
-        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, plain, direct, fp_trusted });
+        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, plain, direct, fp_trusted, queue: Positions::ORIGIN, pending: 0 });
     }
 
     pub fn end(&mut self) {
+        self.flush_vertices();
         let Some(mut asm) = self.prim.take() else {
             return self.set_error(GL_INVALID_OPERATION);
         };
@@ -220,8 +243,10 @@ impl Context {
     /// the attributes come from the functions `vertex` calls (so the same
     /// bits: colours, lighting, texture coordinates, fog), but the
     /// vertex is written field by field into its slot of the assembly's
-    /// ring (no 224-byte temporary copied per vertex), and triangles whose
-    /// vertices are inside the guard band go straight to setup.
+    /// ring (no 224-byte temporary copied per vertex), its position is
+    /// queued and transformed with three others (`flush_vertices`), and
+    /// triangles whose vertices are inside the guard band go straight to
+    /// setup.
     #[inline(always)]
     pub(crate) fn vertex_fast<const PLAIN: bool>(&mut self, p: [f32; 4]) {
         let obj = Vec4::from_array(p);
@@ -240,20 +265,11 @@ impl Context {
         let textured = !PLAIN && !self.texture.vertex.units.is_empty();
         let tex = if textured { self.vertex_texcoords(obj) } else { [Vec4::ZERO; render::texture::MAX_UNITS] };
         let fog = if PLAIN { 0.0 } else { self.vertex_fog(obj) };
-        let rs = &self.derived.render;
-        let pos = self.derived.mvp * obj;
         let edge = self.current.edge_flag;
         let Some(a) = self.prim.as_mut() else { return };
         let n = a.count;
         a.count += 1;
-        let slot = match a.mode {
-            GL_TRIANGLES | GL_TRIANGLE_STRIP => n % 3,
-            // Slot 0 keeps the fan's centre; the others alternate.
-            GL_TRIANGLE_FAN => if n == 0 { 0 } else { 1 + (n - 1) % 2 },
-            _ => n % 4,
-        };
-        let v = &mut a.verts[slot];
-        v.pos = pos;
+        let v = &mut a.verts[ring_slot(a.mode, n)];
         v.color = color;
         v.back_color = back_color;
         v.edge = edge;
@@ -266,48 +282,49 @@ impl Context {
             }
             v.fog = fog;
         }
-        v.place(rs);
+        // The position waits for three more (`flush_vertices`); nothing
+        // a vertex's position feeds (assembly, setup) can be observed
+        // before glEnd except through it.
+        a.queue.set(a.pending, p);
+        a.pending += 1;
+        if a.pending == LANES {
+            self.flush_vertices();
+        }
+    }
+
+    /// Transforms and places the batched path's queued vertices four at a
+    /// time (`render::vertex4`: the bits `ClipVertex::place` gives), then
+    /// assembles and draws, in order, the triangles they complete. Called
+    /// when the queue is full, at glEnd, and before the context shades its
+    /// batch (`sync_render`: a frame ended inside glBegin/glEnd).
+    #[inline(never)]
+    pub(crate) fn flush_vertices(&mut self) {
+        let Some(a) = self.prim.as_mut() else { return };
+        let k = a.pending;
+        if k == 0 {
+            return;
+        }
+        a.pending = 0;
+        let n0 = a.count - k;
+        // The queued vertices' slots follow each other around the ring
+        // (after a fan's centre, slot RING, its next vertex is in slot 0).
+        let s0 = ring_slot(a.mode, n0);
+        let slots: [usize; LANES] = std::array::from_fn(|i| match s0 {
+            RING if i == 0 => RING,
+            RING => i - 1,
+            _ if s0 + i >= RING => s0 + i - RING,
+            _ => s0 + i,
+        });
+        let rs = &self.derived.render;
+        vertex4::transform_place(&self.derived.mvp, rs, &a.queue, k, &mut a.verts, slots);
+        // One loop per mode: the assembly's choices fold away.
         let fb = &mut self.fb;
-        let t = &a.verts;
-        let direct = a.direct;
         match a.mode {
-            GL_TRIANGLES => {
-                if slot == 2 {
-                    fill(rs, fb, direct, [&t[0], &t[1], &t[2]], 2, [t[0].edge, t[1].edge, t[2].edge]);
-                }
-            }
-            GL_TRIANGLE_STRIP => {
-                if n >= 2 {
-                    let (old, prev) = ((n - 2) % 3, (n - 1) % 3);
-                    // Odd triangles swap their first two vertices (as in
-                    // `assemble_into`); the newest provokes.
-                    let v = if n % 2 == 0 { [&t[old], &t[prev], &t[slot]] } else { [&t[prev], &t[old], &t[slot]] };
-                    fill(rs, fb, direct, v, 2, [true; 3]);
-                }
-            }
-            GL_TRIANGLE_FAN => {
-                if n >= 2 {
-                    let prev = 1 + (n - 2) % 2;
-                    fill(rs, fb, direct, [&t[0], &t[prev], &t[slot]], 2, [true; 3]);
-                }
-            }
-            GL_QUADS => {
-                if slot == 3 {
-                    // `quad(q0, q1, q2, q3)` with q3 provoking.
-                    let e = |v: &ClipVertex| v.edge;
-                    fill(rs, fb, direct, [&t[0], &t[1], &t[3]], 2, [e(&t[0]), false, e(&t[3])]);
-                    fill_flat(rs, fb, direct, [&t[1], &t[2], &t[3]], &t[3], [e(&t[1]), e(&t[2]), false]);
-                }
-            }
-            _ => {
-                // GL_QUAD_STRIP: as `assemble_into`, the quad
-                // (v[n-1], v[n-3], v[n-2], v[n]) split along v[n-1]-v[n].
-                if n >= 3 && n % 2 == 1 {
-                    let (a3, b2, c1) = ((n - 3) % 4, (n - 2) % 4, (n - 1) % 4);
-                    fill(rs, fb, direct, [&t[c1], &t[a3], &t[slot]], 2, [true, false, true]);
-                    fill_flat(rs, fb, direct, [&t[a3], &t[b2], &t[slot]], &t[slot], [true, true, false]);
-                }
-            }
+            GL_TRIANGLES => assemble_batch::<GL_TRIANGLES>(rs, fb, a, n0, k, slots),
+            GL_TRIANGLE_STRIP => assemble_batch::<GL_TRIANGLE_STRIP>(rs, fb, a, n0, k, slots),
+            GL_TRIANGLE_FAN => assemble_batch::<GL_TRIANGLE_FAN>(rs, fb, a, n0, k, slots),
+            GL_QUADS => assemble_batch::<GL_QUADS>(rs, fb, a, n0, k, slots),
+            _ => assemble_batch::<GL_QUAD_STRIP>(rs, fb, a, n0, k, slots),
         }
     }
 
@@ -497,6 +514,75 @@ impl Context {
         match flat_secondary(&self.derived.render, v, v[provoking]) {
             Some(w) => render::draw_triangle(&self.derived.render, &mut self.fb, [&w[0], &w[1], &w[2]], flat, edges),
             None => render::draw_triangle(&self.derived.render, &mut self.fb, v, flat, edges),
+        }
+    }
+}
+
+/// The slot `d` places before `slot` on the ring (not for a fan's centre).
+#[inline(always)]
+fn ring_back(slot: usize, d: usize) -> usize {
+    if slot >= d { slot - d } else { slot + RING - d }
+}
+
+/// `assemble_placed` for the `k` vertices from `n0`, in `slots`, of a
+/// primitive of mode MODE.
+#[inline(always)]
+fn assemble_batch<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, a: &Assembly, n0: usize, k: usize, slots: [usize; LANES]) {
+    for (i, &slot) in slots.iter().enumerate().take(k) {
+        assemble_placed::<MODE>(rs, fb, a, n0 + i, slot);
+    }
+}
+
+/// The triangles the batched path's vertex `n` (placed, in `slot`)
+/// completes, as `assemble_into` forms them: the same vertices, order,
+/// provoking vertex and edge flags.
+#[inline(always)]
+fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, a: &Assembly, n: usize, slot: usize) {
+    let t = &a.verts;
+    let direct = a.direct;
+    // Vertex m <= n (m >= 1 in a fan): its slot counted back along the
+    // ring (a fan's vertices after its centre are consecutive too).
+    let ring = |m: usize| ring_back(slot, n - m);
+    match MODE {
+        GL_TRIANGLES => {
+            // Triangles start at slots that are multiples of 3.
+            if slot % 3 == 2 {
+                let (s0, s1) = (slot - 2, slot - 1);
+                fill(rs, fb, direct, [&t[s0], &t[s1], &t[slot]], 2, [t[s0].edge, t[s1].edge, t[slot].edge]);
+            }
+        }
+        GL_TRIANGLE_STRIP => {
+            if n >= 2 {
+                let (old, prev) = (ring(n - 2), ring(n - 1));
+                // Odd triangles swap their first two vertices (as in
+                // `assemble_into`); the newest provokes.
+                let v = if n % 2 == 0 { [&t[old], &t[prev], &t[slot]] } else { [&t[prev], &t[old], &t[slot]] };
+                fill(rs, fb, direct, v, 2, [true; 3]);
+            }
+        }
+        GL_TRIANGLE_FAN => {
+            if n >= 2 {
+                fill(rs, fb, direct, [&t[RING], &t[ring(n - 1)], &t[slot]], 2, [true; 3]);
+            }
+        }
+        GL_QUADS => {
+            // Quads start at slots that are multiples of 4.
+            if slot % 4 == 3 {
+                // `quad(q0, q1, q2, q3)` with q3 provoking.
+                let (q0, q1, q2) = (slot - 3, slot - 2, slot - 1);
+                let e = |v: &ClipVertex| v.edge;
+                fill(rs, fb, direct, [&t[q0], &t[q1], &t[slot]], 2, [e(&t[q0]), false, e(&t[slot])]);
+                fill_flat(rs, fb, direct, [&t[q1], &t[q2], &t[slot]], &t[slot], [e(&t[q1]), e(&t[q2]), false]);
+            }
+        }
+        _ => {
+            // GL_QUAD_STRIP: as `assemble_into`, the quad
+            // (v[n-1], v[n-3], v[n-2], v[n]) split along v[n-1]-v[n].
+            if n >= 3 && n % 2 == 1 {
+                let (a3, b2, c1) = (ring(n - 3), ring(n - 2), ring(n - 1));
+                fill(rs, fb, direct, [&t[c1], &t[a3], &t[slot]], 2, [true, false, true]);
+                fill_flat(rs, fb, direct, [&t[a3], &t[b2], &t[slot]], &t[slot], [true, true, false]);
+            }
         }
     }
 }

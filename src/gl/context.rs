@@ -185,6 +185,12 @@ impl Context {
     /// is drawn. Cheap when nothing is pending.
     #[inline]
     pub fn sync_render(&mut self) {
+        // Vertices still queued in an open primitive (a frame shown
+        // between glBegin and glEnd) are drawn first, as they were before
+        // the queue existed.
+        if self.prim.is_some() {
+            self.flush_vertices();
+        }
         crate::render::tile::sync(&self.derived.render, &mut self.fb);
     }
 

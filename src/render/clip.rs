@@ -19,7 +19,7 @@ use glam::Vec4;
 /// Guard band, in multiples of the view volume's half-width.
 pub const GUARD: f32 = 16.0;
 /// Smallest w kept after clipping.
-const W_MIN: f32 = 1e-20;
+pub(crate) const W_MIN: f32 = 1e-20;
 
 /// A clipping plane in clip coordinates: inside where n . p >= d.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -24,6 +24,7 @@ pub mod smooth;
 pub mod texture;
 pub mod tile;
 pub mod vertex;
+pub mod vertex4;
 
 use crate::framebuffer::{Framebuffer, Rect};
 use crate::gl::enums::GL_FILL;
