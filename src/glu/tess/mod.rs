@@ -196,7 +196,15 @@ impl Tess {
 
     /// GLU's state rules: moving to `s` one step at a time, reporting each
     /// missing call and supplying it.
+    #[inline]
     fn require(&mut self, s: State) {
+        if self.state != s {
+            self.require_slow(s);
+        }
+    }
+
+    #[cold]
+    fn require_slow(&mut self, s: State) {
         while self.state != s {
             match (self.state, s) {
                 (State::Dormant, _) => {
@@ -266,6 +274,12 @@ pub unsafe fn vertex(t: *mut c_void, location: *const f64, data: *mut c_void) {
     let Some(t) = get(t) else { return };
     t.require(State::InContour);
     if location.is_null() {
+        return;
+    }
+    let p = [location.read_unaligned(), location.add(1).read_unaligned(), location.add(2).read_unaligned()];
+    // The usual case: three finite coordinates within range (NaN fails).
+    if p[0].abs() <= GLU_TESS_MAX_COORD && p[1].abs() <= GLU_TESS_MAX_COORD && p[2].abs() <= GLU_TESS_MAX_COORD {
+        t.input.push(InVertex { p, data });
         return;
     }
     let mut p = [0.0; 3];
@@ -462,6 +476,17 @@ use super::vec3::{cross, dot, norm, sub};
 fn pow2_inv(x: f64) -> f64 {
     if !(x > 0.0) || !x.is_finite() {
         return 1.0;
+    }
+    // From the bits when the answer is clear: a normal x = m·2^e with
+    // m > 1 + 2^-40 has ceil(log2 x) = e + 1 (log2 x is then more than a
+    // thousand ulps of e above e, so the libm route below agrees). Near a
+    // power of two, and for subnormals, that route itself (a libm call
+    // and powi: a fixed cost of every polygon).
+    let b = x.to_bits();
+    let (be, m) = ((b >> 52) as i32, b & ((1u64 << 52) - 1));
+    if be > 0 && m >> 12 != 0 {
+        let e = (be - 1023 + 1).clamp(-1000, 1000);
+        return f64::from_bits(((1023 - e) as u64) << 52);
     }
     let e = x.log2().ceil() as i32;
     2f64.powi(-e.clamp(-1000, 1000))

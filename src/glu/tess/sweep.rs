@@ -511,19 +511,21 @@ impl Tri<'_> {
         }
     }
 
-    fn step(&mut self, mut ch: Chain, v: usize, s: Side) -> Chain {
+    /// v arrives on side `s` of the chain: the triangles it closes, and
+    /// the chain updated in place (no move of the chain's vector).
+    fn step(&mut self, ch: &mut Chain, v: usize, s: Side) {
         if ch.side == Side::Both || ch.verts.len() < 2 {
             ch.verts.push(v);
             ch.side = s;
-            return ch;
+            return;
         }
         if ch.side != s {
-            self.fan(&ch, v);
+            self.fan(ch, v);
             let last = *ch.verts.last().unwrap();
             ch.verts.clear();
             ch.verts.extend([last, v]);
             ch.side = s;
-            return ch;
+            return;
         }
         while ch.verts.len() >= 2 {
             let n = ch.verts.len();
@@ -537,7 +539,6 @@ impl Tri<'_> {
             ch.verts.pop();
         }
         ch.verts.push(v);
-        ch
     }
 
     /// v arrives on one side of the region.
@@ -554,9 +555,9 @@ impl Tri<'_> {
             }
             r.subs.push(kept);
         }
-        let Some(ch) = r.subs.pop() else { return r };
-        let ch = self.step(ch, v, s);
-        r.subs.push(ch);
+        if let Some(ch) = r.subs.last_mut() {
+            self.step(ch, v, s);
+        }
         r
     }
 
@@ -590,21 +591,23 @@ impl Tri<'_> {
                 self.fan(ch, v);
             }
             self.recycle_subs(subs);
-            let lower = self.step(bottom, v, Side::Upper);
-            let upper = self.step(top, v, Side::Lower);
+            let (mut lower, mut upper) = (bottom, top);
+            self.step(&mut lower, v, Side::Upper);
+            self.step(&mut upper, v, Side::Lower);
             return (self.reg(lower), self.reg(upper));
         }
         let Some(ch) = subs.pop() else { return (self.start(v), self.start(v)) };
         self.recycle_subs(subs);
         let h = ch.verts.last().copied().unwrap_or(v);
+        let mut ch = ch;
         if ch.side == Side::Upper {
-            let lower = self.step(ch, v, Side::Upper);
+            self.step(&mut ch, v, Side::Upper);
             let other = self.chain(&[h, v], Side::Lower);
-            (self.reg(lower), self.reg(other))
+            (self.reg(ch), self.reg(other))
         } else {
-            let upper = self.step(ch, v, Side::Lower);
+            self.step(&mut ch, v, Side::Lower);
             let other = self.chain(&[h, v], Side::Upper);
-            (self.reg(other), self.reg(upper))
+            (self.reg(other), self.reg(ch))
         }
     }
 }
