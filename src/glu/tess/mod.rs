@@ -605,7 +605,10 @@ impl Job {
         }
         // Normal: given, or Newell's (on exactly rescaled coordinates, so
         // neither 1e150 nor 1e-150 overflows or underflows).
-        let m = all().map(|v| v.p[0].abs().max(v.p[1].abs()).max(v.p[2].abs())).fold(0.0, f64::max);
+        // (Coordinates are never NaN here: gluTessVertex replaced them.
+        // Plain comparisons then give what f64::max and min would.)
+        let larger = |a: f64, b: f64| if b > a { b } else { a };
+        let m = all().fold(0.0, |m, v| larger(larger(larger(m, v.p[0].abs()), v.p[1].abs()), v.p[2].abs()));
         let k = pow2_inv(m);
         let mut n = self.normal;
         if !(n.iter().all(|x| x.is_finite()) && norm(n) > 0.0) {
@@ -656,8 +659,12 @@ impl Job {
         let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
         for p in p2.iter() {
             for i in 0..2 {
-                lo[i] = lo[i].min(p[i]);
-                hi[i] = hi[i].max(p[i]);
+                if p[i] < lo[i] {
+                    lo[i] = p[i];
+                }
+                if p[i] > hi[i] {
+                    hi[i] = p[i];
+                }
             }
         }
         let c = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])];

@@ -92,16 +92,25 @@ fn lies_on(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> bool {
 
 /// Do edges (a, b) and (c, d) (vertex ids) cross, touch or come within
 /// EPS, other than at a shared endpoint?
+/// (Inlined: the boxes' test is the common answer; coordinates are finite
+/// here, so plain comparisons give what `f64::max`/`min` would.)
+#[inline(always)]
 fn interact(v: &[Vert], a: u32, b: u32, c: u32, d: u32) -> bool {
     let (pa, pb, pc, pd) = (v[a as usize].p, v[b as usize].p, v[c as usize].p, v[d as usize].p);
+    let span = |x: f64, y: f64| if x < y { (x, y) } else { (y, x) };
+    let ((ax0, ax1), (ay0, ay1)) = (span(pa[0], pb[0]), span(pa[1], pb[1]));
+    let ((cx0, cx1), (cy0, cy1)) = (span(pc[0], pd[0]), span(pc[1], pd[1]));
     // Boxes apart by more than EPS: nothing to test (the common case).
-    if pa[0].max(pb[0]) + EPS < pc[0].min(pd[0])
-        || pc[0].max(pd[0]) + EPS < pa[0].min(pb[0])
-        || pa[1].max(pb[1]) + EPS < pc[1].min(pd[1])
-        || pc[1].max(pd[1]) + EPS < pa[1].min(pb[1])
-    {
+    if ax1 + EPS < cx0 || cx1 + EPS < ax0 || ay1 + EPS < cy0 || cy1 + EPS < ay0 {
         return false;
     }
+    interact_near(pa, pb, pc, pd, a, b, c, d)
+}
+
+/// [`interact`] for edges whose boxes come within EPS.
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn interact_near(pa: [f64; 2], pb: [f64; 2], pc: [f64; 2], pd: [f64; 2], a: u32, b: u32, c: u32, d: u32) -> bool {
     if (c != a && c != b && lies_on(pc, pa, pb))
         || (d != a && d != b && lies_on(pd, pa, pb))
         || (a != c && a != d && lies_on(pa, pc, pd))

@@ -465,13 +465,15 @@ pub(super) struct Tri<'a> {
 
 impl Tri<'_> {
     fn chain(&mut self, vs: &[usize], side: Side) -> Chain {
-        let mut verts = self.pool.chains.pop().unwrap_or_default();
+        // (New vectors start with room for a typical chain: a fresh
+        // tessellator's first polygons would otherwise regrow each one.)
+        let mut verts = self.pool.chains.pop().unwrap_or_else(|| Vec::with_capacity(16));
         verts.extend_from_slice(vs);
         Chain { verts, side }
     }
 
     fn reg(&mut self, ch: Chain) -> Reg {
-        let mut subs = self.pool.subs.pop().unwrap_or_default();
+        let mut subs = self.pool.subs.pop().unwrap_or_else(|| Vec::with_capacity(4));
         subs.push(ch);
         Reg { subs }
     }
