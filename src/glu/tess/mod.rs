@@ -31,11 +31,11 @@
 //! up, having output nothing, on anything else. Then the general path:
 //! [`merge`] (near-coincident vertices), [`split`] (the arrangement:
 //! crossings and touching), [`sweep`] (windings, the region, triangles).
-//! Two shortcuts between them: a planar polygon (64 vertices or more) with
-//! an edge off the region's boundary, which the fast path cannot
-//! triangulate, goes from it straight to [`sweep`] (nothing to merge or
-//! split) in its vertex order; and when the fast path gives up after
-//! sorting the input, the general path sorts only the vertices the
+//! The fast path triangulates faces, so it also takes planar input with
+//! edges off the region's boundary (nested same-direction contours under
+//! NONZERO, an empty selection); the general path triangulates the region
+//! between boundary edges only. A shortcut between them: when the fast
+//! path gives up after sorting the input, the general path sorts only the vertices the
 //! splitter added and merges them into that order (and, if it got past
 //! its near-coincident vertex check, skips the merge lookups: there is
 //! nothing to merge). Every buffer they use
@@ -164,8 +164,8 @@ pub fn new_tess() -> *mut c_void {
         tolerance: 0.0,
         normal: [0.0; 3],
         polygon_data: std::ptr::null_mut(),
-        input: Vec::new(),
-        starts: Vec::new(),
+        input: Vec::with_capacity(64),
+        starts: Vec::with_capacity(8),
         scratch: None,
         busy: false,
         delete_pending: false,
@@ -394,7 +394,11 @@ pub unsafe fn end_polygon(tp: *mut c_void) {
     t.state = State::Dormant;
     let input = std::mem::take(&mut t.input);
     let starts = std::mem::take(&mut t.starts);
-    let mut scratch = t.scratch.take().unwrap_or_default();
+    let mut scratch = t.scratch.take().unwrap_or_else(|| {
+        let mut s = Box::<Scratch>::default();
+        s.reserve(64);
+        s
+    });
     let job = Job { cb: t.cb, pdata: t.polygon_data, rule: t.rule, boundary_only: t.boundary_only, normal: t.normal };
     t.busy = true;
     // Callbacks run with `busy` set; a panic in our code is caught by the
@@ -459,6 +463,25 @@ struct Scratch {
     split: split::Scratch,
     sweep: sweep::Scratch,
     simple: simple::Scratch,
+}
+
+impl Scratch {
+    /// See [`split::Scratch::reserve`].
+    fn reserve(&mut self, n: usize) {
+        for v in [&mut self.fresh, &mut self.sorted] {
+            v.reserve(n);
+        }
+        self.p2.reserve(n);
+        self.verts.reserve(n);
+        self.p3.reserve(n);
+        self.data.reserve(n);
+        self.id.reserve(n);
+        self.rep.reserve(n);
+        self.segs.reserve(n);
+        self.split.reserve(n);
+        self.sweep.reserve(n);
+        self.simple.reserve(n);
+    }
 }
 
 /// One polygon's tessellation, with a copy of the callbacks it uses.
@@ -704,20 +727,6 @@ impl Job {
             simple::Outcome::Done => {
                 data.clear();
                 data.extend(all().map(|v| v.data));
-                self.emit(&sw.region, data);
-                return;
-            }
-            simple::Outcome::Planar => {
-                // Nothing to merge or split: the contours' edges as they are,
-                // in the fast path's vertex order.
-                data.clear();
-                data.extend(all().map(|v| v.data));
-                segs.clear();
-                for (k, &s) in contours.starts.iter().enumerate() {
-                    let e = contours.starts.get(k + 1).copied().unwrap_or(verts.len());
-                    segs.extend((s..e).map(|i| Seg { a: i, b: if i + 1 < e { i + 1 } else { s } }));
-                }
-                sweep::region(verts, segs, self.rule, self.boundary_only, Some(&si.keyed), sw);
                 self.emit(&sw.region, data);
                 return;
             }
