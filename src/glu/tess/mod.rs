@@ -877,3 +877,36 @@ impl Job {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::pow2_inv;
+
+    /// The bit route of `pow2_inv` gives what the libm route (2^-ceil(log2 x))
+    /// gives: random doubles of every exponent, and values next to powers
+    /// of two (where the libm route itself decides).
+    #[test]
+    fn pow2_inv_matches_log2_route() {
+        let libm = |x: f64| 2f64.powi(-(x.log2().ceil() as i32).clamp(-1000, 1000));
+        let mut s = 0x2545_f491_4f6c_dd1du64;
+        let mut check = |x: f64| {
+            if x > 0.0 && x.is_finite() {
+                assert_eq!(pow2_inv(x).to_bits(), libm(x).to_bits(), "x = {x:e} ({:#x})", x.to_bits());
+            }
+        };
+        for _ in 0..200_000 {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            check(f64::from_bits(s >> 1));
+        }
+        for e in -1074..1024 {
+            let p = 2f64.powi(e);
+            for k in 0..64u64 {
+                check(f64::from_bits(p.to_bits() + k));
+                check(f64::from_bits(p.to_bits() + (k << 12)));
+                check(f64::from_bits(p.to_bits().wrapping_sub(k)));
+            }
+        }
+    }
+}
