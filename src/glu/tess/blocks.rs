@@ -92,6 +92,7 @@ impl<T> BlockList<T> {
 
     /// The index of the first element for which `pred` is false, `pred`
     /// being true on a prefix of the list (as `slice::partition_point`).
+    #[inline]
     pub fn partition_point(&self, mut pred: impl FnMut(&T) -> bool) -> usize {
         // One run (small polygons): the slice's search alone.
         if let [run] = &self.runs[..] {
