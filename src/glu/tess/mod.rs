@@ -889,7 +889,7 @@ mod tests {
     fn pow2_inv_matches_log2_route() {
         let libm = |x: f64| 2f64.powi(-(x.log2().ceil() as i32).clamp(-1000, 1000));
         let mut s = 0x2545_f491_4f6c_dd1du64;
-        let mut check = |x: f64| {
+        let check = |x: f64| {
             if x > 0.0 && x.is_finite() {
                 assert_eq!(pow2_inv(x).to_bits(), libm(x).to_bits(), "x = {x:e} ({:#x})", x.to_bits());
             }
