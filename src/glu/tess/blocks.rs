@@ -92,7 +92,12 @@ impl<T> BlockList<T> {
 
     /// The index of the first element for which `pred` is false, `pred`
     /// being true on a prefix of the list (as `slice::partition_point`).
+    #[inline]
     pub fn partition_point(&self, mut pred: impl FnMut(&T) -> bool) -> usize {
+        // One run (small polygons): the slice's search alone.
+        if let [run] = &self.runs[..] {
+            return run.partition_point(pred);
+        }
         // The first run whose last element fails, by binary search over runs.
         let r = self.runs.partition_point(|run| run.last().is_some_and(&mut pred));
         let before: usize = self.runs[..r].iter().map(|run| run.len()).sum();

@@ -31,11 +31,11 @@
 //! up, having output nothing, on anything else. Then the general path:
 //! [`merge`] (near-coincident vertices), [`split`] (the arrangement:
 //! crossings and touching), [`sweep`] (windings, the region, triangles).
-//! Two shortcuts between them: a planar polygon (64 vertices or more) with
-//! an edge off the region's boundary, which the fast path cannot
-//! triangulate, goes from it straight to [`sweep`] (nothing to merge or
-//! split) in its vertex order; and when the fast path gives up after
-//! sorting the input, the general path sorts only the vertices the
+//! The fast path triangulates faces, so it also takes planar input with
+//! edges off the region's boundary (nested same-direction contours under
+//! NONZERO, an empty selection); the general path triangulates the region
+//! between boundary edges only. A shortcut between them: when the fast
+//! path gives up after sorting the input, the general path sorts only the vertices the
 //! splitter added and merges them into that order (and, if it got past
 //! its near-coincident vertex check, skips the merge lookups: there is
 //! nothing to merge). Every buffer they use
@@ -164,8 +164,8 @@ pub fn new_tess() -> *mut c_void {
         tolerance: 0.0,
         normal: [0.0; 3],
         polygon_data: std::ptr::null_mut(),
-        input: Vec::new(),
-        starts: Vec::new(),
+        input: Vec::with_capacity(64),
+        starts: Vec::with_capacity(8),
         scratch: None,
         busy: false,
         delete_pending: false,
@@ -196,7 +196,15 @@ impl Tess {
 
     /// GLU's state rules: moving to `s` one step at a time, reporting each
     /// missing call and supplying it.
+    #[inline]
     fn require(&mut self, s: State) {
+        if self.state != s {
+            self.require_slow(s);
+        }
+    }
+
+    #[cold]
+    fn require_slow(&mut self, s: State) {
         while self.state != s {
             match (self.state, s) {
                 (State::Dormant, _) => {
@@ -266,6 +274,12 @@ pub unsafe fn vertex(t: *mut c_void, location: *const f64, data: *mut c_void) {
     let Some(t) = get(t) else { return };
     t.require(State::InContour);
     if location.is_null() {
+        return;
+    }
+    let p = [location.read_unaligned(), location.add(1).read_unaligned(), location.add(2).read_unaligned()];
+    // The usual case: three finite coordinates within range (NaN fails).
+    if p[0].abs() <= GLU_TESS_MAX_COORD && p[1].abs() <= GLU_TESS_MAX_COORD && p[2].abs() <= GLU_TESS_MAX_COORD {
+        t.input.push(InVertex { p, data });
         return;
     }
     let mut p = [0.0; 3];
@@ -380,7 +394,11 @@ pub unsafe fn end_polygon(tp: *mut c_void) {
     t.state = State::Dormant;
     let input = std::mem::take(&mut t.input);
     let starts = std::mem::take(&mut t.starts);
-    let mut scratch = t.scratch.take().unwrap_or_default();
+    let mut scratch = t.scratch.take().unwrap_or_else(|| {
+        let mut s = Box::<Scratch>::default();
+        s.reserve(64);
+        s
+    });
     let job = Job { cb: t.cb, pdata: t.polygon_data, rule: t.rule, boundary_only: t.boundary_only, normal: t.normal };
     t.busy = true;
     // Callbacks run with `busy` set; a panic in our code is caught by the
@@ -447,6 +465,25 @@ struct Scratch {
     simple: simple::Scratch,
 }
 
+impl Scratch {
+    /// See [`split::Scratch::reserve`].
+    fn reserve(&mut self, n: usize) {
+        for v in [&mut self.fresh, &mut self.sorted] {
+            v.reserve(n);
+        }
+        self.p2.reserve(n);
+        self.verts.reserve(n);
+        self.p3.reserve(n);
+        self.data.reserve(n);
+        self.id.reserve(n);
+        self.rep.reserve(n);
+        self.segs.reserve(n);
+        self.split.reserve(n);
+        self.sweep.reserve(n);
+        self.simple.reserve(n);
+    }
+}
+
 /// One polygon's tessellation, with a copy of the callbacks it uses.
 struct Job {
     cb: Callbacks,
@@ -462,6 +499,17 @@ use super::vec3::{cross, dot, norm, sub};
 fn pow2_inv(x: f64) -> f64 {
     if !(x > 0.0) || !x.is_finite() {
         return 1.0;
+    }
+    // From the bits when the answer is clear: a normal x = m·2^e with
+    // m > 1 + 2^-40 has ceil(log2 x) = e + 1 (log2 x is then more than a
+    // thousand ulps of e above e, so the libm route below agrees). Near a
+    // power of two, and for subnormals, that route itself (a libm call
+    // and powi: a fixed cost of every polygon).
+    let b = x.to_bits();
+    let (be, m) = ((b >> 52) as i32, b & ((1u64 << 52) - 1));
+    if be > 0 && m >> 12 != 0 {
+        let e = (be - 1023 + 1).clamp(-1000, 1000);
+        return f64::from_bits(((1023 - e) as u64) << 52);
     }
     let e = x.log2().ceil() as i32;
     2f64.powi(-e.clamp(-1000, 1000))
@@ -580,7 +628,10 @@ impl Job {
         }
         // Normal: given, or Newell's (on exactly rescaled coordinates, so
         // neither 1e150 nor 1e-150 overflows or underflows).
-        let m = all().map(|v| v.p[0].abs().max(v.p[1].abs()).max(v.p[2].abs())).fold(0.0, f64::max);
+        // (Coordinates are never NaN here: gluTessVertex replaced them.
+        // Plain comparisons then give what f64::max and min would.)
+        let larger = |a: f64, b: f64| if b > a { b } else { a };
+        let m = all().fold(0.0, |m, v| larger(larger(larger(m, v.p[0].abs()), v.p[1].abs()), v.p[2].abs()));
         let k = pow2_inv(m);
         let mut n = self.normal;
         if !(n.iter().all(|x| x.is_finite()) && norm(n) > 0.0) {
@@ -631,8 +682,12 @@ impl Job {
         let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
         for p in p2.iter() {
             for i in 0..2 {
-                lo[i] = lo[i].min(p[i]);
-                hi[i] = hi[i].max(p[i]);
+                if p[i] < lo[i] {
+                    lo[i] = p[i];
+                }
+                if p[i] > hi[i] {
+                    hi[i] = p[i];
+                }
             }
         }
         let c = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])];
@@ -672,20 +727,6 @@ impl Job {
             simple::Outcome::Done => {
                 data.clear();
                 data.extend(all().map(|v| v.data));
-                self.emit(&sw.region, data);
-                return;
-            }
-            simple::Outcome::Planar => {
-                // Nothing to merge or split: the contours' edges as they are,
-                // in the fast path's vertex order.
-                data.clear();
-                data.extend(all().map(|v| v.data));
-                segs.clear();
-                for (k, &s) in contours.starts.iter().enumerate() {
-                    let e = contours.starts.get(k + 1).copied().unwrap_or(verts.len());
-                    segs.extend((s..e).map(|i| Seg { a: i, b: if i + 1 < e { i + 1 } else { s } }));
-                }
-                sweep::region(verts, segs, self.rule, self.boundary_only, Some(&si.keyed), sw);
                 self.emit(&sw.region, data);
                 return;
             }
@@ -832,6 +873,39 @@ impl Job {
                     self.vertex(data[v]);
                 }
                 self.end();
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::pow2_inv;
+
+    /// The bit route of `pow2_inv` gives what the libm route (2^-ceil(log2 x))
+    /// gives: random doubles of every exponent, and values next to powers
+    /// of two (where the libm route itself decides).
+    #[test]
+    fn pow2_inv_matches_log2_route() {
+        let libm = |x: f64| 2f64.powi(-(x.log2().ceil() as i32).clamp(-1000, 1000));
+        let mut s = 0x2545_f491_4f6c_dd1du64;
+        let check = |x: f64| {
+            if x > 0.0 && x.is_finite() {
+                assert_eq!(pow2_inv(x).to_bits(), libm(x).to_bits(), "x = {x:e} ({:#x})", x.to_bits());
+            }
+        };
+        for _ in 0..200_000 {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            check(f64::from_bits(s >> 1));
+        }
+        for e in -1074..1024 {
+            let p = 2f64.powi(e);
+            for k in 0..64u64 {
+                check(f64::from_bits(p.to_bits() + k));
+                check(f64::from_bits(p.to_bits() + (k << 12)));
+                check(f64::from_bits(p.to_bits().wrapping_sub(k)));
             }
         }
     }

@@ -15,15 +15,14 @@
 //! that cross, touch or overlap, or a vertex where the active list is not
 //! as a planar arrangement would have it (floating-point doubt).
 //!
-//! An edge with the selected region on both sides or neither (an empty
-//! selection, or same-direction nested contours under NONZERO) is not a
-//! boundary edge, which this sweep's triangulation cannot step over; from
-//! there (on polygons of [`PLANAR_MIN`] vertices or more; smaller ones give
-//! up) it only finishes the planarity check and answers
-//! [`Outcome::Planar`]: the input is already the arrangement the merger
-//! and splitter would build (they would find nothing), so the caller hands
-//! the contours' edges straight to [`sweep::region`] with this sweep's
-//! vertex order.
+//! The triangulation works on faces, not on the selected region: every
+//! face between two active edges whose winding the rule selects is a
+//! region of its own, so an edge with the selected region on both sides
+//! (same-direction nested contours under NONZERO) separates two regions
+//! and becomes a triangle edge (unflagged: it is not on the boundary), and
+//! an edge with the region on neither side (an empty selection) only takes
+//! part in the planarity check. Only edges whose two sides differ go into
+//! the boundary.
 //!
 //! Edge e is the contour edge from vertex e to its successor; vertex ids
 //! are input indices (nothing is merged). The active list is a
@@ -38,11 +37,6 @@ use super::sweep::{orient, Pool, Reg, Region, Rule, Side, Tri, Vert, EPS};
 pub(super) enum Outcome {
     /// Tessellated: `region` holds the result.
     Done,
-    /// A planar arrangement (no near-coincident vertices, no crossing or
-    /// touching edges, contours of three vertices or more) with an edge
-    /// that is not on the region's boundary: `region` is to be ignored;
-    /// [`Scratch::sorted`] holds the vertices in sweep order.
-    Planar,
     /// Anything else: the general path's business.
     No,
 }
@@ -56,9 +50,6 @@ struct Entry {
     reg: Option<Reg>,
 }
 
-/// From this many vertices, an edge off the region's boundary does not end
-/// the sweep: it finishes the planarity check for [`Outcome::Planar`].
-const PLANAR_MIN: usize = 64;
 
 /// Buffers kept from one polygon to the next.
 #[derive(Default)]
@@ -73,6 +64,18 @@ pub struct Scratch {
     next: Vec<u32>,
     prev: Vec<u32>,
     active: BlockList<Entry>,
+}
+
+impl Scratch {
+    /// Room for about `n` of everything, made once when the tessellator
+    /// gets its buffers: its first polygons then do not regrow each vector
+    /// step by step (a fixed cost that shows on small polygons).
+    pub(super) fn reserve(&mut self, n: usize) {
+        self.keyed.reserve(n);
+        self.rank.reserve(n);
+        self.next.reserve(n);
+        self.prev.reserve(n);
+    }
 }
 
 use super::sweep::ord_key;
@@ -92,16 +95,25 @@ fn lies_on(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> bool {
 
 /// Do edges (a, b) and (c, d) (vertex ids) cross, touch or come within
 /// EPS, other than at a shared endpoint?
+/// (Inlined: the boxes' test is the common answer; coordinates are finite
+/// here, so plain comparisons give what `f64::max`/`min` would.)
+#[inline(always)]
 fn interact(v: &[Vert], a: u32, b: u32, c: u32, d: u32) -> bool {
     let (pa, pb, pc, pd) = (v[a as usize].p, v[b as usize].p, v[c as usize].p, v[d as usize].p);
+    let span = |x: f64, y: f64| if x < y { (x, y) } else { (y, x) };
+    let ((ax0, ax1), (ay0, ay1)) = (span(pa[0], pb[0]), span(pa[1], pb[1]));
+    let ((cx0, cx1), (cy0, cy1)) = (span(pc[0], pd[0]), span(pc[1], pd[1]));
     // Boxes apart by more than EPS: nothing to test (the common case).
-    if pa[0].max(pb[0]) + EPS < pc[0].min(pd[0])
-        || pc[0].max(pd[0]) + EPS < pa[0].min(pb[0])
-        || pa[1].max(pb[1]) + EPS < pc[1].min(pd[1])
-        || pc[1].max(pd[1]) + EPS < pa[1].min(pb[1])
-    {
+    if ax1 + EPS < cx0 || cx1 + EPS < ax0 || ay1 + EPS < cy0 || cy1 + EPS < ay0 {
         return false;
     }
+    interact_near(pa, pb, pc, pd, a, b, c, d)
+}
+
+/// [`interact`] for edges whose boxes come within EPS.
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn interact_near(pa: [f64; 2], pb: [f64; 2], pc: [f64; 2], pd: [f64; 2], a: u32, b: u32, c: u32, d: u32) -> bool {
     if (c != a && c != b && lies_on(pc, pa, pb))
         || (d != a && d != b && lies_on(pd, pa, pb))
         || (a != c && a != d && lies_on(pa, pc, pd))
@@ -202,21 +214,6 @@ fn sweep(
     let at = |i: u32| verts[i as usize].p;
     // v is above (left of) the entry's edge.
     let above = |e: &Entry, pv: [f64; 2]| orient(at(e.lo), at(e.hi), pv);
-    // False once an edge off the region's boundary was met: from then on
-    // only the planarity checks run (no windings, boundary or regions).
-    let mut region = true;
-    // Small polygons give up at once instead: finishing the check costs
-    // about what merging and splitting them would (the book's crossing
-    // shapes meet an off-boundary edge before their first crossing).
-    let check_on = verts.len() >= PLANAR_MIN;
-    // Drops the regions built so far.
-    let abandon = |active: &mut BlockList<Entry>, t: &mut Tri| {
-        active.for_each_mut(|e| {
-            if let Some(r) = e.reg.take() {
-                t.discard(r);
-            }
-        });
-    };
     for k in keyed {
         let v = k.2;
         let pv = at(v);
@@ -239,13 +236,6 @@ fn sweep(
                 let w0 = if pos > 0 { active.get(pos - 1).w } else { 0 };
                 let (w1, w2) = (w0 + dir(l), w0 + dir(l) + dir(u));
                 let (i0, i1, i2) = (rule.inside(w0 as i64), rule.inside(w1 as i64), rule.inside(w2 as i64));
-                if region && (i0 == i1 || i1 == i2) {
-                    if !check_on {
-                        return Outcome::No;
-                    }
-                    region = false;
-                    abandon(active, t);
-                }
                 // The two new edges are adjacent too (nearly overlapping?).
                 if interact(verts, v, l, v, u) {
                     return Outcome::No;
@@ -263,11 +253,14 @@ fn sweep(
                     }
                 }
                 let (mut rl, mut ru) = (None, None);
-                if region {
+                // (An edge with the same side both ways is no boundary.)
+                if i0 != i1 {
                     push_boundary(boundary, v, l, i1);
+                }
+                if i1 != i2 {
                     push_boundary(boundary, v, u, i2);
                 }
-                if region && !boundary_only {
+                if !boundary_only {
                     let r = if pos > 0 { active.get_mut(pos - 1).reg.take() } else { None };
                     if i1 {
                         rl = Some(t.start(v as usize));
@@ -323,13 +316,6 @@ fn sweep(
                 let w0 = if pos > 0 { active.get(pos - 1).w } else { 0 };
                 let w1 = w0 + if far == q { 1 } else { -1 };
                 let i1 = rule.inside(w1 as i64);
-                if region && rule.inside(w0 as i64) == i1 {
-                    if !check_on {
-                        return Outcome::No;
-                    }
-                    region = false;
-                    abandon(active, t);
-                }
                 if pos > 0 {
                     let b = active.get(pos - 1);
                     if interact(verts, b.lo, b.hi, v, far) {
@@ -343,30 +329,29 @@ fn sweep(
                     }
                 }
                 let mut reg = None;
-                if region {
+                if rule.inside(w0 as i64) != i1 {
                     push_boundary(boundary, v, far, i1);
                 }
-                if region && !boundary_only {
+                if !boundary_only {
+                    // (The regions stepped where they lie in the list.)
                     if pos > 0 {
-                        if let Some(r) = active.get_mut(pos - 1).reg.take() {
-                            active.get_mut(pos - 1).reg = Some(t.add(r, v as usize, Side::Upper));
+                        if let Some(r) = &mut active.get_mut(pos - 1).reg {
+                            t.add_mut(r, v as usize, Side::Upper);
                         }
                     }
-                    reg = match active.get_mut(pos).reg.take() {
-                        Some(a) => Some(t.add(a, v as usize, Side::Lower)),
-                        None if i1 => Some(t.start(v as usize)),
-                        None => None,
-                    };
+                    let e = active.get_mut(pos);
+                    match &mut e.reg {
+                        Some(a) => t.add_mut(a, v as usize, Side::Lower),
+                        None if i1 => e.reg = Some(t.start(v as usize)),
+                        None => {}
+                    }
+                    reg = e.reg.take();
                 }
                 *active.get_mut(pos) = Entry { lo: v, hi: far, w: w1, reg };
             }
         }
     }
-    if region {
-        Outcome::Done
-    } else {
-        Outcome::Planar
-    }
+    Outcome::Done
 }
 
 /// The boundary edge lo→hi (lo left of hi), directed with the region on its left.
@@ -413,21 +398,25 @@ mod tests {
             assert!((area(&r, &all) - 0.75).abs() < 1e-15);
             assert_eq!(r.boundary.len(), 8);
         }
-        // Nested the same way round: NONZERO has an edge with the region on both sides.
-        // Small: left to the general path.
+        // Nested the same way round: NONZERO has an edge with the region
+        // on both sides (a triangle edge, not a boundary edge).
         let inner: Vec<[f64; 2]> = hole.iter().rev().copied().collect();
-        assert_eq!(outcome(&[&sq, &inner], Rule::NonZero).0, Outcome::No);
-        assert!(run(&[&sq, &inner], Rule::Odd).is_some());
-        // From PLANAR_MIN vertices, still a planar arrangement: handed to
-        // the region sweep as is.
-        let circle: Vec<[f64; 2]> = (0..PLANAR_MIN).map(|i| (i as f64 / PLANAR_MIN as f64 * std::f64::consts::TAU).sin_cos()).map(|(s, c)| [2.0 * c + 0.5, 2.0 * s + 0.5]).collect();
-        assert_eq!(outcome(&[&circle, &inner], Rule::NonZero).0, Outcome::Planar);
-        assert_eq!(outcome(&[&circle, &hole], Rule::NonZero).0, Outcome::Done);
-        // Nothing selected: the same.
-        assert_eq!(outcome(&[&circle], Rule::Negative).0, Outcome::Planar);
+        let both: Vec<[f64; 2]> = sq.iter().chain(inner.iter()).copied().collect();
+        let r = run(&[&sq, &inner], Rule::NonZero).expect("nested squares");
+        assert!((area(&r, &both) - 1.0).abs() < 1e-15);
+        assert_eq!(r.boundary.len(), 4);
+        let r = run(&[&sq, &inner], Rule::AbsGeqTwo).expect("nested squares");
+        assert!((area(&r, &both) - 0.25).abs() < 1e-15);
+        assert_eq!(r.boundary.len(), 4);
+        let r = run(&[&sq, &inner], Rule::Odd).expect("nested squares");
+        assert!((area(&r, &both) - 0.75).abs() < 1e-15);
+        assert_eq!(r.boundary.len(), 8);
+        // Nothing selected: nothing output, but done.
+        let r = run(&[&sq, &inner], Rule::Negative).expect("nested squares");
+        assert!(r.triangles.is_empty() && r.boundary.is_empty());
         // An edge off the boundary first, a crossing later: not planar.
         let far = [[3.0, 0.0], [4.0, 1.0], [4.0, 0.0], [3.0, 1.0]];
-        assert_eq!(outcome(&[&circle, &inner, &far], Rule::NonZero).0, Outcome::No);
+        assert_eq!(outcome(&[&sq, &inner, &far], Rule::NonZero).0, Outcome::No);
     }
 
     #[test]

@@ -47,6 +47,27 @@ pub struct Scratch {
     pieces: Vec<Piece>,
 }
 
+impl Scratch {
+    /// Room for about `n` of everything, made once when the tessellator
+    /// gets its buffers: its first polygons then do not regrow each vector
+    /// step by step (a fixed cost that shows on small polygons).
+    pub(super) fn reserve(&mut self, n: usize) {
+        self.bb.reserve(n);
+        self.pairs.reserve(n);
+        self.splits.reserve(n);
+        self.seg_start.reserve(n);
+        self.seg_cells.reserve(n);
+        self.cell_start.reserve(n);
+        self.cell_segs.reserve(n);
+        self.stamp.reserve(n);
+        self.out.reserve(n);
+        self.by_seg.reserve(n);
+        self.hot.reserve(n);
+        self.inc.reserve(n);
+        self.pieces.reserve(n);
+    }
+}
+
 /// Splits `segs` in place at every crossing and at every vertex lying on
 /// another edge. Repeats (a few passes at most) because rounded crossing
 /// points can create new near-crossings. Returns false if the combiner aborted.

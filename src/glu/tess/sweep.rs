@@ -122,6 +122,27 @@ pub struct Scratch {
     pub region: Region,
 }
 
+impl Scratch {
+    /// Room for about `n` of everything, made once when the tessellator
+    /// gets its buffers: its first polygons then do not regrow each vector
+    /// step by step (a fixed cost that shows on small polygons).
+    pub(super) fn reserve(&mut self, n: usize) {
+        self.edges.reserve(n);
+        self.order.reserve(n);
+        self.keyed.reserve(n);
+        self.out.reserve(n);
+        self.inc.reserve(n);
+        self.below.reserve(n);
+        self.active1.reserve(n);
+        self.bedges.reserve(n);
+        self.inside_above.reserve(n);
+        self.active2.reserve(n);
+        self.outs.reserve(n);
+        self.region.boundary.reserve(n);
+        self.region.triangles.reserve(n);
+    }
+}
+
 /// Computes windings and the selected region into `sc.region`;
 /// triangulates it unless `boundary_only`.
 ///
@@ -465,13 +486,15 @@ pub(super) struct Tri<'a> {
 
 impl Tri<'_> {
     fn chain(&mut self, vs: &[usize], side: Side) -> Chain {
-        let mut verts = self.pool.chains.pop().unwrap_or_default();
+        // (New vectors start with room for a typical chain: a fresh
+        // tessellator's first polygons would otherwise regrow each one.)
+        let mut verts = self.pool.chains.pop().unwrap_or_else(|| Vec::with_capacity(16));
         verts.extend_from_slice(vs);
         Chain { verts, side }
     }
 
     fn reg(&mut self, ch: Chain) -> Reg {
-        let mut subs = self.pool.subs.pop().unwrap_or_default();
+        let mut subs = self.pool.subs.pop().unwrap_or_else(|| Vec::with_capacity(4));
         subs.push(ch);
         Reg { subs }
     }
@@ -511,19 +534,21 @@ impl Tri<'_> {
         }
     }
 
-    fn step(&mut self, mut ch: Chain, v: usize, s: Side) -> Chain {
+    /// v arrives on side `s` of the chain: the triangles it closes, and
+    /// the chain updated in place (no move of the chain's vector).
+    fn step(&mut self, ch: &mut Chain, v: usize, s: Side) {
         if ch.side == Side::Both || ch.verts.len() < 2 {
             ch.verts.push(v);
             ch.side = s;
-            return ch;
+            return;
         }
         if ch.side != s {
-            self.fan(&ch, v);
+            self.fan(ch, v);
             let last = *ch.verts.last().unwrap();
             ch.verts.clear();
             ch.verts.extend([last, v]);
             ch.side = s;
-            return ch;
+            return;
         }
         while ch.verts.len() >= 2 {
             let n = ch.verts.len();
@@ -537,11 +562,26 @@ impl Tri<'_> {
             ch.verts.pop();
         }
         ch.verts.push(v);
-        ch
     }
 
     /// v arrives on one side of the region.
     pub(super) fn add(&mut self, mut r: Reg, v: usize, s: Side) -> Reg {
+        self.add_mut(&mut r, v, s);
+        r
+    }
+
+    /// [`Tri::add`] on a region left in place.
+    #[inline]
+    pub(super) fn add_mut(&mut self, r: &mut Reg, v: usize, s: Side) {
+        if let [ch] = &mut r.subs[..] {
+            self.step(ch, v, s);
+            return;
+        }
+        self.add_merged(r, v, s);
+    }
+
+    /// [`Tri::add`] on a region with merge vertices waiting (or none).
+    fn add_merged(&mut self, r: &mut Reg, v: usize, s: Side) {
         if r.subs.len() > 1 {
             // Merge vertices waiting in the region: the others end at v.
             let keep = if s == Side::Lower { r.subs.len() - 1 } else { 0 };
@@ -554,10 +594,9 @@ impl Tri<'_> {
             }
             r.subs.push(kept);
         }
-        let Some(ch) = r.subs.pop() else { return r };
-        let ch = self.step(ch, v, s);
-        r.subs.push(ch);
-        r
+        if let Some(ch) = r.subs.last_mut() {
+            self.step(ch, v, s);
+        }
     }
 
     /// Two regions become one at a merge vertex (`b` below `a`).
@@ -590,21 +629,23 @@ impl Tri<'_> {
                 self.fan(ch, v);
             }
             self.recycle_subs(subs);
-            let lower = self.step(bottom, v, Side::Upper);
-            let upper = self.step(top, v, Side::Lower);
+            let (mut lower, mut upper) = (bottom, top);
+            self.step(&mut lower, v, Side::Upper);
+            self.step(&mut upper, v, Side::Lower);
             return (self.reg(lower), self.reg(upper));
         }
         let Some(ch) = subs.pop() else { return (self.start(v), self.start(v)) };
         self.recycle_subs(subs);
         let h = ch.verts.last().copied().unwrap_or(v);
+        let mut ch = ch;
         if ch.side == Side::Upper {
-            let lower = self.step(ch, v, Side::Upper);
+            self.step(&mut ch, v, Side::Upper);
             let other = self.chain(&[h, v], Side::Lower);
-            (self.reg(lower), self.reg(other))
+            (self.reg(ch), self.reg(other))
         } else {
-            let upper = self.step(ch, v, Side::Lower);
+            self.step(&mut ch, v, Side::Lower);
             let other = self.chain(&[h, v], Side::Upper);
-            (self.reg(other), self.reg(upper))
+            (self.reg(other), self.reg(ch))
         }
     }
 }
