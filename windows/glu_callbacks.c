@@ -151,7 +151,7 @@ static void test_tessellator(void)
     static double square[4][3] = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}};
     struct tess_log l;
     GLUtesselator *t = gluNewTess();
-    char what[160];
+    char what[256];
 
     expect(t != NULL, "gluNewTess");
     if (!t)
@@ -167,16 +167,16 @@ static void test_tessellator(void)
     memset(&l, 0, sizeof l);
     l.magic = 1;
     tessellate(t, &l, bowtie, 4, GLU_TESS_WINDING_NONZERO);
-    sprintf(what, "bow-tie (NONZERO): %d begin / %d end, GL_TRIANGLES (0x%x), %d vertices, area %.6f (2), %d COMBINE, weights sum to 1",
+    snprintf(what, sizeof what, "bow-tie (NONZERO): %d begin / %d end, GL_TRIANGLES (0x%x), %d vertices, area %.6f (2), %d COMBINE, weights sum to 1",
             l.begins, l.ends, l.prim, l.vertices, l.area, l.combines);
     expect(l.begins == 1 && l.ends == 1 && l.prim == GL_TRIANGLES && l.vertices == 6 &&
            fabs(l.area - 2) < 1e-9 && l.combines == 1 && l.magic == 1 && l.edge_flags > 0 && l.errors == 0, what);
-    sprintf(what, "COMBINE at (%.3f, %.3f) (the crossing (1, 1))", combined[0][0], combined[0][1]);
+    snprintf(what, sizeof what, "COMBINE at (%.3f, %.3f) (the crossing (1, 1))", combined[0][0], combined[0][1]);
     expect(fabs(combined[0][0] - 1) < 1e-12 && fabs(combined[0][1] - 1) < 1e-12, what);
 
     memset(&l, 0, sizeof l);
     tessellate(t, &l, square, 4, GLU_TESS_WINDING_POSITIVE);
-    sprintf(what, "square (POSITIVE): area %.6f (16), %d vertices", l.area, l.vertices);
+    snprintf(what, sizeof what, "square (POSITIVE): area %.6f (16), %d vertices", l.area, l.vertices);
     expect(fabs(l.area - 16) < 1e-9 && l.vertices == 6 && l.ends == 1, what);
 
     memset(&l, 0, sizeof l);
@@ -184,7 +184,7 @@ static void test_tessellator(void)
     /* GLU reports the missing gluTessBeginPolygon with the last polygon's
      * data (&l), then supplies gluTessBeginPolygon(tess, NULL) and reports
      * the missing gluTessBeginContour with that NULL. */
-    sprintf(what, "ERROR_DATA: GLU_TESS_MISSING_BEGIN_POLYGON (%u) with the last data, got %u from %d calls; "
+    snprintf(what, sizeof what, "ERROR_DATA: GLU_TESS_MISSING_BEGIN_POLYGON (%u) with the last data, got %u from %d calls; "
             "then GLU_TESS_MISSING_BEGIN_CONTOUR (%u) with NULL, got %u from %d calls",
             GLU_TESS_MISSING_BEGIN_POLYGON, l.last_error, l.errors,
             GLU_TESS_MISSING_BEGIN_CONTOUR, null_data_last, null_data_errors);
@@ -207,7 +207,7 @@ static void test_tessellator(void)
     l.magic = 1;
     current = &l;
     tessellate(t, &l, bowtie, 4, GLU_TESS_WINDING_ODD);
-    sprintf(what, "GLU 1.1 callbacks, bow-tie (ODD): %d begin / %d end, %d vertices, area %.6f (2)",
+    snprintf(what, sizeof what, "GLU 1.1 callbacks, bow-tie (ODD): %d begin / %d end, %d vertices, area %.6f (2)",
             l.begins, l.ends, l.vertices, l.area);
     /* Without an edge-flag callback the triangles may come as fans or
      * strips; the area is summed only for GL_TRIANGLES, so check the
@@ -215,11 +215,11 @@ static void test_tessellator(void)
     expect(l.begins >= 1 && l.begins == l.ends && l.vertices >= 6 && l.errors == 0 &&
            (l.prim != GL_TRIANGLES || fabs(l.area - 2) < 1e-9), what);
     gluTessEndPolygon(t); /* with no polygon begun */
-    sprintf(what, "GLU_TESS_ERROR (one argument): GLU_TESS_MISSING_BEGIN_POLYGON (%u), got %u",
+    snprintf(what, sizeof what, "GLU_TESS_ERROR (one argument): GLU_TESS_MISSING_BEGIN_POLYGON (%u), got %u",
             GLU_TESS_MISSING_BEGIN_POLYGON, l.last_error);
     expect(l.errors == 1 && l.last_error == GLU_TESS_MISSING_BEGIN_POLYGON, what);
     gluTessProperty(t, 100110, GLU_TESS_WINDING_ODD); /* a Borland unit's wrong enum */
-    sprintf(what, "gluTessProperty(100110): GLU_INVALID_ENUM (%u), got %u", GLU_INVALID_ENUM, l.last_error);
+    snprintf(what, sizeof what, "gluTessProperty(100110): GLU_INVALID_ENUM (%u), got %u", GLU_INVALID_ENUM, l.last_error);
     expect(l.errors == 2 && l.last_error == GLU_INVALID_ENUM, what);
     gluDeleteTess(t);
 }
@@ -234,13 +234,13 @@ static void CALLBACK quadric_error_cb(GLenum err)
 static void test_quadric(void)
 {
     GLUquadric *q = gluNewQuadric();
-    char what[120];
+    char what[256];
     expect(q != NULL, "gluNewQuadric");
     if (!q)
         return;
     gluQuadricCallback(q, GLU_ERROR, (_GLUfuncptr)quadric_error_cb);
     gluQuadricDrawStyle(q, 12345);
-    sprintf(what, "quadric GLU_ERROR callback: GLU_INVALID_ENUM (%u), got %u", GLU_INVALID_ENUM, quadric_error);
+    snprintf(what, sizeof what, "quadric GLU_ERROR callback: GLU_INVALID_ENUM (%u), got %u", GLU_INVALID_ENUM, quadric_error);
     expect(quadric_error == GLU_INVALID_ENUM, what);
     gluDeleteQuadric(q);
 }
@@ -292,7 +292,7 @@ static void test_nurbs(void)
     static GLfloat ctl[4][3] = {{0, 0, 1}, {1, 2, 1}, {2, 4, 1}, {3, 6, 1}};
     struct nurbs_log l;
     GLUnurbs *n = gluNewNurbsRenderer();
-    char what[200];
+    char what[256];
 
     expect(n != NULL, "gluNewNurbsRenderer");
     if (!n)
@@ -322,12 +322,12 @@ static void test_nurbs(void)
     gluBeginCurve(n);
     gluNurbsCurve(n, 8, knots, 3, &ctl[0][0], 4, GL_MAP1_VERTEX_3);
     gluEndCurve(n);
-    sprintf(what, "NURBS in GLU_NURBS_TESSELLATOR mode: %d begin / %d end (prim 0x%x), %d vertices from x %.3f to %.3f, %.2g off the line",
+    snprintf(what, sizeof what, "NURBS in GLU_NURBS_TESSELLATOR mode: %d begin / %d end (prim 0x%x), %d vertices from x %.3f to %.3f, %.2g off the line",
             l.begins, l.ends, l.prim, l.vertices, l.min_x, l.max_x, l.max_off_line);
     expect(l.begins >= 1 && l.begins == l.ends && l.prim == GL_LINE_STRIP && l.vertices >= 10 &&
            fabs(l.min_x) < 1e-5 && fabs(l.max_x - 3) < 1e-5 && l.max_off_line < 1e-4 && l.errors == 0, what);
     gluNurbsProperty(n, 12345, 1);
-    sprintf(what, "NURBS error callback: GLU_INVALID_ENUM (%u), got %u from %d calls",
+    snprintf(what, sizeof what, "NURBS error callback: GLU_INVALID_ENUM (%u), got %u from %d calls",
             GLU_INVALID_ENUM, l.last_error, l.errors);
     expect(l.errors == 1 && l.last_error == GLU_INVALID_ENUM, what);
     gluDeleteNurbsRenderer(n);
