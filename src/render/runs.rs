@@ -72,6 +72,7 @@ pub struct Sink<'a> {
     mode: Mode,
     key: u8,
     /// `over_covered` runs four pixels at a time (the CPU has AVX2).
+    #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
     avx2: bool,
 }
 
@@ -112,6 +113,7 @@ impl<'a> Sink<'a> {
         debug_assert!(self.mode == Mode::Over);
         let fix = self.fs.alpha_fix;
         let px = fb.colors(i0, cov.len());
+        #[cfg_attr(not(target_arch = "x86_64"), allow(unused_mut))] // set by the AVX2 lanes only
         let mut done = 0;
         let mut passed = 0u64;
         #[cfg(target_arch = "x86_64")]

@@ -325,6 +325,7 @@ pub struct LineRect {
     /// The four sides as `cols` cuts them to a row.
     sides: [Side; 4],
     /// `row_coverage` runs `row_avx2` (the CPU has AVX2).
+    #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
     avx2: bool,
 }
 

@@ -76,6 +76,7 @@ pub fn lambda_ahead_on_this_thread(on: bool) {
 /// `approximate`: GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST; the
 /// 8-wide kernel then filters in 8-bit fixed point (`avx2`'s
 /// `fixed_color`); everything else stays exact.
+#[cfg_attr(not(target_arch = "x86_64"), allow(unused_variables))] // only the x86-64 kernels read `approximate`
 pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Option<Kernel> {
     let tp = t.tex.as_ref()?;
     if fs.alpha_test || fs.stencil_test || fs.color == ColorOp::None || t.secondary.is_some() || !applies(tp) {
