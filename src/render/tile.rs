@@ -378,7 +378,10 @@ pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Option<Rect> {
 /// it reached [`MAX_BATCH`], or [`SUBMIT_WORK`] while the workers are
 /// idle.
 #[allow(clippy::too_many_arguments)]
-#[inline]
+// Inlined into `setup::triangle_snapped` (its one caller on the hot
+// path): a call passed its arrays through stack copies, about 25
+// instructions a triangle on the calling thread.
+#[inline(always)]
 pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rect, zq: [(f64, f64); 3], v: [&A; 3], flat_color: Vec4, back: bool, front_facing: bool) -> bool {
     let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
     // Safety: binning runs on the context's thread (its framebuffer is
