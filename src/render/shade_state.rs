@@ -217,7 +217,10 @@ impl ShadeCache {
 
     /// Runs `f` with the capture of `rs` (whose cache this is), capturing
     /// it first when the state changed.
-    #[inline]
+    /// The hit (the state unchanged since the last triangle: every
+    /// triangle of a vertex-bound scene but the first after a change) is
+    /// inlined into the binning path; the capture is out of line.
+    #[inline(always)]
     pub fn with<R>(&self, rs: &RenderState, f: impl FnOnce(&Arc<ShadeState>) -> R) -> R {
         {
             let c = self.0.borrow();
@@ -227,9 +230,15 @@ impl ShadeCache {
                 }
             }
         }
+        f(&self.captured(rs))
+    }
+
+    /// Captures `rs` and keeps the capture (the miss of [`Self::with`]).
+    #[cold]
+    #[inline(never)]
+    fn captured(&self, rs: &RenderState) -> Arc<ShadeState> {
         let s = Arc::new(ShadeState::capture(rs));
-        let r = f(&s);
-        *self.0.borrow_mut() = Some(s);
-        r
+        *self.0.borrow_mut() = Some(s.clone());
+        s
     }
 }
