@@ -67,6 +67,8 @@ impl<T: Plain> Plane<T> {
                 return Ok(Plane { ptr: p as *mut T, len: n, vec: Vec::new(), mapped: len });
             }
         }
+        #[cfg(not(target_os = "linux"))]
+        let _ = bytes;
         if zero && n > 0 {
             let layout = std::alloc::Layout::array::<T>(n).map_err(|_| AllocError)?;
             // SAFETY: layout has a non-zero size (n > 0, T is not

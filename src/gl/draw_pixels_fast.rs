@@ -22,7 +22,8 @@
 //!
 //! Threads (round 8): rectangles of 128K pixels or more are cut into bands
 //! of 32 rows that the pool's threads draw ([`RowBand`]); glCopyPixels
-//! reads its whole source first, so the bands only write.
+//! reads its whole source first (also in bands), so the drawing bands only
+//! write.
 
 use super::context::Context;
 use super::draw_pixels::PixelData;
@@ -203,11 +204,15 @@ impl Context {
         }
         let (cw, ch) = ((sx1 - sx0) as usize, (sy1 - sy0) as usize);
         // Read everything first: overlapping copies see the old pixels.
-        let mut data = Vec::with_capacity(cw * ch);
-        for sy in sy0..sy1 {
-            let i = fb.index(sx0 as usize, sy as usize);
-            data.extend_from_slice(&read[i..i + cw]);
-        }
+        // Large rectangles are read in bands of rows by the threads too.
+        let mut data = vec![[0u8; 4]; cw * ch];
+        let threads = if cw * ch >= PARALLEL_PIXELS { self.derived.render.threads } else { 1 };
+        crate::render::pool::for_pieces(threads, &mut data, BAND_ROWS * cw, |k, band| {
+            for (j, row) in band.chunks_mut(cw).enumerate() {
+                let i = fb.index(sx0 as usize, sy0 as usize + k * BAND_ROWS + j);
+                row.copy_from_slice(&read[i..i + cw]);
+            }
+        });
         self.rgba8_spans(xf + (sx0 - x as i64), yf + (sy0 - y as i64), cw, ch, &data);
         true
     }
