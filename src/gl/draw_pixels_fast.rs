@@ -205,14 +205,21 @@ impl Context {
         let (cw, ch) = ((sx1 - sx0) as usize, (sy1 - sy0) as usize);
         // Read everything first: overlapping copies see the old pixels.
         // Large rectangles are read in bands of rows by the threads too.
-        let mut data = vec![[0u8; 4]; cw * ch];
+        // Not zeroed first (that was a third pass over the rectangle): the
+        // bands write every element, then the length is set.
+        let mut data: Vec<[u8; 4]> = Vec::with_capacity(cw * ch);
         let threads = if cw * ch >= PARALLEL_PIXELS { self.derived.render.threads } else { 1 };
-        crate::render::pool::for_pieces(threads, &mut data, BAND_ROWS * cw, |k, band| {
+        crate::render::pool::for_pieces(threads, &mut data.spare_capacity_mut()[..cw * ch], BAND_ROWS * cw, |k, band| {
             for (j, row) in band.chunks_mut(cw).enumerate() {
                 let i = fb.index(sx0 as usize, sy0 as usize + k * BAND_ROWS + j);
-                row.copy_from_slice(&read[i..i + cw]);
+                for (d, s) in row.iter_mut().zip(&read[i..i + cw]) {
+                    d.write(*s);
+                }
             }
         });
+        // SAFETY: the pieces cover [0, cw * ch) once (`for_pieces`), and
+        // each piece's rows of cw elements were all written above.
+        unsafe { data.set_len(cw * ch) };
         self.rgba8_spans(xf + (sx0 - x as i64), yf + (sy0 - y as i64), cw, ch, &data);
         true
     }
