@@ -229,69 +229,6 @@ impl Context {
 mod tests {
     use crate::render::fragment::color_to_u8;
     use crate::render::texture::UNORM8;
-use std::sync::atomic::{AtomicU64, Ordering};
-
-/// Rectangles of this many pixels or more are drawn in bands of
-/// `BAND_ROWS` rows by the pool's threads (as glClear's: smaller ones cost
-/// less than waking a worker).
-const PARALLEL_PIXELS: usize = 1 << 17;
-const BAND_ROWS: usize = 32;
-
-/// Rows [y0, y1) of the framebuffer's planes that one call draws (see
-/// `rgba8_spans`): the colour, depth and stencil rows and, under
-/// GL_FRONT_AND_BACK, the other colour buffer's.
-struct RowBand<'a> {
-    y0: usize,
-    y1: usize,
-    width: usize,
-    color: &'a mut [[u8; 4]],
-    depth: &'a mut [u32],
-    stencil: &'a mut [u8],
-    other: Option<&'a mut [[u8; 4]]>,
-}
-
-impl<'a> RowBand<'a> {
-    /// Rows [y0, y1) cut into bands of `rows` rows, bottom first.
-    fn split(fb: &'a mut crate::framebuffer::Framebuffer, y0: usize, y1: usize, rows: usize) -> Vec<RowBand<'a>> {
-        let width = fb.width;
-        let crate::framebuffer::Framebuffer { color, depth, stencil, other_color, draw_both, .. } = fb;
-        let piece = rows * width;
-        let (a, b) = (y0 * width, y1 * width);
-        let mut color = color[a..b].chunks_mut(piece);
-        let mut depth = if depth.is_empty() { None } else { Some(depth[a..b].chunks_mut(piece)) };
-        let mut stencil = if stencil.is_empty() { None } else { Some(stencil[a..b].chunks_mut(piece)) };
-        let mut other = if *draw_both { Some(other_color[a..b].chunks_mut(piece)) } else { None };
-        let mut out = Vec::with_capacity((y1 - y0).div_ceil(rows.max(1)));
-        let mut y = y0;
-        while y < y1 {
-            let top = (y + rows).min(y1);
-            out.push(RowBand {
-                y0: y,
-                y1: top,
-                width,
-                color: color.next().unwrap_or_default(),
-                depth: depth.as_mut().and_then(|d| d.next()).unwrap_or_default(),
-                stencil: stencil.as_mut().and_then(|s| s.next()).unwrap_or_default(),
-                other: other.as_mut().and_then(|o| o.next()),
-            });
-            y = top;
-        }
-        out
-    }
-
-    /// Pixels [x0, x1) of row y (in [self.y0, self.y1)), as
-    /// `SpanPixels::of` gives them.
-    fn span(&mut self, y: usize, x0: usize, x1: usize) -> SpanPixels<'_> {
-        let (a, b) = ((y - self.y0) * self.width + x0, (y - self.y0) * self.width + x1);
-        SpanPixels {
-            color: &mut self.color[a..b],
-            other: self.other.as_mut().map(|o| &mut o[a..b]),
-            depth: if self.depth.is_empty() { &mut [] } else { &mut self.depth[a..b] },
-            stencil: if self.stencil.is_empty() { &mut [] } else { &mut self.stencil[a..b] },
-            passed: 0,
-        }
-    }
-}
 
     /// Every byte survives c / 255 and the conversion back to 8 bits: the
     /// identity the fast path relies on.
