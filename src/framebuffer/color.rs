@@ -13,13 +13,15 @@
 
 use std::ops::{Deref, DerefMut};
 
+use super::Plane;
+
 /// An RGBA8 colour buffer (see the module comment).
 pub struct ColorBuffer {
     ptr: *mut [u8; 4],
     len: usize,
     /// The storage when softgl owns it (its heap buffer never moves: the
     /// vector is never grown); empty when the caller lends the memory.
-    owned: Vec<[u8; 4]>,
+    owned: Plane<[u8; 4]>,
 }
 
 // SAFETY: a ColorBuffer is a uniquely owned `[[u8; 4]]`: either its own
@@ -30,7 +32,7 @@ unsafe impl Sync for ColorBuffer {}
 
 impl ColorBuffer {
     /// A buffer owning `v`.
-    pub fn owned(mut v: Vec<[u8; 4]>) -> ColorBuffer {
+    pub fn owned(mut v: Plane<[u8; 4]>) -> ColorBuffer {
         ColorBuffer { ptr: v.as_mut_ptr(), len: v.len(), owned: v }
     }
 
@@ -41,7 +43,7 @@ impl ColorBuffer {
     /// 1 byte (pixels are byte arrays), and stay so, used by nothing else
     /// while softgl draws, until this buffer is replaced or dropped.
     pub unsafe fn lent(ptr: *mut u8, len: usize) -> ColorBuffer {
-        ColorBuffer { ptr: ptr as *mut [u8; 4], len, owned: Vec::new() }
+        ColorBuffer { ptr: ptr as *mut [u8; 4], len, owned: Plane::default() }
     }
 
     /// Is this the caller's memory?
@@ -52,7 +54,7 @@ impl ColorBuffer {
 
 impl Default for ColorBuffer {
     fn default() -> ColorBuffer {
-        ColorBuffer::owned(Vec::new())
+        ColorBuffer::owned(Plane::default())
     }
 }
 
@@ -93,7 +95,7 @@ mod tests {
 
     #[test]
     fn owned_and_lent_buffers_reach_their_pixels() {
-        let mut b = ColorBuffer::owned(vec![[1, 2, 3, 4]; 3]);
+        let mut b = ColorBuffer::owned(Plane::from_vec(vec![[1, 2, 3, 4]; 3]));
         b[1] = [9; 4];
         assert_eq!(&b[..], &[[1, 2, 3, 4], [9; 4], [1, 2, 3, 4]]);
         assert!(!b.is_lent());

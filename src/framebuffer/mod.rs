@@ -22,9 +22,12 @@
 //! aborts the program.
 
 pub mod color;
+pub mod plane;
 pub mod shared;
 
 pub use color::ColorBuffer;
+pub use plane::Plane;
+use plane::Plain;
 
 /// Largest surface side; also GL_MAX_VIEWPORT_DIMS. The rasterizer's
 /// fixed-point ranges are chosen for it (see `render::setup`).
@@ -87,9 +90,9 @@ pub struct Framebuffer {
     /// glFinish present it then.
     pub front_dirty: bool,
     double: bool,
-    pub depth: Vec<u32>,
-    pub stencil: Vec<u8>,
-    pub accum: Vec<[i16; 4]>,
+    pub depth: Plane<u32>,
+    pub stencil: Plane<u8>,
+    pub accum: Plane<[i16; 4]>,
     /// A glClear of the accumulation buffer not yet written into `accum`:
     /// the rectangle and the fixed-point value (`gl::accum`; a GL_LOAD
     /// that covers the rectangle makes the fill unnecessary).
@@ -100,58 +103,11 @@ pub struct Framebuffer {
     pub samples_passed: u64,
 }
 
-/// Asks the kernel for transparent huge pages over the 2 MiB-aligned part
-/// of a large buffer: a 1920x1080 surface's first frame otherwise takes
-/// thousands of 4 KiB page faults (most of its time to first frame).
-/// Advisory only: nothing changes where the kernel does not offer them.
-fn advise_huge_pages(p: *mut u8, len: usize) {
-    #[cfg(target_os = "linux")]
-    {
-        const HUGE: usize = 2 << 20;
-        let start = (p as usize + HUGE - 1) & !(HUGE - 1);
-        let end = (p as usize + len) & !(HUGE - 1);
-        if end > start {
-            // SAFETY: [start, end) lies inside the allocation just made;
-            // MADV_HUGEPAGE changes no contents.
-            unsafe { libc::madvise(start as *mut libc::c_void, end - start, libc::MADV_HUGEPAGE) };
-        }
-    }
-    #[cfg(not(target_os = "linux"))]
-    let _ = (p, len);
-}
-
-/// Buffer element types: plain data for which all-zero bytes are a value.
-trait Plain: Copy {}
-impl Plain for u8 {}
-impl Plain for u32 {}
-impl Plain for [u8; 4] {}
-impl Plain for [i16; 4] {}
-
-/// `n` copies of `fill`, or AllocError. An all-zero fill takes zeroed
-/// memory from the allocator (fresh pages from the kernel for buffers this
-/// large) instead of writing every byte: a 1920x1080 surface's first frame
-/// no longer begins with a pass over its ~20 MB.
-fn alloc<T: Plain>(n: usize, fill: T) -> Result<Vec<T>, AllocError> {
-    // SAFETY: T is Plain (no padding), so its bytes may be read.
-    let zero = unsafe { std::slice::from_raw_parts(&fill as *const T as *const u8, std::mem::size_of::<T>()) }.iter().all(|&b| b == 0);
-    if zero && n > 0 {
-        let layout = std::alloc::Layout::array::<T>(n).map_err(|_| AllocError)?;
-        // SAFETY: layout has a non-zero size (n > 0, T is not zero-sized);
-        // all-zero bytes are a valid T (Plain); the Vec takes ownership of
-        // an allocation of exactly n T's made with the global allocator.
-        unsafe {
-            let p = std::alloc::alloc_zeroed(layout) as *mut T;
-            if p.is_null() {
-                return Err(AllocError);
-            }
-            advise_huge_pages(p as *mut u8, layout.size());
-            return Ok(Vec::from_raw_parts(p, n, n));
-        }
-    }
-    let mut v = Vec::new();
-    v.try_reserve_exact(n).map_err(|_| AllocError)?;
-    v.resize(n, fill);
-    Ok(v)
+/// `n` copies of `fill`, or AllocError (see `plane`: large all-zero
+/// planes are fresh huge-page mappings, never written before GL writes
+/// them).
+fn alloc<T: Plain>(n: usize, fill: T) -> Result<Plane<T>, AllocError> {
+    Plane::new(n, fill)
 }
 
 impl Framebuffer {
@@ -167,9 +123,9 @@ impl Framebuffer {
             draw_both: false,
             front_dirty: false,
             double: false,
-            depth: Vec::new(),
-            stencil: Vec::new(),
-            accum: Vec::new(),
+            depth: Plane::default(),
+            stencil: Plane::default(),
+            accum: Plane::default(),
             accum_clear: None,
             samples_passed: 0,
         }
@@ -185,7 +141,7 @@ impl Framebuffer {
             let mut back = Vec::new();
             back.try_reserve_exact(self.color.len()).map_err(|_| AllocError)?;
             back.extend_from_slice(&self.color);
-            self.other_color = ColorBuffer::owned(back);
+            self.other_color = ColorBuffer::owned(Plane::from_vec(back));
             self.color_is_back = false;
         } else {
             if self.color_is_back {
@@ -308,9 +264,9 @@ impl Framebuffer {
         let n = width * height;
         let color = ColorBuffer::owned(alloc(n, self.config.initial_color())?);
         let other_color = if self.double { ColorBuffer::owned(alloc(n, self.config.initial_color())?) } else { ColorBuffer::default() };
-        let depth = if self.config.depth_bits > 0 { alloc(n, 0u32)? } else { Vec::new() };
-        let stencil = if self.config.stencil_bits > 0 { alloc(n, 0u8)? } else { Vec::new() };
-        let accum = if self.config.accum_bits > 0 { alloc(n, [0i16; 4])? } else { Vec::new() };
+        let depth = if self.config.depth_bits > 0 { alloc(n, 0u32)? } else { Plane::default() };
+        let stencil = if self.config.stencil_bits > 0 { alloc(n, 0u8)? } else { Plane::default() };
+        let accum = if self.config.accum_bits > 0 { alloc(n, [0i16; 4])? } else { Plane::default() };
         *self = Framebuffer {
             width,
             height,
@@ -341,6 +297,10 @@ impl Framebuffer {
     /// framebuffer dropped.
     pub unsafe fn lend_color(&mut self, ptr: *mut u8) {
         debug_assert!(!self.double);
+        // A freshly calloc'ed 1920x1080 buffer would otherwise take ~2,000
+        // 4 KiB faults in the first glClear (see `plane`). Advisory: the
+        // caller's pixels do not change.
+        plane::advise_huge_pages(ptr, self.width * self.height * 4);
         self.color = ColorBuffer::lent(ptr, self.width * self.height);
     }
 
@@ -360,7 +320,7 @@ impl Framebuffer {
             let mut v = Vec::new();
             v.try_reserve_exact(self.color.len()).map_err(|_| AllocError)?;
             v.extend_from_slice(&self.color);
-            self.color = ColorBuffer::owned(v);
+            self.color = ColorBuffer::owned(Plane::from_vec(v));
         }
         Ok(())
     }

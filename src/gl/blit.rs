@@ -50,7 +50,7 @@ impl Context {
             // Depth and stencil blits need both framebuffers to have them
             // (INVALID_OPERATION when their formats differ: here, present
             // in one only).
-            Source { width: fb.width, height: fb.height, color: color.to_vec(), depth: fb.depth.clone(), stencil: fb.stencil.clone() }
+            Source { width: fb.width, height: fb.height, color: color.to_vec(), depth: fb.depth.to_vec(), stencil: fb.stencil.to_vec() }
         };
         if (mask & DEPTH != 0 && s.depth.is_empty() != self.fb.depth.is_empty()) || (mask & STENCIL != 0 && s.stencil.is_empty() != self.fb.stencil.is_empty()) {
             return self.set_error(GL_INVALID_OPERATION);

@@ -19,6 +19,11 @@
 //! (`render::fragment::pixel_span`). Every other case, and
 //! `SOFTGL_REFERENCE=1`, takes the general path of `draw_pixels`, which
 //! produces the same pixels one fragment at a time.
+//!
+//! Threads (round 8): rectangles of 128K pixels or more are cut into bands
+//! of 32 rows that the pool's threads draw ([`RowBand`]); glCopyPixels
+//! reads its whole source first (also in bands), so the drawing bands only
+//! write.
 
 use super::context::Context;
 use super::draw_pixels::PixelData;
@@ -26,6 +31,69 @@ use super::pixel_data::Source;
 use crate::render::fragment::{depth_to_fixed, pixel_span, SpanPixels};
 use crate::render::pixels;
 use crate::render::texture::UNORM8;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// Rectangles of this many pixels or more are drawn in bands of
+/// `BAND_ROWS` rows by the pool's threads (as glClear's: smaller ones cost
+/// less than waking a worker).
+const PARALLEL_PIXELS: usize = 1 << 17;
+const BAND_ROWS: usize = 32;
+
+/// Rows [y0, y1) of the framebuffer's planes that one call draws (see
+/// `rgba8_spans`): the colour, depth and stencil rows and, under
+/// GL_FRONT_AND_BACK, the other colour buffer's.
+struct RowBand<'a> {
+    y0: usize,
+    y1: usize,
+    width: usize,
+    color: &'a mut [[u8; 4]],
+    depth: &'a mut [u32],
+    stencil: &'a mut [u8],
+    other: Option<&'a mut [[u8; 4]]>,
+}
+
+impl<'a> RowBand<'a> {
+    /// Rows [y0, y1) cut into bands of `rows` rows, bottom first.
+    fn split(fb: &'a mut crate::framebuffer::Framebuffer, y0: usize, y1: usize, rows: usize) -> Vec<RowBand<'a>> {
+        let width = fb.width;
+        let crate::framebuffer::Framebuffer { color, depth, stencil, other_color, draw_both, .. } = fb;
+        let piece = rows * width;
+        let (a, b) = (y0 * width, y1 * width);
+        let mut color = color[a..b].chunks_mut(piece);
+        let mut depth = if depth.is_empty() { None } else { Some(depth[a..b].chunks_mut(piece)) };
+        let mut stencil = if stencil.is_empty() { None } else { Some(stencil[a..b].chunks_mut(piece)) };
+        let mut other = if *draw_both { Some(other_color[a..b].chunks_mut(piece)) } else { None };
+        let mut out = Vec::with_capacity((y1 - y0).div_ceil(rows.max(1)));
+        let mut y = y0;
+        while y < y1 {
+            let top = (y + rows).min(y1);
+            out.push(RowBand {
+                y0: y,
+                y1: top,
+                width,
+                color: color.next().unwrap_or_default(),
+                depth: depth.as_mut().and_then(|d| d.next()).unwrap_or_default(),
+                stencil: stencil.as_mut().and_then(|s| s.next()).unwrap_or_default(),
+                other: other.as_mut().and_then(|o| o.next()),
+            });
+            y = top;
+        }
+        out
+    }
+
+    /// Pixels [x0, x1) of row y (in [self.y0, self.y1)), as
+    /// `SpanPixels::of` gives them.
+    fn span(&mut self, y: usize, x0: usize, x1: usize) -> SpanPixels<'_> {
+        let (a, b) = ((y - self.y0) * self.width + x0, (y - self.y0) * self.width + x1);
+        SpanPixels {
+            color: &mut self.color[a..b],
+            other: self.other.as_mut().map(|o| &mut o[a..b]),
+            depth: if self.depth.is_empty() { &mut [] } else { &mut self.depth[a..b] },
+            stencil: if self.stencil.is_empty() { &mut [] } else { &mut self.stencil[a..b] },
+            passed: 0,
+        }
+    }
+}
 
 /// The groups of an RGBA / UNSIGNED_BYTE image as bytes, rows bottom-up.
 pub(super) fn unpack_rgba8(src: &Source, w: usize, h: usize) -> Vec<[u8; 4]> {
@@ -96,16 +164,28 @@ impl Context {
         }
         let z = depth_to_fixed(self.raster.pos[2] as f64);
         let fs = &self.derived.render.fragment;
-        let fb = &mut self.fb;
         let (i0, n) = ((x0 - xf) as usize, (x1 - x0) as usize);
-        let mut passed = 0u64;
-        for y in y0..y1 {
-            let row = (y - yf) as usize * w + i0;
-            let mut px = SpanPixels::of(fb, y as usize, x0 as usize, x1 as usize);
-            pixel_span::color_span(fs, &mut px, z, &data[row..row + n]);
-            passed += px.passed;
-        }
-        fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+        let (y0, y1) = (y0 as usize, y1 as usize);
+        // Rows are independent (each fragment touches only its own pixel),
+        // so large rectangles go in bands of rows to the pool's threads;
+        // every row is drawn by one call with the same inputs, so the
+        // pixels do not depend on the thread count.
+        let threads = if n * (y1 - y0) >= PARALLEL_PIXELS { self.derived.render.threads } else { 1 };
+        let passed = AtomicU64::new(0);
+        let mut bands = RowBand::split(&mut self.fb, y0, y1, BAND_ROWS);
+        crate::render::pool::for_pieces(threads, &mut bands, 1, |_, b| {
+            let b = &mut b[0];
+            let mut sum = 0u64;
+            for y in b.y0..b.y1 {
+                let row = (y as i64 - yf) as usize * w + i0;
+                let mut px = b.span(y, x0 as usize, x1 as usize);
+                pixel_span::color_span(fs, &mut px, z, &data[row..row + n]);
+                sum = sum.wrapping_add(px.passed);
+            }
+            passed.fetch_add(sum, Ordering::Relaxed);
+        });
+        drop(bands);
+        self.fb.samples_passed = self.fb.samples_passed.wrapping_add(passed.into_inner());
     }
 
     /// glCopyPixels of colour by spans, on the span path's conditions
@@ -124,11 +204,22 @@ impl Context {
         }
         let (cw, ch) = ((sx1 - sx0) as usize, (sy1 - sy0) as usize);
         // Read everything first: overlapping copies see the old pixels.
-        let mut data = Vec::with_capacity(cw * ch);
-        for sy in sy0..sy1 {
-            let i = fb.index(sx0 as usize, sy as usize);
-            data.extend_from_slice(&read[i..i + cw]);
-        }
+        // Large rectangles are read in bands of rows by the threads too.
+        // Not zeroed first (that was a third pass over the rectangle): the
+        // bands write every element, then the length is set.
+        let mut data: Vec<[u8; 4]> = Vec::with_capacity(cw * ch);
+        let threads = if cw * ch >= PARALLEL_PIXELS { self.derived.render.threads } else { 1 };
+        crate::render::pool::for_pieces(threads, &mut data.spare_capacity_mut()[..cw * ch], BAND_ROWS * cw, |k, band| {
+            for (j, row) in band.chunks_mut(cw).enumerate() {
+                let i = fb.index(sx0 as usize, sy0 as usize + k * BAND_ROWS + j);
+                for (d, s) in row.iter_mut().zip(&read[i..i + cw]) {
+                    d.write(*s);
+                }
+            }
+        });
+        // SAFETY: the pieces cover [0, cw * ch) once (`for_pieces`), and
+        // each piece's rows of cw elements were all written above.
+        unsafe { data.set_len(cw * ch) };
         self.rgba8_spans(xf + (sx0 - x as i64), yf + (sy0 - y as i64), cw, ch, &data);
         true
     }

@@ -934,7 +934,7 @@ impl Context {
         if let Some(r) = &stencil {
             self.read_attached(r, w, h, &mut fb.stencil, 0, |rb, k| rb.stencil.get(k).copied(), |img, _, i| img.texels.get(i)[3] as u8);
         }
-        let snap = Snapshot { color: if color.is_some() { fb.color.to_vec() } else { Vec::new() }, depth: fb.depth.clone(), stencil: fb.stencil.clone() };
+        let snap = Snapshot { color: if color.is_some() { fb.color.to_vec() } else { Vec::new() }, depth: fb.depth.to_vec(), stencil: fb.stencil.to_vec() };
         Some((fb, snap))
     }
 
@@ -1056,8 +1056,8 @@ impl Context {
         // What was stored is the new baseline.
         self.fbo.snapshot = Snapshot {
             color: if snap.color.is_empty() { Vec::new() } else { self.fb.color.to_vec() },
-            depth: self.fb.depth.clone(),
-            stencil: self.fb.stencil.clone(),
+            depth: self.fb.depth.to_vec(),
+            stencil: self.fb.stencil.to_vec(),
         };
         if changed_tex {
             // Texture images changed in place: the fragment stage re-derives.
