@@ -112,12 +112,8 @@ pub struct Scratch {
     keyed: Vec<(u64, u64, u32)>,
     out: Vec<u32>,
     inc: Vec<u32>,
-    below: Vec<i64>,
-    active1: Vec<(usize, i64)>,
-    bedges: Vec<Edge>,
-    inside_above: Vec<bool>,
-    active2: Vec<(usize, Option<Reg>)>,
-    outs: Vec<(usize, Option<Reg>)>,
+    active: Vec<Active>,
+    outs: Vec<Active>,
     pub(super) pool: Pool,
     pub region: Region,
 }
@@ -132,11 +128,7 @@ impl Scratch {
         self.keyed.reserve(n);
         self.out.reserve(n);
         self.inc.reserve(n);
-        self.below.reserve(n);
-        self.active1.reserve(n);
-        self.bedges.reserve(n);
-        self.inside_above.reserve(n);
-        self.active2.reserve(n);
+        self.active.reserve(n);
         self.outs.reserve(n);
         self.region.boundary.reserve(n);
         self.region.triangles.reserve(n);
@@ -151,7 +143,7 @@ impl Scratch {
 /// arrangement of the same vertices); otherwise the vertices are sorted here.
 pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sorted: Option<&[(u64, u64, u32)]>, sc: &mut Scratch) {
     let nv = verts.len();
-    let Scratch { edges, order, keyed, out, inc, below, active1, bedges, inside_above, active2, outs, pool, region } = sc;
+    let Scratch { edges, order, keyed, out, inc, active, outs, pool, region } = sc;
     let Region { boundary, triangles: tris } = region;
     boundary.clear();
     tris.clear();
@@ -236,72 +228,17 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
             order.extend(keyed.iter().map(|k| k.2));
         }
     }
-    // Outgoing edges of v: es[out[v]..out[v + 1]] (es sorted by lo); incoming counts.
-    let build_out = |es: &[Edge], out: &mut Vec<u32>, inc: &mut Vec<u32>| {
-        out.clear();
-        out.resize(nv + 1, 0);
-        inc.clear();
-        inc.resize(nv, 0);
-        for e in es {
-            out[e.lo + 1] += 1;
-            inc[e.hi] += 1;
-        }
-        for v in 0..nv {
-            out[v + 1] += out[v];
-        }
-    };
-
-    // Sweep 1: the winding number below every edge (`out` and `inc` are
-    // those of `edges`, from the grouping above).
-    below.clear();
-    below.resize(edges.len(), 0);
-    {
-        let active = active1;
-        active.clear();
-        for &v in order.iter() {
-            let v = v as usize;
-            let (pos, run) = locate(active, v, inc[v], verts, |x| edges[x.0].hi, |x| (edges[x.0].lo, edges[x.0].hi));
-            let mut w = if pos > 0 { active[pos - 1].1 } else { 0 };
-            let (o0, o1) = (out[v] as usize, out[v + 1] as usize);
-            // The edges leaving v take the slots of those ending there (a
-            // crossing: two for two, no memmove); the rest are inserted one
-            // by one (usually one or two, cheaper than a splice) or removed.
-            let mut i = pos;
-            for e in o0..o1 {
-                below[e] = w;
-                w += edges[e].w;
-                if i < pos + run {
-                    active[i] = (e, w);
-                } else {
-                    active.insert(i, (e, w));
-                }
-                i += 1;
-            }
-            if i < pos + run {
-                active.drain(i..pos + run);
-            }
-        }
-    }
-    // The boundary: edges whose two sides differ; "inside above" per edge.
-    bedges.clear();
-    inside_above.clear();
-    for (i, e) in edges.iter().enumerate() {
-        let (b, a) = (rule.inside(below[i]), rule.inside(below[i] + e.w));
-        if a != b {
-            bedges.push(*e);
-            inside_above.push(a);
-            boundary.push(if a { (e.lo, e.hi) } else { (e.hi, e.lo) });
-        }
-    }
-    if boundary_only {
-        return;
-    }
-
-    // Sweep 2: triangulate.
-    build_out(bedges, out, inc);
-    let active = active2;
+    // One sweep over the faces of the arrangement (as the fast path does):
+    // each active entry holds its edge, the winding number above it and,
+    // if the rule selects the face above it, that face's region. An edge's
+    // winding is known where it starts (the entry below it), so the
+    // boundary (edges whose two sides differ) and the triangles come out of
+    // the same pass. A face between two edges that both have the region on
+    // either side is triangulated on its own; their shared edge is then a
+    // triangle edge off the boundary (unflagged).
     active.clear();
     let mut t = Tri { verts, out: tris, pool };
+    let tri = !boundary_only;
     outs.clear();
     for &v in order.iter() {
         let v = v as usize;
@@ -310,21 +247,22 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
             continue;
         }
         outs.clear();
-        outs.extend((o0..o1).map(|e| (e, None)));
+        outs.extend((o0..o1).map(|e| (e, 0, None)));
         if inc[v] > 0 {
             // The entries ending here (normally one contiguous block).
-            let Some(lo) = active.iter().position(|x| bedges[x.0].hi == v) else {
+            let Some(lo) = active.iter().position(|x| edges[x.0].hi == v) else {
                 // Inconsistent: treat as a start below.
-                insert_start(active, v, outs, bedges, inside_above, verts, &mut t);
+                insert_start(active, v, outs, edges, rule, boundary, tri, verts, &mut t);
                 continue;
             };
             // (All `inc` of them in one run, normally: no second scan.)
-            let run = active[lo..].iter().take_while(|x| bedges[x.0].hi == v).count();
-            let hi = if run == inc[v] as usize { lo + run - 1 } else { active.iter().rposition(|x| bedges[x.0].hi == v).unwrap_or(lo) };
-            let r_below = if lo > 0 { active[lo - 1].1.take() } else { None };
-            let r_above = active[hi].1.take();
+            let run = active[lo..].iter().take_while(|x| edges[x.0].hi == v).count();
+            let hi = if run == inc[v] as usize { lo + run - 1 } else { active.iter().rposition(|x| edges[x.0].hi == v).unwrap_or(lo) };
+            let w0 = if lo > 0 { active[lo - 1].1 } else { 0 };
+            let r_below = if lo > 0 { active[lo - 1].2.take() } else { None };
+            let r_above = active[hi].2.take();
             for x in &mut active[lo..=hi] {
-                if let Some(r) = x.1.take() {
+                if let Some(r) = x.2.take() {
                     t.close(r, v);
                 }
             }
@@ -333,62 +271,67 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
             if outs.is_empty() {
                 active.drain(lo..=hi);
                 match (r_below, r_above) {
-                    (Some(b), Some(a)) => active[lo - 1].1 = Some(t.merge(b, a)),
-                    (Some(b), None) => active[lo - 1].1 = Some(b),
+                    (Some(b), Some(a)) => active[lo - 1].2 = Some(t.merge(b, a)),
+                    (Some(b), None) => active[lo - 1].2 = Some(b),
                     (None, Some(a)) => t.close(a, v),
                     (None, None) => {}
                 }
             } else {
                 if let Some(b) = r_below {
                     if lo > 0 {
-                        active[lo - 1].1 = Some(b);
+                        active[lo - 1].2 = Some(b);
                     } else {
                         t.close(b, v);
                     }
                 }
+                let top = start_outs(outs, w0, edges, rule, boundary, tri, v, &mut t);
                 let k = outs.len();
-                for j in 0..k - 1 {
-                    if inside_above[outs[j].0] {
-                        outs[j].1 = Some(t.start(v));
-                    }
-                }
-                outs[k - 1].1 = match r_above {
+                outs[k - 1].2 = match r_above {
                     Some(a) => Some(a),
-                    None if inside_above[outs[k - 1].0] => Some(t.start(v)),
+                    None if top && tri => Some(t.start(v)),
                     None => None,
                 };
                 replace_run(active, lo, hi + 1, outs);
             }
         } else {
-            insert_start(active, v, outs, bedges, inside_above, verts, &mut t);
+            insert_start(active, v, outs, edges, rule, boundary, tri, verts, &mut t);
+        }
+    }
+    // Regions left open by floating-point inconsistencies: back to the pool.
+    for x in active.drain(..) {
+        if let Some(r) = x.2 {
+            t.discard(r);
         }
     }
 }
 
-/// Finds where vertex v goes in the active list: the position of the
-/// first entry ending at v (if `inc` > 0) and the length of their run, left
-/// in place for the caller to overwrite, or a binary search by orientation
-/// (run 0).
-fn locate<T>(active: &mut Vec<T>, v: usize, inc: u32, verts: &[Vert], hi_of: impl Fn(&T) -> usize, ends: impl Fn(&T) -> (usize, usize)) -> (usize, usize) {
-    if inc > 0 {
-        let first = active.iter().position(|x| hi_of(x) == v);
-        if let Some(first) = first {
-            // Normally the `inc` entries ending at v are contiguous: one
-            // run; otherwise (floating-point doubt) remove them all.
-            let run = active[first..].iter().take_while(|x| hi_of(x) == v).count();
-            if run == inc as usize {
-                return (first, run);
-            }
-            active.retain(|x| hi_of(x) != v);
-            return (first.min(active.len()), 0);
+/// The entry of an active edge: the edge, the winding number above it, the
+/// region of the face above it (if selected and triangulated).
+type Active = (usize, i64, Option<Reg>);
+
+/// Sets the windings of the edges leaving v (`outs`, bottom to top, the
+/// face below them winding `w0`), pushes those on the boundary, and starts
+/// a region (if `tri`) above each but the top one whose face the rule
+/// selects. Returns whether the rule selects the face above the top one.
+#[allow(clippy::too_many_arguments)]
+fn start_outs(outs: &mut [Active], w0: i64, edges: &[Edge], rule: Rule, boundary: &mut Vec<(usize, usize)>, tri: bool, v: usize, t: &mut Tri) -> bool {
+    let k = outs.len();
+    let mut w = w0;
+    let mut inside = rule.inside(w);
+    for (j, x) in outs.iter_mut().enumerate() {
+        let e = edges[x.0];
+        w += e.w;
+        x.1 = w;
+        let above = rule.inside(w);
+        if above != inside {
+            boundary.push(if above { (e.lo, e.hi) } else { (e.hi, e.lo) });
         }
+        if tri && above && j + 1 < k {
+            x.2 = Some(t.start(v));
+        }
+        inside = above;
     }
-    let pv = verts[v].p;
-    let pos = active.partition_point(|x| {
-        let (a, b) = ends(x);
-        orient(verts[a].p, verts[b].p, pv) >= 0.0
-    });
-    (pos, 0)
+    inside
 }
 
 /// Puts `outs` in place of `active[lo..hi]`: overwrites what both have,
@@ -409,31 +352,29 @@ fn replace_run<T>(active: &mut Vec<T>, lo: usize, hi: usize, outs: &mut Vec<T>) 
     }
 }
 
-fn insert_start(active: &mut Vec<(usize, Option<Reg>)>, v: usize, outs: &mut Vec<(usize, Option<Reg>)>, bedges: &[Edge], inside_above: &[bool], verts: &[Vert], t: &mut Tri) {
+#[allow(clippy::too_many_arguments)]
+fn insert_start(active: &mut Vec<Active>, v: usize, outs: &mut Vec<Active>, edges: &[Edge], rule: Rule, boundary: &mut Vec<(usize, usize)>, tri: bool, verts: &[Vert], t: &mut Tri) {
     if outs.is_empty() {
         return;
     }
     let pv = verts[v].p;
     let pos = active.partition_point(|x| {
-        let e = bedges[x.0];
+        let e = edges[x.0];
         orient(verts[e.lo].p, verts[e.hi].p, pv) >= 0.0
     });
-    let r = if pos > 0 { active[pos - 1].1.take() } else { None };
+    let w0 = if pos > 0 { active[pos - 1].1 } else { 0 };
+    let r = if pos > 0 { active[pos - 1].2.take() } else { None };
+    let top = start_outs(outs, w0, edges, rule, boundary, tri, v, t);
     let k = outs.len();
-    for j in 0..k - 1 {
-        if inside_above[outs[j].0] {
-            outs[j].1 = Some(t.start(v));
-        }
-    }
     match r {
         Some(r) => {
             let (lower, upper) = t.split(r, v);
-            active[pos - 1].1 = Some(lower);
-            outs[k - 1].1 = Some(upper);
+            active[pos - 1].2 = Some(lower);
+            outs[k - 1].2 = Some(upper);
         }
         None => {
-            if inside_above[outs[k - 1].0] {
-                outs[k - 1].1 = Some(t.start(v));
+            if top && tri {
+                outs[k - 1].2 = Some(t.start(v));
             }
         }
     }
