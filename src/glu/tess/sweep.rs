@@ -228,14 +228,14 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
             order.extend(keyed.iter().map(|k| k.2));
         }
     }
-    // One sweep over the faces of the arrangement (as the fast path does):
-    // each active entry holds its edge, the winding number above it and,
-    // if the rule selects the face above it, that face's region. An edge's
-    // winding is known where it starts (the entry below it), so the
-    // boundary (edges whose two sides differ) and the triangles come out of
-    // the same pass. A face between two edges that both have the region on
-    // either side is triangulated on its own; their shared edge is then a
-    // triangle edge off the boundary (unflagged).
+    // One sweep: windings, the boundary and the triangles together. Every
+    // edge is in the active list with the winding number above it (known
+    // where it starts: from the entry below it), and whether it is on the
+    // boundary (its two sides differ). The triangulation sees only the
+    // boundary entries, as a sweep over the boundary alone would: a region
+    // lies above a boundary entry with the region above it and reaches up
+    // to the next boundary entry; vertices without boundary edges are not
+    // its business.
     active.clear();
     let mut t = Tri { verts, out: tris, pool };
     let tri = !boundary_only;
@@ -247,91 +247,144 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
             continue;
         }
         outs.clear();
-        outs.extend((o0..o1).map(|e| (e, 0, None)));
-        if inc[v] > 0 {
-            // The entries ending here (normally one contiguous block).
-            let Some(lo) = active.iter().position(|x| edges[x.0].hi == v) else {
-                // Inconsistent: treat as a start below.
-                insert_start(active, v, outs, edges, rule, boundary, tri, verts, &mut t);
-                continue;
-            };
-            // (All `inc` of them in one run, normally: no second scan.)
-            let run = active[lo..].iter().take_while(|x| edges[x.0].hi == v).count();
-            let hi = if run == inc[v] as usize { lo + run - 1 } else { active.iter().rposition(|x| edges[x.0].hi == v).unwrap_or(lo) };
-            let w0 = if lo > 0 { active[lo - 1].1 } else { 0 };
-            let r_below = if lo > 0 { active[lo - 1].2.take() } else { None };
-            let r_above = active[hi].2.take();
-            for x in &mut active[lo..=hi] {
-                if let Some(r) = x.2.take() {
-                    t.close(r, v);
-                }
-            }
-            let r_below = r_below.map(|r| t.add(r, v, Side::Upper));
-            let r_above = r_above.map(|r| t.add(r, v, Side::Lower));
-            if outs.is_empty() {
-                active.drain(lo..=hi);
-                match (r_below, r_above) {
-                    (Some(b), Some(a)) => active[lo - 1].2 = Some(t.merge(b, a)),
-                    (Some(b), None) => active[lo - 1].2 = Some(b),
-                    (None, Some(a)) => t.close(a, v),
-                    (None, None) => {}
-                }
-            } else {
-                if let Some(b) = r_below {
-                    if lo > 0 {
-                        active[lo - 1].2 = Some(b);
-                    } else {
-                        t.close(b, v);
+        outs.extend((o0..o1).map(|e| Active { e, w: 0, b: false, reg: None }));
+        // The entries ending here (normally one contiguous block).
+        let first = if inc[v] > 0 { active.iter().position(|x| edges[x.e].hi == v) } else { None };
+        let Some(lo) = first else {
+            // A start (or, inconsistent, an end not found: the same).
+            let pv = verts[v].p;
+            let pos = active.partition_point(|x| {
+                let e = edges[x.e];
+                orient(verts[e.lo].p, verts[e.hi].p, pv) >= 0.0
+            });
+            let w0 = if pos > 0 { active[pos - 1].w } else { 0 };
+            let top = start_outs(outs, w0, edges, rule, boundary);
+            if tri {
+                if let Some(k) = top {
+                    // v starts a hole in the region around it, or a region.
+                    let below = active[..pos].iter().rposition(|x| x.b);
+                    let r = below.and_then(|i| active[i].reg.take());
+                    start_regions(outs, k, rule, &mut t, v);
+                    match r {
+                        Some(r) => {
+                            let (lower, upper) = t.split(r, v);
+                            active[below.unwrap_or(0)].reg = Some(lower);
+                            outs[k].reg = Some(upper);
+                        }
+                        None if rule.inside(outs[k].w) => outs[k].reg = Some(t.start(v)),
+                        None => {}
                     }
                 }
-                let top = start_outs(outs, w0, edges, rule, boundary, tri, v, &mut t);
-                let k = outs.len();
-                outs[k - 1].2 = match r_above {
-                    Some(a) => Some(a),
-                    None if top && tri => Some(t.start(v)),
-                    None => None,
-                };
-                replace_run(active, lo, hi + 1, outs);
             }
-        } else {
-            insert_start(active, v, outs, edges, rule, boundary, tri, verts, &mut t);
+            insert_all(active, pos, outs);
+            continue;
+        };
+        // (All `inc` of them in one run, normally: no second scan.)
+        let run = active[lo..].iter().take_while(|x| edges[x.e].hi == v).count();
+        let hi = if run == inc[v] as usize { lo + run - 1 } else { active.iter().rposition(|x| edges[x.e].hi == v).unwrap_or(lo) };
+        let w0 = if lo > 0 { active[lo - 1].w } else { 0 };
+        let top = start_outs(outs, w0, edges, rule, boundary);
+        let lo_b = active[lo..=hi].iter().position(|x| x.b).map(|i| lo + i);
+        if tri && (lo_b.is_some() || top.is_some()) {
+            let below = active[..lo_b.unwrap_or(lo)].iter().rposition(|x| x.b);
+            let r_below = below.and_then(|i| active[i].reg.take());
+            match lo_b {
+                None => {
+                    // Only boundary edges leaving: a start, as above.
+                    let k = top.unwrap_or(0);
+                    start_regions(outs, k, rule, &mut t, v);
+                    match r_below {
+                        Some(r) => {
+                            let (lower, upper) = t.split(r, v);
+                            active[below.unwrap_or(0)].reg = Some(lower);
+                            outs[k].reg = Some(upper);
+                        }
+                        None if rule.inside(outs[k].w) => outs[k].reg = Some(t.start(v)),
+                        None => {}
+                    }
+                }
+                Some(lo_b) => {
+                    let hi_b = active[..=hi].iter().rposition(|x| x.b).unwrap_or(lo_b);
+                    let r_above = active[hi_b].reg.take();
+                    for x in &mut active[lo_b..=hi_b] {
+                        if let Some(r) = x.reg.take() {
+                            t.close(r, v);
+                        }
+                    }
+                    let r_below = r_below.map(|r| t.add(r, v, Side::Upper));
+                    let r_above = r_above.map(|r| t.add(r, v, Side::Lower));
+                    match top {
+                        None => match (r_below, r_above) {
+                            (Some(b), Some(a)) => active[below.unwrap_or(0)].reg = Some(t.merge(b, a)),
+                            (Some(b), None) => active[below.unwrap_or(0)].reg = Some(b),
+                            (None, Some(a)) => t.close(a, v),
+                            (None, None) => {}
+                        },
+                        Some(k) => {
+                            if let Some(b) = r_below {
+                                active[below.unwrap_or(0)].reg = Some(b);
+                            }
+                            start_regions(outs, k, rule, &mut t, v);
+                            outs[k].reg = match r_above {
+                                Some(a) => Some(a),
+                                None if rule.inside(outs[k].w) => Some(t.start(v)),
+                                None => None,
+                            };
+                        }
+                    }
+                }
+            }
         }
+        replace_run(active, lo, hi + 1, outs);
     }
     // Regions left open by floating-point inconsistencies: back to the pool.
     for x in active.drain(..) {
-        if let Some(r) = x.2 {
+        if let Some(r) = x.reg {
             t.discard(r);
         }
     }
 }
 
-/// The entry of an active edge: the edge, the winding number above it, the
-/// region of the face above it (if selected and triangulated).
-type Active = (usize, i64, Option<Reg>);
+/// An active edge: the edge, the winding number above it, whether it is on
+/// the boundary, and (if so, and the region is above it) the region
+/// between it and the next boundary entry above.
+struct Active {
+    e: usize,
+    w: i64,
+    b: bool,
+    reg: Option<Reg>,
+}
 
-/// Sets the windings of the edges leaving v (`outs`, bottom to top, the
-/// face below them winding `w0`), pushes those on the boundary, and starts
-/// a region (if `tri`) above each but the top one whose face the rule
-/// selects. Returns whether the rule selects the face above the top one.
-#[allow(clippy::too_many_arguments)]
-fn start_outs(outs: &mut [Active], w0: i64, edges: &[Edge], rule: Rule, boundary: &mut Vec<(usize, usize)>, tri: bool, v: usize, t: &mut Tri) -> bool {
-    let k = outs.len();
+/// Sets the windings of the edges leaving a vertex (`outs`, bottom to top,
+/// the face below them winding `w0`) and their boundary flags, and pushes
+/// the boundary ones. Returns the top boundary one's index, if any.
+fn start_outs(outs: &mut [Active], w0: i64, edges: &[Edge], rule: Rule, boundary: &mut Vec<(usize, usize)>) -> Option<usize> {
     let mut w = w0;
     let mut inside = rule.inside(w);
+    let mut top = None;
     for (j, x) in outs.iter_mut().enumerate() {
-        let e = edges[x.0];
+        let e = edges[x.e];
         w += e.w;
-        x.1 = w;
+        x.w = w;
         let above = rule.inside(w);
         if above != inside {
+            x.b = true;
+            top = Some(j);
             boundary.push(if above { (e.lo, e.hi) } else { (e.hi, e.lo) });
-        }
-        if tri && above && j + 1 < k {
-            x.2 = Some(t.start(v));
         }
         inside = above;
     }
-    inside
+    top
+}
+
+/// Starts a region at v above each boundary edge below `outs[k]` (the top
+/// boundary one) with the region above it.
+fn start_regions(outs: &mut [Active], k: usize, rule: Rule, t: &mut Tri, v: usize) {
+    for x in &mut outs[..k] {
+        if x.b && rule.inside(x.w) {
+            x.reg = Some(t.start(v));
+        }
+    }
 }
 
 /// Puts `outs` in place of `active[lo..hi]`: overwrites what both have,
@@ -350,35 +403,6 @@ fn replace_run<T>(active: &mut Vec<T>, lo: usize, hi: usize, outs: &mut Vec<T>) 
     if i < hi {
         active.drain(i..hi);
     }
-}
-
-#[allow(clippy::too_many_arguments)]
-fn insert_start(active: &mut Vec<Active>, v: usize, outs: &mut Vec<Active>, edges: &[Edge], rule: Rule, boundary: &mut Vec<(usize, usize)>, tri: bool, verts: &[Vert], t: &mut Tri) {
-    if outs.is_empty() {
-        return;
-    }
-    let pv = verts[v].p;
-    let pos = active.partition_point(|x| {
-        let e = edges[x.0];
-        orient(verts[e.lo].p, verts[e.hi].p, pv) >= 0.0
-    });
-    let w0 = if pos > 0 { active[pos - 1].1 } else { 0 };
-    let r = if pos > 0 { active[pos - 1].2.take() } else { None };
-    let top = start_outs(outs, w0, edges, rule, boundary, tri, v, t);
-    let k = outs.len();
-    match r {
-        Some(r) => {
-            let (lower, upper) = t.split(r, v);
-            active[pos - 1].2 = Some(lower);
-            outs[k - 1].2 = Some(upper);
-        }
-        None => {
-            if top && tri {
-                outs[k - 1].2 = Some(t.start(v));
-            }
-        }
-    }
-    insert_all(active, pos, outs);
 }
 
 /// Moves `outs` into `active` at `pos` (usually one or two: inserts one by
