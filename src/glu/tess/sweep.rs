@@ -1,10 +1,12 @@
-//! The tessellator's planar core, in 2D and double precision: the
+//! The tessellator's planar core, in 2D and double precision: given the
 //! arrangement of the contours' edges (every crossing and touching split
-//! into vertices), the winding number of every face (one sweep), the
-//! boundary of the region a winding rule selects, and its triangulation
-//! (a second sweep that keeps one monotone "reflex chain" per interior
-//! region, the textbook monotone-polygon triangulation run on all regions
-//! at once; merge vertices are resolved by the next vertex that arrives).
+//! into vertices by [`super::split`]), one sweep computes the winding
+//! number of every face, the boundary of the region a winding rule selects
+//! and its triangulation (one monotone "reflex chain" per interior region
+//! between boundary edges, the textbook monotone-polygon triangulation run
+//! on all regions at once; merge vertices are resolved by the next vertex
+//! that arrives). Until 2026-11-27 windings and triangles were two sweeps;
+//! the one sweep gives the same triangles and boundary edges.
 //!
 //! Invariants: vertices are visited in lexicographic (x, y) order, every
 //! edge runs from its smaller to its larger end in that order, and "above"
