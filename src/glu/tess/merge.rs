@@ -61,9 +61,14 @@ impl Grid {
         if !self.hashed {
             let mut best: Option<(f64, usize)> = None;
             for (i, q) in verts[..self.linear.min(verts.len())].iter().enumerate() {
-                let d = (q.p[0] - p[0]).abs().max((q.p[1] - p[1]).abs());
-                if d <= EPS && best.is_none_or(|(bd, _)| d < bd) {
-                    best = Some((d, i));
+                // (Plain comparisons first: coordinates are finite here,
+                // and most vertices are far in x or y.)
+                let (dx, dy) = ((q.p[0] - p[0]).abs(), (q.p[1] - p[1]).abs());
+                if dx <= EPS && dy <= EPS {
+                    let d = if dx < dy { dy } else { dx };
+                    if best.is_none_or(|(bd, _)| d < bd) {
+                        best = Some((d, i));
+                    }
                 }
             }
             return best.map(|b| b.1);
@@ -76,10 +81,13 @@ impl Grid {
                 let mut i = self.head[self.bucket(kx, ky)];
                 while i != NONE {
                     let q = verts[i as usize].p;
-                    let d = (q[0] - p[0]).abs().max((q[1] - p[1]).abs());
+                    let (dx, dy) = ((q[0] - p[0]).abs(), (q[1] - p[1]).abs());
                     // The same vertex can be met twice (two probed cells in one bucket): harmless.
-                    if d <= EPS && best.is_none_or(|(bd, bi)| d < bd || (d == bd && (i as usize) < bi)) {
-                        best = Some((d, i as usize));
+                    if dx <= EPS && dy <= EPS {
+                        let d = if dx < dy { dy } else { dx };
+                        if best.is_none_or(|(bd, bi)| d < bd || (d == bd && (i as usize) < bi)) {
+                            best = Some((d, i as usize));
+                        }
                     }
                     i = self.next[i as usize];
                 }

@@ -45,8 +45,8 @@
 //! active list ([`blocks`]). The general path finds edge pairs with a
 //! uniform grid of about n cells in which each edge occupies the cells its
 //! segment crosses, so typical inputs run in near-linear time; inputs with
-//! very many crossings are quadratic, as their output is. Its sweeps keep
-//! their active edges in a vector (linear search for the edges ending at a
+//! very many crossings are quadratic, as their output is. Its sweep keeps
+//! its active edges in a vector (linear search for the edges ending at a
 //! vertex, memmove on insert), so self-intersecting polygons with tens of
 //! thousands of edges active at once are still quadratic there.
 //!

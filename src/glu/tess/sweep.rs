@@ -1,10 +1,12 @@
-//! The tessellator's planar core, in 2D and double precision: the
+//! The tessellator's planar core, in 2D and double precision: given the
 //! arrangement of the contours' edges (every crossing and touching split
-//! into vertices), the winding number of every face (one sweep), the
-//! boundary of the region a winding rule selects, and its triangulation
-//! (a second sweep that keeps one monotone "reflex chain" per interior
-//! region, the textbook monotone-polygon triangulation run on all regions
-//! at once; merge vertices are resolved by the next vertex that arrives).
+//! into vertices by [`super::split`]), one sweep computes the winding
+//! number of every face, the boundary of the region a winding rule selects
+//! and its triangulation (one monotone "reflex chain" per interior region
+//! between boundary edges, the textbook monotone-polygon triangulation run
+//! on all regions at once; merge vertices are resolved by the next vertex
+//! that arrives). Until 2026-11-27 windings and triangles were two sweeps;
+//! the one sweep gives the same triangles and boundary edges.
 //!
 //! Invariants: vertices are visited in lexicographic (x, y) order, every
 //! edge runs from its smaller to its larger end in that order, and "above"
@@ -112,12 +114,8 @@ pub struct Scratch {
     keyed: Vec<(u64, u64, u32)>,
     out: Vec<u32>,
     inc: Vec<u32>,
-    below: Vec<i64>,
-    active1: Vec<(usize, i64)>,
-    bedges: Vec<Edge>,
-    inside_above: Vec<bool>,
-    active2: Vec<(usize, Option<Reg>)>,
-    outs: Vec<(usize, Option<Reg>)>,
+    active: Vec<Active>,
+    outs: Vec<Active>,
     pub(super) pool: Pool,
     pub region: Region,
 }
@@ -132,11 +130,7 @@ impl Scratch {
         self.keyed.reserve(n);
         self.out.reserve(n);
         self.inc.reserve(n);
-        self.below.reserve(n);
-        self.active1.reserve(n);
-        self.bedges.reserve(n);
-        self.inside_above.reserve(n);
-        self.active2.reserve(n);
+        self.active.reserve(n);
         self.outs.reserve(n);
         self.region.boundary.reserve(n);
         self.region.triangles.reserve(n);
@@ -151,7 +145,7 @@ impl Scratch {
 /// arrangement of the same vertices); otherwise the vertices are sorted here.
 pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sorted: Option<&[(u64, u64, u32)]>, sc: &mut Scratch) {
     let nv = verts.len();
-    let Scratch { edges, order, keyed, out, inc, below, active1, bedges, inside_above, active2, outs, pool, region } = sc;
+    let Scratch { edges, order, keyed, out, inc, active, outs, pool, region } = sc;
     let Region { boundary, triangles: tris } = region;
     boundary.clear();
     tris.clear();
@@ -236,72 +230,17 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
             order.extend(keyed.iter().map(|k| k.2));
         }
     }
-    // Outgoing edges of v: es[out[v]..out[v + 1]] (es sorted by lo); incoming counts.
-    let build_out = |es: &[Edge], out: &mut Vec<u32>, inc: &mut Vec<u32>| {
-        out.clear();
-        out.resize(nv + 1, 0);
-        inc.clear();
-        inc.resize(nv, 0);
-        for e in es {
-            out[e.lo + 1] += 1;
-            inc[e.hi] += 1;
-        }
-        for v in 0..nv {
-            out[v + 1] += out[v];
-        }
-    };
-
-    // Sweep 1: the winding number below every edge (`out` and `inc` are
-    // those of `edges`, from the grouping above).
-    below.clear();
-    below.resize(edges.len(), 0);
-    {
-        let active = active1;
-        active.clear();
-        for &v in order.iter() {
-            let v = v as usize;
-            let (pos, run) = locate(active, v, inc[v], verts, |x| edges[x.0].hi, |x| (edges[x.0].lo, edges[x.0].hi));
-            let mut w = if pos > 0 { active[pos - 1].1 } else { 0 };
-            let (o0, o1) = (out[v] as usize, out[v + 1] as usize);
-            // The edges leaving v take the slots of those ending there (a
-            // crossing: two for two, no memmove); the rest are inserted one
-            // by one (usually one or two, cheaper than a splice) or removed.
-            let mut i = pos;
-            for e in o0..o1 {
-                below[e] = w;
-                w += edges[e].w;
-                if i < pos + run {
-                    active[i] = (e, w);
-                } else {
-                    active.insert(i, (e, w));
-                }
-                i += 1;
-            }
-            if i < pos + run {
-                active.drain(i..pos + run);
-            }
-        }
-    }
-    // The boundary: edges whose two sides differ; "inside above" per edge.
-    bedges.clear();
-    inside_above.clear();
-    for (i, e) in edges.iter().enumerate() {
-        let (b, a) = (rule.inside(below[i]), rule.inside(below[i] + e.w));
-        if a != b {
-            bedges.push(*e);
-            inside_above.push(a);
-            boundary.push(if a { (e.lo, e.hi) } else { (e.hi, e.lo) });
-        }
-    }
-    if boundary_only {
-        return;
-    }
-
-    // Sweep 2: triangulate.
-    build_out(bedges, out, inc);
-    let active = active2;
+    // One sweep: windings, the boundary and the triangles together. Every
+    // edge is in the active list with the winding number above it (known
+    // where it starts: from the entry below it), and whether it is on the
+    // boundary (its two sides differ). The triangulation sees only the
+    // boundary entries, as a sweep over the boundary alone would: a region
+    // lies above a boundary entry with the region above it and reaches up
+    // to the next boundary entry; vertices without boundary edges are not
+    // its business.
     active.clear();
     let mut t = Tri { verts, out: tris, pool };
+    let tri = !boundary_only;
     outs.clear();
     for &v in order.iter() {
         let v = v as usize;
@@ -310,85 +249,144 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
             continue;
         }
         outs.clear();
-        outs.extend((o0..o1).map(|e| (e, None)));
-        if inc[v] > 0 {
-            // The entries ending here (normally one contiguous block).
-            let Some(lo) = active.iter().position(|x| bedges[x.0].hi == v) else {
-                // Inconsistent: treat as a start below.
-                insert_start(active, v, outs, bedges, inside_above, verts, &mut t);
-                continue;
-            };
-            // (All `inc` of them in one run, normally: no second scan.)
-            let run = active[lo..].iter().take_while(|x| bedges[x.0].hi == v).count();
-            let hi = if run == inc[v] as usize { lo + run - 1 } else { active.iter().rposition(|x| bedges[x.0].hi == v).unwrap_or(lo) };
-            let r_below = if lo > 0 { active[lo - 1].1.take() } else { None };
-            let r_above = active[hi].1.take();
-            for x in &mut active[lo..=hi] {
-                if let Some(r) = x.1.take() {
-                    t.close(r, v);
-                }
-            }
-            let r_below = r_below.map(|r| t.add(r, v, Side::Upper));
-            let r_above = r_above.map(|r| t.add(r, v, Side::Lower));
-            if outs.is_empty() {
-                active.drain(lo..=hi);
-                match (r_below, r_above) {
-                    (Some(b), Some(a)) => active[lo - 1].1 = Some(t.merge(b, a)),
-                    (Some(b), None) => active[lo - 1].1 = Some(b),
-                    (None, Some(a)) => t.close(a, v),
-                    (None, None) => {}
-                }
-            } else {
-                if let Some(b) = r_below {
-                    if lo > 0 {
-                        active[lo - 1].1 = Some(b);
-                    } else {
-                        t.close(b, v);
+        outs.extend((o0..o1).map(|e| Active { e, w: 0, b: false, reg: None }));
+        // The entries ending here (normally one contiguous block).
+        let first = if inc[v] > 0 { active.iter().position(|x| edges[x.e].hi == v) } else { None };
+        let Some(lo) = first else {
+            // A start (or, inconsistent, an end not found: the same).
+            let pv = verts[v].p;
+            let pos = active.partition_point(|x| {
+                let e = edges[x.e];
+                orient(verts[e.lo].p, verts[e.hi].p, pv) >= 0.0
+            });
+            let w0 = if pos > 0 { active[pos - 1].w } else { 0 };
+            let top = start_outs(outs, w0, edges, rule, boundary);
+            if tri {
+                if let Some(k) = top {
+                    // v starts a hole in the region around it, or a region.
+                    let below = active[..pos].iter().rposition(|x| x.b);
+                    let r = below.and_then(|i| active[i].reg.take());
+                    start_regions(outs, k, rule, &mut t, v);
+                    match r {
+                        Some(r) => {
+                            let (lower, upper) = t.split(r, v);
+                            active[below.unwrap_or(0)].reg = Some(lower);
+                            outs[k].reg = Some(upper);
+                        }
+                        None if rule.inside(outs[k].w) => outs[k].reg = Some(t.start(v)),
+                        None => {}
                     }
                 }
-                let k = outs.len();
-                for j in 0..k - 1 {
-                    if inside_above[outs[j].0] {
-                        outs[j].1 = Some(t.start(v));
+            }
+            insert_all(active, pos, outs);
+            continue;
+        };
+        // (All `inc` of them in one run, normally: no second scan.)
+        let run = active[lo..].iter().take_while(|x| edges[x.e].hi == v).count();
+        let hi = if run == inc[v] as usize { lo + run - 1 } else { active.iter().rposition(|x| edges[x.e].hi == v).unwrap_or(lo) };
+        let w0 = if lo > 0 { active[lo - 1].w } else { 0 };
+        let top = start_outs(outs, w0, edges, rule, boundary);
+        let lo_b = active[lo..=hi].iter().position(|x| x.b).map(|i| lo + i);
+        if tri && (lo_b.is_some() || top.is_some()) {
+            let below = active[..lo_b.unwrap_or(lo)].iter().rposition(|x| x.b);
+            let r_below = below.and_then(|i| active[i].reg.take());
+            match lo_b {
+                None => {
+                    // Only boundary edges leaving: a start, as above.
+                    let k = top.unwrap_or(0);
+                    start_regions(outs, k, rule, &mut t, v);
+                    match r_below {
+                        Some(r) => {
+                            let (lower, upper) = t.split(r, v);
+                            active[below.unwrap_or(0)].reg = Some(lower);
+                            outs[k].reg = Some(upper);
+                        }
+                        None if rule.inside(outs[k].w) => outs[k].reg = Some(t.start(v)),
+                        None => {}
                     }
                 }
-                outs[k - 1].1 = match r_above {
-                    Some(a) => Some(a),
-                    None if inside_above[outs[k - 1].0] => Some(t.start(v)),
-                    None => None,
-                };
-                replace_run(active, lo, hi + 1, outs);
+                Some(lo_b) => {
+                    let hi_b = active[..=hi].iter().rposition(|x| x.b).unwrap_or(lo_b);
+                    let r_above = active[hi_b].reg.take();
+                    for x in &mut active[lo_b..=hi_b] {
+                        if let Some(r) = x.reg.take() {
+                            t.close(r, v);
+                        }
+                    }
+                    let r_below = r_below.map(|r| t.add(r, v, Side::Upper));
+                    let r_above = r_above.map(|r| t.add(r, v, Side::Lower));
+                    match top {
+                        None => match (r_below, r_above) {
+                            (Some(b), Some(a)) => active[below.unwrap_or(0)].reg = Some(t.merge(b, a)),
+                            (Some(b), None) => active[below.unwrap_or(0)].reg = Some(b),
+                            (None, Some(a)) => t.close(a, v),
+                            (None, None) => {}
+                        },
+                        Some(k) => {
+                            if let Some(b) = r_below {
+                                active[below.unwrap_or(0)].reg = Some(b);
+                            }
+                            start_regions(outs, k, rule, &mut t, v);
+                            outs[k].reg = match r_above {
+                                Some(a) => Some(a),
+                                None if rule.inside(outs[k].w) => Some(t.start(v)),
+                                None => None,
+                            };
+                        }
+                    }
+                }
             }
-        } else {
-            insert_start(active, v, outs, bedges, inside_above, verts, &mut t);
+        }
+        replace_run(active, lo, hi + 1, outs);
+    }
+    // Regions left open by floating-point inconsistencies: back to the pool.
+    for x in active.drain(..) {
+        if let Some(r) = x.reg {
+            t.discard(r);
         }
     }
 }
 
-/// Finds where vertex v goes in the active list: the position of the
-/// first entry ending at v (if `inc` > 0) and the length of their run, left
-/// in place for the caller to overwrite, or a binary search by orientation
-/// (run 0).
-fn locate<T>(active: &mut Vec<T>, v: usize, inc: u32, verts: &[Vert], hi_of: impl Fn(&T) -> usize, ends: impl Fn(&T) -> (usize, usize)) -> (usize, usize) {
-    if inc > 0 {
-        let first = active.iter().position(|x| hi_of(x) == v);
-        if let Some(first) = first {
-            // Normally the `inc` entries ending at v are contiguous: one
-            // run; otherwise (floating-point doubt) remove them all.
-            let run = active[first..].iter().take_while(|x| hi_of(x) == v).count();
-            if run == inc as usize {
-                return (first, run);
-            }
-            active.retain(|x| hi_of(x) != v);
-            return (first.min(active.len()), 0);
+/// An active edge: the edge, the winding number above it, whether it is on
+/// the boundary, and (if so, and the region is above it) the region
+/// between it and the next boundary entry above.
+struct Active {
+    e: usize,
+    w: i64,
+    b: bool,
+    reg: Option<Reg>,
+}
+
+/// Sets the windings of the edges leaving a vertex (`outs`, bottom to top,
+/// the face below them winding `w0`) and their boundary flags, and pushes
+/// the boundary ones. Returns the top boundary one's index, if any.
+fn start_outs(outs: &mut [Active], w0: i64, edges: &[Edge], rule: Rule, boundary: &mut Vec<(usize, usize)>) -> Option<usize> {
+    let mut w = w0;
+    let mut inside = rule.inside(w);
+    let mut top = None;
+    for (j, x) in outs.iter_mut().enumerate() {
+        let e = edges[x.e];
+        w += e.w;
+        x.w = w;
+        let above = rule.inside(w);
+        if above != inside {
+            x.b = true;
+            top = Some(j);
+            boundary.push(if above { (e.lo, e.hi) } else { (e.hi, e.lo) });
+        }
+        inside = above;
+    }
+    top
+}
+
+/// Starts a region at v above each boundary edge below `outs[k]` (the top
+/// boundary one) with the region above it.
+fn start_regions(outs: &mut [Active], k: usize, rule: Rule, t: &mut Tri, v: usize) {
+    for x in &mut outs[..k] {
+        if x.b && rule.inside(x.w) {
+            x.reg = Some(t.start(v));
         }
     }
-    let pv = verts[v].p;
-    let pos = active.partition_point(|x| {
-        let (a, b) = ends(x);
-        orient(verts[a].p, verts[b].p, pv) >= 0.0
-    });
-    (pos, 0)
 }
 
 /// Puts `outs` in place of `active[lo..hi]`: overwrites what both have,
@@ -407,37 +405,6 @@ fn replace_run<T>(active: &mut Vec<T>, lo: usize, hi: usize, outs: &mut Vec<T>) 
     if i < hi {
         active.drain(i..hi);
     }
-}
-
-fn insert_start(active: &mut Vec<(usize, Option<Reg>)>, v: usize, outs: &mut Vec<(usize, Option<Reg>)>, bedges: &[Edge], inside_above: &[bool], verts: &[Vert], t: &mut Tri) {
-    if outs.is_empty() {
-        return;
-    }
-    let pv = verts[v].p;
-    let pos = active.partition_point(|x| {
-        let e = bedges[x.0];
-        orient(verts[e.lo].p, verts[e.hi].p, pv) >= 0.0
-    });
-    let r = if pos > 0 { active[pos - 1].1.take() } else { None };
-    let k = outs.len();
-    for j in 0..k - 1 {
-        if inside_above[outs[j].0] {
-            outs[j].1 = Some(t.start(v));
-        }
-    }
-    match r {
-        Some(r) => {
-            let (lower, upper) = t.split(r, v);
-            active[pos - 1].1 = Some(lower);
-            outs[k - 1].1 = Some(upper);
-        }
-        None => {
-            if inside_above[outs[k - 1].0] {
-                outs[k - 1].1 = Some(t.start(v));
-            }
-        }
-    }
-    insert_all(active, pos, outs);
 }
 
 /// Moves `outs` into `active` at `pos` (usually one or two: inserts one by
