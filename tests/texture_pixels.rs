@@ -262,17 +262,34 @@ fn packed_depth_stencil() {
     assert_eq!(c.take_error(), GL_INVALID_ENUM);
     unsafe { c.read_pixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_24_8, word.as_mut_ptr() as *mut u8) };
     assert_eq!(c.take_error(), GL_INVALID_OPERATION);
-    // DrawPixels writes both (depth through the depth test, here off).
+    // DrawPixels writes both directly (GL 3.0 section 4.3.1): the depth
+    // test is ignored, whether off (as piglit's readdrawpixels draws) or
+    // on and failing every fragment; only the depth mask stops the depth.
     c.execute(&Command::RasterPos([-1.0, -1.0, 0.0, 1.0]));
     let words: [u32; 2] = [0x800000 << 8 | 0x11, 0xFFFFFF << 8 | 0x22];
     let cmd = unsafe { c.build_draw_pixels(2, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, words.as_ptr() as *const u8) }.unwrap();
+    let (a, b) = (c.fb.index(0, 0), c.fb.index(1, 0));
+    for (test, func) in [(false, GL_LESS), (true, GL_NEVER)] {
+        c.fb.depth[a] = 0x10;
+        c.fb.depth[b] = 0x10;
+        c.fb.stencil[a] = 0;
+        c.fb.stencil[b] = 0;
+        c.execute(&if test { Command::Enable(GL_DEPTH_TEST) } else { Command::Disable(GL_DEPTH_TEST) });
+        c.execute(&Command::DepthFunc(func));
+        c.execute(&cmd);
+        assert_eq!(c.take_error(), GL_NO_ERROR);
+        assert_eq!((c.fb.depth[a], c.fb.stencil[a]), (0x800000, 0x11), "depth test {test}");
+        assert_eq!((c.fb.depth[b], c.fb.stencil[b]), (0xFFFFFF, 0x22), "depth test {test}");
+    }
+    c.execute(&Command::DepthMask(false));
+    c.fb.depth[a] = 0x10;
+    c.fb.stencil[a] = 0;
+    c.execute(&cmd);
+    assert_eq!((c.fb.depth[a], c.fb.stencil[a]), (0x10, 0x11));
+    c.execute(&Command::DepthMask(true));
     c.execute(&Command::Enable(GL_DEPTH_TEST));
     c.execute(&Command::DepthFunc(GL_ALWAYS));
     c.execute(&cmd);
-    assert_eq!(c.take_error(), GL_NO_ERROR);
-    let (a, b) = (c.fb.index(0, 0), c.fb.index(1, 0));
-    assert_eq!((c.fb.depth[a], c.fb.stencil[a]), (0x800000, 0x11));
-    assert_eq!((c.fb.depth[b], c.fb.stencil[b]), (0xFFFFFF, 0x22));
     // CopyPixels(DEPTH_STENCIL) copies both to the raster position.
     c.execute(&Command::RasterPos([0.0, 0.0, 0.0, 1.0]));
     c.copy_pixels(0, 0, 2, 1, GL_DEPTH_STENCIL);

@@ -23,7 +23,11 @@
 //! ([`PixelShading`]).
 //!
 //! DEPTH_STENCIL (EXT_packed_depth_stencil) rectangles, drawn or copied,
-//! are a depth rectangle followed by a stencil rectangle of the same groups.
+//! are written like stencil rectangles (GL 3.0 section 4.3.1, "Writing to
+//! the Stencil or Depth/Stencil Buffers", which took the extension in):
+//! only ownership and the scissor test apply, the stencil index goes
+//! through the stencil write mask and the depth value is written when
+//! the depth mask allows it, whatever the depth test says.
 //!
 //! glCopyPixels reads the whole source rectangle first, so overlapping
 //! source and destination behave as if every source pixel were read before
@@ -109,6 +113,8 @@ enum Groups {
     Color(Vec<Option<[u8; 4]>>),
     Depth(Vec<Option<u32>>),
     Stencil(Vec<Option<i64>>),
+    /// DEPTH_STENCIL groups: (window depth, stencil index), written directly.
+    DepthStencil(Vec<Option<(u32, i64)>>),
 }
 
 impl Context {
@@ -256,11 +262,7 @@ impl Context {
             PixelData::Depth(d) => Groups::Depth(d.iter().map(|&z| Some(depth_to_fixed(t.depth(z)))).collect()),
             PixelData::Stencil(s) => Groups::Stencil(s.iter().map(|&i| Some(t.stencil(i))).collect()),
             PixelData::DepthStencil(ds) => {
-                // A depth rectangle, then a stencil rectangle of the same groups.
-                let stencil = Groups::Stencil(ds.iter().map(|&(_, i)| Some(t.stencil(i))).collect());
-                let depth = Groups::Depth(ds.iter().map(|&(z, _)| Some(depth_to_fixed(t.depth(z)))).collect());
-                self.draw_groups(r.width, r.height, depth);
-                stencil
+                Groups::DepthStencil(ds.iter().map(|&(z, i)| Some((depth_to_fixed(t.depth(z)), t.stencil(i)))).collect())
             }
         };
         self.draw_groups(w, h, groups);
@@ -298,6 +300,22 @@ impl Context {
                         let i = fb.index(x, y);
                         let v = (v & max) as u8;
                         fb.stencil[i] = (fb.stencil[i] & !wm) | (v & wm);
+                    }
+                })
+            }
+            Groups::DepthStencil(ds) => {
+                let max = ((1u32 << self.fb_stencil_bits()) - 1) as i64;
+                let wm = (self.stencil.write_mask as i64 & max) as u8;
+                let write_depth = self.depth.write_mask;
+                let fb = &mut self.fb;
+                pixels::rectangle(clip, origin, zoom, w, h, |g, x, y| {
+                    if let Some((z, v)) = ds[g] {
+                        let i = fb.index(x, y);
+                        let v = (v & max) as u8;
+                        fb.stencil[i] = (fb.stencil[i] & !wm) | (v & wm);
+                        if write_depth {
+                            fb.depth[i] = z;
+                        }
                     }
                 })
             }
@@ -382,12 +400,13 @@ impl Context {
                 Groups::Depth(idx.iter().map(|o| o.map(|k| if identity { fb.depth[k] } else { depth_to_fixed(t.depth(fb.depth[k] as f64 / max)) })).collect())
             }
             GL_DEPTH_STENCIL => {
-                // Both read before either is written; depth first.
+                // Both read before either is written.
                 let max = crate::framebuffer::DEPTH_MAX as f64;
-                let depth = Groups::Depth(idx.iter().map(|o| o.map(|k| depth_to_fixed(t.depth(fb.depth[k] as f64 / max)))).collect());
-                let stencil = Groups::Stencil(idx.iter().map(|o| o.map(|k| t.stencil(fb.stencil[k] as f64))).collect());
-                self.draw_groups(w, h, depth);
-                stencil
+                Groups::DepthStencil(
+                    idx.iter()
+                        .map(|o| o.map(|k| (depth_to_fixed(t.depth(fb.depth[k] as f64 / max)), t.stencil(fb.stencil[k] as f64))))
+                        .collect(),
+                )
             }
             _ => Groups::Stencil(idx.iter().map(|o| o.map(|k| t.stencil(fb.stencil[k] as f64))).collect()),
         };
