@@ -330,22 +330,13 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
     if !rs.reference && !(line.smooth && line.stipple.is_some()) {
         // The fast path (stippled smooth lines keep the reference code).
         let bbox = line.bounds(r);
-        if super::tile::binning(rs) && !fb.draw_both {
+        // A stippled segment's band walks it from its start (the counter
+        // at a band's first column is not known otherwise): binned only
+        // when it spans at most one band's height.
+        let walks = line.stipple.is_some() && (bbox.y1 - bbox.y0) as usize > super::tile::BAND;
+        if super::tile::binning(rs) && !fb.draw_both && !walks {
             // Shaded later, band by band, in the tile workers; the
-            // counter moves on as drawing would move it. A stippled
-            // segment taller than a band goes in pieces that each start
-            // with their own counter (a band would otherwise walk the
-            // segment from its start).
-            if line.stipple.is_some() && (bbox.y1 - bbox.y0) as usize > super::tile::BAND {
-                let (pieces, end) = line.stippled_pieces(r, super::tile::BAND as i64);
-                *s = end;
-                for (piece, b) in pieces {
-                    if super::tile::push_line(rs, piece, b) {
-                        super::tile::submit(rs, fb);
-                    }
-                }
-                return;
-            }
+            // counter moves on as drawing would move it.
             *s = line.stipple_end();
             if !bbox.is_empty() && super::tile::push_line(rs, line, bbox) {
                 super::tile::submit(rs, fb);
@@ -430,25 +421,19 @@ pub struct LineRun {
     hw: f64,
     smooth: bool,
     stipple: Option<(u32, u16)>,
-    /// The stipple counter at the first fragment this record draws.
+    /// The stipple counter at the segment's start.
     s0: u32,
-    /// The major-axis columns [lo, hi) a stippled record walks: the whole
-    /// segment, or one piece of it (`stippled_pieces`).
-    cols: (i64, i64),
     /// `unit()` and its squared length, computed once.
     f: [f64; 4],
     len2: f64,
 }
-
-/// Every column: a record that is the whole segment.
-const WHOLE: (i64, i64) = (i64::MIN / 4, i64::MAX / 4);
 
 impl LineRun {
     fn new(wa: WindowVertex, wb: WindowVertex, [xa, ya, xb, yb]: [i64; 4], flat: Option<[u8; 4]>, lp: &LineParams, smooth: bool, s0: u32) -> LineRun {
         let inv = 1.0 / ONE as f64;
         let f = [xa as f64 * inv, ya as f64 * inv, (xb - xa) as f64 * inv, (yb - ya) as f64 * inv];
         let len2 = f[2] * f[2] + f[3] * f[3];
-        LineRun { wa, wb, xa, ya, xb, yb, flat, w: raster_width(lp.width), hw: smooth::smooth_size(lp.width) / 2.0, smooth, stipple: lp.stipple, s0, cols: WHOLE, f, len2 }
+        LineRun { wa, wb, xa, ya, xb, yb, flat, w: raster_width(lp.width), hw: smooth::smooth_size(lp.width) / 2.0, smooth, stipple: lp.stipple, s0, f, len2 }
     }
 
     fn x_major(&self) -> bool {
@@ -530,10 +515,9 @@ impl LineRun {
         }
     }
 
-    /// About how many fragments the record has (work, for `tile`).
+    /// About how many fragments the segment has (work, for `tile`).
     pub fn work(&self) -> u64 {
         let len = ((self.xb - self.xa).abs().max((self.yb - self.ya).abs()) / ONE) as u64 + 1;
-        let len = len.min(self.cols.1.saturating_sub(self.cols.0).max(0) as u64);
         let across = if self.smooth { 2 * self.hw.ceil() as u64 + 2 } else { self.w as u64 };
         len.saturating_mul(across)
     }
@@ -549,56 +533,6 @@ impl LineRun {
         let mut n = 0u32;
         fragments_stepped(sxa, sya, sxb, syb, i64::MIN / 4, i64::MAX / 4, |_, _| n = n.wrapping_add(1));
         self.s0.wrapping_add(n)
-    }
-
-    /// A stippled aliased segment cut into pieces for the tile workers:
-    /// runs of whole major-axis columns whose pixels span at most `rows`
-    /// rows, each with the stipple counter at its first fragment, so that
-    /// a band walks only the columns of the pieces that reach it instead
-    /// of the segment from its start. One walk of the segment (which
-    /// counting the counter's end needs anyway) finds them; a piece draws
-    /// exactly the fragments the whole segment draws in its columns
-    /// (`fragments_stepped` restricted to a column range emits the same
-    /// hits per column). Returns the pieces with the box of the pixels
-    /// each may touch within `r` (pieces outside `r` are left out), and
-    /// the counter after the segment.
-    pub fn stippled_pieces(&self, r: Rect, rows: i64) -> (Vec<(LineRun, Rect)>, u32) {
-        let [sxa, sya, sxb, syb] = self.shifted();
-        let (x_major, w) = (self.x_major(), self.w);
-        let mut out = Vec::new();
-        let piece = |(c0, c1, s0, b): (i64, i64, u32, [i64; 4]), out: &mut Vec<(LineRun, Rect)>| {
-            let fit = |v: i64, lo: i32, hi: i32| v.clamp(lo as i64, hi as i64) as i32;
-            let bbox = Rect { x0: fit(b[0], r.x0, r.x1), y0: fit(b[1], r.y0, r.y1), x1: fit(b[2], r.x0, r.x1), y1: fit(b[3], r.y0, r.y1) };
-            if !bbox.is_empty() {
-                out.push((LineRun { s0, cols: (c0.min(c1), c0.max(c1) + 1), ..*self }, bbox));
-            }
-        };
-        // The open piece: first and last column, counter, pixel box.
-        let mut cur: Option<(i64, i64, u32, [i64; 4])> = None;
-        let mut s = self.s0;
-        fragments_stepped(sxa, sya, sxb, syb, WHOLE.0, WHOLE.1, |px, py| {
-            let p = if x_major { px } else { py };
-            let f = if x_major { [px, py, px + 1, py + w] } else { [px, py, px + w, py + 1] };
-            match &mut cur {
-                // A column stays whole; otherwise the piece grows while its
-                // rows fit.
-                Some((_, c1, _, b)) if *c1 == p || b[3].max(f[3]) - b[1].min(f[1]) <= rows => {
-                    *c1 = p;
-                    *b = [b[0].min(f[0]), b[1].min(f[1]), b[2].max(f[2]), b[3].max(f[3])];
-                }
-                _ => {
-                    if let Some(c) = cur.take() {
-                        piece(c, &mut out);
-                    }
-                    cur = Some((p, p, s, f));
-                }
-            }
-            s = s.wrapping_add(1);
-        });
-        if let Some(c) = cur {
-            piece(c, &mut out);
-        }
-        (out, s)
     }
 
     /// The fast path: the segment's fragments within `r` (inside the
@@ -665,7 +599,7 @@ impl LineRun {
         let ([sxa, sya, sxb, syb], x_major, w, stipple) = (self.shifted(), self.x_major(), self.w, self.stipple);
         // With stipple, fragments outside `r` still advance the counter, so
         // the whole (guard-band-clipped) segment is walked.
-        let (lo, hi) = if stipple.is_some() { self.cols } else { self.band_columns(self.major_range(r), r) };
+        let (lo, hi) = if stipple.is_some() { (i64::MIN / 4, i64::MAX / 4) } else { self.band_columns(self.major_range(r), r) };
         fragments_stepped(sxa, sya, sxb, syb, lo, hi, |px, py| {
             if let Some((repeat, pattern)) = stipple {
                 let bit = (*s / repeat) % 16;
@@ -823,62 +757,6 @@ fn smooth_line(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A tall stippled segment cut into pieces draws, piece by piece and
-    /// each from its own counter, exactly the lit fragments of the whole
-    /// segment inside the rectangle, in the same order; the pieces keep
-    /// to their row budget and the counter ends where `stipple_end` says.
-    #[test]
-    fn stippled_pieces_draw_the_whole_segment() {
-        let mut seed = 5u64;
-        let mut rnd = |m: i64| {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 33) as i64).rem_euclid(m)
-        };
-        let v = WindowVertex { x: 0.0, y: 0.0, z: 0.5, q: 1.0, color: Vec4::ONE, back_color: Vec4::ONE, tex: [Vec4::ZERO; crate::render::texture::MAX_UNITS], fog: 0.0, secondary: Vec4::ZERO, back_secondary: Vec4::ZERO };
-        // The lit fragments' pixel boxes a record draws, as `aliased_fast` walks it.
-        let lit = |l: &LineRun| {
-            let [sxa, sya, sxb, syb] = l.shifted();
-            let (mut s, mut out) = (l.s0, Vec::new());
-            let (repeat, pattern) = l.stipple.expect("stippled");
-            fragments_stepped(sxa, sya, sxb, syb, l.cols.0, l.cols.1, |px, py| {
-                let bit = (s / repeat) % 16;
-                s = s.wrapping_add(1);
-                if pattern & (1 << bit) != 0 {
-                    out.push(if l.x_major() { [px, py, px + 1, py + l.w] } else { [px, py, px + l.w, py + 1] });
-                }
-            });
-            out
-        };
-        let (mut pieces_seen, mut drawn) = (0, 0);
-        for k in 0..3000 {
-            let span = if k % 3 == 0 { 1200 } else { 300 };
-            let mut c = || rnd(span * ONE) - span / 4 * ONE;
-            let xy = [c(), c(), c(), c()];
-            let lp = LineParams { width: [1.0, 3.0, 5.0, 8.0][rnd(4) as usize], stipple: Some((1 + rnd(3) as u32, rnd(0x10000) as u16 | 1)) };
-            let line = LineRun::new(v, v, xy, None, &lp, false, rnd(100) as u32);
-            let r = Rect { x0: rnd(50) as i32, y0: rnd(50) as i32, x1: 200 + rnd(700) as i32, y1: 200 + rnd(700) as i32 };
-            let rows = [16, 64, 7][rnd(3) as usize];
-            let inside = |b: &[i64; 4]| b[0] < r.x1 as i64 && b[2] > r.x0 as i64 && b[1] < r.y1 as i64 && b[3] > r.y0 as i64;
-            let whole: Vec<_> = lit(&line).into_iter().filter(inside).collect();
-            let (pieces, end) = line.stippled_pieces(r, rows);
-            assert_eq!(end, line.stipple_end(), "segment {xy:?}");
-            let mut got = Vec::new();
-            for (p, b) in &pieces {
-                let frags: Vec<_> = lit(p).into_iter().filter(inside).collect();
-                for f in &frags {
-                    // Every pixel a piece draws inside `r` is in its box.
-                    assert!(f[0].max(r.x0 as i64) >= b.x0 as i64 && f[2].min(r.x1 as i64) <= b.x1 as i64 && f[1].max(r.y0 as i64) >= b.y0 as i64 && f[3].min(r.y1 as i64) <= b.y1 as i64, "segment {xy:?} piece {b:?} fragment {f:?}");
-                }
-                assert!((b.y1 - b.y0) as i64 <= rows.max(line.w), "segment {xy:?} piece {b:?} rows {rows}");
-                got.extend(frags);
-            }
-            assert_eq!(got, whole, "segment {xy:?} rect {r:?} rows {rows}");
-            pieces_seen += pieces.len();
-            drawn += whole.len();
-        }
-        assert!(pieces_seen > 10_000 && drawn > 100_000, "{pieces_seen} pieces, {drawn} fragments");
-    }
 
     /// The stepped enumeration gives the reference enumeration's
     /// fragments in the same order, on segments of every slope and
