@@ -8,6 +8,8 @@ use super::enums::*;
 use crate::framebuffer::Framebuffer;
 use crate::render::fragment::{color_to_u8, depth_to_fixed};
 use glam::Vec4;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 
 const CLEAR_BITS: u32 = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
 
@@ -17,15 +19,50 @@ const CLEAR_BITS: u32 = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_B
 const PARALLEL_PIXELS: usize = 1 << 18;
 const BAND_ROWS: usize = 32;
 
-/// Applies `f` to each row slice [x0, x1) of the rectangle in a buffer,
-/// in bands of rows on `threads` threads when the rectangle is large (each
-/// row is written by one call, so the result does not depend on them).
-fn rows<T: Send>(threads: usize, buf: &mut [T], width: usize, r: crate::framebuffer::Rect, f: impl Fn(&mut [T]) + Sync) {
+/// A band of rows to fill, run by whichever thread takes it.
+type Band<'a> = Box<dyn FnOnce() + Send + 'a>;
+
+/// Applies `f` to each row slice [x0, x1) of the rectangle in a buffer:
+/// at once when the rectangle is small or there is one thread, else as
+/// bands of [`BAND_ROWS`] rows added to `bands`, which [`run_bands`] hands
+/// to the threads in one go for every buffer the glClear names (round 9:
+/// one hand-off a clear, not one a buffer). Each row is written by one
+/// call, so the result does not depend on the thread count.
+fn rows<'a, T: Send + 'a>(bands: &mut Vec<Band<'a>>, threads: usize, buf: &'a mut [T], width: usize, r: crate::framebuffer::Rect, f: impl Fn(&mut [T]) + Copy + Send + 'a) {
     let (x0, x1, y0, y1) = (r.x0 as usize, r.x1 as usize, r.y0 as usize, r.y1 as usize);
-    let threads = if (x1 - x0) * (y1 - y0) >= PARALLEL_PIXELS { threads } else { 1 };
-    crate::render::pool::for_pieces(threads, &mut buf[y0 * width..y1 * width], BAND_ROWS * width, |_, band| {
-        for row in band.chunks_mut(width) {
-            f(&mut row[x0..x1]);
+    let each = move |band: &mut [T]| {
+        if x0 == 0 && x1 == width {
+            // Whole rows: the band is one contiguous run.
+            f(band);
+        } else {
+            for row in band.chunks_mut(width) {
+                f(&mut row[x0..x1]);
+            }
+        }
+    };
+    let buf = &mut buf[y0 * width..y1 * width];
+    if threads <= 1 || (x1 - x0) * (y1 - y0) < PARALLEL_PIXELS {
+        return each(buf);
+    }
+    for band in buf.chunks_mut(BAND_ROWS * width) {
+        bands.push(Box::new(move || each(band)));
+    }
+}
+
+/// Runs the gathered bands on `threads` threads, each band once.
+fn run_bands(threads: usize, bands: Vec<Band<'_>>) {
+    if bands.is_empty() {
+        return;
+    }
+    let slots: Vec<Mutex<Option<Band>>> = bands.into_iter().map(|b| Mutex::new(Some(b))).collect();
+    let next = AtomicUsize::new(0);
+    crate::render::pool::run(threads, &|| loop {
+        let k = next.fetch_add(1, Ordering::Relaxed);
+        let Some(slot) = slots.get(k) else { break };
+        // Uncontended: each slot is taken once.
+        let band = slot.lock().unwrap_or_else(|e| e.into_inner()).take();
+        if let Some(band) = band {
+            band();
         }
     });
 }
@@ -42,22 +79,27 @@ impl Context {
         // Each draw buffer is cleared (4.2.3): both for FRONT_AND_BACK.
         self.sync_draw_buffer();
         let threads = self.derived.render.threads;
-        let fb: &mut Framebuffer = &mut self.fb;
-        let w = fb.width;
+        let (has_depth, has_stencil) = (self.fb.has_depth(), self.fb.has_stencil());
+        let Framebuffer { width: w, config, color, other_color, draw_both, depth, stencil, .. } = &mut self.fb;
+        let (w, config) = (*w, *config);
+        let mut bands: Vec<Band> = Vec::new();
+        let accum = mask & GL_ACCUM_BUFFER_BIT != 0;
         if mask & GL_COLOR_BUFFER_BIT != 0 {
             let mut value = color_to_u8(Vec4::from_array(self.color_buffer.clear));
             let mut m = if self.color_buffer.draw_buffer == 0 { [false; 4] } else { self.color_buffer.write_mask };
-            if fb.config.alpha_bits == 0 {
+            if config.alpha_bits == 0 {
                 // No alpha: stored alpha stays 255, so writing 255 is the
                 // same as not writing it, and keeps the whole-row fill.
                 value[3] = 255;
                 m[3] = m[0] || m[1] || m[2];
             }
-            for color in fb.draw_colors() {
+            // The draw buffers (`Framebuffer::draw_colors`), split borrows.
+            let draws = std::iter::once(color).chain((*draw_both).then_some(other_color));
+            for color in draws {
                 if m == [true; 4] {
-                    rows(threads, &mut color[..], w, r, |row| row.fill(value));
+                    rows(&mut bands, threads, &mut color[..], w, r, move |row| row.fill(value));
                 } else if m != [false; 4] {
-                    rows(threads, &mut color[..], w, r, |row| {
+                    rows(&mut bands, threads, &mut color[..], w, r, move |row| {
                         for px in row {
                             for ch in 0..4 {
                                 if m[ch] {
@@ -69,26 +111,27 @@ impl Context {
                 }
             }
         }
-        if mask & GL_DEPTH_BUFFER_BIT != 0 && fb.has_depth() && self.depth.write_mask {
+        if mask & GL_DEPTH_BUFFER_BIT != 0 && has_depth && self.depth.write_mask {
             let value = depth_to_fixed(self.depth.clear);
-            rows(threads, &mut fb.depth, w, r, |row| row.fill(value));
+            rows(&mut bands, threads, &mut depth[..], w, r, move |row| row.fill(value));
         }
-        if mask & GL_STENCIL_BUFFER_BIT != 0 && fb.has_stencil() {
-            let bits = fb.config.stencil_bits as u32;
+        if mask & GL_STENCIL_BUFFER_BIT != 0 && has_stencil {
+            let bits = config.stencil_bits as u32;
             let full = (1u32 << bits) - 1;
             let value = (self.stencil.clear as u32 & full) as u8;
             let m = (self.stencil.write_mask & full) as u8;
             if m == full as u8 {
-                rows(threads, &mut fb.stencil, w, r, |row| row.fill(value));
+                rows(&mut bands, threads, &mut stencil[..], w, r, move |row| row.fill(value));
             } else if m != 0 {
-                rows(threads, &mut fb.stencil, w, r, |row| {
+                rows(&mut bands, threads, &mut stencil[..], w, r, move |row| {
                     for s in row {
                         *s = (*s & !m) | (value & m);
                     }
                 });
             }
         }
-        if mask & GL_ACCUM_BUFFER_BIT != 0 {
+        run_bands(threads, bands);
+        if accum {
             self.clear_accum_buffer(r);
         }
     }

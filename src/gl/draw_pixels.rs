@@ -141,7 +141,7 @@ impl Context {
         let (w, h) = (w as usize, h as usize);
         let src = Source::new(&self.pixel_store.unpack, w, h, 1, format, ty, ptr);
         let data = match kind {
-            Kind::Color if format == GL_RGBA && ty == GL_UNSIGNED_BYTE => PixelData::Rgba8(super::draw_pixels_fast::unpack_rgba8(&src, w, h)),
+            Kind::Color if format == GL_RGBA && ty == GL_UNSIGNED_BYTE => PixelData::Rgba8(super::draw_pixels_fast::unpack_rgba8(&src, w, h, self.derived.render.threads)),
             Kind::Color => PixelData::Color(src.colors(w, h, 1)),
             Kind::Depth => PixelData::Depth(src.values(w, h, 1, true)),
             Kind::ColorIndex => PixelData::ColorIndex(src.values(w, h, 1, false)),

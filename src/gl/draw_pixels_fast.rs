@@ -95,18 +95,28 @@ impl<'a> RowBand<'a> {
     }
 }
 
-/// The groups of an RGBA / UNSIGNED_BYTE image as bytes, rows bottom-up.
-pub(super) fn unpack_rgba8(src: &Source, w: usize, h: usize) -> Vec<[u8; 4]> {
+/// The groups of an RGBA / UNSIGNED_BYTE image as bytes, rows bottom-up;
+/// large images in bands of rows on `threads` threads (round 9: the copy
+/// was the calling thread's share of a banded glDrawPixels).
+pub(super) fn unpack_rgba8(src: &Source, w: usize, h: usize, threads: usize) -> Vec<[u8; 4]> {
     let mut out = Vec::with_capacity(w * h);
     if w == 0 || h == 0 {
         return out;
     }
     let l = &src.layout;
-    for j in 0..h {
-        let o = l.offset(0, j, 0);
-        let row = &src.data[o..o + 4 * w];
-        out.extend(row.chunks_exact(4).map(|p| [p[0], p[1], p[2], p[3]]));
-    }
+    let threads = if w * h >= PARALLEL_PIXELS { threads } else { 1 };
+    crate::render::pool::for_pieces(threads, &mut out.spare_capacity_mut()[..w * h], BAND_ROWS * w, |k, band| {
+        for (i, dst) in band.chunks_mut(w).enumerate() {
+            let o = l.offset(0, k * BAND_ROWS + i, 0);
+            let row = &src.data[o..o + 4 * dst.len()];
+            // SAFETY: `row` holds dst.len() groups of 4 bytes ([u8; 4] has
+            // alignment 1), and `dst` as many uninitialised ones.
+            unsafe { std::ptr::copy_nonoverlapping(row.as_ptr(), dst.as_mut_ptr() as *mut u8, row.len()) };
+        }
+    });
+    // SAFETY: the pieces cover [0, w * h) once (`for_pieces`), and every
+    // element of each piece was written above.
+    unsafe { out.set_len(w * h) };
     out
 }
 
@@ -212,9 +222,10 @@ impl Context {
         crate::render::pool::for_pieces(threads, &mut data.spare_capacity_mut()[..cw * ch], BAND_ROWS * cw, |k, band| {
             for (j, row) in band.chunks_mut(cw).enumerate() {
                 let i = fb.index(sx0 as usize, sy0 as usize + k * BAND_ROWS + j);
-                for (d, s) in row.iter_mut().zip(&read[i..i + cw]) {
-                    d.write(*s);
-                }
+                let src = &read[i..i + row.len()];
+                // SAFETY: as many elements in `src` as in `row` (per-row
+                // memcpy; the element loop counted more instructions).
+                unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), row.as_mut_ptr() as *mut [u8; 4], src.len()) };
             }
         });
         // SAFETY: the pieces cover [0, cw * ch) once (`for_pieces`), and

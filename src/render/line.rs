@@ -30,6 +30,10 @@
 //! Stipple (3.4.3): the counter s counts width-1 fragments; a fragment is
 //! drawn iff bit (s / repeat) mod 16 of the pattern is set. The caller owns
 //! s (reset at glBegin and per GL_LINES segment; kept across a strip).
+//! A tile band that draws part of a stippled segment starts s in closed
+//! form at its first column (`fragments_before`: one fragment per column
+//! the segment crosses, the few columns at its ends walked), so stippled
+//! segments are binned like the others.
 //!
 //! GL_LINE_SMOOTH (3.4.2, "Antialiasing"): the rectangle of the smooth
 //! width centred on the segment, by coverage (`smooth_line`, `smooth`);
@@ -310,6 +314,45 @@ pub fn fragments_stepped(xa: i64, ya: i64, xb: i64, yb: i64, lo: i64, hi: i64, m
     }
 }
 
+/// How many width-1 fragments the segment (xa, ya) -> (xb, yb) has in
+/// the major-axis pixels that [`fragments`] visits before pixel `p` (in
+/// its order, from a towards b): the stipple counter's advance at `p`,
+/// without walking the segment. A column the segment spans from side to
+/// side with a unit to spare (`column_hits`' interior columns) holds
+/// exactly one fragment: at most one because a line of slope at most 1
+/// meets at most one diamond per column (`interior_hit`), at least one
+/// because at the column's centre the line lies strictly inside one
+/// diamond (on a boundary only where the exact rule's epsilon moves it off
+/// to one side). So only the few columns near the ends are walked.
+pub fn fragments_before(xa: i64, ya: i64, xb: i64, yb: i64, p: i64) -> u64 {
+    let (dx, dy) = (xb - xa, yb - ya);
+    if dx == 0 && dy == 0 {
+        return 0;
+    }
+    let (ma, mb) = if dx.abs() >= dy.abs() { (xa, xb) } else { (ya, yb) };
+    let (lo_m, hi_m) = (ma.min(mb), ma.max(mb));
+    let (first, last) = (floor_div(lo_m, ONE) - 1, floor_div(hi_m, ONE) + 1);
+    // The columns before p in the walk's order, as the range [u, v).
+    let (u, v) = if mb > ma { (first, p.min(last + 1)) } else { ((p + 1).max(first), last + 1) };
+    if u >= v {
+        return 0;
+    }
+    let walked = |a: i64, b: i64| {
+        let mut n = 0u64;
+        if a < b {
+            fragments_stepped(xa, ya, xb, yb, a, b, |_, _| n += 1);
+        }
+        n
+    };
+    // Interior columns: lo_m <= p * ONE - 1 and hi_m >= p * ONE + ONE + 1.
+    let (ilo, ihi) = (floor_div(lo_m + ONE, ONE), floor_div(hi_m - ONE - 1, ONE));
+    if ilo > ihi {
+        return walked(u, v);
+    }
+    let inner = (v.min(ihi + 1) - u.max(ilo)).max(0) as u64;
+    walked(u, v.min(ilo)) + inner + walked(u.max(ihi + 1), v)
+}
+
 /// Draws one segment given in clip coordinates. `flat_color` is the
 /// provoking vertex's colour; `s` is the stipple counter.
 pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &ClipVertex, b: &ClipVertex, flat_color: Vec4, s: &mut u32) {
@@ -330,11 +373,9 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
     if !rs.reference && !(line.smooth && line.stipple.is_some()) {
         // The fast path (stippled smooth lines keep the reference code).
         let bbox = line.bounds(r);
-        // A stippled segment's band walks it from its start (the counter
-        // at a band's first column is not known otherwise): binned only
-        // when it spans at most one band's height.
-        let walks = line.stipple.is_some() && (bbox.y1 - bbox.y0) as usize > super::tile::BAND;
-        if super::tile::binning(rs) && !fb.draw_both && !walks {
+        // A stippled segment's band starts its counter in closed form
+        // (`fragments_before`), so segments of any height are binned.
+        if super::tile::binning(rs) && !fb.draw_both {
             // Shaded later, band by band, in the tile workers; the
             // counter moves on as drawing would move it.
             *s = line.stipple_end();
@@ -347,7 +388,8 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
         super::tile::sync(rs, fb);
         let sink = runs::Sink::new(&rs.fragment, fb);
         let width = fb.width;
-        *s = line.draw(&env, &sink, fb, width, r);
+        line.draw(&env, &sink, fb, width, r);
+        *s = line.stipple_end();
         return;
     }
     super::tile::sync(rs, fb);
@@ -529,10 +571,23 @@ impl LineRun {
         if self.stipple.is_none() || self.smooth {
             return self.s0;
         }
+        self.stipple_at(if self.forward() { i64::MAX / 4 } else { i64::MIN / 4 })
+    }
+
+    /// Whether the walk from a to b goes up its major axis.
+    fn forward(&self) -> bool {
+        if self.x_major() {
+            self.xb > self.xa
+        } else {
+            self.yb > self.ya
+        }
+    }
+
+    /// The stipple counter at major-axis pixel `p`: after the fragments
+    /// of the pixels before `p` in the walk's order (`fragments_before`).
+    fn stipple_at(&self, p: i64) -> u32 {
         let [sxa, sya, sxb, syb] = self.shifted();
-        let mut n = 0u32;
-        fragments_stepped(sxa, sya, sxb, syb, i64::MIN / 4, i64::MAX / 4, |_, _| n = n.wrapping_add(1));
-        self.s0.wrapping_add(n)
+        self.s0.wrapping_add(fragments_before(sxa, sya, sxb, syb, p) as u32)
     }
 
     /// The fast path: the segment's fragments within `r` (inside the
@@ -540,7 +595,9 @@ impl LineRun {
     /// `sink`, depth only when tested, the colour once per segment when it
     /// cannot vary along it (no texture or fog, flat shading or equal
     /// colours at both ends: the interpolation of equal f32 values rounds
-    /// back to them). Returns the stipple counter after the segment.
+    /// back to them). Returns the stipple counter after the pixels walked
+    /// (those that may reach `r`): the segment's end counter is
+    /// `stipple_end`, which a band's draw does not need.
     pub fn draw(&self, env: &LineEnv, sink: &runs::Sink, fb: &mut impl Buffers, width: usize, r: Rect) -> u32 {
         let (wa, wb) = (&self.wa, &self.wb);
         let depth = |px: i64, py: i64| fragment::depth_to_fixed(wa.z + self.t_at(px, py) * (wb.z - wa.z));
@@ -569,13 +626,13 @@ impl LineRun {
     }
 
     /// The major-axis pixels whose fragments may fall in rows [y0, y1) of
-    /// an x-major, unstippled segment (a superset: the line's height at a
+    /// an x-major segment (a superset: the line's height at a
     /// column is within a pixel of its fragment, whose run is `w` high);
     /// all of `lo..hi` otherwise. A tile worker's band walks only these.
     fn band_columns(&self, (lo, hi): (i64, i64), r: Rect) -> (i64, i64) {
         let [sxa, sya, sxb, syb] = self.shifted();
         let (dx, dy) = (sxb - sxa, syb - sya);
-        if !self.x_major() || self.stipple.is_some() || dy == 0 {
+        if !self.x_major() || dy == 0 {
             return (lo, hi);
         }
         // Columns where the line's height is within [y0 - w - 2, y1 + 2].
@@ -597,9 +654,13 @@ impl LineRun {
     fn aliased_fast(&self, r: Rect, fb: &mut impl Buffers, width: usize, sink: &runs::Sink, s: &mut u32, depth: impl Fn(i64, i64) -> u32, color: impl Fn(i64, i64) -> [u8; 4]) {
         let (rx0, ry0, rx1, ry1) = (r.x0 as i64, r.y0 as i64, r.x1 as i64, r.y1 as i64);
         let ([sxa, sya, sxb, syb], x_major, w, stipple) = (self.shifted(), self.x_major(), self.w, self.stipple);
-        // With stipple, fragments outside `r` still advance the counter, so
-        // the whole (guard-band-clipped) segment is walked.
-        let (lo, hi) = if stipple.is_some() { (i64::MIN / 4, i64::MAX / 4) } else { self.band_columns(self.major_range(r), r) };
+        // Only the columns that may reach `r` are walked; with stipple the
+        // counter starts at the first of them in the walk's order, as if
+        // the fragments before (outside `r` too) had been counted.
+        let (lo, hi) = self.band_columns(self.major_range(r), r);
+        if stipple.is_some() {
+            *s = self.stipple_at(if self.forward() { lo } else { hi - 1 });
+        }
         fragments_stepped(sxa, sya, sxb, syb, lo, hi, |px, py| {
             if let Some((repeat, pattern)) = stipple {
                 let bit = (*s / repeat) % 16;
@@ -782,6 +843,46 @@ mod tests {
             total += a.len();
         }
         assert!(total > 100_000, "{total}");
+    }
+
+    /// The closed-form stipple count (`fragments_before`) is the number
+    /// of fragments a walk from a meets before each pixel of the major
+    /// axis, both directions, on segments often through pixel centres and
+    /// diamond corners (quarter pixels), of slope 0 and 1, short and long.
+    #[test]
+    fn fragments_before_counts_the_walk() {
+        let mut seed = 11u64;
+        let mut rnd = |m: i64| {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 33) as i64).rem_euclid(m)
+        };
+        let mut checked = 0;
+        for k in 0..6000 {
+            let unit = if k % 2 == 0 { ONE / 4 } else { 1 };
+            let span = if k % 7 == 0 { 4 } else { 60 };
+            let mut c = || rnd(span * ONE / unit) * unit - span / 2 * ONE;
+            let (xa, ya) = (c(), c());
+            let (mut xb, mut yb) = (c(), c());
+            match k % 5 {
+                0 => yb = ya,                             // horizontal
+                1 => yb = ya + (xb - xa) * if k % 2 == 0 { 1 } else { -1 }, // slope 1
+                2 => xb = xa,                             // vertical
+                _ => {}
+            }
+            let (dx, dy) = (xb - xa, yb - ya);
+            let x_major = dx.abs() >= dy.abs();
+            let forward = if x_major { dx > 0 } else { dy > 0 };
+            let mut walk = Vec::new();
+            fragments(xa, ya, xb, yb, i64::MIN / 4, i64::MAX / 4, |x, y| walk.push(if x_major { x } else { y }));
+            for p in -span..span {
+                let before = walk.iter().filter(|&&m| if forward { m < p } else { m > p }).count() as u64;
+                assert_eq!(fragments_before(xa, ya, xb, yb, p), before, "segment ({xa},{ya})-({xb},{yb}) pixel {p}");
+                checked += 1;
+            }
+            let end = if forward { i64::MAX / 4 } else { i64::MIN / 4 };
+            assert_eq!(fragments_before(xa, ya, xb, yb, end), walk.len() as u64, "segment ({xa},{ya})-({xb},{yb}) whole");
+        }
+        assert!(checked > 200_000, "{checked}");
     }
 
     /// The interior shortcut agrees with the exact rule wherever it

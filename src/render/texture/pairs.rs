@@ -111,11 +111,16 @@ pub fn build(levels: &[Arc<Image>], repeat: [bool; 2]) -> Option<Padded> {
         let stride = w + 2;
         let mut texels = Vec::new();
         texels.try_reserve_exact((stride as usize).checked_mul(h as usize + 2)?).ok()?;
+        // Row by row: the padding texels, and the row itself as one copy
+        // (round 9: per-texel wrapping was 13 M instructions of the textured
+        // scene's first frame for its 512x512 mipmapped texture).
+        let (left, right) = (axis(-1, w, repeat[0]) as usize, axis(w, w, repeat[0]) as usize);
         for j in -1..=h {
-            let row = axis(j, h, repeat[1]) * w;
-            for i in -1..=w {
-                texels.push(u32::from_le_bytes(tex[(row + axis(i, w, repeat[0])) as usize]));
-            }
+            let start = (axis(j, h, repeat[1]) * w) as usize;
+            let row = &tex[start..start + w as usize];
+            texels.push(u32::from_le_bytes(row[left]));
+            texels.extend(row.iter().map(|&t| u32::from_le_bytes(t)));
+            texels.push(u32::from_le_bytes(row[right]));
         }
         out.push(PaddedLevel { texels, stride });
     }
