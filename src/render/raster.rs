@@ -208,6 +208,27 @@ fn row_span(edges: &[Edge; 3], py: i64, col0: i64, col1: i64) -> (i64, i64) {
     (lo, hi)
 }
 
+/// Vertex extents (in 1/256 pixel) up to which `Runs::find_narrow`'s
+/// edge functions fit in i32 lanes: 64 pixels.
+const LANE_EXTENT: i64 = 1 << 14;
+
+/// Do a narrow box's edge functions fit in i32? Every value the lanes
+/// hold is E = dx (Py - ya) - dy (Px - xa) - {0, 1} (`Edge::new`, in
+/// 1/256 pixel) at a centre P of the box's rows (within the vertices' y
+/// extent, or one row past it after the last step) and of columns col0
+/// to col0 + 7 (col0's centre within the x extent), so with both
+/// extents at most 2^14: |dx|, |dy| <= 2^14, |Py - ya| <= 2^14 + 2^8,
+/// |Px - xa| <= 2^14 + 2^11, and |E| < 2^30. The coefficients a = -256 dy
+/// (times up to 7 across the lanes) and b = 256 dx are below 2^25. (A
+/// narrow box can belong to a large triangle cut by the rectangle: those
+/// take the i64 loop.)
+#[inline(always)]
+#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
+fn lanes_fit(x: [i64; 3], y: [i64; 3]) -> bool {
+    let extent = |c: [i64; 3]| c[0].max(c[1]).max(c[2]) - c[0].min(c[1]).min(c[2]);
+    extent(x) <= LANE_EXTENT && extent(y) <= LANE_EXTENT
+}
+
 /// The covered runs of a short triangle, found once before setup (which
 /// a triangle covering nothing skips) and shaded without a second scan.
 pub struct Runs {
@@ -267,7 +288,19 @@ impl Runs {
         if col0 >= col1 {
             return;
         }
+        #[cfg(target_arch = "x86_64")]
+        if lanes_fit(x, y) && super::fragment::simd::level() != super::fragment::simd::Level::Scalar {
+            // SAFETY: SSE2 is part of the x86_64 baseline; the values fit
+            // in i32 lanes (`lanes_fit`).
+            return unsafe { self.find_narrow_sse2(x, y, row0, row1, col0, col1) };
+        }
         let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
+        self.find_narrow_scalar(&edges, row0, row1, col0, col1)
+    }
+
+    /// `find_narrow`'s test of every pixel centre, in i64.
+    #[inline(always)]
+    fn find_narrow_scalar(&mut self, edges: &[Edge; 3], row0: i64, row1: i64, col0: i64, col1: i64) {
         let a = edges.map(|e| e.a);
         let mut row = edges.map(|e| e.a * col0 + e.b * row0 + e.c);
         for py in row0..row1 {
@@ -286,6 +319,67 @@ impl Runs {
                 self.len += 1;
             }
             row = [row[0] + edges[0].b, row[1] + edges[1].b, row[2] + edges[2].b];
+        }
+    }
+
+    /// [`Runs::find_narrow_scalar`] a row at a time: the edge functions
+    /// of the row's (at most [`NARROW`]) pixel centres in i32 lanes, the
+    /// centres outside some edge as the sign bits of the three values'
+    /// union, and the run from the first to the last centre inside (the
+    /// scalar loop's min and max). The lanes hold the scalar loop's
+    /// integers (`lanes_fit`), so the runs are the same.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn find_narrow_sse2(&mut self, x: [i64; 3], y: [i64; 3], row0: i64, row1: i64, col0: i64, col1: i64) {
+        if col1 - col0 <= 4 {
+            self.narrow_lanes::<false>(x, y, row0, row1, col0, col1)
+        } else {
+            self.narrow_lanes::<true>(x, y, row0, row1, col0, col1)
+        }
+    }
+
+    /// The lanes of `find_narrow_sse2`: columns col0 .. col0 + 4, and with
+    /// WIDE also col0 + 4 .. col0 + 8.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn narrow_lanes<const WIDE: bool>(&mut self, x: [i64; 3], y: [i64; 3], row0: i64, row1: i64, col0: i64, col1: i64) {
+        use std::arch::x86_64::*;
+        debug_assert!(col1 > col0 && col1 - col0 <= NARROW);
+        let columns = (1u32 << (col1 - col0)) - 1;
+        // The first centre (col0, row0) in 1/256 pixel.
+        let (cx, cy) = (col0 * ONE + ONE / 2, row0 * ONE + ONE / 2);
+        // Per edge (`Edge::new`'s three, not built): the values of the
+        // first row's centres, and the step from row to row.
+        let (mut lo, mut hi, mut step) = ([_mm_setzero_si128(); 3], [_mm_setzero_si128(); 3], [_mm_setzero_si128(); 3]);
+        for i in 0..3 {
+            let j = if i == 2 { 0 } else { i + 1 };
+            let (dx, dy) = (x[j] - x[i], y[j] - y[i]);
+            let top_left = dy < 0 || (dy == 0 && dx < 0);
+            // a col0 + b row0 + c of `Edge::new`, as the same integer:
+            // dx (cy - ya) - dy (cx - xa), less 1 off top and left edges.
+            let first = (dx * (cy - y[i]) - dy * (cx - x[i]) - !top_left as i64) as i32;
+            let a = (-dy * ONE) as i32;
+            lo[i] = _mm_add_epi32(_mm_set1_epi32(first), _mm_setr_epi32(0, a, 2 * a, 3 * a));
+            hi[i] = _mm_add_epi32(lo[i], _mm_set1_epi32(4 * a));
+            step[i] = _mm_set1_epi32((dx * ONE) as i32);
+        }
+        for py in row0..row1 {
+            let mut outside = _mm_movemask_ps(_mm_castsi128_ps(_mm_or_si128(_mm_or_si128(lo[0], lo[1]), lo[2]))) as u32;
+            if WIDE {
+                outside |= (_mm_movemask_ps(_mm_castsi128_ps(_mm_or_si128(_mm_or_si128(hi[0], hi[1]), hi[2]))) as u32) << 4;
+            }
+            let inside = !outside & columns;
+            if inside != 0 {
+                let (l, h) = (col0 + inside.trailing_zeros() as i64, col0 + (32 - inside.leading_zeros()) as i64);
+                self.runs[self.len].write((py as u32, l as u32, h as u32));
+                self.len += 1;
+            }
+            for i in 0..3 {
+                lo[i] = _mm_add_epi32(lo[i], step[i]);
+                if WIDE {
+                    hi[i] = _mm_add_epi32(hi[i], step[i]);
+                }
+            }
         }
     }
 
@@ -436,6 +530,74 @@ mod tests {
             if expect.is_empty() { empty += 1 } else { covered += 1 }
         }
         assert!(covered > 1000 && empty > 1000, "{covered} {empty}");
+    }
+
+    /// The narrow scan's i32 lanes give the i64 loop's runs, on small
+    /// triangles and on triangles up to the lanes' extent cut to a narrow
+    /// box by the rectangle (thin slivers, extents of exactly 2^14, boxes
+    /// of 1 to 8 columns, both lane widths, negative coordinates).
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn narrow_lanes_match_scalar() {
+        let mut seed = 4242u64;
+        let mut rnd = |m: i64| {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 20) as i64).rem_euclid(m)
+        };
+        let (mut compared, mut at_extent, mut covered, mut ties) = (0, 0, 0, 0);
+        for n in 0..400_000 {
+            let size = match n % 4 {
+                0 => 3 * ONE,
+                1 => 10 * ONE,
+                2 => LANE_EXTENT + 1,
+                _ => 64,
+            };
+            let (bx, by) = (rnd(64 * ONE) - 32 * ONE, rnd(64 * ONE) - 32 * ONE);
+            let mut x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
+            let mut y = [by + rnd(size), by + rnd(size), by + rnd(size)];
+            if n % 5 == 1 {
+                // On the half-pixel grid: centres on edges (the top-left
+                // rule decides them).
+                x = x.map(|c| c & !(ONE / 2 - 1));
+                y = y.map(|c| c & !(ONE / 2 - 1));
+            }
+            if n % 7 == 0 {
+                // Extents of exactly the limit.
+                x[1] = x[0] + LANE_EXTENT;
+                y[2] = y[0] - LANE_EXTENT;
+            }
+            let Some((x, y, edges)) = ccw_edges(x, y) else { continue };
+            if !lanes_fit(x, y) {
+                continue;
+            }
+            // A rectangle cutting the box to at most NARROW columns and
+            // MAX rows somewhere over the triangle.
+            let (cx, cy) = (x[rnd(3) as usize] / ONE, y[rnd(3) as usize] / ONE);
+            let (w, h) = (1 + rnd(NARROW), 1 + rnd(Runs::MAX as i64));
+            let rect = Rect { x0: (cx - rnd(w)) as i32, y0: (cy - rnd(h)) as i32, x1: 0, y1: 0 };
+            let rect = Rect { x1: rect.x0 + w as i32, y1: rect.y0 + h as i32, ..rect };
+            let (row0, row1, col0, col1) = centre_box(x, y, rect);
+            if row0 >= row1 || col0 >= col1 {
+                continue;
+            }
+            let (mut scalar, mut lanes) = (Runs::new(), Runs::new());
+            scalar.find_narrow_scalar(&edges, row0, row1, col0, col1);
+            // SAFETY: x86_64 has SSE2; the extents fit.
+            unsafe { lanes.find_narrow_sse2(x, y, row0, row1, col0, col1) };
+            let (s, l): (Vec<_>, Vec<_>) = (scalar.iter().collect(), lanes.iter().collect());
+            assert_eq!(l, s, "{x:?} {y:?} {rect:?}");
+            compared += 1;
+            covered += !s.is_empty() as usize;
+            at_extent += (n % 7 == 0) as usize;
+            // A centre on an edge: all three edge functions >= 0 there
+            // with one of them 0 (or -1 after the rule's bias).
+            let on_edge = (row0..row1).any(|py| (col0..col1).any(|px| {
+                let e = edges.map(|e| e.a * px + e.b * py + e.c);
+                e.iter().all(|&v| v >= -1) && e.iter().any(|&v| v == 0 || v == -1)
+            }));
+            ties += on_edge as usize;
+        }
+        assert!(compared > 100_000 && covered > 50_000 && at_extent > 10_000 && ties > 5_000, "{compared} {covered} {at_extent} {ties}");
     }
 
     /// Stepping the span solution row by row gives `span`'s answer for

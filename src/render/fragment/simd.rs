@@ -63,14 +63,22 @@ thread_local! {
 }
 
 /// The best level this CPU has, unless `SOFTGL_SIMD` lowers it
-/// (`0` scalar, `sse2`), decided once.
+/// (`0` scalar, `sse2`), decided once. Inlined (a load and a compare:
+/// `raster::Runs::find` asks once per small triangle); the first call
+/// decides out of line.
+#[inline]
 pub fn level() -> Level {
     match LEVEL.load(Ordering::Relaxed) {
-        1 => return Level::Scalar,
-        2 => return Level::Sse2,
-        3 => return Level::Avx2,
-        _ => {}
+        1 => Level::Scalar,
+        2 => Level::Sse2,
+        3 => Level::Avx2,
+        _ => decide_level(),
     }
+}
+
+#[cold]
+#[inline(never)]
+fn decide_level() -> Level {
     let detected = detect();
     let l = match std::env::var("SOFTGL_SIMD").as_deref() {
         Ok("0") | Ok("scalar") => Level::Scalar,
