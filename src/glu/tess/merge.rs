@@ -117,6 +117,20 @@ impl Grid {
         }
     }
 
+    /// Adds every vertex of `verts`, in order, to a grid just [`reset`](Self::reset)
+    /// for that many: what inserting them one by one does, without the calls
+    /// while the grid is still scanned linearly.
+    pub fn insert_all(&mut self, verts: &[Vert]) {
+        let n = verts.len();
+        if !self.hashed && self.linear == 0 && n <= LINEAR {
+            self.linear = n;
+            return;
+        }
+        for i in 0..n {
+            self.insert(verts, i);
+        }
+    }
+
     /// Adds vertex `i`; every vertex below `i` must be in the grid already
     /// (the tessellator inserts each vertex it creates, in order).
     pub fn insert(&mut self, verts: &[Vert], i: usize) {

@@ -457,7 +457,7 @@ struct Scratch {
     /// The general path's sweep order, from the fast path's sorted input
     /// and the sorted new (crossing) vertices.
     fresh: Vec<(u64, u64, u32)>,
-    sorted: Vec<(u64, u64, u32)>,
+    sorted: Vec<u32>,
     segs: Vec<Seg>,
     grid: Grid,
     split: split::Scratch,
@@ -468,9 +468,8 @@ struct Scratch {
 impl Scratch {
     /// See [`split::Scratch::reserve`].
     fn reserve(&mut self, n: usize) {
-        for v in [&mut self.fresh, &mut self.sorted] {
-            v.reserve(n);
-        }
+        self.fresh.reserve(n);
+        self.sorted.reserve(n);
         self.p2.reserve(n);
         self.verts.reserve(n);
         self.p3.reserve(n);
@@ -741,15 +740,12 @@ impl Job {
         grid.reset(p2.len());
         if si.distinct {
             // The fast path found no two vertices within EPS (the test a
-            // lookup makes): each is its own; the grid only needs them in.
-            for (i, (q, iv)) in p2.iter().zip(all()).enumerate() {
-                rep.push(true);
-                verts.push(Vert { p: *q });
-                p3.push(iv.p);
-                data.push(iv.data);
-                grid.insert(verts, i);
-                id.push(i);
-            }
+            // lookup makes): each is its own (`id` and `rep` stay empty:
+            // the identity, read below as such); the grid only needs them in.
+            verts.extend(p2.iter().map(|&p| Vert { p }));
+            p3.extend(all().map(|iv| iv.p));
+            data.extend(all().map(|iv| iv.data));
+            grid.insert_all(verts);
         } else {
             for (q, iv) in p2.iter().zip(all()) {
                 rep.push(false);
@@ -770,10 +766,16 @@ impl Job {
         let mut base = 0;
         for cont in contours.iter() {
             let len = cont.len();
-            for i in 0..len {
-                let (a, b) = (id[base + i], id[base + (i + 1) % len]);
-                if a != b {
-                    segs.push(Seg { a, b });
+            if si.distinct && len >= 3 {
+                // (The fast path refuses contours of 1 or 2 vertices first.)
+                segs.extend((base..base + len - 1).map(|a| Seg { a, b: a + 1 }));
+                segs.push(Seg { a: base + len - 1, b: base });
+            } else {
+                for i in 0..len {
+                    let (a, b) = (id[base + i], id[base + (i + 1) % len]);
+                    if a != b {
+                        segs.push(Seg { a, b });
+                    }
                 }
             }
             base += len;
@@ -792,16 +794,34 @@ impl Job {
             fresh.extend(verts[merged..].iter().enumerate().map(|(k, v)| (sweep::ord_key(v.p[0]), sweep::ord_key(v.p[1]), (merged + k) as u32)));
             fresh.sort_unstable();
             sorted.clear();
-            let mut old = si.keyed.iter().filter(|k| rep[k.2 as usize]).map(|k| (k.0, k.1, id[k.2 as usize] as u32)).peekable();
-            let mut new = fresh.iter().copied().peekable();
-            loop {
-                let next = match (old.peek(), new.peek()) {
-                    (Some(a), Some(b)) if a <= b => old.next(),
-                    (Some(_), None) => old.next(),
-                    (_, Some(_)) => new.next(),
-                    (None, None) => break,
-                };
-                sorted.extend(next);
+            if si.distinct {
+                // Every input vertex is its own id: merge the two sorted
+                // runs directly.
+                let (old, new) = (&si.keyed[..], &fresh[..]);
+                let (mut i, mut j) = (0, 0);
+                while i < old.len() && j < new.len() {
+                    if old[i] <= new[j] {
+                        sorted.push(old[i].2);
+                        i += 1;
+                    } else {
+                        sorted.push(new[j].2);
+                        j += 1;
+                    }
+                }
+                sorted.extend(old[i..].iter().map(|k| k.2));
+                sorted.extend(new[j..].iter().map(|k| k.2));
+            } else {
+                let mut old = si.keyed.iter().filter(|k| rep[k.2 as usize]).map(|k| (k.0, k.1, id[k.2 as usize] as u32)).peekable();
+                let mut new = fresh.iter().copied().peekable();
+                loop {
+                    let next = match (old.peek(), new.peek()) {
+                        (Some(a), Some(b)) if a <= b => old.next(),
+                        (Some(_), None) => old.next(),
+                        (_, Some(_)) => new.next(),
+                        (None, None) => break,
+                    };
+                    sorted.extend(next.map(|k| k.2));
+                }
             }
             Some(&sorted[..])
         } else {

@@ -140,10 +140,9 @@ impl Scratch {
 /// Computes windings and the selected region into `sc.region`;
 /// triangulates it unless `boundary_only`.
 ///
-/// `sorted`, if given, is every vertex in sweep order as (x key, y key,
-/// index) sorted (the fast path's order, when it hands over a planar
-/// arrangement of the same vertices); otherwise the vertices are sorted here.
-pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sorted: Option<&[(u64, u64, u32)]>, sc: &mut Scratch) {
+/// `sorted`, if given, is every vertex id in sweep order (the fast path's
+/// sort merged with the new vertices'); otherwise the vertices are sorted here.
+pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sorted: Option<&[u32]>, sc: &mut Scratch) {
     let nv = verts.len();
     let Scratch { edges, order, keyed, out, inc, active, outs, pool, region } = sc;
     let Region { boundary, triangles: tris } = region;
@@ -163,8 +162,14 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
     for v in 0..nv {
         out[v + 1] += out[v];
     }
-    edges.clear();
-    edges.resize(out[nv] as usize, Edge { lo: 0, hi: 0, w: 0, key: 0.0 });
+    // (Every slot is written below: what the buffer held is left in place
+    // rather than cleared first, which cost a memset of it per polygon.)
+    let m = out[nv] as usize;
+    if edges.len() < m {
+        edges.resize(m, Edge { lo: 0, hi: 0, w: 0, key: 0.0 });
+    } else {
+        edges.truncate(m);
+    }
     {
         let fill = &mut *inc; // reused as the per-vertex fill cursor
         fill.clear();
@@ -220,16 +225,17 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
     out[nv] = kept as u32;
     edges.truncate(kept);
     // Sweep order of vertices (integer keys sort faster than float compares).
-    order.clear();
-    match sorted {
-        Some(k) => order.extend(k.iter().map(|k| k.2)),
+    let order: &[u32] = match sorted {
+        Some(k) => k,
         None => {
+            order.clear();
             keyed.clear();
             keyed.extend(verts.iter().enumerate().map(|(i, v)| (ord_key(v.p[0]), ord_key(v.p[1]), i as u32)));
             keyed.sort_unstable();
             order.extend(keyed.iter().map(|k| k.2));
+            order
         }
-    }
+    };
     // One sweep: windings, the boundary and the triangles together. Every
     // edge is in the active list with the winding number above it (known
     // where it starts: from the entry below it), and whether it is on the
