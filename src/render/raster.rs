@@ -346,22 +346,16 @@ impl Runs {
         use std::arch::x86_64::*;
         debug_assert!(col1 > col0 && col1 - col0 <= NARROW);
         let columns = (1u32 << (col1 - col0)) - 1;
-        // The first centre (col0, row0) in 1/256 pixel.
-        let (cx, cy) = (col0 * ONE + ONE / 2, row0 * ONE + ONE / 2);
-        // Per edge (`Edge::new`'s three, not built): the values of the
-        // first row's centres, and the step from row to row.
+        // Per edge: the values at the first row's centres, and the step
+        // from row to row (all within i32: `lanes_fit`).
         let (mut lo, mut hi, mut step) = ([_mm_setzero_si128(); 3], [_mm_setzero_si128(); 3], [_mm_setzero_si128(); 3]);
         for i in 0..3 {
             let j = if i == 2 { 0 } else { i + 1 };
-            let (dx, dy) = (x[j] - x[i], y[j] - y[i]);
-            let top_left = dy < 0 || (dy == 0 && dx < 0);
-            // a col0 + b row0 + c of `Edge::new`, as the same integer:
-            // dx (cy - ya) - dy (cx - xa), less 1 off top and left edges.
-            let first = (dx * (cy - y[i]) - dy * (cx - x[i]) - !top_left as i64) as i32;
-            let a = (-dy * ONE) as i32;
+            let e = Edge::new(x[i], y[i], x[j], y[j]);
+            let (first, a) = ((e.a * col0 + e.b * row0 + e.c) as i32, e.a as i32);
             lo[i] = _mm_add_epi32(_mm_set1_epi32(first), _mm_setr_epi32(0, a, 2 * a, 3 * a));
             hi[i] = _mm_add_epi32(lo[i], _mm_set1_epi32(4 * a));
-            step[i] = _mm_set1_epi32((dx * ONE) as i32);
+            step[i] = _mm_set1_epi32(e.b as i32);
         }
         for py in row0..row1 {
             let mut outside = _mm_movemask_ps(_mm_castsi128_ps(_mm_or_si128(_mm_or_si128(lo[0], lo[1]), lo[2]))) as u32;
