@@ -104,20 +104,32 @@ pub(super) fn unpack_rgba8(src: &Source, w: usize, h: usize, threads: usize) -> 
         return out;
     }
     let l = &src.layout;
+    gather_rows(&mut out, threads, w, h, |j| {
+        let o = l.offset(0, j, 0);
+        &src.data[o..o + 4 * w]
+    });
+    out
+}
+
+/// Appends `h` rows of `w` groups to `out` (empty, with room for them),
+/// row j copied from the 4 w bytes `row(j)` gives; large rectangles in
+/// bands of [`BAND_ROWS`] rows on `threads` threads. The memory is not
+/// zeroed first (that was one more pass over it): the bands write every
+/// element, one memcpy a row, then the length is set.
+fn gather_rows<'s>(out: &mut Vec<[u8; 4]>, threads: usize, w: usize, h: usize, row: impl Fn(usize) -> &'s [u8] + Sync) {
+    debug_assert!(out.is_empty());
     let threads = if w * h >= PARALLEL_PIXELS { threads } else { 1 };
     crate::render::pool::for_pieces(threads, &mut out.spare_capacity_mut()[..w * h], BAND_ROWS * w, |k, band| {
         for (i, dst) in band.chunks_mut(w).enumerate() {
-            let o = l.offset(0, k * BAND_ROWS + i, 0);
-            let row = &src.data[o..o + 4 * dst.len()];
-            // SAFETY: `row` holds dst.len() groups of 4 bytes ([u8; 4] has
+            let src = &row(k * BAND_ROWS + i)[..4 * dst.len()];
+            // SAFETY: `src` holds dst.len() groups of 4 bytes ([u8; 4] has
             // alignment 1), and `dst` as many uninitialised ones.
-            unsafe { std::ptr::copy_nonoverlapping(row.as_ptr(), dst.as_mut_ptr() as *mut u8, row.len()) };
+            unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), dst.as_mut_ptr() as *mut u8, src.len()) };
         }
     });
     // SAFETY: the pieces cover [0, w * h) once (`for_pieces`), and every
     // element of each piece was written above.
     unsafe { out.set_len(w * h) };
-    out
 }
 
 /// A colour rectangle's groups as f32 RGBA (c / 255 for bytes), before
@@ -213,24 +225,13 @@ impl Context {
             return true;
         }
         let (cw, ch) = ((sx1 - sx0) as usize, (sy1 - sy0) as usize);
-        // Read everything first: overlapping copies see the old pixels.
-        // Large rectangles are read in bands of rows by the threads too.
-        // Not zeroed first (that was a third pass over the rectangle): the
-        // bands write every element, then the length is set.
+        // Read everything first: overlapping copies see the old pixels
+        // (large rectangles in bands of rows by the threads too).
         let mut data: Vec<[u8; 4]> = Vec::with_capacity(cw * ch);
-        let threads = if cw * ch >= PARALLEL_PIXELS { self.derived.render.threads } else { 1 };
-        crate::render::pool::for_pieces(threads, &mut data.spare_capacity_mut()[..cw * ch], BAND_ROWS * cw, |k, band| {
-            for (j, row) in band.chunks_mut(cw).enumerate() {
-                let i = fb.index(sx0 as usize, sy0 as usize + k * BAND_ROWS + j);
-                let src = &read[i..i + row.len()];
-                // SAFETY: as many elements in `src` as in `row` (per-row
-                // memcpy; the element loop counted more instructions).
-                unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), row.as_mut_ptr() as *mut [u8; 4], src.len()) };
-            }
+        gather_rows(&mut data, self.derived.render.threads, cw, ch, |j| {
+            let i = fb.index(sx0 as usize, sy0 as usize + j);
+            read[i..i + cw].as_flattened()
         });
-        // SAFETY: the pieces cover [0, cw * ch) once (`for_pieces`), and
-        // each piece's rows of cw elements were all written above.
-        unsafe { data.set_len(cw * ch) };
         self.rgba8_spans(xf + (sx0 - x as i64), yf + (sy0 - y as i64), cw, ch, &data);
         true
     }
