@@ -27,7 +27,6 @@ pub mod shared;
 
 pub use color::ColorBuffer;
 pub use plane::Plane;
-use plane::Plain;
 
 /// Largest surface side; also GL_MAX_VIEWPORT_DIMS. The rasterizer's
 /// fixed-point ranges are chosen for it (see `render::setup`).
@@ -101,13 +100,6 @@ pub struct Framebuffer {
     /// test off) since the context began: occlusion queries (gl::queries)
     /// take differences of it. Wraps.
     pub samples_passed: u64,
-}
-
-/// `n` copies of `fill`, or AllocError (see `plane`: large all-zero
-/// planes are fresh huge-page mappings, never written before GL writes
-/// them).
-fn alloc<T: Plain>(n: usize, fill: T) -> Result<Plane<T>, AllocError> {
-    Plane::new(n, fill)
 }
 
 impl Framebuffer {
@@ -262,11 +254,11 @@ impl Framebuffer {
             return Ok(());
         }
         let n = width * height;
-        let color = ColorBuffer::owned(alloc(n, self.config.initial_color())?);
-        let other_color = if self.double { ColorBuffer::owned(alloc(n, self.config.initial_color())?) } else { ColorBuffer::default() };
-        let depth = if self.config.depth_bits > 0 { alloc(n, 0u32)? } else { Plane::default() };
-        let stencil = if self.config.stencil_bits > 0 { alloc(n, 0u8)? } else { Plane::default() };
-        let accum = if self.config.accum_bits > 0 { alloc(n, [0i16; 4])? } else { Plane::default() };
+        let color = ColorBuffer::owned(Plane::new(n, self.config.initial_color())?);
+        let other_color = if self.double { ColorBuffer::owned(Plane::new(n, self.config.initial_color())?) } else { ColorBuffer::default() };
+        let depth = if self.config.depth_bits > 0 { Plane::new(n, 0u32)? } else { Plane::default() };
+        let stencil = if self.config.stencil_bits > 0 { Plane::new(n, 0u8)? } else { Plane::default() };
+        let accum = if self.config.accum_bits > 0 { Plane::new(n, [0i16; 4])? } else { Plane::default() };
         *self = Framebuffer {
             width,
             height,
@@ -308,7 +300,7 @@ impl Framebuffer {
     /// (contents as after a resize; no-op when it has its own already).
     pub fn unlend_color(&mut self) -> Result<(), AllocError> {
         if self.color.is_lent() {
-            self.color = ColorBuffer::owned(alloc(self.color.len(), self.config.initial_color())?);
+            self.color = ColorBuffer::owned(Plane::new(self.color.len(), self.config.initial_color())?);
         }
         Ok(())
     }

@@ -292,27 +292,23 @@ impl Context {
                 }
             }),
             Groups::Stencil(s) => {
-                let max = ((1u32 << self.fb_stencil_bits()) - 1) as i64;
-                let wm = (self.stencil.write_mask as i64 & max) as u8;
+                let put = self.stencil_store();
                 let fb = &mut self.fb;
                 pixels::rectangle(clip, origin, zoom, w, h, |g, x, y| {
                     if let Some(v) = s[g] {
                         let i = fb.index(x, y);
-                        let v = (v & max) as u8;
-                        fb.stencil[i] = (fb.stencil[i] & !wm) | (v & wm);
+                        put(&mut fb.stencil[i], v);
                     }
                 })
             }
             Groups::DepthStencil(ds) => {
-                let max = ((1u32 << self.fb_stencil_bits()) - 1) as i64;
-                let wm = (self.stencil.write_mask as i64 & max) as u8;
+                let put = self.stencil_store();
                 let write_depth = self.depth.write_mask;
                 let fb = &mut self.fb;
                 pixels::rectangle(clip, origin, zoom, w, h, |g, x, y| {
                     if let Some((z, v)) = ds[g] {
                         let i = fb.index(x, y);
-                        let v = (v & max) as u8;
-                        fb.stencil[i] = (fb.stencil[i] & !wm) | (v & wm);
+                        put(&mut fb.stencil[i], v);
                         if write_depth {
                             fb.depth[i] = z;
                         }
@@ -322,8 +318,12 @@ impl Context {
         }
     }
 
-    fn fb_stencil_bits(&self) -> u32 {
-        self.fb.config.stencil_bits.min(8) as u32
+    /// Stores a stencil index as drawn stencil groups are stored (4.3.1):
+    /// its low bits, through the stencil write mask.
+    fn stencil_store(&self) -> impl Fn(&mut u8, i64) {
+        let max = ((1u32 << self.fb.config.stencil_bits.min(8)) - 1) as i64;
+        let wm = (self.stencil.write_mask as i64 & max) as u8;
+        move |s: &mut u8, v: i64| *s = (*s & !wm) | ((v & max) as u8 & wm)
     }
 
     /// glCopyPixels.
