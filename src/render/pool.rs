@@ -44,8 +44,8 @@ const FINISH_SPIN: Duration = Duration::from_micros(50);
 /// a woken worker on its waker's core until load balancing moves it, and
 /// on a loaded machine cores are shared anyway) would otherwise keep that
 /// thread off the core for its time slice (immediate_1m at 1920x1080 with
-/// both threads pinned to one core: 54-57 ms a frame with round 7's pure
-/// spin, 51-52 ms yielding, 39 ms with one thread). With a core to itself
+/// both threads pinned to one core: 54-60 ms a frame with round 7's pure
+/// spin, 51-53 ms yielding, 39 ms with one thread). With a core to itself
 /// the yield returns at once.
 fn spin_until(limit: Duration, done: impl Fn() -> bool) -> bool {
     let start = Instant::now();
