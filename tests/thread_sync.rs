@@ -506,3 +506,25 @@ fn pixel_rectangles_do_not_depend_on_thread_count() {
         }
     }
 }
+
+/// Frames of many small batches, each frame ending at a sync point
+/// (glFinish), allocate their batch vectors once: a context keeps every
+/// flight it made (round 10: a sync point dropped one of the two spare
+/// flights, and the next frame grew its vectors again from nothing).
+#[test]
+fn frames_reuse_their_flights() {
+    let mut buf = vec![0u8; (W * H * 4) as usize];
+    let mut r = Rng(11);
+    unsafe {
+        let ctx = context(2, &mut buf);
+        let mut made = Vec::new();
+        for _ in 0..12 {
+            triangles(&mut r, 60);
+            glFinish();
+            made.push(softgl::render::tile::flights_made(&(*ctx).gl.derived.render));
+        }
+        OSMesaDestroyContext(ctx);
+        assert!(made[0] >= 1, "batches went to the workers: {made:?}");
+        assert!(made.iter().all(|&m| m <= 2), "at most two flights besides the batch filled: {made:?}");
+    }
+}
