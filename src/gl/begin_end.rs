@@ -165,7 +165,23 @@ impl Context {
     /// read here as one 16-byte load, which cannot be forwarded from them
     /// (a store-forwarding stall per vertex, about a tenth of the
     /// function's time in immediate_1m).
+    ///
+    /// The batched plain case (most immediate-mode vertices) is inlined
+    /// into the entry points on its own; every other case is out of line
+    /// ([`Context::vertex_other`]): beside them the plain case paid for
+    /// their stack frame and shuffled the coordinates into the Vec4 only
+    /// they read, about 30 instructions a vertex.
+    #[inline(always)]
     pub fn vertex_xyzw(&mut self, x: f32, y: f32, z: f32, w: f32) {
+        if self.plain_batch() {
+            return self.vertex_fast::<true>([x, y, z, w]);
+        }
+        self.vertex_other(x, y, z, w)
+    }
+
+    /// [`Context::vertex_xyzw`] outside the batched plain case.
+    #[inline(never)]
+    fn vertex_other(&mut self, x: f32, y: f32, z: f32, w: f32) {
         let p = [x, y, z, w];
         let Some((mode, fast, plain)) = self.prim.as_ref().map(|a| (a.mode, a.fast, a.plain)) else { return };
         if fast {
@@ -192,7 +208,7 @@ impl Context {
 
     /// Is the open primitive on the batched path's plain case (what
     /// `vertex` sends to `vertex_fast::<true>`)?
-    #[inline]
+    #[inline(always)]
     pub(crate) fn plain_batch(&self) -> bool {
         self.prim.as_ref().is_some_and(|a| a.fast && a.plain)
     }

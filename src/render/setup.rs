@@ -288,6 +288,48 @@ impl PlaneDivisor {
             Plane { a0: a[0], dx: nx / self.det, dy: ny / self.det }
         }
     }
+
+    /// [`PlaneDivisor::plane`] with the two numerators side by side in
+    /// one SSE2 register (lane 0 the x slope, lane 1 the y slope): the
+    /// same IEEE operations on the same operands, lane by lane, so the
+    /// same bits. Both quotients always come from one `divpd`; the
+    /// scalar form's skipped divisions give exactly the bits dividing
+    /// gives (`constant_planes_match_division`), so dividing always is
+    /// the same answer with no branch on the numerators. (The divisor's
+    /// vectors made once per triangle instead, in a struct of three
+    /// `__m128d`, measured 8 instructions a triangle more.)
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn plane_sse2(&self, a: [f64; 3]) -> Plane {
+        use std::arch::x86_64::*;
+        // SAFETY: SSE2 is part of the x86_64 baseline.
+        unsafe {
+            // [da1, da2] and [da2, da1].
+            let da = _mm_sub_pd(_mm_set_pd(a[2], a[1]), _mm_set1_pd(a[0]));
+            let swapped = _mm_shuffle_pd::<1>(da, da);
+            // nx = da1 dy2 - da2 dy1; ny = da2 dx1 - da1 dx2.
+            let n = _mm_sub_pd(_mm_mul_pd(da, _mm_set_pd(self.dx1, self.dy2)), _mm_mul_pd(swapped, _mm_set_pd(self.dx2, self.dy1)));
+            let q = _mm_div_pd(n, _mm_set1_pd(self.det));
+            Plane { a0: a[0], dx: _mm_cvtsd_f64(q), dy: _mm_cvtsd_f64(_mm_unpackhi_pd(q, q)) }
+        }
+    }
+
+    /// The plane in lanes (LANES, on x86_64) or by the scalar form.
+    #[inline(always)]
+    fn plane_by<const LANES: bool>(&self, a: [f64; 3]) -> Plane {
+        #[cfg(target_arch = "x86_64")]
+        if LANES {
+            return self.plane_sse2(a);
+        }
+        self.plane(a)
+    }
+}
+
+/// Solve a triangle's planes in SSE2 lanes ([`PlaneDivisor::plane_sse2`])?
+/// Unless `SOFTGL_SIMD=0` asks for the scalar forms (x86_64 only).
+#[inline(always)]
+fn planes_lanes() -> bool {
+    cfg!(target_arch = "x86_64") && super::fragment::simd::level() != super::fragment::simd::Level::Scalar
 }
 
 const SIGN: u64 = 1 << 63;
@@ -304,13 +346,26 @@ fn signed_zero(zero: f64, d_sign: u64) -> f64 {
 #[allow(clippy::too_many_arguments)]
 #[inline]
 pub(crate) fn planes_of<P: SetupParams, A: Attributes>(rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
+    // Decided once per triangle, not per plane.
+    if planes_lanes() {
+        planes_by::<P, A, true>(rs, zq, v, ex, ey, flat_color, back, front_facing)
+    } else {
+        planes_by::<P, A, false>(rs, zq, v, ex, ey, flat_color, back, front_facing)
+    }
+}
+
+/// [`planes_of`] with every plane solved in lanes (LANES) or by the
+/// scalar form: the same bits either way.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn planes_by<P: SetupParams, A: Attributes, const LANES: bool>(rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
     let inv = 1.0 / ONE as f64;
     let x = ex.map(|c| c as f64 * inv);
     let y = ey.map(|c| c as f64 * inv);
     let (dx1, dy1, dx2, dy2) = (x[1] - x[0], y[1] - y[0], x[2] - x[0], y[2] - y[0]);
     let det = dx1 * dy2 - dx2 * dy1;
     let d = PlaneDivisor::new(dx1, dy1, dx2, dy2, det);
-    let plane = |a: [f64; 3]| d.plane(a);
+    let plane = |a: [f64; 3]| d.plane_by::<LANES>(a);
     let q = zq.map(|p| p.1);
     let perspective = !(q[0] == q[1] && q[1] == q[2]);
     let q_plane = plane(q);
@@ -414,6 +469,20 @@ mod tests {
                 [want.a0, want.dx, want.dy].map(f64::to_bits),
                 "{a:?} {dx1} {dy1} {dx2} {dy2} {det}"
             );
+            // The lanes' form: the scalar form's bits, or NaN where it is
+            // NaN (a NaN's sign and payload are not specified by Rust's
+            // arithmetic, and LLVM may swap a product's operands, so the
+            // scalar form's NaN itself can change with the compiler; no
+            // conversion to a colour or depth reads them).
+            #[cfg(target_arch = "x86_64")]
+            {
+                let lanes = d.plane_sse2(a);
+                let same = |x: f64, y: f64| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+                assert!(
+                    same(lanes.a0, got.a0) && same(lanes.dx, got.dx) && same(lanes.dy, got.dy),
+                    "lanes: {lanes:?} scalar: {got:?} of {a:?} {dx1} {dy1} {dx2} {dy2} {det}"
+                );
+            }
             if nx == 0.0 && ny == 0.0 && det != 0.0 && det.is_finite() {
                 skipped += 1;
             } else {
@@ -518,6 +587,13 @@ mod tests {
             let params = Params { flat: n % 11 == 5, offset: (n % 13 == 1).then_some((1.5, 2.0)), fog: (n % 3 == 0).then_some(fog) };
             let zq = [0, 1, 2].map(|i| (z[i], q[i]));
             let t = planes_of(&params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+            // The lanes' and the scalar form's planes, bit for bit.
+            let scalar = planes_by::<_, _, false>(&params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+            let lanes = planes_by::<_, _, true>(&params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+            for u in [&scalar, &lanes] {
+                let all = |t: &TriangleSetup| [t.z, t.q, t.color[0], t.color[1], t.color[2], t.color[3], t.fog.map_or(Plane::default(), |f| f.0)].map(|p| bits(&p));
+                assert_eq!(all(u), all(&t), "{ex:?} {ey:?}");
+            }
             let perspective = !(q[0] == q[1] && q[1] == q[2]);
             assert_eq!(t.perspective, perspective);
             perspective_n += perspective as usize;
