@@ -824,11 +824,7 @@ mod tests {
     /// direction, clipped to a column range or not.
     #[test]
     fn stepped_fragments_match() {
-        let mut seed = 9u64;
-        let mut rnd = |m: i64| {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 33) as i64).rem_euclid(m)
-        };
+        let mut rnd = crate::render::test_rng::below(9, 33);
         let mut total = 0;
         for k in 0..20000 {
             let unit = if k % 3 == 0 { ONE / 4 } else { 1 };
@@ -851,11 +847,7 @@ mod tests {
     /// diamond corners (quarter pixels), of slope 0 and 1, short and long.
     #[test]
     fn fragments_before_counts_the_walk() {
-        let mut seed = 11u64;
-        let mut rnd = |m: i64| {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 33) as i64).rem_euclid(m)
-        };
+        let mut rnd = crate::render::test_rng::below(11, 33);
         let mut checked = 0;
         for k in 0..6000 {
             let unit = if k % 2 == 0 { ONE / 4 } else { 1 };
@@ -890,11 +882,7 @@ mod tests {
     /// diamond corners and edges (multiples of 1/4 pixel), slopes 1 included.
     #[test]
     fn interior_hits_agree_with_diamond_exit() {
-        let mut seed = 5u64;
-        let mut rnd = |m: i64| {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 33) as i64).rem_euclid(m)
-        };
+        let mut rnd = crate::render::test_rng::below(5, 33);
         let (mut decided, mut ties) = (0, 0);
         for k in 0..20000 {
             let unit = if k % 2 == 0 { ONE / 4 } else { 1 };

@@ -26,6 +26,19 @@ pub mod tile;
 pub mod vertex;
 pub mod vertex4;
 
+/// The tests' seeded random numbers (a 64-bit LCG, Knuth's MMIX
+/// constants): the same sequence on every run, so a failure repeats.
+#[cfg(test)]
+pub(crate) mod test_rng {
+    /// Draws in `0..m`, from bits `shift..` of each successive state.
+    pub fn below(mut seed: u64, shift: u32) -> impl FnMut(i64) -> i64 {
+        move |m| {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> shift) as i64).rem_euclid(m)
+        }
+    }
+}
+
 use crate::framebuffer::{Framebuffer, Rect};
 use crate::gl::enums::GL_FILL;
 

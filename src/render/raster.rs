@@ -492,11 +492,7 @@ mod tests {
     /// with testing every pixel centre of a window directly.
     #[test]
     fn narrow_spans_match_per_pixel_edge_tests() {
-        let mut seed = 99u64;
-        let mut rnd = |m: i64| {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 33) as i64).rem_euclid(m)
-        };
+        let mut rnd = crate::render::test_rng::below(99, 33);
         let rect = Rect { x0: 2, y0: 1, x1: 14, y1: 13 };
         let (mut covered, mut empty) = (0, 0);
         for _ in 0..20000 {
@@ -533,11 +529,7 @@ mod tests {
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn narrow_lanes_match_scalar() {
-        let mut seed = 4242u64;
-        let mut rnd = |m: i64| {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 20) as i64).rem_euclid(m)
-        };
+        let mut rnd = crate::render::test_rng::below(4242, 20);
         let (mut compared, mut at_extent, mut covered, mut ties) = (0, 0, 0, 0);
         for n in 0..400_000 {
             let size = match n % 4 {
@@ -598,11 +590,7 @@ mod tests {
     /// every row, on triangles as large as the guard band allows.
     #[test]
     fn stepped_rows_match_span() {
-        let mut seed = 777u64;
-        let mut rnd = |m: i64| {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 20) as i64).rem_euclid(m)
-        };
+        let mut rnd = crate::render::test_rng::below(777, 20);
         let big = 1i64 << 27;
         let mut rows = 0;
         for n in 0..3000 {
@@ -629,11 +617,7 @@ mod tests {
     /// The span solution agrees with testing every pixel centre directly.
     #[test]
     fn spans_match_per_pixel_edge_tests() {
-        let mut seed = 12345u64;
-        let mut rnd = |m: i64| {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 33) as i64).rem_euclid(m)
-        };
+        let mut rnd = crate::render::test_rng::below(12345, 33);
         for _ in 0..500 {
             let x = [rnd(32 * ONE), rnd(32 * ONE), rnd(32 * ONE)];
             let y = [rnd(32 * ONE), rnd(32 * ONE), rnd(32 * ONE)];
