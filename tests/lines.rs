@@ -9,6 +9,9 @@ use softgl::gl::enums::*;
 use softgl::gl::{Command, Context};
 use std::collections::BTreeSet;
 
+mod common;
+use common::Rng;
+
 const N: usize = 32;
 
 fn context() -> Context {
@@ -119,16 +122,6 @@ fn one_pixel_lines_hand_cases() {
     }
 }
 
-struct Rng(u64);
-impl Rng {
-    /// A multiple of 1/4 in [lo, hi).
-    fn q(&mut self, lo: f32, hi: f32) -> f32 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-        let n = ((hi - lo) * 4.0) as u64;
-        lo + ((self.0 >> 33) % n) as f32 / 4.0
-    }
-}
-
 #[test]
 fn one_pixel_lines_match_the_diamond_rule() {
     let mut c = context();
@@ -136,8 +129,8 @@ fn one_pixel_lines_match_the_diamond_rule() {
     for i in 0..400 {
         // Some short, some long, some on integer or half-integer points.
         let span = if i % 3 == 0 { 4.0 } else { 30.0 };
-        let a = [r.q(1.0, 1.0 + span), r.q(1.0, 1.0 + span)];
-        let mut b = [r.q(1.0, 1.0 + span), r.q(1.0, 1.0 + span)];
+        let a = [r.quarter(1.0, 1.0 + span), r.quarter(1.0, 1.0 + span)];
+        let mut b = [r.quarter(1.0, 1.0 + span), r.quarter(1.0, 1.0 + span)];
         if i % 5 == 0 {
             // Exact diagonals and axis-parallel lines.
             let d = b[0] - a[0];
@@ -158,11 +151,11 @@ fn strips_and_loops_draw_no_pixel_twice_at_joins() {
     for _ in 0..50 {
         // A strip monotone in x with |slope| <= 1: consecutive segments
         // share only their joint.
-        let mut pts = vec![[r.q(0.0, 3.0), r.q(10.0, 20.0), 0.0]];
+        let mut pts = vec![[r.quarter(0.0, 3.0), r.quarter(10.0, 20.0), 0.0]];
         while pts.last().unwrap()[0] < 26.0 {
             let p = *pts.last().unwrap();
-            let dx = r.q(1.0, 6.0);
-            let dy = r.q(-dx.min(4.0), dx.min(4.0));
+            let dx = r.quarter(1.0, 6.0);
+            let dy = r.quarter(-dx.min(4.0), dx.min(4.0));
             pts.push([p[0] + dx, (p[1] + dy).clamp(1.0, 30.0), 0.0]);
         }
         let mut union = Px::new();

@@ -14,14 +14,8 @@ fn context(w: usize, h: usize) -> Context {
     c
 }
 
-/// A small deterministic generator (no external crates in tests).
-struct Rng(u64);
-impl Rng {
-    fn f(&mut self) -> f32 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-        ((self.0 >> 40) as f32) / (1u64 << 24) as f32
-    }
-}
+mod common;
+use common::Rng;
 
 type Tri = [[f32; 4]; 3];
 
@@ -57,10 +51,10 @@ fn grid(rng: &mut Rng, n: usize, rect: [f32; 4], z: impl Fn(f32, f32) -> f32) ->
             let mut x = x0 + (x1 - x0) * i as f32 / n as f32;
             let mut y = y0 + (y1 - y0) * j as f32 / n as f32;
             if i > 0 && i < n {
-                x += (rng.f() - 0.5) * (x1 - x0) / n as f32 * 0.6;
+                x += (rng.f24() - 0.5) * (x1 - x0) / n as f32 * 0.6;
             }
             if j > 0 && j < n {
-                y += (rng.f() - 0.5) * (y1 - y0) / n as f32 * 0.6;
+                y += (rng.f24() - 0.5) * (y1 - y0) / n as f32 * 0.6;
             }
             p[j * (n + 1) + i] = [x, y];
         }

@@ -19,13 +19,8 @@ fn context() -> Context {
     c
 }
 
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u32 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-        (self.0 >> 33) as u32
-    }
-}
+mod common;
+use common::Rng;
 
 fn draw(c: &mut Context, w: i32, h: i32, format: u32, ty: u32, data: &[u8]) {
     let cmd = unsafe { c.build_draw_pixels(w, h, format, ty, data.as_ptr()) }.expect("a command");
@@ -187,7 +182,7 @@ fn depth_and_stencil_round_trips() {
     let mut c = context();
     let mut rng = Rng(3);
     let (w, h) = (6usize, 4usize);
-    let depth: Vec<u32> = (0..w * h).map(|_| rng.next() & 0xFF_FFFF).collect();
+    let depth: Vec<u32> = (0..w * h).map(|_| (rng.next() & 0xFF_FFFF) as u32).collect();
     let stencil: Vec<u8> = (0..w * h).map(|_| rng.next() as u8).collect();
     c.execute(&Command::Enable(GL_DEPTH_TEST));
     c.execute(&Command::DepthFunc(GL_ALWAYS));
@@ -516,7 +511,7 @@ fn copy_pixels_overlap() {
         let mut rng = Rng(dx as u64 * 31 + dy as u64);
         for i in 0..W * H {
             c.fb.color[i] = [rng.next() as u8, rng.next() as u8, rng.next() as u8, 255];
-            c.fb.depth[i] = rng.next() & 0xFF_FFFF;
+            c.fb.depth[i] = (rng.next() & 0xFF_FFFF) as u32;
             c.fb.stencil[i] = rng.next() as u8;
         }
         let old = (c.fb.color.to_vec(), c.fb.depth.clone(), c.fb.stencil.clone());

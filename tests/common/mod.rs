@@ -1,5 +1,6 @@
 //! Helpers shared by the integration tests that draw random cases
-//! (reference_diff, line_reference_diff, vertex_batch).
+//! (reference_diff, line_reference_diff, vertex_batch, lines, pipeline,
+//! pixels).
 #![allow(dead_code)]
 
 /// A small deterministic generator (a 64-bit LCG, upper bits): the same
@@ -19,6 +20,14 @@ impl Rng {
     }
     pub fn unit(&mut self) -> f32 {
         self.next() as f32 / (1u64 << 31) as f32
+    }
+    /// A float in [0, 1) from the state's top 24 bits.
+    pub fn f24(&mut self) -> f32 {
+        (self.next() >> 7) as f32 / (1u64 << 24) as f32
+    }
+    /// A multiple of 1/4 in [lo, hi).
+    pub fn quarter(&mut self, lo: f32, hi: f32) -> f32 {
+        lo + self.below(((hi - lo) * 4.0) as u64) as f32 / 4.0
     }
     pub fn range(&mut self, lo: f32, hi: f32) -> f32 {
         lo + (hi - lo) * self.unit()
