@@ -271,6 +271,19 @@ impl PlaneDivisor {
         PlaneDivisor { dx1, dy1, dx2, dy2, det, det_sign: det.to_bits() & SIGN, zero_quotients: det != 0.0 && det.is_finite() }
     }
 
+    /// [`PlaneDivisor::new`] for the planes in lanes (LANES, on x86_64)
+    /// or by the scalar form: the lanes always divide, so they need
+    /// neither det's sign nor the zero test (left false and 0; about 15
+    /// instructions a triangle).
+    #[inline(always)]
+    fn new_for<const LANES: bool>(dx1: f64, dy1: f64, dx2: f64, dy2: f64, det: f64) -> PlaneDivisor {
+        if LANES && cfg!(target_arch = "x86_64") {
+            PlaneDivisor { dx1, dy1, dx2, dy2, det, det_sign: 0, zero_quotients: false }
+        } else {
+            PlaneDivisor::new(dx1, dy1, dx2, dy2, det)
+        }
+    }
+
     /// The plane of the values `a` at the three vertices:
     /// dx = (da1 dy2 - da2 dy1) / det, dy = (da2 dx1 - da1 dx2) / det.
     /// An attribute equal at the three vertices (flat-coloured triangles,
@@ -446,7 +459,7 @@ fn planes_by<P: SetupParams, A: Attributes, const LANES: bool>(rs: &P, zq: [(f64
     let y = ey.map(|c| c as f64 * inv);
     let (dx1, dy1, dx2, dy2) = (x[1] - x[0], y[1] - y[0], x[2] - x[0], y[2] - y[0]);
     let det = dx1 * dy2 - dx2 * dy1;
-    let d = PlaneDivisor::new(dx1, dy1, dx2, dy2, det);
+    let d = PlaneDivisor::new_for::<LANES>(dx1, dy1, dx2, dy2, det);
     let plane = |a: [f64; 3]| d.plane_by::<LANES>(a);
     let q = zq.map(|p| p.1);
     let perspective = !(q[0] == q[1] && q[1] == q[2]);
@@ -466,31 +479,26 @@ fn planes_by<P: SetupParams, A: Attributes, const LANES: bool>(rs: &P, zq: [(f64
         let m = z.dx.abs().max(z.dy.abs());
         z.a0 += m * factor as f64 + units as f64 * OFFSET_UNIT;
     }
-    let tex = rs.texture().map(|stage| {
+    let mut t = TriangleSetup { tex: None, fog: None, secondary: None, x0: x[0], y0: y[0], z, q: q_plane, color, perspective, flat, front_facing };
+    // The optional planes are filled in place when present: built in
+    // temporaries and moved in, their payloads were copied from the stack
+    // even when absent (about 20 instructions a triangle).
+    if let Some(stage) = rs.texture() {
         let mut planes = [[Plane::default(); 4]; super::texture::MAX_UNITS];
         for &u in &stage.active {
             for (c, p) in planes[u].iter_mut().enumerate() {
                 *p = plane([0, 1, 2].map(|i| v[i].tex(u)[c] as f64 * q[i]));
             }
         }
-        Box::new(TexPlanes { stage: stage.clone(), planes })
-    });
-    let fog = rs.fog().map(|f| (plane([0, 1, 2].map(|i| v[i].fog() as f64 * if perspective { q[i] } else { 1.0 })), f));
-    let secondary = (rs.color_sum() && tex.is_some())
-        .then(|| [0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| if back { v[i].back_secondary() } else { v[i].secondary() }[ch] as f64 * if perspective { q[i] } else { 1.0 }))));
-    TriangleSetup {
-        tex,
-        fog,
-        secondary,
-        x0: x[0],
-        y0: y[0],
-        z,
-        q: q_plane,
-        color,
-        perspective,
-        flat,
-        front_facing,
+        t.tex = Some(Box::new(TexPlanes { stage: stage.clone(), planes }));
     }
+    if let Some(f) = rs.fog() {
+        t.fog = Some((plane([0, 1, 2].map(|i| v[i].fog() as f64 * if perspective { q[i] } else { 1.0 })), f));
+    }
+    if rs.color_sum() && t.tex.is_some() {
+        t.secondary = Some([0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| if back { v[i].back_secondary() } else { v[i].secondary() }[ch] as f64 * if perspective { q[i] } else { 1.0 }))));
+    }
+    t
 }
 
 #[cfg(test)]
