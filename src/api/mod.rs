@@ -137,7 +137,11 @@ macro_rules! entry_point {
         #[no_mangle]
         #[allow(unused_parens)]
         pub unsafe extern "system" fn $name($($arg: $ty),*) -> $ret {
-            $crate::api::dispatch::with_current(|ctx: &mut $crate::gl::Context| {
+            // `move`: the closure holds the arguments' values (every C
+            // argument is Copy), not their addresses, so they can stay in
+            // registers (by reference glColor3f spilled its three floats
+            // and stored their addresses: about 10 instructions a call).
+            $crate::api::dispatch::with_current(move |ctx: &mut $crate::gl::Context| {
                 // The body may bail out with `?` (a NULL array) or `return None`
                 // (an error it has set): then nothing is recorded or run.
                 #[allow(unused_variables)]

@@ -271,6 +271,19 @@ impl PlaneDivisor {
         PlaneDivisor { dx1, dy1, dx2, dy2, det, det_sign: det.to_bits() & SIGN, zero_quotients: det != 0.0 && det.is_finite() }
     }
 
+    /// [`PlaneDivisor::new`] for the planes in lanes (LANES, on x86_64)
+    /// or by the scalar form: the lanes always divide, so they need
+    /// neither det's sign nor the zero test (left false and 0; about 15
+    /// instructions a triangle).
+    #[inline(always)]
+    fn new_for<const LANES: bool>(dx1: f64, dy1: f64, dx2: f64, dy2: f64, det: f64) -> PlaneDivisor {
+        if LANES && cfg!(target_arch = "x86_64") {
+            PlaneDivisor { dx1, dy1, dx2, dy2, det, det_sign: 0, zero_quotients: false }
+        } else {
+            PlaneDivisor::new(dx1, dy1, dx2, dy2, det)
+        }
+    }
+
     /// The plane of the values `a` at the three vertices:
     /// dx = (da1 dy2 - da2 dy1) / det, dy = (da2 dx1 - da1 dx2) / det.
     /// An attribute equal at the three vertices (flat-coloured triangles,
@@ -323,6 +336,88 @@ impl PlaneDivisor {
         }
         self.plane(a)
     }
+
+    /// The planes of two attributes at once, lane 0 and lane 1 of `a[i]`
+    /// their values at vertex i: [`PlaneDivisor::plane`]'s operations
+    /// lane by lane (da1 dy2 - da2 dy1 and da2 dx1 - da1 dx2, each divided
+    /// by det), so each plane has the bits `plane_sse2` gives it, with
+    /// half its instructions (no swap, no per-plane broadcasts).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn pair_sse2(&self, a: [std::arch::x86_64::__m128d; 3]) -> [Plane; 2] {
+        use std::arch::x86_64::*;
+        // SAFETY: SSE2 is part of the x86_64 baseline.
+        unsafe {
+            let da1 = _mm_sub_pd(a[1], a[0]);
+            let da2 = _mm_sub_pd(a[2], a[0]);
+            let nx = _mm_sub_pd(_mm_mul_pd(da1, _mm_set1_pd(self.dy2)), _mm_mul_pd(da2, _mm_set1_pd(self.dy1)));
+            let ny = _mm_sub_pd(_mm_mul_pd(da2, _mm_set1_pd(self.dx1)), _mm_mul_pd(da1, _mm_set1_pd(self.dx2)));
+            let det = _mm_set1_pd(self.det);
+            let (dx, dy) = (_mm_div_pd(nx, det), _mm_div_pd(ny, det));
+            let hi = |v: __m128d| _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
+            [
+                Plane { a0: _mm_cvtsd_f64(a[0]), dx: _mm_cvtsd_f64(dx), dy: _mm_cvtsd_f64(dy) },
+                Plane { a0: hi(a[0]), dx: hi(dx), dy: hi(dy) },
+            ]
+        }
+    }
+
+    /// The depth and 1/w planes: side by side in lanes (LANES, on x86_64)
+    /// or one at a time by the scalar form; the same bits.
+    #[inline(always)]
+    fn depth_q_by<const LANES: bool>(&self, zq: [(f64, f64); 3]) -> [Plane; 2] {
+        #[cfg(target_arch = "x86_64")]
+        if LANES {
+            use std::arch::x86_64::*;
+            // SAFETY: SSE2 is part of the x86_64 baseline.
+            return self.pair_sse2(zq.map(|(z, q)| unsafe { _mm_set_pd(q, z) }));
+        }
+        [self.plane(zq.map(|p| p.0)), self.plane(zq.map(|p| p.1))]
+    }
+
+    /// The four colour planes of smooth shading, of c s per vertex (s is
+    /// 1/w with perspective, else 1). Lanes (LANES, on x86_64): red and
+    /// green side by side, then blue and alpha. The scalar form shares
+    /// `q_plane` for a channel of exactly 1 at every vertex under
+    /// perspective (1 q is q: the same values, so the same plane); the
+    /// lanes solve it again, to the same bits.
+    #[inline(always)]
+    fn colours_by<const LANES: bool>(&self, c: [Vec4; 3], s: [f64; 3], perspective: bool, q_plane: Plane) -> [Plane; 4] {
+        #[cfg(target_arch = "x86_64")]
+        if LANES {
+            use std::arch::x86_64::*;
+            // SAFETY: SSE2 is part of the x86_64 baseline.
+            let (rg, ba) = unsafe {
+                let wide = |i: usize| {
+                    let v = _mm_loadu_ps(c[i].as_ref().as_ptr());
+                    let (lo, hi) = (_mm_cvtps_pd(v), _mm_cvtps_pd(_mm_movehl_ps(v, v)));
+                    // Times 1 is the identity: skipped without perspective.
+                    if perspective {
+                        let si = _mm_set1_pd(s[i]);
+                        (_mm_mul_pd(lo, si), _mm_mul_pd(hi, si))
+                    } else {
+                        (lo, hi)
+                    }
+                };
+                let (w0, w1, w2) = (wide(0), wide(1), wide(2));
+                (self.pair_sse2([w0.0, w1.0, w2.0]), self.pair_sse2([w0.1, w1.1, w2.1]))
+            };
+            return [rg[0], rg[1], ba[0], ba[1]];
+        }
+        let c = c.map(|c| c.to_array());
+        let channel = |ch: usize| {
+            if perspective && c[0][ch] == 1.0 && c[1][ch] == 1.0 && c[2][ch] == 1.0 {
+                // 1 * q is q: the plane of q's very values (most often
+                // opaque alpha), already solved.
+                q_plane
+            } else {
+                self.plane([c[0][ch] as f64 * s[0], c[1][ch] as f64 * s[1], c[2][ch] as f64 * s[2]])
+            }
+        };
+        // Written out: `array::from_fn` with this closure stayed an
+        // out-of-line loop.
+        [channel(0), channel(1), channel(2), channel(3)]
+    }
 }
 
 /// Solve a triangle's planes in SSE2 lanes ([`PlaneDivisor::plane_sse2`])?
@@ -364,63 +459,46 @@ fn planes_by<P: SetupParams, A: Attributes, const LANES: bool>(rs: &P, zq: [(f64
     let y = ey.map(|c| c as f64 * inv);
     let (dx1, dy1, dx2, dy2) = (x[1] - x[0], y[1] - y[0], x[2] - x[0], y[2] - y[0]);
     let det = dx1 * dy2 - dx2 * dy1;
-    let d = PlaneDivisor::new(dx1, dy1, dx2, dy2, det);
+    let d = PlaneDivisor::new_for::<LANES>(dx1, dy1, dx2, dy2, det);
     let plane = |a: [f64; 3]| d.plane_by::<LANES>(a);
     let q = zq.map(|p| p.1);
     let perspective = !(q[0] == q[1] && q[1] == q[2]);
-    let q_plane = plane(q);
+    let [mut z, q_plane] = d.depth_q_by::<LANES>(zq);
     let (flat, color) = if rs.flat() {
         (Some(super::fragment::color_to_u8(flat_color)), [Plane::default(); 4])
     } else {
         let s = if perspective { q } else { [1.0; 3] };
         // Written out: `[0, 1, 2].map` with this closure stayed an
         // out-of-line call copying the colours through memory.
-        let c = if back { [v[0].back_color(), v[1].back_color(), v[2].back_color()] } else { [v[0].color(), v[1].color(), v[2].color()] }.map(|c| c.to_array());
-        let channel = |ch: usize| {
-            if perspective && c[0][ch] == 1.0 && c[1][ch] == 1.0 && c[2][ch] == 1.0 {
-                // 1 * q is q: the plane of q's very values (most often
-                // opaque alpha), already solved.
-                q_plane
-            } else {
-                plane([c[0][ch] as f64 * s[0], c[1][ch] as f64 * s[1], c[2][ch] as f64 * s[2]])
-            }
-        };
-        // Written out: `array::from_fn` with this closure stayed an
-        // out-of-line loop.
-        (None, [channel(0), channel(1), channel(2), channel(3)])
+        let c = if back { [v[0].back_color(), v[1].back_color(), v[2].back_color()] } else { [v[0].color(), v[1].color(), v[2].color()] };
+        (None, d.colours_by::<LANES>(c, s, perspective, q_plane))
     };
-    let mut z = plane(zq.map(|p| p.0));
     if let Some((factor, units)) = rs.offset_fill() {
         // Polygon offset (3.5.5): m * factor + r * units, with m the
         // largest depth slope and r the depth buffer's resolution.
         let m = z.dx.abs().max(z.dy.abs());
         z.a0 += m * factor as f64 + units as f64 * OFFSET_UNIT;
     }
-    let tex = rs.texture().map(|stage| {
+    let mut t = TriangleSetup { tex: None, fog: None, secondary: None, x0: x[0], y0: y[0], z, q: q_plane, color, perspective, flat, front_facing };
+    // The optional planes are filled in place when present: built in
+    // temporaries and moved in, their payloads were copied from the stack
+    // even when absent (about 20 instructions a triangle).
+    if let Some(stage) = rs.texture() {
         let mut planes = [[Plane::default(); 4]; super::texture::MAX_UNITS];
         for &u in &stage.active {
             for (c, p) in planes[u].iter_mut().enumerate() {
                 *p = plane([0, 1, 2].map(|i| v[i].tex(u)[c] as f64 * q[i]));
             }
         }
-        Box::new(TexPlanes { stage: stage.clone(), planes })
-    });
-    let fog = rs.fog().map(|f| (plane([0, 1, 2].map(|i| v[i].fog() as f64 * if perspective { q[i] } else { 1.0 })), f));
-    let secondary = (rs.color_sum() && tex.is_some())
-        .then(|| [0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| if back { v[i].back_secondary() } else { v[i].secondary() }[ch] as f64 * if perspective { q[i] } else { 1.0 }))));
-    TriangleSetup {
-        tex,
-        fog,
-        secondary,
-        x0: x[0],
-        y0: y[0],
-        z,
-        q: q_plane,
-        color,
-        perspective,
-        flat,
-        front_facing,
+        t.tex = Some(Box::new(TexPlanes { stage: stage.clone(), planes }));
     }
+    if let Some(f) = rs.fog() {
+        t.fog = Some((plane([0, 1, 2].map(|i| v[i].fog() as f64 * if perspective { q[i] } else { 1.0 })), f));
+    }
+    if rs.color_sum() && t.tex.is_some() {
+        t.secondary = Some([0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| if back { v[i].back_secondary() } else { v[i].secondary() }[ch] as f64 * if perspective { q[i] } else { 1.0 }))));
+    }
+    t
 }
 
 #[cfg(test)]
@@ -490,6 +568,52 @@ mod tests {
             }
         }
         assert!(skipped > 50_000 && divided > 50_000, "{skipped} {divided}");
+    }
+
+    /// Two planes in lanes (`pair_sse2`, through `depth_q_by` and
+    /// `colours_by`) have the bits of the scalar form's one at a time, on
+    /// random values with zeros of both signs, ones, tiny, huge, infinite
+    /// and NaN values, det of both signs, zero and NaN, with and without
+    /// perspective (NaN compared as NaN, as in
+    /// `constant_planes_match_division`).
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn pairs_match_single_planes() {
+        let mut seed = 23u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed >> 11
+        };
+        let specials = [0.0, -0.0, 1.0, -1.0, 0.5, 1e-300, -1e-300, 1e300, f64::INFINITY, f64::NEG_INFINITY, f64::NAN];
+        let pick = move |next: &mut dyn FnMut() -> u64| {
+            let r = next();
+            if r % 8 == 0 {
+                specials[(r >> 3) as usize % specials.len()]
+            } else if r % 8 == 1 {
+                1.0
+            } else {
+                ((r >> 3) as f64 / (1u64 << 50) as f64 - 0.5) * [1.0, 1e-3, 1e3, 1e-30, 1e30][(r >> 60) as usize % 5]
+            }
+        };
+        let same = |x: &Plane, y: &Plane| [(x.a0, y.a0), (x.dx, y.dx), (x.dy, y.dy)].iter().all(|&(a, b)| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()));
+        for n in 0..200_000 {
+            let (dx1, dy1, dx2, dy2) = (pick(&mut next), pick(&mut next), pick(&mut next), pick(&mut next));
+            let det = if n % 9 == 0 { pick(&mut next) } else { dx1 * dy2 - dx2 * dy1 };
+            let d = PlaneDivisor::new(dx1, dy1, dx2, dy2, det);
+            let zq: [(f64, f64); 3] = std::array::from_fn(|_| (pick(&mut next), pick(&mut next)));
+            let lanes = d.depth_q_by::<true>(zq);
+            let scalar = d.depth_q_by::<false>(zq);
+            assert!(same(&lanes[0], &scalar[0]) && same(&lanes[1], &scalar[1]), "{zq:?} {lanes:?} {scalar:?}");
+            let c: [Vec4; 3] = std::array::from_fn(|_| Vec4::new(pick(&mut next) as f32, pick(&mut next) as f32, pick(&mut next) as f32, pick(&mut next) as f32));
+            let perspective = n % 3 != 0;
+            let s = if perspective { zq.map(|p| p.1) } else { [1.0; 3] };
+            let q_plane = scalar[1];
+            let lanes = d.colours_by::<true>(c, s, perspective, q_plane);
+            let scalar = d.colours_by::<false>(c, s, perspective, q_plane);
+            for ch in 0..4 {
+                assert!(same(&lanes[ch], &scalar[ch]), "channel {ch} of {c:?} {s:?}: {:?} {:?}", lanes[ch], scalar[ch]);
+            }
+        }
     }
 
     /// Setup state for `planes_of` without textures.
