@@ -792,7 +792,10 @@ impl Job {
         let order = if si.keyed.len() == p2.len() {
             fresh.clear();
             fresh.extend(verts[merged..].iter().enumerate().map(|(k, v)| (sweep::ord_key(v.p[0]), sweep::ord_key(v.p[1]), (merged + k) as u32)));
-            fresh.sort_unstable();
+            // By (x, y) as one 128-bit key: cheaper comparisons than the
+            // tuple's, and the same order (new vertices are pairwise more
+            // than EPS apart, so no two share a key and ids never decide).
+            fresh.sort_unstable_by_key(|k| (k.0 as u128) << 64 | k.1 as u128);
             sorted.clear();
             if si.distinct {
                 // Every input vertex is its own id: merge the two sorted

@@ -255,14 +255,14 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
             continue;
         }
         outs.clear();
-        outs.extend((o0..o1).map(|e| Active { e, w: 0, b: false, reg: None }));
+        outs.extend(edges[o0..o1].iter().enumerate().map(|(k, x)| Active { e: (o0 + k) as u32, hi: x.hi as u32, w: 0, b: false, reg: None }));
         // The entries ending here (normally one contiguous block).
-        let first = if inc[v] > 0 { active.iter().position(|x| edges[x.e].hi == v) } else { None };
+        let first = if inc[v] > 0 { active.iter().position(|x| x.hi as usize == v) } else { None };
         let Some(lo) = first else {
             // A start (or, inconsistent, an end not found: the same).
             let pv = verts[v].p;
             let pos = active.partition_point(|x| {
-                let e = edges[x.e];
+                let e = edges[x.e as usize];
                 orient(verts[e.lo].p, verts[e.hi].p, pv) >= 0.0
             });
             let w0 = if pos > 0 { active[pos - 1].w } else { 0 };
@@ -288,8 +288,8 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
             continue;
         };
         // (All `inc` of them in one run, normally: no second scan.)
-        let run = active[lo..].iter().take_while(|x| edges[x.e].hi == v).count();
-        let hi = if run == inc[v] as usize { lo + run - 1 } else { active.iter().rposition(|x| edges[x.e].hi == v).unwrap_or(lo) };
+        let run = active[lo..].iter().take_while(|x| x.hi as usize == v).count();
+        let hi = if run == inc[v] as usize { lo + run - 1 } else { active.iter().rposition(|x| x.hi as usize == v).unwrap_or(lo) };
         let w0 = if lo > 0 { active[lo - 1].w } else { 0 };
         let top = start_outs(outs, w0, edges, rule, boundary);
         let lo_b = active[lo..=hi].iter().position(|x| x.b).map(|i| lo + i);
@@ -357,7 +357,10 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
 /// the boundary, and (if so, and the region is above it) the region
 /// between it and the next boundary entry above.
 struct Active {
-    e: usize,
+    e: u32,
+    /// The edge's right end (`edges[e].hi`), kept here: the scans for the
+    /// entries ending at a vertex read only this (no lookup per entry).
+    hi: u32,
     w: i64,
     b: bool,
     reg: Option<Reg>,
@@ -371,7 +374,7 @@ fn start_outs(outs: &mut [Active], w0: i64, edges: &[Edge], rule: Rule, boundary
     let mut inside = rule.inside(w);
     let mut top = None;
     for (j, x) in outs.iter_mut().enumerate() {
-        let e = edges[x.e];
+        let e = edges[x.e as usize];
         w += e.w;
         x.w = w;
         let above = rule.inside(w);
