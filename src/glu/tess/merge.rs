@@ -52,7 +52,8 @@ impl Grid {
         let size = (2 * n).max(16).next_power_of_two();
         self.head.clear();
         self.head.resize(size, NONE);
-        self.next.clear();
+        // (`next` keeps its length and old entries: an entry is written
+        // when its vertex goes in, before any chain reaches it.)
         self.shift = 64 - size.trailing_zeros();
     }
 

@@ -148,9 +148,12 @@ pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, co
             if g.len() > 16 {
                 g.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
             } else {
+                // (A plain comparison: the parameters are never NaN or
+                // -0.0, the two cases where it differs from `total_cmp`:
+                // quotients of positive numbers, or clamped into [0, 1].)
                 for k in 1..g.len() {
                     let mut j = k;
-                    while j > 0 && g[j - 1].0.total_cmp(&g[j].0).is_gt() {
+                    while j > 0 && g[j - 1].0 > g[j].0 {
                         g.swap(j - 1, j);
                         j -= 1;
                     }

@@ -165,18 +165,20 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
     // (Every slot is written below: what the buffer held is left in place
     // rather than cleared first, which cost a memset of it per polygon.)
     let m = out[nv] as usize;
+    // (Nor shortened afterwards: the kept edges are a prefix, read as a
+    // slice below, so the buffer keeps its high-water length and is
+    // filled again only when a polygon needs more.)
     if edges.len() < m {
         edges.resize(m, Edge { lo: 0, hi: 0, w: 0, key: 0.0 });
-    } else {
-        edges.truncate(m);
     }
     {
         let fill = &mut *inc; // reused as the per-vertex fill cursor
         fill.clear();
         fill.extend_from_slice(&out[..nv]);
         for s in segs.iter().filter(|s| s.a != s.b) {
-            let (lo, hi, w) = if lex_less(verts[s.a].p, verts[s.b].p) { (s.a, s.b, 1) } else { (s.b, s.a, -1) };
-            let (a, b) = (verts[lo].p, verts[hi].p);
+            // (Both ends read once, then ordered: not read again by id.)
+            let (pa, pb) = (verts[s.a].p, verts[s.b].p);
+            let (lo, hi, w, a, b) = if lex_less(pa, pb) { (s.a, s.b, 1, pa, pb) } else { (s.b, s.a, -1, pb, pa) };
             let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
             let l = dx + dy.abs();
             let key = if l > 0.0 { dy / l } else { 0.0 };
@@ -223,7 +225,7 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
         }
     }
     out[nv] = kept as u32;
-    edges.truncate(kept);
+    let edges = &edges[..kept];
     // Sweep order of vertices (integer keys sort faster than float compares).
     let order: &[u32] = match sorted {
         Some(k) => k,
@@ -369,6 +371,7 @@ struct Active {
 /// Sets the windings of the edges leaving a vertex (`outs`, bottom to top,
 /// the face below them winding `w0`) and their boundary flags, and pushes
 /// the boundary ones. Returns the top boundary one's index, if any.
+#[inline]
 fn start_outs(outs: &mut [Active], w0: i64, edges: &[Edge], rule: Rule, boundary: &mut Vec<(usize, usize)>) -> Option<usize> {
     let mut w = w0;
     let mut inside = rule.inside(w);
@@ -390,6 +393,7 @@ fn start_outs(outs: &mut [Active], w0: i64, edges: &[Edge], rule: Rule, boundary
 
 /// Starts a region at v above each boundary edge below `outs[k]` (the top
 /// boundary one) with the region above it.
+#[inline]
 fn start_regions(outs: &mut [Active], k: usize, rule: Rule, t: &mut Tri, v: usize) {
     for x in &mut outs[..k] {
         if x.b && rule.inside(x.w) {
