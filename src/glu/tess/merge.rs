@@ -64,6 +64,7 @@ impl Grid {
     }
 
     /// The closest vertex within EPS of `p` (the lowest id among equals).
+    #[inline]
     pub fn find(&self, verts: &[Vert], p: [f64; 2]) -> Option<usize> {
         if !self.hashed {
             let mut best: Option<(f64, usize)> = None;
@@ -142,6 +143,7 @@ impl Grid {
 
     /// Adds vertex `i`; every vertex below `i` must be in the grid already
     /// (the tessellator inserts each vertex it creates, in order).
+    #[inline]
     pub fn insert(&mut self, verts: &[Vert], i: usize) {
         if !self.hashed {
             if i < LINEAR {

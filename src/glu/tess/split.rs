@@ -560,6 +560,7 @@ fn intersect(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &[Seg], i: usize, j: 
 /// orient(a, b, c), d4 = orient(a, b, d): at a proper crossing, the vertex
 /// there (an existing one within EPS, or a new one from the combiner) and
 /// the two split points. False if the combiner aborted.
+#[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn cross(verts: &mut Vec<Vert>, grid: &mut Grid, i: usize, j: usize, s: Seg, r: Seg, [a, b, c, d]: [[f64; 2]; 4], [d1, d2, d3, d4]: [f64; 4], comb: &mut dyn Combiner, out: &mut Vec<(u32, f64, u32)>, clean: &mut Vec<bool>) -> bool {
     if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
