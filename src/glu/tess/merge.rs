@@ -33,6 +33,7 @@ const LINEAR: usize = 24;
 /// floor). Clamped to ±2^50 first, where the trick holds (coordinates are
 /// normalised to within ±1; huge values and NaN share an end cell, harmless).
 #[inline]
+#[allow(clippy::manual_clamp)] // (`clamp` would keep NaN.)
 fn cell(x: f64) -> i64 {
     const LIM: f64 = (1u64 << 50) as f64;
     const ROUND: f64 = 1.5 * (1u64 << 52) as f64;
