@@ -25,13 +25,20 @@ pub struct Grid {
 /// Up to this many vertices, lookups scan them all (cheaper than hashing).
 const LINEAR: usize = 24;
 
+/// The cell of coordinate x: x / CELL rounded to the nearest integer (any
+/// monotone quantization into cells at least 2 EPS wide serves: a point
+/// within EPS of p then lies in one of the at most two cells of p ± EPS).
+/// By the 1.5·2^52 trick: adding it rounds to an integer, which the low
+/// bits then hold, with no float-to-integer conversion (cheaper than a
+/// floor). Clamped to ±2^50 first, where the trick holds (coordinates are
+/// normalised to within ±1; huge values and NaN share an end cell, harmless).
 #[inline]
+#[allow(clippy::manual_clamp)] // (`clamp` would keep NaN.)
 fn cell(x: f64) -> i64 {
-    // floor without a libm call (no SSE4.1 rounding in the baseline target);
-    // NaN and huge values saturate, which is harmless here.
-    let c = x / CELL;
-    let i = c as i64;
-    i - ((i as f64) > c) as i64
+    const LIM: f64 = (1u64 << 50) as f64;
+    const ROUND: f64 = 1.5 * (1u64 << 52) as f64;
+    let c = (x * (1.0 / CELL)).max(-LIM).min(LIM);
+    (c + ROUND).to_bits() as i64
 }
 
 impl Grid {
@@ -46,7 +53,8 @@ impl Grid {
         let size = (2 * n).max(16).next_power_of_two();
         self.head.clear();
         self.head.resize(size, NONE);
-        self.next.clear();
+        // (`next` keeps its length and old entries: an entry is written
+        // when its vertex goes in, before any chain reaches it.)
         self.shift = 64 - size.trailing_zeros();
     }
 
@@ -57,6 +65,7 @@ impl Grid {
     }
 
     /// The closest vertex within EPS of `p` (the lowest id among equals).
+    #[inline]
     pub fn find(&self, verts: &[Vert], p: [f64; 2]) -> Option<usize> {
         if !self.hashed {
             let mut best: Option<(f64, usize)> = None;
@@ -75,9 +84,11 @@ impl Grid {
         }
         let (x0, x1) = (cell(p[0] - EPS), cell(p[0] + EPS));
         let (y0, y1) = (cell(p[1] - EPS), cell(p[1] + EPS));
+        // (Half-open ranges of one or two cells: cheaper loops than `..=`.)
+        let (x1, y1) = (x0 + 1 + (x1 > x0) as i64, y0 + 1 + (y1 > y0) as i64);
         let mut best: Option<(f64, usize)> = None;
-        for kx in x0..=x1.min(x0 + 1) {
-            for ky in y0..=y1.min(y0 + 1) {
+        for kx in x0..x1 {
+            for ky in y0..y1 {
                 let mut i = self.head[self.bucket(kx, ky)];
                 while i != NONE {
                     let q = verts[i as usize].p;
@@ -133,6 +144,7 @@ impl Grid {
 
     /// Adds vertex `i`; every vertex below `i` must be in the grid already
     /// (the tessellator inserts each vertex it creates, in order).
+    #[inline]
     pub fn insert(&mut self, verts: &[Vert], i: usize) {
         if !self.hashed {
             if i < LINEAR {
@@ -144,7 +156,10 @@ impl Grid {
             self.head.clear();
         }
         if self.next.len() <= i {
-            self.next.resize(i + 1, NONE);
+            // (Doubled, not one at a time: each insert adds one. Entries of
+            // vertices not yet in are never read.)
+            let len = (i + 1).max(2 * self.next.len());
+            self.next.resize(len, NONE);
         }
         if 2 * (i + 1) > self.head.len() {
             // Grow and rehash.

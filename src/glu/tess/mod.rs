@@ -535,14 +535,18 @@ impl Combiner for Comb<'_> {
         if self.failed {
             return None;
         }
+        // (The four vertices read once, into locals: fewer bounds checks
+        // than indexing in each expression below.)
+        let (v0, v1, v2, v3) = (self.p3[e[0]], self.p3[e[1]], self.p3[e[2]], self.p3[e[3]]);
         let lerp = |a: [f64; 3], b: [f64; 3], t: f64| [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])];
-        let q1 = lerp(self.p3[e[0]], self.p3[e[1]], t);
-        let q2 = lerp(self.p3[e[2]], self.p3[e[3]], s);
+        let q1 = lerp(v0, v1, t);
+        let q2 = lerp(v2, v3, s);
         // A convex combination of the four vertices: clamped to their box,
         // since halving subnormals rounds (the fuzz target found z one
         // subnormal ulp above every input z).
         let coords: [f64; 3] = std::array::from_fn(|k| {
-            let (lo, hi) = e.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &i| (lo.min(self.p3[i][k]), hi.max(self.p3[i][k])));
+            let lo = f64::INFINITY.min(v0[k]).min(v1[k]).min(v2[k]).min(v3[k]);
+            let hi = f64::NEG_INFINITY.max(v0[k]).max(v1[k]).max(v2[k]).max(v3[k]);
             (0.5 * q1[k] + 0.5 * q2[k]).max(lo).min(hi)
         });
         // Delphi programs declare `coords` as a dynamic array (the Persian
@@ -792,7 +796,10 @@ impl Job {
         let order = if si.keyed.len() == p2.len() {
             fresh.clear();
             fresh.extend(verts[merged..].iter().enumerate().map(|(k, v)| (sweep::ord_key(v.p[0]), sweep::ord_key(v.p[1]), (merged + k) as u32)));
-            fresh.sort_unstable();
+            // By (x, y) as one 128-bit key: cheaper comparisons than the
+            // tuple's, and the same order (new vertices are pairwise more
+            // than EPS apart, so no two share a key and ids never decide).
+            fresh.sort_unstable_by_key(|k| (k.0 as u128) << 64 | k.1 as u128);
             sorted.clear();
             if si.distinct {
                 // Every input vertex is its own id: merge the two sorted

@@ -50,8 +50,12 @@ pub struct Scratch {
     /// Run the later pass at every split vertex, clean or not (tests:
     /// the skip must change nothing).
     check_all: bool,
+    /// Test every first-pass pair the long way (tests: the shortcut to the
+    /// crossing test must change nothing).
+    slow_pairs: bool,
     inc: Vec<(u32, u32)>,
     pieces: Vec<Piece>,
+    pe: Vec<PairEdge>,
 }
 
 impl Scratch {
@@ -73,6 +77,7 @@ impl Scratch {
         self.clean.reserve(n);
         self.inc.reserve(n);
         self.pieces.reserve(n);
+        self.pe.reserve(n);
     }
 }
 
@@ -90,17 +95,24 @@ impl Scratch {
 /// nearly concurrent edges) shows as a vertex within EPS of a piece that
 /// shares another vertex with it.
 pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, comb: &mut dyn Combiner, sc: &mut Scratch) -> bool {
-    candidate_pairs(verts, segs, sc);
-    // Each pair makes at most one new vertex (bounded, in case of very many pairs).
     let n = verts.len();
-    grid.reserve(verts, n, n + sc.pairs.len().min(8 * n + 1024));
     sc.splits.clear();
     sc.clean.clear();
     sc.clean.resize(n, false);
-    for k in 0..sc.pairs.len() {
-        let (i, j) = sc.pairs[k];
-        if !intersect(verts, grid, segs, i as usize, j as usize, comb, &mut sc.splits, &mut sc.clean) {
+    let fast = !sc.slow_pairs;
+    if segs.len() <= ALL_PAIRS {
+        if !all_pairs(verts, grid, segs, comb, sc, fast) {
             return false;
+        }
+    } else {
+        candidate_pairs(verts, segs, sc);
+        // Each pair makes at most one new vertex (bounded, in case of very many pairs).
+        grid.reserve(verts, n, n + sc.pairs.len().min(8 * n + 1024));
+        for k in 0..sc.pairs.len() {
+            let (i, j) = sc.pairs[k];
+            if !intersect(verts, grid, segs, i as usize, j as usize, comb, &mut sc.splits, &mut sc.clean, fast) {
+                return false;
+            }
         }
     }
     // (Every new vertex got its flag; padded in case a combiner added more.)
@@ -136,9 +148,12 @@ pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, co
             if g.len() > 16 {
                 g.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
             } else {
+                // (A plain comparison: the parameters are never NaN or
+                // -0.0, the two cases where it differs from `total_cmp`:
+                // quotients of positive numbers, or clamped into [0, 1].)
                 for k in 1..g.len() {
                     let mut j = k;
-                    while j > 0 && g[j - 1].0.total_cmp(&g[j].0).is_gt() {
+                    while j > 0 && g[j - 1].0 > g[j].0 {
                         g.swap(j - 1, j);
                         j -= 1;
                     }
@@ -297,34 +312,87 @@ fn lies_on_piece(p: [f64; 2], s: &Piece) -> Option<f64> {
 /// Below this many edges, all pairs are tested (cheaper than a grid).
 const ALL_PAIRS: usize = 48;
 
-/// The pairs of edges whose boxes (grown by EPS) overlap and which may
-/// touch, each once, into `sc.pairs`.
-fn candidate_pairs(verts: &[Vert], segs: &[Seg], sc: &mut Scratch) {
-    let n = segs.len();
-    sc.pairs.clear();
+/// An edge as [`all_pairs`] reads it: its ends (ids and points), its box
+/// grown by EPS, its direction and the bound `lies_on` compares an
+/// orientation's square with (EPS² times its squared length), each the
+/// same expression as there, so the same values.
+#[derive(Clone, Copy, Default)]
+struct PairEdge {
+    bb: [f64; 4],
+    a: [f64; 2],
+    b: [f64; 2],
+    e: [f64; 2],
+    tol: f64,
+    ia: usize,
+    ib: usize,
+}
+
+/// The first pass for at most [`ALL_PAIRS`] edges: every pair whose boxes
+/// overlap, in order (i, then j > i), tested as it is found. The four
+/// orientations come first, from edges read once into `sc.pe` (no vertex
+/// lookups per pair): when all four ends are distinct and each lies
+/// farther than EPS from the other edge's line, no end can lie on the
+/// other edge, and only the crossing test remains (most pairs); otherwise
+/// [`intersect`] tests the pair in full. The results are those of
+/// [`intersect`] on every pair (`fast` false: that, for tests). The grid is
+/// not reserved: with so few edges it is still scanned linearly or small.
+fn all_pairs(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &[Seg], comb: &mut dyn Combiner, sc: &mut Scratch, fast: bool) -> bool {
+    sc.pe.clear();
+    sc.pe.extend(segs.iter().map(|s| {
+        let (a, b) = (verts[s.a].p, verts[s.b].p);
+        let e = [b[0] - a[0], b[1] - a[1]];
+        let bb = [a[0].min(b[0]) - EPS, a[1].min(b[1]) - EPS, a[0].max(b[0]) + EPS, a[1].max(b[1]) + EPS];
+        PairEdge { bb, a, b, e, tol: EPS * EPS * (e[0] * e[0] + e[1] * e[1]), ia: s.a, ib: s.b }
+    }));
+    let (pe, out, clean) = (&sc.pe, &mut sc.splits, &mut sc.clean);
+    for (i, x) in pe.iter().enumerate() {
+        for (j, y) in pe.iter().enumerate().skip(i + 1) {
+            if !(x.bb[0] <= y.bb[2] && y.bb[0] <= x.bb[2] && x.bb[1] <= y.bb[3] && y.bb[1] <= x.bb[3]) {
+                continue;
+            }
+            // orient(c, d, a), orient(c, d, b), orient(a, b, c), orient(a, b, d).
+            let d1 = y.e[0] * (x.a[1] - y.a[1]) - y.e[1] * (x.a[0] - y.a[0]);
+            let d2 = y.e[0] * (x.b[1] - y.a[1]) - y.e[1] * (x.b[0] - y.a[0]);
+            let d3 = x.e[0] * (y.a[1] - x.a[1]) - x.e[1] * (y.a[0] - x.a[0]);
+            let d4 = x.e[0] * (y.b[1] - x.a[1]) - x.e[1] * (y.b[0] - x.a[0]);
+            let far = !(d3 * d3 <= x.tol) && !(d4 * d4 <= x.tol) && !(d1 * d1 <= y.tol) && !(d2 * d2 <= y.tol);
+            let ok = if fast && far && x.ia != y.ia && x.ia != y.ib && x.ib != y.ia && x.ib != y.ib {
+                if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
+                    cross(verts, grid, i, j, segs[i], segs[j], [x.a, x.b, y.a, y.b], [d1, d2, d3, d4], comb, out, clean)
+                } else {
+                    true
+                }
+            } else {
+                intersect(verts, grid, segs, i, j, comb, out, clean, false)
+            };
+            if !ok {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// The edges' boxes, grown by EPS, into `sc.bb`.
+fn boxes(verts: &[Vert], segs: &[Seg], sc: &mut Scratch) {
     sc.bb.clear();
     sc.bb.extend(segs.iter().map(|s| {
         let (p, q) = (verts[s.a].p, verts[s.b].p);
         [p[0].min(q[0]) - EPS, p[1].min(q[1]) - EPS, p[0].max(q[0]) + EPS, p[1].max(q[1]) + EPS]
     }));
+}
+
+/// The pairs of edges whose boxes (grown by EPS) overlap and which may
+/// touch, each once, into `sc.pairs` (more than [`ALL_PAIRS`] edges).
+fn candidate_pairs(verts: &[Vert], segs: &[Seg], sc: &mut Scratch) {
+    let n = segs.len();
+    sc.pairs.clear();
+    boxes(verts, segs, sc);
     let bb = &sc.bb;
     let overlap = |i: usize, j: usize| {
         let (a, b) = (&bb[i], &bb[j]);
         a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3]
     };
-    if n < 2 {
-        return;
-    }
-    if n <= ALL_PAIRS {
-        for i in 0..n {
-            for j in i + 1..n {
-                if overlap(i, j) {
-                    sc.pairs.push((i as u32, j as u32));
-                }
-            }
-        }
-        return;
-    }
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for b in bb {
         lo = [lo[0].min(b[0]), lo[1].min(b[1])];
@@ -443,9 +511,28 @@ fn lies_on(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Option<f64> {
 }
 
 /// Tests edges i and j; pushes their split points. False if the combiner aborted.
-fn intersect(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &[Seg], i: usize, j: usize, comb: &mut dyn Combiner, out: &mut Vec<(u32, f64, u32)>, clean: &mut Vec<bool>) -> bool {
+/// `fast`: take the shortcut to the crossing test when no end lies near the
+/// other edge's line (off only in tests, which compare both ways).
+#[allow(clippy::too_many_arguments)]
+fn intersect(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &[Seg], i: usize, j: usize, comb: &mut dyn Combiner, out: &mut Vec<(u32, f64, u32)>, clean: &mut Vec<bool>, fast: bool) -> bool {
     let (s, r) = (segs[i], segs[j]);
     let (a, b, c, d) = (verts[s.a].p, verts[s.b].p, verts[r.a].p, verts[r.b].p);
+    // The four orientations first: they are the ones `lies_on` would
+    // compute (the same expressions), and when each end lies farther than
+    // EPS from the other edge's line, no `lies_on` test can succeed, so
+    // the crossing test follows directly (most pairs: the same results as
+    // the tests below, without their dot products).
+    let d1 = orient(c, d, a);
+    let d2 = orient(c, d, b);
+    let d3 = orient(a, b, c);
+    let d4 = orient(a, b, d);
+    let (e, f) = ([b[0] - a[0], b[1] - a[1]], [d[0] - c[0], d[1] - c[1]]);
+    let (lab, lcd) = (e[0] * e[0] + e[1] * e[1], f[0] * f[0] + f[1] * f[1]);
+    let (tab, tcd) = (EPS * EPS * lab, EPS * EPS * lcd);
+    let far = !(d3 * d3 <= tab) && !(d4 * d4 <= tab) && !(d1 * d1 <= tcd) && !(d2 * d2 <= tcd);
+    if far && s.a != r.a && s.a != r.b && s.b != r.a && s.b != r.b && fast {
+        return cross(verts, grid, i, j, s, r, [a, b, c, d], [d1, d2, d3, d4], comb, out, clean);
+    }
     let before = out.len();
     // Endpoints lying on the other edge's interior (touching, collinear overlaps).
     for &(v, p) in &[(r.a, c), (r.b, d)] {
@@ -463,45 +550,55 @@ fn intersect(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &[Seg], i: usize, j: 
         }
     }
     if out.len() == before && s.a != r.a && s.a != r.b && s.b != r.a && s.b != r.b {
-        let d1 = orient(c, d, a);
-        let d2 = orient(c, d, b);
-        let d3 = orient(a, b, c);
-        let d4 = orient(a, b, d);
-        if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
-            let t = (d1 / (d1 - d2)).clamp(0.0, 1.0);
-            let u = (d3 / (d3 - d4)).clamp(0.0, 1.0);
-            // Average both parametrisations: symmetric and within both edges' boxes.
-            let p1 = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
-            let p2 = [c[0] + u * (d[0] - c[0]), c[1] + u * (d[1] - c[1])];
-            let p = [0.5 * (p1[0] + p2[0]), 0.5 * (p1[1] + p2[1])];
-            let v = match grid.find(verts, p) {
+        return cross(verts, grid, i, j, s, r, [a, b, c, d], [d1, d2, d3, d4], comb, out, clean);
+    }
+    true
+}
+
+/// The crossing test of edges i (a→b) and j (c→d), given the four
+/// orientations d1 = orient(c, d, a), d2 = orient(c, d, b), d3 =
+/// orient(a, b, c), d4 = orient(a, b, d): at a proper crossing, the vertex
+/// there (an existing one within EPS, or a new one from the combiner) and
+/// the two split points. False if the combiner aborted.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn cross(verts: &mut Vec<Vert>, grid: &mut Grid, i: usize, j: usize, s: Seg, r: Seg, [a, b, c, d]: [[f64; 2]; 4], [d1, d2, d3, d4]: [f64; 4], comb: &mut dyn Combiner, out: &mut Vec<(u32, f64, u32)>, clean: &mut Vec<bool>) -> bool {
+    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
+        let t = (d1 / (d1 - d2)).clamp(0.0, 1.0);
+        let u = (d3 / (d3 - d4)).clamp(0.0, 1.0);
+        // Average both parametrisations: symmetric and within both edges' boxes.
+        let p1 = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+        let p2 = [c[0] + u * (d[0] - c[0]), c[1] + u * (d[1] - c[1])];
+        let p = [0.5 * (p1[0] + p2[0]), 0.5 * (p1[1] + p2[1])];
+        let v = match grid.find(verts, p) {
+            Some(v) => {
+                // Met again: no longer a plain crossing of two edges.
+                if let Some(c) = clean.get_mut(v) {
+                    *c = false;
+                }
+                v
+            }
+            None => match comb.combine(verts, p, [s.a, s.b, r.a, r.b], t, u) {
                 Some(v) => {
-                    // Met again: no longer a plain crossing of two edges.
-                    if let Some(c) = clean.get_mut(v) {
-                        *c = false;
+                    grid.insert(verts, v);
+                    // sin² of the angle between the edges: cross² / (|ab|² |cd|²).
+                    let (e, f) = ([b[0] - a[0], b[1] - a[1]], [d[0] - c[0], d[1] - c[1]]);
+                    let x = e[0] * f[1] - e[1] * f[0];
+                    let l = (e[0] * e[0] + e[1] * e[1]) * (f[0] * f[0] + f[1] * f[1]);
+                    if clean.len() != v {
+                        clean.resize(v, false);
                     }
+                    clean.push(x * x >= CLEAR_SIN * CLEAR_SIN * l);
                     v
                 }
-                None => match comb.combine(verts, p, [s.a, s.b, r.a, r.b], t, u) {
-                    Some(v) => {
-                        grid.insert(verts, v);
-                        // sin² of the angle between the edges: cross² / (|ab|² |cd|²).
-                        let (e, f) = ([b[0] - a[0], b[1] - a[1]], [d[0] - c[0], d[1] - c[1]]);
-                        let x = e[0] * f[1] - e[1] * f[0];
-                        let l = (e[0] * e[0] + e[1] * e[1]) * (f[0] * f[0] + f[1] * f[1]);
-                        clean.resize(v, false);
-                        clean.push(x * x >= CLEAR_SIN * CLEAR_SIN * l);
-                        v
-                    }
-                    None => return false,
-                },
-            };
-            if v != s.a && v != s.b {
-                out.push((i as u32, t, v as u32));
-            }
-            if v != r.a && v != r.b {
-                out.push((j as u32, u, v as u32));
-            }
+                None => return false,
+            },
+        };
+        if v != s.a && v != s.b {
+            out.push((i as u32, t, v as u32));
+        }
+        if v != r.a && v != r.b {
+            out.push((j as u32, u, v as u32));
         }
     }
     true
@@ -522,13 +619,16 @@ mod tests {
     /// The arrangement of one closed polygon, with or without the later
     /// pass's skip at clean crossings.
     fn arrangement(pts: &[[f64; 2]], check_all: bool) -> (Vec<[f64; 2]>, Vec<(usize, usize)>) {
+        arrangement_with(pts, Scratch { check_all, ..Scratch::default() })
+    }
+
+    fn arrangement_with(pts: &[[f64; 2]], mut sc: Scratch) -> (Vec<[f64; 2]>, Vec<(usize, usize)>) {
         let mut verts: Vec<Vert> = pts.iter().map(|&p| Vert { p }).collect();
         let mut grid = Grid::default();
         grid.reset(verts.len());
         grid.insert_all(&verts);
         let n = pts.len();
         let mut segs: Vec<Seg> = (0..n).map(|i| Seg { a: i, b: (i + 1) % n }).collect();
-        let mut sc = Scratch { check_all, ..Scratch::default() };
         assert!(split_all(&mut verts, &mut grid, &mut segs, &mut Plain, &mut sc));
         (verts.iter().map(|v| v.p).collect(), segs.iter().map(|s| (s.a, s.b)).collect())
     }
@@ -586,5 +686,64 @@ mod tests {
             fired += (all.1.len() > pts.len()) as usize;
         }
         assert!(fired > 300, "only {fired} polygons split");
+    }
+
+    /// The first pass's shortcut (straight to the crossing test when every
+    /// end lies farther than EPS from the other edge's line) gives the
+    /// arrangement the full test of every pair gives (`slow_pairs`), on
+    /// input made to fall on both sides of it: vertices placed on earlier
+    /// edges at -3 to 3 EPS from them (T-junctions found by `lies_on`, and
+    /// ends just too far for it), points near a few lines (collinear
+    /// overlaps), and random polygons (plain crossings), for the all-pairs
+    /// loop and (more than [`ALL_PAIRS`] edges) the grid's pairs.
+    #[test]
+    fn pair_shortcut_changes_nothing() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut rnd = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut touched, mut crossed) = (0, 0);
+        for k in 0..900 {
+            let m = if k % 10 == 9 { 50 + (rnd() * 30.0) as usize } else { 4 + (rnd() * 24.0) as usize };
+            let mut pts: Vec<[f64; 2]> = Vec::with_capacity(m);
+            match k % 3 {
+                // Each vertex after the third on an earlier edge, offset
+                // across it by up to 3 EPS.
+                0 => {
+                    for i in 0..m {
+                        if i < 3 {
+                            pts.push([2.0 * rnd() - 1.0, 2.0 * rnd() - 1.0]);
+                            continue;
+                        }
+                        let e = (rnd() * (i - 1) as f64) as usize;
+                        let (a, b) = (pts[e], pts[e + 1]);
+                        let (t, off) = (0.05 + 0.9 * rnd(), (rnd() - 0.5) * 6.0 * EPS);
+                        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+                        let l = (dx * dx + dy * dy).sqrt();
+                        pts.push([a[0] + t * dx - off * dy / l, a[1] + t * dy + off * dx / l]);
+                    }
+                }
+                // Points within 2 EPS of one of three lines.
+                1 => {
+                    let lines: Vec<(f64, f64)> = (0..3).map(|_| (2.0 * rnd() - 1.0, 0.5 * rnd() - 0.25)).collect();
+                    for _ in 0..m {
+                        let (s, c) = lines[(rnd() * 3.0) as usize];
+                        let x = 2.0 * rnd() - 1.0;
+                        pts.push([x, s * x + c + (rnd() - 0.5) * 4.0 * EPS]);
+                    }
+                }
+                _ => pts.extend((0..m).map(|_| [2.0 * rnd() - 1.0, 2.0 * rnd() - 1.0])),
+            }
+            let fast = arrangement_with(&pts, Scratch::default());
+            let slow = arrangement_with(&pts, Scratch { slow_pairs: true, ..Scratch::default() });
+            assert_eq!(fast, slow, "polygon {k}: {pts:?}");
+            // (Split at input vertices: touching; at new ones: crossings.)
+            touched += slow.1.iter().filter(|&&(a, b)| a < m && b < m && (a + 1) % m != b).count().min(1);
+            crossed += (slow.0.len() > m) as usize;
+        }
+        assert!(touched > 200 && crossed > 300, "touched {touched}, crossed {crossed}");
     }
 }

@@ -165,18 +165,20 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
     // (Every slot is written below: what the buffer held is left in place
     // rather than cleared first, which cost a memset of it per polygon.)
     let m = out[nv] as usize;
+    // (Nor shortened afterwards: the kept edges are a prefix, read as a
+    // slice below, so the buffer keeps its high-water length and is
+    // filled again only when a polygon needs more.)
     if edges.len() < m {
         edges.resize(m, Edge { lo: 0, hi: 0, w: 0, key: 0.0 });
-    } else {
-        edges.truncate(m);
     }
     {
         let fill = &mut *inc; // reused as the per-vertex fill cursor
         fill.clear();
         fill.extend_from_slice(&out[..nv]);
         for s in segs.iter().filter(|s| s.a != s.b) {
-            let (lo, hi, w) = if lex_less(verts[s.a].p, verts[s.b].p) { (s.a, s.b, 1) } else { (s.b, s.a, -1) };
-            let (a, b) = (verts[lo].p, verts[hi].p);
+            // (Both ends read once, then ordered: not read again by id.)
+            let (pa, pb) = (verts[s.a].p, verts[s.b].p);
+            let (lo, hi, w, a, b) = if lex_less(pa, pb) { (s.a, s.b, 1, pa, pb) } else { (s.b, s.a, -1, pb, pa) };
             let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
             let l = dx + dy.abs();
             let key = if l > 0.0 { dy / l } else { 0.0 };
@@ -223,7 +225,7 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
         }
     }
     out[nv] = kept as u32;
-    edges.truncate(kept);
+    let edges = &edges[..kept];
     // Sweep order of vertices (integer keys sort faster than float compares).
     let order: &[u32] = match sorted {
         Some(k) => k,
@@ -255,14 +257,14 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
             continue;
         }
         outs.clear();
-        outs.extend((o0..o1).map(|e| Active { e, w: 0, b: false, reg: None }));
+        outs.extend(edges[o0..o1].iter().enumerate().map(|(k, x)| Active { e: (o0 + k) as u32, hi: x.hi as u32, w: 0, b: false, reg: None }));
         // The entries ending here (normally one contiguous block).
-        let first = if inc[v] > 0 { active.iter().position(|x| edges[x.e].hi == v) } else { None };
+        let first = if inc[v] > 0 { active.iter().position(|x| x.hi as usize == v) } else { None };
         let Some(lo) = first else {
             // A start (or, inconsistent, an end not found: the same).
             let pv = verts[v].p;
             let pos = active.partition_point(|x| {
-                let e = edges[x.e];
+                let e = edges[x.e as usize];
                 orient(verts[e.lo].p, verts[e.hi].p, pv) >= 0.0
             });
             let w0 = if pos > 0 { active[pos - 1].w } else { 0 };
@@ -288,8 +290,8 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
             continue;
         };
         // (All `inc` of them in one run, normally: no second scan.)
-        let run = active[lo..].iter().take_while(|x| edges[x.e].hi == v).count();
-        let hi = if run == inc[v] as usize { lo + run - 1 } else { active.iter().rposition(|x| edges[x.e].hi == v).unwrap_or(lo) };
+        let run = active[lo..].iter().take_while(|x| x.hi as usize == v).count();
+        let hi = if run == inc[v] as usize { lo + run - 1 } else { active.iter().rposition(|x| x.hi as usize == v).unwrap_or(lo) };
         let w0 = if lo > 0 { active[lo - 1].w } else { 0 };
         let top = start_outs(outs, w0, edges, rule, boundary);
         let lo_b = active[lo..=hi].iter().position(|x| x.b).map(|i| lo + i);
@@ -357,7 +359,10 @@ pub fn region(verts: &[Vert], segs: &[Seg], rule: Rule, boundary_only: bool, sor
 /// the boundary, and (if so, and the region is above it) the region
 /// between it and the next boundary entry above.
 struct Active {
-    e: usize,
+    e: u32,
+    /// The edge's right end (`edges[e].hi`), kept here: the scans for the
+    /// entries ending at a vertex read only this (no lookup per entry).
+    hi: u32,
     w: i64,
     b: bool,
     reg: Option<Reg>,
@@ -366,12 +371,13 @@ struct Active {
 /// Sets the windings of the edges leaving a vertex (`outs`, bottom to top,
 /// the face below them winding `w0`) and their boundary flags, and pushes
 /// the boundary ones. Returns the top boundary one's index, if any.
+#[inline]
 fn start_outs(outs: &mut [Active], w0: i64, edges: &[Edge], rule: Rule, boundary: &mut Vec<(usize, usize)>) -> Option<usize> {
     let mut w = w0;
     let mut inside = rule.inside(w);
     let mut top = None;
     for (j, x) in outs.iter_mut().enumerate() {
-        let e = edges[x.e];
+        let e = edges[x.e as usize];
         w += e.w;
         x.w = w;
         let above = rule.inside(w);
@@ -387,6 +393,7 @@ fn start_outs(outs: &mut [Active], w0: i64, edges: &[Edge], rule: Rule, boundary
 
 /// Starts a region at v above each boundary edge below `outs[k]` (the top
 /// boundary one) with the region above it.
+#[inline]
 fn start_regions(outs: &mut [Active], k: usize, rule: Rule, t: &mut Tri, v: usize) {
     for x in &mut outs[..k] {
         if x.b && rule.inside(x.w) {
