@@ -116,69 +116,17 @@ mod simd {
         use super::super::ONE;
         use std::arch::x86_64::*;
 
-        /// `x / d` of integer-valued lanes: the division, or with `FMA`
-        /// (round 11) the quotient by the reciprocal corrected once by its
-        /// exact residual, `q + (x - q d) / d` as `fma(fma(-q, d, x), 1/d, q)`,
-        /// which gives the division's bits on every lane these rows pass
-        /// (all i16 values over 32767, all bytes over 255: tested
-        /// exhaustively below) without the divider, whose throughput
-        /// (two 8-lane divisions a pixel pair) bounded the ACCUM row.
         #[inline(always)]
-        pub(in super::super) unsafe fn quotient<const FMA: bool>(x: __m256, d: f32) -> __m256 {
-            if FMA {
-                let r = _mm256_set1_ps(1.0 / d);
-                let q = _mm256_mul_ps(x, r);
-                _mm256_fmadd_ps(_mm256_fnmadd_ps(q, _mm256_set1_ps(d), x), r, q)
-            } else {
-                _mm256_div_ps(x, _mm256_set1_ps(d))
-            }
-        }
-
-        #[inline(always)]
-        unsafe fn from_fixed<const FMA: bool>(p: *const [i16; 4]) -> __m256 {
+        unsafe fn from_fixed(p: *const [i16; 4]) -> __m256 {
             let a = _mm_loadu_si128(p as *const __m128i);
-            quotient::<FMA>(_mm256_cvtepi32_ps(_mm256_cvtepi16_epi32(a)), ONE)
+            _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepi16_epi32(a)), _mm256_set1_ps(ONE))
         }
 
         #[inline(always)]
-        unsafe fn byte_value<const FMA: bool>(p: *const [u8; 4], value: __m256) -> __m256 {
+        unsafe fn byte_value(p: *const [u8; 4], value: __m256) -> __m256 {
             let c = _mm_loadl_epi64(p as *const __m128i);
-            _mm256_mul_ps(value, quotient::<FMA>(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(c)), 255.0))
+            _mm256_mul_ps(value, _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(c)), _mm256_set1_ps(255.0)))
         }
-
-        /// The rows below with the divisions (`avx2`) or, on a CPU with
-        /// FMA, without them (`avx2,fma`): the same bits either way.
-        macro_rules! both {
-            ($(#[$m:meta])* fn $name:ident / $fma:ident ($($arg:ident: $ty:ty),*) => $inner:ident) => {
-                $(#[$m])*
-                #[target_feature(enable = "avx2")]
-                pub unsafe fn $name($($arg: $ty),*) {
-                    $inner::<false>($($arg),*)
-                }
-                $(#[$m])*
-                #[target_feature(enable = "avx2,fma")]
-                pub unsafe fn $fma($($arg: $ty),*) {
-                    $inner::<true>($($arg),*)
-                }
-            };
-        }
-        both!(
-            /// GL_ACCUM: acc = to_fixed(from_fixed(acc) + value * c / 255).
-            fn accum_row / accum_row_fma(acc: &mut [[i16; 4]], src: &[[u8; 4]], value: f32, tail: &dyn Fn(&mut [i16; 4], [u8; 4])) => accum_in
-        );
-        both!(
-            /// GL_LOAD: acc = to_fixed(value * c / 255).
-            fn load_row / load_row_fma(acc: &mut [[i16; 4]], src: &[[u8; 4]], value: f32, tail: &dyn Fn(&mut [i16; 4], [u8; 4])) => load_in
-        );
-        both!(
-            /// GL_MULT (`mult`) or GL_ADD: acc = to_fixed(from_fixed(acc) * or + value).
-            fn mult_add_row / mult_add_row_fma(acc: &mut [[i16; 4]], mult: bool, value: f32, tail: &dyn Fn(&mut [i16; 4])) => mult_add_in
-        );
-        both!(
-            /// GL_RETURN of whole pixels (all four channels written): the
-            /// colour byte of `value * from_fixed(acc)`.
-            fn return_row / return_row_fma(acc: &[[i16; 4]], dst: &mut [[u8; 4]], value: f32, tail: &dyn Fn(&mut [u8; 4], [i16; 4])) => return_in
-        );
 
         #[inline(always)]
         unsafe fn store_fixed(p: *mut [i16; 4], v: __m256) {
@@ -193,14 +141,15 @@ mod simd {
             _mm_storeu_si128(p as *mut __m128i, packed);
         }
 
-        #[inline(always)]
-        unsafe fn accum_in<const FMA: bool>(acc: &mut [[i16; 4]], src: &[[u8; 4]], value: f32, tail: &dyn Fn(&mut [i16; 4], [u8; 4])) {
+        /// GL_ACCUM: acc = to_fixed(from_fixed(acc) + value * c / 255).
+        #[target_feature(enable = "avx2")]
+        pub unsafe fn accum_row(acc: &mut [[i16; 4]], src: &[[u8; 4]], value: f32, tail: impl Fn(&mut [i16; 4], [u8; 4])) {
             let n = acc.len().min(src.len());
             let v = _mm256_set1_ps(value);
             let (a, c) = (acc.as_mut_ptr(), src.as_ptr());
             let mut i = 0;
             while i + 2 <= n {
-                store_fixed(a.add(i), _mm256_add_ps(from_fixed::<FMA>(a.add(i)), byte_value::<FMA>(c.add(i), v)));
+                store_fixed(a.add(i), _mm256_add_ps(from_fixed(a.add(i)), byte_value(c.add(i), v)));
                 i += 2;
             }
             if i < n {
@@ -208,14 +157,15 @@ mod simd {
             }
         }
 
-        #[inline(always)]
-        unsafe fn load_in<const FMA: bool>(acc: &mut [[i16; 4]], src: &[[u8; 4]], value: f32, tail: &dyn Fn(&mut [i16; 4], [u8; 4])) {
+        /// GL_LOAD: acc = to_fixed(value * c / 255).
+        #[target_feature(enable = "avx2")]
+        pub unsafe fn load_row(acc: &mut [[i16; 4]], src: &[[u8; 4]], value: f32, tail: impl Fn(&mut [i16; 4], [u8; 4])) {
             let n = acc.len().min(src.len());
             let v = _mm256_set1_ps(value);
             let (a, c) = (acc.as_mut_ptr(), src.as_ptr());
             let mut i = 0;
             while i + 2 <= n {
-                store_fixed(a.add(i), byte_value::<FMA>(c.add(i), v));
+                store_fixed(a.add(i), byte_value(c.add(i), v));
                 i += 2;
             }
             if i < n {
@@ -223,14 +173,15 @@ mod simd {
             }
         }
 
-        #[inline(always)]
-        unsafe fn mult_add_in<const FMA: bool>(acc: &mut [[i16; 4]], mult: bool, value: f32, tail: &dyn Fn(&mut [i16; 4])) {
+        /// GL_MULT (`mult`) or GL_ADD: acc = to_fixed(from_fixed(acc) * or + value).
+        #[target_feature(enable = "avx2")]
+        pub unsafe fn mult_add_row(acc: &mut [[i16; 4]], mult: bool, value: f32, tail: impl Fn(&mut [i16; 4])) {
             let n = acc.len();
             let v = _mm256_set1_ps(value);
             let a = acc.as_mut_ptr();
             let mut i = 0;
             while i + 2 <= n {
-                let f = from_fixed::<FMA>(a.add(i));
+                let f = from_fixed(a.add(i));
                 store_fixed(a.add(i), if mult { _mm256_mul_ps(f, v) } else { _mm256_add_ps(f, v) });
                 i += 2;
             }
@@ -239,14 +190,16 @@ mod simd {
             }
         }
 
-        #[inline(always)]
-        unsafe fn return_in<const FMA: bool>(acc: &[[i16; 4]], dst: &mut [[u8; 4]], value: f32, tail: &dyn Fn(&mut [u8; 4], [i16; 4])) {
+        /// GL_RETURN of whole pixels (all four channels written): the
+        /// colour byte of `value * from_fixed(acc)`.
+        #[target_feature(enable = "avx2")]
+        pub unsafe fn return_row(acc: &[[i16; 4]], dst: &mut [[u8; 4]], value: f32, tail: impl Fn(&mut [u8; 4], [i16; 4])) {
             let n = acc.len().min(dst.len());
             let v = _mm256_set1_ps(value);
             let (a, d) = (acc.as_ptr(), dst.as_mut_ptr());
             let mut i = 0;
             while i + 2 <= n {
-                let x = _mm256_mul_ps(v, from_fixed::<FMA>(a.add(i)));
+                let x = _mm256_mul_ps(v, from_fixed(a.add(i)));
                 let x = _mm256_min_ps(_mm256_set1_ps(1.0), _mm256_max_ps(_mm256_setzero_ps(), x));
                 let x = _mm256_add_ps(_mm256_mul_ps(x, _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5));
                 let t = _mm256_cvttps_epi32(x);
@@ -265,19 +218,6 @@ mod simd {
 #[inline]
 fn avx2_for(value: f32) -> bool {
     cfg!(target_arch = "x86_64") && value.is_finite() && crate::render::fragment::simd::level() == crate::render::fragment::simd::Level::Avx2
-}
-
-/// Whether the CPU has FMA too (the AVX2 rows' `_fma` forms).
-#[inline]
-fn fma() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::arch::is_x86_feature_detected!("fma")
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
-    }
 }
 
 /// GL_RETURN's byte for an accumulation value: value * acc, clamped,
@@ -383,7 +323,6 @@ impl Context {
         let both = fb.draw_both;
         let (x0, x1) = (r.x0 as usize, r.x1 as usize);
         let lanes = avx2_for(value);
-        let fma = lanes && fma();
         // Each row is independent of the others: bands of rows in parallel.
         match op {
             GL_ACCUM | GL_LOAD => {
@@ -398,11 +337,10 @@ impl Context {
                     if lanes {
                         // Safety: AVX2 checked (`avx2_for`).
                         unsafe {
-                            match (op == GL_LOAD, fma) {
-                                (true, false) => simd::avx2::load_row(a, s, value, &load_px),
-                                (true, true) => simd::avx2::load_row_fma(a, s, value, &load_px),
-                                (false, false) => simd::avx2::accum_row(a, s, value, &accum_px),
-                                (false, true) => simd::avx2::accum_row_fma(a, s, value, &accum_px),
+                            if op == GL_LOAD {
+                                simd::avx2::load_row(a, s, value, load_px);
+                            } else {
+                                simd::avx2::accum_row(a, s, value, accum_px);
                             }
                         }
                         return;
@@ -428,13 +366,7 @@ impl Context {
                     #[cfg(target_arch = "x86_64")]
                     if lanes {
                         // Safety: AVX2 checked (`avx2_for`).
-                        unsafe {
-                            if fma {
-                                simd::avx2::mult_add_row_fma(&mut a[x0..x1], op == GL_MULT, value, &px)
-                            } else {
-                                simd::avx2::mult_add_row(&mut a[x0..x1], op == GL_MULT, value, &px)
-                            }
-                        };
+                        unsafe { simd::avx2::mult_add_row(&mut a[x0..x1], op == GL_MULT, value, px) };
                         return;
                     }
                     a[x0..x1].iter_mut().for_each(px);
@@ -454,14 +386,7 @@ impl Context {
                     #[cfg(target_arch = "x86_64")]
                     if lanes && whole {
                         // Safety: AVX2 checked (`avx2_for`).
-                        let tail = |out: &mut [u8; 4], a: [i16; 4]| *out = a.map(|a| returned(value, a));
-                        unsafe {
-                            if fma {
-                                simd::avx2::return_row_fma(acc, color, value, &tail)
-                            } else {
-                                simd::avx2::return_row(acc, color, value, &tail)
-                            }
-                        };
+                        unsafe { simd::avx2::return_row(acc, color, value, |out, a| *out = a.map(|a| returned(value, a))) };
                         return;
                     }
                     if let (Some(t), true) = (&table, whole) {
@@ -585,32 +510,16 @@ mod tests {
                 let add: [f32; 256] = std::array::from_fn(|c| value * (c as f32 / 255.0));
                 let odd = n % 2 == 1;
                 let mark = [i16::MIN + 7; 4];
-                for fma in [false, true] {
-                if fma && !is_x86_feature_detected!("fma") {
-                    continue;
-                }
                 // ACCUM
                 let mut got = acc.clone();
-                unsafe {
-                    if fma {
-                        simd::avx2::accum_row_fma(&mut got, &src, value, &|a, _| *a = mark)
-                    } else {
-                        simd::avx2::accum_row(&mut got, &src, value, &|a, _| *a = mark)
-                    }
-                };
+                unsafe { simd::avx2::accum_row(&mut got, &src, value, |a, _| *a = mark) };
                 for i in 0..n {
                     let want = if odd && i == n - 1 { mark } else { accum_pixel(acc[i], src[i].map(|v| add[v as usize])) };
                     assert_eq!(got[i], want, "ACCUM value {value} acc {:?} src {:?}", acc[i], src[i]);
                 }
                 // LOAD
                 let mut got = acc.clone();
-                unsafe {
-                    if fma {
-                        simd::avx2::load_row_fma(&mut got, &src, value, &|a, _| *a = mark)
-                    } else {
-                        simd::avx2::load_row(&mut got, &src, value, &|a, _| *a = mark)
-                    }
-                };
+                unsafe { simd::avx2::load_row(&mut got, &src, value, |a, _| *a = mark) };
                 for i in 0..n {
                     let want = if odd && i == n - 1 { mark } else { src[i].map(|v| to_fixed(value * (v as f32 / 255.0))) };
                     assert_eq!(got[i], want, "LOAD value {value} src {:?}", src[i]);
@@ -618,13 +527,7 @@ mod tests {
                 // MULT and ADD
                 for mult in [true, false] {
                     let mut got = acc.clone();
-                    unsafe {
-                        if fma {
-                            simd::avx2::mult_add_row_fma(&mut got, mult, value, &|a| *a = mark)
-                        } else {
-                            simd::avx2::mult_add_row(&mut got, mult, value, &|a| *a = mark)
-                        }
-                    };
+                    unsafe { simd::avx2::mult_add_row(&mut got, mult, value, |a| *a = mark) };
                     for i in 0..n {
                         let want = if odd && i == n - 1 { mark } else { acc[i].map(|a| to_fixed(if mult { from_fixed(a) * value } else { from_fixed(a) + value })) };
                         assert_eq!(got[i], want, "mult {mult} value {value} acc {:?}", acc[i]);
@@ -632,42 +535,11 @@ mod tests {
                 }
                 // RETURN
                 let mut got = src.clone();
-                unsafe {
-                    if fma {
-                        simd::avx2::return_row_fma(&acc, &mut got, value, &|o, _| *o = [7; 4])
-                    } else {
-                        simd::avx2::return_row(&acc, &mut got, value, &|o, _| *o = [7; 4])
-                    }
-                };
+                unsafe { simd::avx2::return_row(&acc, &mut got, value, |o, _| *o = [7; 4]) };
                 for i in 0..n {
                     let want = if odd && i == n - 1 { [7; 4] } else { acc[i].map(|a| returned(value, a)) };
-                    assert_eq!(got[i], want, "RETURN value {value} acc {:?} fma {fma}", acc[i]);
+                    assert_eq!(got[i], want, "RETURN value {value} acc {:?}", acc[i]);
                 }
-                }
-            }
-        }
-    }
-
-    /// The FMA quotient gives the division's bits for every i16 over
-    /// 32767 and every byte over 255 (the only quotients the rows take).
-    #[test]
-    #[cfg(target_arch = "x86_64")]
-    fn fma_quotient_is_the_division() {
-        use std::arch::x86_64::*;
-        if !is_x86_feature_detected!("avx2") || !is_x86_feature_detected!("fma") {
-            return;
-        }
-        #[target_feature(enable = "avx2,fma")]
-        unsafe fn q(x: [f32; 8], d: f32) -> [f32; 8] {
-            let mut out = [0.0f32; 8];
-            _mm256_storeu_ps(out.as_mut_ptr(), simd::avx2::quotient::<true>(_mm256_loadu_ps(x.as_ptr()), d));
-            out
-        }
-        let cases: Vec<(f32, f32)> = (i16::MIN..=i16::MAX).map(|i| (i as f32, ONE)).chain((0..=255).map(|c| (c as f32, 255.0))).collect();
-        for chunk in cases.chunks(8) {
-            for &(x, d) in chunk {
-                let got = unsafe { q([x; 8], d) }[0];
-                assert_eq!(got.to_bits(), (x / d).to_bits(), "{x} / {d}");
             }
         }
     }
