@@ -71,7 +71,9 @@
 //! yet shown to pay; the pool's hand-off no longer costs a system call
 //! while a worker is awake). Whole-frame operations outside the batch
 //! (glAccum, large glClear and glReadPixels) are cut into bands of rows
-//! by `pool::for_pieces` and `gl::accum`.
+//! by `pool::for_pieces` and `gl::accum`; a large glClear made while
+//! binning is instead recorded for the next flight, which writes each
+//! band's rows just before drawing that band ([`defer_clear`], round 11).
 
 use super::fragment::fast::Kernel;
 use super::fragment::{Buffers, SpanPixels};
