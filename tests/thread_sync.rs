@@ -528,3 +528,123 @@ fn frames_reuse_their_flights() {
         assert!(made.iter().all(|&m| m <= 2), "at most two flights besides the batch filled: {made:?}");
     }
 }
+
+/// Clears large enough to be recorded for the workers (round 11:
+/// `tile::defer_clear`, written band by band by the next flight): followed
+/// by triangles, by nothing before a read-back, by another recorded clear,
+/// by glDrawPixels, glCopyPixels and glAccum; through colour and stencil
+/// masks, scissored, depth only; with an occlusion query across one.
+/// `limits` = (batch size, submit work, parallel work): tiny batches handed
+/// to the workers at once, or batches too small for the workers (then only
+/// the clear's flight goes to them).
+unsafe fn deferred_clear_scene(threads: usize, limits: (usize, u64, u64)) -> Vec<Vec<u8>> {
+    let mut buf = vec![0u8; (W3 * H3 * 4) as usize];
+    let ctx = context_of(threads, &mut buf, W3, H3);
+    softgl::render::tile::set_batch_limits(&(*ctx).gl.derived.render, limits.0, limits.1, limits.2);
+    let mut r = Rng(0xc1ea5);
+    let mut out = Vec::new();
+    let read_depth_stencil = |out: &mut Vec<Vec<u8>>| {
+        let mut d = vec![0u8; (W3 * H3 * 4) as usize];
+        glReadPixels(0, 0, W3, H3, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, d.as_mut_ptr() as *mut c_void);
+        out.push(d);
+        let mut s = vec![0u8; (W3 * H3) as usize];
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, W3, H3, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s.as_mut_ptr() as *mut c_void);
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        out.push(s);
+    };
+    // A full clear, then nothing but a read-back.
+    glClearColor(0.1, 0.6, 0.3, 0.8);
+    glClearDepth(0.75);
+    glClearStencil(0x21);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    read_of(&mut out, W3, H3);
+    read_depth_stencil(&mut out);
+    // A full clear, triangles (some behind the cleared depth) counted by a query.
+    glClearColor(0.5, 0.2, 0.7, 0.4);
+    glClearDepth(0.6);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    let mut q = 0u32;
+    glGenQueries(1, &mut q);
+    glBeginQuery(GL_SAMPLES_PASSED, q);
+    triangles(&mut r, 50);
+    glEndQuery(GL_SAMPLES_PASSED);
+    let mut passed = 0u32;
+    glGetQueryObjectuiv(q, GL_QUERY_RESULT, &mut passed);
+    out.push(passed.to_le_bytes().to_vec());
+    read_of(&mut out, W3, H3);
+    read_depth_stencil(&mut out);
+    // Two recorded clears in a row (colour masked, then depth and stencil
+    // through a stencil mask), then triangles.
+    glColorMask(0, 1, 1, 0);
+    glClearColor(0.95, 0.05, 0.45, 0.15);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glColorMask(1, 1, 1, 1);
+    glStencilMask(0xa5);
+    glClearStencil(0xff);
+    glClearDepth(0.9);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glStencilMask(0xff);
+    triangles(&mut r, 30);
+    read_of(&mut out, W3, H3);
+    read_depth_stencil(&mut out);
+    // Scissored (still large enough to be recorded), then a few triangles.
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(17, 11, 600, 450);
+    glClearColor(0.0, 0.3, 0.9, 1.0);
+    glClearDepth(0.2);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    triangles(&mut r, 3);
+    read_of(&mut out, W3, H3);
+    read_depth_stencil(&mut out);
+    // Depth only, then glDrawPixels depth-tested against it.
+    glClearDepth(0.45);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    let img: Vec<u8> = (0..300 * 200 * 4).map(|_| r.next() as u8).collect();
+    glWindowPos3f(100.0, 80.0, 0.3);
+    glDrawPixels(300, 200, GL_RGBA, GL_UNSIGNED_BYTE, img.as_ptr() as *const c_void);
+    read_of(&mut out, W3, H3);
+    // Colour clear, then glCopyPixels of part of it over triangles drawn after.
+    glClearColor(0.7, 0.7, 0.1, 0.3);
+    glClear(GL_COLOR_BUFFER_BIT);
+    triangles(&mut r, 20);
+    glDepthFunc(GL_ALWAYS);
+    glWindowPos3f(200.0, 150.0, 0.5);
+    glCopyPixels(0, 0, 300, 250, GL_COLOR);
+    glDepthFunc(GL_LESS);
+    read_of(&mut out, W3, H3);
+    // Colour clear, triangles, accumulated; clear again, RETURN.
+    glClearColor(0.2, 0.2, 0.2, 0.2);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    triangles(&mut r, 20);
+    glAccum(GL_LOAD, 0.5);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    triangles(&mut r, 20);
+    glAccum(GL_ACCUM, 0.5);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glAccum(GL_RETURN, 1.0);
+    read_of(&mut out, W3, H3);
+    // A clear left for the context's end.
+    glClear(GL_COLOR_BUFFER_BIT);
+    OSMesaDestroyContext(ctx);
+    out
+}
+
+#[test]
+fn deferred_clears_do_not_depend_on_thread_count() {
+    for limits in [(7, 0, 0), (32 * 1024, 1 << 40, 1 << 40)] {
+        let one = unsafe { deferred_clear_scene(1, limits) };
+        for (k, w) in one.windows(2).enumerate() {
+            assert!(w[0] != w[1], "step {} changes something", k + 1);
+        }
+        for threads in [2, 3] {
+            let many = unsafe { deferred_clear_scene(threads, limits) };
+            for (k, (a, b)) in one.iter().zip(&many).enumerate() {
+                let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
+                assert_eq!(diff, 0, "limits {limits:?} read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
+            }
+        }
+    }
+}

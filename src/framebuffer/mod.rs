@@ -21,6 +21,7 @@
 //! Allocation is fallible: a surface too large for memory is reported, never
 //! aborts the program.
 
+pub mod clear;
 pub mod color;
 pub mod plane;
 pub mod shared;

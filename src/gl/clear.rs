@@ -2,9 +2,15 @@
 //! clear values inside the scissor box (the viewport does not apply),
 //! through the colour, depth and stencil write masks. Dithering does not
 //! change the 8-bit result.
+//!
+//! Large clears are written in bands of rows by the rasterizer's threads;
+//! while they bin triangles, a large clear is instead recorded for the
+//! next flight of triangles, whose workers write each band's rows just
+//! before they draw into it (round 11: `render::tile::defer_clear`).
 
 use super::context::Context;
 use super::enums::*;
+use crate::framebuffer::clear::{self as fill, Clear};
 use crate::framebuffer::Framebuffer;
 use crate::render::fragment::{color_to_u8, depth_to_fixed};
 use glam::Vec4;
@@ -30,16 +36,8 @@ type Band<'a> = Box<dyn FnOnce() + Send + 'a>;
 /// call, so the result does not depend on the thread count.
 fn rows<'a, T: Send + 'a>(bands: &mut Vec<Band<'a>>, threads: usize, buf: &'a mut [T], width: usize, r: crate::framebuffer::Rect, f: impl Fn(&mut [T]) + Copy + Send + 'a) {
     let (x0, x1, y0, y1) = (r.x0 as usize, r.x1 as usize, r.y0 as usize, r.y1 as usize);
-    let each = move |band: &mut [T]| {
-        if x0 == 0 && x1 == width {
-            // Whole rows: the band is one contiguous run.
-            f(band);
-        } else {
-            for row in band.chunks_mut(width) {
-                f(&mut row[x0..x1]);
-            }
-        }
-    };
+    // Whole rows: the band is one contiguous run.
+    let each = move |band: &mut [T]| fill::each_row(band, width, x0, x1, f);
     let buf = &mut buf[y0 * width..y1 * width];
     if threads <= 1 || (x1 - x0) * (y1 - y0) < PARALLEL_PIXELS {
         return each(buf);
@@ -80,10 +78,8 @@ impl Context {
         self.sync_draw_buffer();
         let threads = self.derived.render.threads;
         let (has_depth, has_stencil) = (self.fb.has_depth(), self.fb.has_stencil());
-        let Framebuffer { width: w, config, color, other_color, draw_both, depth, stencil, .. } = &mut self.fb;
-        let (w, config) = (*w, *config);
-        let mut bands: Vec<Band> = Vec::new();
-        let accum = mask & GL_ACCUM_BUFFER_BIT != 0;
+        let config = self.fb.config;
+        let mut c = Clear { rect: r, color: None, depth: None, stencil: None };
         if mask & GL_COLOR_BUFFER_BIT != 0 {
             let mut value = color_to_u8(Vec4::from_array(self.color_buffer.clear));
             let mut m = if self.color_buffer.draw_buffer == 0 { [false; 4] } else { self.color_buffer.write_mask };
@@ -93,45 +89,44 @@ impl Context {
                 value[3] = 255;
                 m[3] = m[0] || m[1] || m[2];
             }
-            // The draw buffers (`Framebuffer::draw_colors`), split borrows.
-            let draws = std::iter::once(color).chain((*draw_both).then_some(other_color));
-            for color in draws {
-                if m == [true; 4] {
-                    rows(&mut bands, threads, &mut color[..], w, r, move |row| row.fill(value));
-                } else if m != [false; 4] {
-                    rows(&mut bands, threads, &mut color[..], w, r, move |row| {
-                        for px in row {
-                            for ch in 0..4 {
-                                if m[ch] {
-                                    px[ch] = value[ch];
-                                }
-                            }
-                        }
-                    });
-                }
-            }
+            c.color = (m != [false; 4]).then_some((value, m));
         }
         if mask & GL_DEPTH_BUFFER_BIT != 0 && has_depth && self.depth.write_mask {
-            let value = depth_to_fixed(self.depth.clear);
-            rows(&mut bands, threads, &mut depth[..], w, r, move |row| row.fill(value));
+            c.depth = Some(depth_to_fixed(self.depth.clear));
         }
         if mask & GL_STENCIL_BUFFER_BIT != 0 && has_stencil {
             let bits = config.stencil_bits as u32;
             let full = (1u32 << bits) - 1;
             let value = (self.stencil.clear as u32 & full) as u8;
             let m = (self.stencil.write_mask & full) as u8;
-            if m == full as u8 {
-                rows(&mut bands, threads, &mut stencil[..], w, r, move |row| row.fill(value));
-            } else if m != 0 {
-                rows(&mut bands, threads, &mut stencil[..], w, r, move |row| {
-                    for s in row {
-                        *s = (*s & !m) | (value & m);
-                    }
-                });
-            }
+            // Every bit the buffer has: a plain fill.
+            c.stencil = (m != 0).then_some((value, if m == full as u8 { u8::MAX } else { m }));
         }
-        run_bands(threads, bands);
-        if accum {
+        let pixels = (r.x1 - r.x0) as usize * (r.y1 - r.y0) as usize;
+        let writes = c.color.is_some() || c.depth.is_some() || c.stencil.is_some();
+        if writes && pixels >= PARALLEL_PIXELS && !self.fb.draw_both && crate::render::tile::binning(&self.derived.render) {
+            // Round 11: written by the workers band by band, each band
+            // just before they draw into it (see `tile::defer_clear`).
+            crate::render::tile::defer_clear(&self.derived.render, &mut self.fb, c);
+        } else if writes {
+            let Framebuffer { width: w, color, other_color, draw_both, depth, stencil, .. } = &mut self.fb;
+            let w = *w;
+            let mut bands: Vec<Band> = Vec::new();
+            if let Some((value, m)) = c.color {
+                // The draw buffers (`Framebuffer::draw_colors`), split borrows.
+                for color in std::iter::once(color).chain((*draw_both).then_some(other_color)) {
+                    rows(&mut bands, threads, &mut color[..], w, r, move |row| fill::color_row(row, value, m));
+                }
+            }
+            if let Some(value) = c.depth {
+                rows(&mut bands, threads, &mut depth[..], w, r, move |row| row.fill(value));
+            }
+            if let Some((value, m)) = c.stencil {
+                rows(&mut bands, threads, &mut stencil[..], w, r, move |row| fill::stencil_row(row, value, m));
+            }
+            run_bands(threads, bands);
+        }
+        if mask & GL_ACCUM_BUFFER_BIT != 0 {
             self.clear_accum_buffer(r);
         }
     }

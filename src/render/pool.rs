@@ -175,6 +175,16 @@ fn worker(p: &'static Pool) {
     }
 }
 
+/// Starts the pool's `threads - 1` workers now if they are not running
+/// yet (round 11: called when a context is first made current, so that
+/// the threads exist, and have been placed on a core, before the first
+/// frame needs them). Nothing with one thread.
+pub fn warm(threads: usize) {
+    if threads > 1 {
+        pool(threads - 1);
+    }
+}
+
 /// A job [`start`] posted (or kept for the calling thread alone), to be
 /// handed to [`finish`].
 #[must_use]

@@ -71,7 +71,9 @@
 //! yet shown to pay; the pool's hand-off no longer costs a system call
 //! while a worker is awake). Whole-frame operations outside the batch
 //! (glAccum, large glClear and glReadPixels) are cut into bands of rows
-//! by `pool::for_pieces` and `gl::accum`.
+//! by `pool::for_pieces` and `gl::accum`; a large glClear made while
+//! binning is instead recorded for the next flight, which writes each
+//! band's rows just before drawing that band ([`defer_clear`], round 11).
 
 use super::fragment::fast::Kernel;
 use super::fragment::{Buffers, SpanPixels};
@@ -84,6 +86,7 @@ use super::setup::{planes_of, Attributes, TriangleSetup};
 use super::shade_state::ShadeState;
 use super::texture::MAX_UNITS;
 use super::RenderState;
+use crate::framebuffer::clear::Clear;
 use crate::framebuffer::{Framebuffer, Rect};
 use glam::Vec4;
 use std::cell::UnsafeCell;
@@ -297,6 +300,9 @@ impl std::fmt::Debug for Batch {
 pub struct BatchCell {
     pending: AtomicBool,
     batch: UnsafeCell<Batch>,
+    /// A glClear recorded for the next flight ([`defer_clear`]); touched
+    /// only by the context's thread, as `batch`.
+    clear: UnsafeCell<Option<Clear>>,
     flights: Mutex<Flights>,
     /// A batch is in flight (`Flights::current`), read without the lock.
     flying: AtomicBool,
@@ -324,6 +330,7 @@ impl Default for BatchCell {
         BatchCell {
             pending: AtomicBool::new(false),
             batch: UnsafeCell::default(),
+            clear: UnsafeCell::new(None),
             flights: Mutex::default(),
             flying: AtomicBool::new(false),
             left: Arc::default(),
@@ -553,6 +560,27 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
     }
 }
 
+/// Records glClear's writes `c` for the workers instead of writing them
+/// now (round 11): the next flight (the batch of triangles drawn after
+/// the clear, or an empty one at the next sync point) clears each band's
+/// rows just before it draws that band, so the clear's writes are still
+/// in cache when the band's fragments read and write the same pixels, the
+/// calling thread goes on with the front end meanwhile, and nothing
+/// waits for a separate hand-off. Only while binning (more than one
+/// thread): the 1-thread path writes clears at once. Anything binned
+/// before is shaded first (glClear syncs anyway), so the clear keeps its
+/// place in GL's order.
+pub fn defer_clear(rs: &RenderState, fb: &mut Framebuffer, c: Clear) {
+    let cell = &rs.batch;
+    // Safety: the context's thread (as `filling`).
+    if !unsafe { filling(cell) }.tris.is_empty() || unsafe { (*cell.clear.get()).is_some() } || cell.flying.load(Ordering::Relaxed) {
+        flush(rs, fb);
+    }
+    // Safety: as above; no flight holds this slot (flights take it).
+    unsafe { *cell.clear.get() = Some(c) };
+    cell.pending.store(true, Ordering::Relaxed);
+}
+
 /// Shades whatever is binned before the caller touches the framebuffer
 /// itself (nothing to do with one thread: nothing is ever binned then).
 #[inline]
@@ -614,6 +642,9 @@ impl RawPixels {
 /// command that reads, writes, resizes or frees them calls [`sync`] first.
 struct Flight {
     batch: Batch,
+    /// A glClear made before the batch's triangles: each band's rows are
+    /// cleared just before its triangles are drawn ([`defer_clear`]).
+    first_clear: Option<Clear>,
     /// Per band, the triangles touching it, in submission order. Filled
     /// by the first thread to run the flight (`bin_once`), not by the
     /// calling thread at [`launch`] (round 8: listing is about 58
@@ -650,6 +681,7 @@ impl Flight {
     fn empty(left: Arc<AtomicUsize>) -> Box<Flight> {
         Box::new(Flight {
             batch: Batch::default(),
+            first_clear: None,
             bins: UnsafeCell::new(Vec::new()),
             binned: AtomicU8::new(UNBINNED),
             rows: BAND,
@@ -725,6 +757,7 @@ impl Flight {
         b.points.clear();
         b.states.clear();
         b.work = 0;
+        self.first_clear = None;
         for bin in self.bins.get_mut() {
             bin.clear();
         }
@@ -745,6 +778,11 @@ impl pool::Work for Flight {
             }
             let y = k * self.rows;
             let tile = Rect { x0: 0, y0: y as i32, x1: self.surface.x1, y1: (y + self.rows) as i32 }.intersect(self.surface);
+            if let Some(c) = &self.first_clear {
+                // Safety: the band's rows, which no other thread holds.
+                let px = unsafe { raw.span(y, 0, (tile.y1 as usize - y) * raw.width) };
+                c.rows(raw.width, y, tile.y1 as usize, px.color, px.depth, px.stencil);
+            }
             for &i in &bins[k] {
                 let t = &b.tris[i as usize];
                 let r = t.bbox.intersect(tile);
@@ -797,7 +835,9 @@ fn take_batch(cell: &SharedBatch, fl: &mut Flights) -> Option<Box<Flight>> {
     // Safety: take_batch runs on the context's thread (`submit`, `flush`).
     let b = unsafe { filling(cell) };
     cell.pending.store(false, Ordering::Relaxed);
-    if b.tris.is_empty() {
+    // Safety: as `filling`.
+    let clear = unsafe { (*cell.clear.get()).take() };
+    if b.tris.is_empty() && clear.is_none() {
         return None;
     }
     let mut flight = match fl.spare.pop() {
@@ -809,6 +849,7 @@ fn take_batch(cell: &SharedBatch, fl: &mut Flights) -> Option<Box<Flight>> {
     };
     flight.batch.reserve_like(b);
     std::mem::swap(&mut flight.batch, b);
+    flight.first_clear = clear;
     Some(flight)
 }
 
@@ -828,7 +869,11 @@ pub fn submit(rs: &RenderState, fb: &mut Framebuffer) {
 /// Starts `flight` on the workers (or shades it now if it is small).
 fn launch(rs: &RenderState, fl: &mut Flights, mut flight: Box<Flight>, fb: &mut Framebuffer) {
     let b = &flight.batch;
-    if rs.threads <= 1 || b.work < rs.batch.parallel_work.load(Ordering::Relaxed) {
+    // A recorded clear is a whole-frame's work: always on the threads.
+    if rs.threads <= 1 || (b.work < rs.batch.parallel_work.load(Ordering::Relaxed) && flight.first_clear.is_none()) {
+        if let Some(c) = flight.first_clear.take() {
+            c.rows(fb.width, 0, fb.height, &mut fb.color[..], &mut fb.depth[..], &mut fb.stencil[..]);
+        }
         shade_here(&flight.batch, fb);
         flight.clear();
         fl.spare.push(flight);

@@ -91,6 +91,12 @@ pub fn current() -> *mut Context {
 
 pub fn set_current(ctx: *mut Context) {
     slot::set(ctx);
+    if !ctx.is_null() {
+        // Round 11: the rasterizer's workers start with the first current
+        // context, not at the first large clear or batch, so the
+        // scheduler has placed them on a core before frame 0.
+        crate::render::pool::warm(crate::render::tile::threads_default());
+    }
 }
 
 #[cfg(test)]
