@@ -37,6 +37,12 @@ unsafe fn context(threads: usize, buf: &mut [u8]) -> *mut OsContext {
 
 /// [`context`] of `w` x `h` pixels.
 unsafe fn context_of(threads: usize, buf: &mut [u8], w: i32, h: i32) -> *mut OsContext {
+    // The pool's workers start with the first current context, as many as
+    // the default thread count asks for (one on a 2-core machine); these
+    // tests draw with up to 3 threads, so they ask for 3 before any
+    // context exists (every test here comes through this function).
+    std::env::set_var("SOFTGL_THREADS", "3");
+    assert!(softgl::render::tile::threads_default() >= 3, "the pool would have fewer workers than the tests use");
     let ctx = OSMesaCreateContextExt(GL_RGBA, 24, 8, 16, std::ptr::null_mut());
     assert!(!ctx.is_null());
     assert_eq!(OSMesaMakeCurrent(ctx, buf.as_mut_ptr() as *mut c_void, GL_UNSIGNED_BYTE, w, h), 1);
@@ -646,5 +652,24 @@ fn deferred_clears_do_not_depend_on_thread_count() {
                 assert_eq!(diff, 0, "limits {limits:?} read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
             }
         }
+    }
+}
+
+/// The tests above draw with up to 3 rasterizer threads; the pool must
+/// have the 2 workers that takes, or they would test fewer interleavings
+/// than they claim (the pool is sized once, at the first current context).
+#[cfg(target_os = "linux")]
+#[test]
+fn the_pool_has_the_workers_these_tests_use() {
+    let mut buf = vec![0u8; (W * H * 4) as usize];
+    unsafe {
+        let ctx = context(3, &mut buf);
+        let workers = std::fs::read_dir("/proc/self/task")
+            .expect("/proc/self/task")
+            .filter_map(|t| std::fs::read_to_string(t.ok()?.path().join("comm")).ok())
+            .filter(|name| name.starts_with("softgl-raster"))
+            .count();
+        assert!(workers >= 2, "{workers} rasterizer workers");
+        OSMesaDestroyContext(ctx);
     }
 }
