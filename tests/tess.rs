@@ -970,3 +970,59 @@ fn planar_hand_off_covers_exactly() {
         }
     }
 }
+
+/// Fuzz run 15's finding (2026-11-27): under huge coordinates (2.2e13
+/// beside a 0..15 grid) this input merges into 5 vertices carrying 52
+/// segments, and two vertices on one segment at the same parameter sorted
+/// as v, w, v, ...: the pieces between them were split again by each later
+/// pass, 52 -> 199 -> 3,647 -> millions of pieces (8 GiB). Replayed with
+/// the fuzz target's call sequence ("sloppy": odd contours without
+/// gluTessBeginContour, every third without gluTessEndContour). It must
+/// finish with a bounded output in triangles.
+#[test]
+fn fuzz_run_15_repeated_split_vertices_stay_bounded() {
+    let contours: Vec<Vec<[f64; 3]>> = vec![
+        vec![[0.0, 0.0, 0.0], [10.0, 10.0, 1.0], [10.0, 0.0, 0.0], [3.0, 12.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, 0.0]],
+        vec![],
+        vec![[14.0, 15.0, 0.0], [1.0, 5.0, 0.0], [2e-05, 0.0, 0.0], [3.0, 6.0, 0.0]],
+        vec![[3.00018310546875, 6.0000000000000036, 0.0], [15.0, 15.0, 0.0], [14.0, 0.0, 0.0], [0.0, 0.0, 0.0]],
+        vec![[7.0, 11.0, 0.0], [7.0, 2.0, 0.0], [8.0, 11.0, 0.0], [14.0, 2.0, 0.0], [3e-150, 1.2e-149, 0.0], [0.0, 0.0, 0.0], [1.0, 3.0, 0.0], [1.0000000000000038, 3.000732421875, 0.0], [1.0, 9.0, 2.0], [1.0, 9.0, 2.0], [1.0, 9.0, 2.0], [0.0, 3.0, 0.0], [6.103515625e-05, 3.0000000000000018, 0.0], [15.0, 15.0, 0.0], [14.0, 0.0, 0.0], [6.0, 8.0, 0.0], [9.0, 15.0, 0.0], [5.0, 3.0, 0.0], [15.0, 1.0, 0.0], [7.0, 2.0, 0.0], [14.0, 15.0, 0.0], [15.0, 15.0, 1.0], [3.0000000000000004e-05, 6.000000000000001e-05, 0.0], [3.000000000000007e-05, 6.00596046447754e-05, 0.0], [8.0, 2.0, 0.0], [15.0, 15.0, 0.0], [3.0, 3.0, 0.0], [9.0, 12.0, 0.0], [3.0, 12.0, 0.0], [1.0, 0.0, 0.0], [3.0, 2.0, 0.0], [0.0, 3.0, 0.0], [6.103515625e-05, 3.0000000000000018, 0.0], [15.0, 15.0, 0.0], [14.0, 0.0, 0.0], [6.0, 8.0, 0.0], [9.0, 15.0, 0.0], [5.0, 3.0, 0.0], [15.0, 1.0, 0.0]],
+        vec![],
+        vec![[14.0, 11.0, 0.0], [7.0, 2.0, 0.0], [14.0, 15.0, 0.0], [15.0, 15.0, 1.0], [3.0000000000000004e-05, 6.000000000000001e-05, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [2.0009765625, 4.000000000000006, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [1.0, 0.0, 0.0], [7.0, 8.0, 0.0], [22274812035650.258, 156842099844.51764, 0.0], [2.0, 4.0, 0.0], [2.0, 4.0, 0.0], [2.0000000000000124, 4.000000238418579, 0.0], [2.0, 4.0, 0.0], [10.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0000000000000064, 3.814697265625e-06, 0.0], [3.0, 3.0, 0.0], [3.000091552734375, 3.0003662109375, 0.0]],
+        vec![[8.0, 3.0, 0.0], [7.0, 8.0, 0.0], [0.0, 0.0, 0.0], [9.0, 3.0, 0.0]],
+        vec![],
+        vec![],
+        vec![[8.0, 3.0, 0.0], [14.0, 0.0, 0.0], [14.00042724609375, 0.000244140625, 0.0], [8.0, 2.0, 0.0], [1.0, 5.0, 0.0], [1.0000000000004547, 5.000000000000013, 0.0], [3.0, 12.0, 0.0], [3.0, 0.0, 1.0], [3.0, 12.0, 0.0], [6.0, 12.0, 0.0], [1.0, 0.0, 0.0], [1.0009765625, 1.5e-323, 0.0]],
+    ];
+    OUT.with(|x| *x.borrow_mut() = Out { combine_out_was_null: true, ..Default::default() });
+    unsafe {
+        let t = gluNewTess();
+        gluTessCallback(t, GLU_TESS_BEGIN, proc_of(cb_begin as extern "system" fn(u32)));
+        gluTessCallback(t, GLU_TESS_VERTEX, proc_of(cb_vertex as extern "system" fn(*mut c_void)));
+        gluTessCallback(t, GLU_TESS_END, proc_of(cb_end as extern "system" fn()));
+        gluTessCallback(t, GLU_TESS_ERROR, proc_of(cb_error as extern "system" fn(u32)));
+        gluTessCallback(t, GLU_TESS_EDGE_FLAG, proc_of(cb_flag as extern "system" fn(u8)));
+        gluTessCallback(t, GLU_TESS_COMBINE, proc_of(cb_combine as extern "system" fn(*const f64, *const *mut c_void, *const f32, *mut *mut c_void)));
+        gluTessProperty(t, GLU_TESS_WINDING_RULE, GLU_TESS_WINDING_ODD as f64);
+        let mut store = contours.clone();
+        gluTessBeginPolygon(t, std::ptr::null_mut());
+        for (ci, c) in store.iter_mut().enumerate() {
+            if ci % 2 == 0 {
+                gluTessBeginContour(t);
+            }
+            for v in c.iter_mut() {
+                gluTessVertex(t, v.as_mut_ptr(), v as *mut [f64; 3] as *mut c_void);
+            }
+            if ci % 3 != 2 {
+                gluTessEndContour(t);
+            }
+        }
+        gluTessEndPolygon(t);
+        gluDeleteTess(t);
+    }
+    let o = OUT.with(|x| std::mem::take(&mut *x.borrow_mut()));
+    let tris: usize = o.prims.iter().map(|p| p.len()).sum();
+    assert_eq!(tris % 3, 0);
+    assert!(o.begins.iter().all(|&m| m == 0x0004), "{:?}", o.begins);
+    assert!(tris / 3 < 1_000 && o.combines < 1_000, "{} triangles, {} COMBINE calls", tris / 3, o.combines);
+}

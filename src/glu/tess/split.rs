@@ -56,6 +56,10 @@ pub struct Scratch {
     inc: Vec<(u32, u32)>,
     pieces: Vec<Piece>,
     pe: Vec<PairEdge>,
+    /// Per vertex: the id of the last long segment (more than
+    /// [`SHORT_GROUP`] split points) whose chain went through it.
+    seen: Vec<u32>,
+    seen_id: u32,
 }
 
 impl Scratch {
@@ -145,7 +149,7 @@ pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, co
         let clean = &mut sc.clean;
         for (i, s) in segs.iter().enumerate() {
             let g = &mut sc.by_seg[sc.seg_start[i] as usize..sc.seg_start[i + 1] as usize];
-            if g.len() > 16 {
+            if g.len() > SHORT_GROUP {
                 g.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
             } else {
                 // (A plain comparison: the parameters are never NaN or
@@ -170,9 +174,33 @@ pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, co
             let (dx, dy) = (pb[0] - pa[0], pb[1] - pa[1]);
             let lim = 4.0 * SHORT * SHORT / (dx * dx + dy * dy);
             let (mut cur, mut tc) = (s.a, 0.0);
-            for &(t, v) in g.iter() {
+            // Each vertex once per chain: two vertices at one parameter
+            // (within EPS of the segment, on either side of it) may sort
+            // as v, w, v, ...; pieces v-w-v there would be split again by
+            // the next pass, and again, growing without bound (fuzz run
+            // 15: 52 segments on 5 vertices made 3,647 pieces, then
+            // millions). The later occurrences are dropped: the chain
+            // still runs from s.a through every vertex on s to s.b
+            // (about 2 % of the self-intersecting set's instructions).
+            let long = g.len() > SHORT_GROUP;
+            if long {
+                sc.seen_id = sc.seen_id.wrapping_add(1);
+                if sc.seen_id == 0 || sc.seen.len() < verts.len() {
+                    sc.seen.clear();
+                    sc.seen.resize(verts.len(), 0);
+                    sc.seen_id = 1;
+                }
+            }
+            for (k, &(t, v)) in g.iter().enumerate() {
                 let v = v as usize;
-                if v != cur && v != s.b {
+                // (A repeat needs three points, v, w, v: `cur` catches a
+                // consecutive one.)
+                let repeated = if long {
+                    std::mem::replace(&mut sc.seen[v], sc.seen_id) == sc.seen_id
+                } else {
+                    k >= 2 && g[..k - 1].iter().any(|&(_, u)| u as usize == v)
+                };
+                if v != cur && v != s.b && v != s.a && !repeated {
                     sc.out.push(Seg { a: cur, b: v });
                     if !((t - tc) * (t - tc) >= lim) {
                         clean[cur] = false;
@@ -211,6 +239,9 @@ pub fn split_all(verts: &mut Vec<Vert>, grid: &mut Grid, segs: &mut Vec<Seg>, co
 /// pass's own tests would return nothing there, so skipping them changes
 /// no output.
 const CLEAR_SIN: f64 = 1.0e-3;
+/// A segment's split points up to this many are sorted and checked for
+/// repeats in place; more, with `sort_unstable` and `Scratch::seen`.
+const SHORT_GROUP: usize = 16;
 const SHORT: f64 = 1.0 / (1u64 << 20) as f64;
 
 /// A later pass: the pieces meeting at each vertex the last pass split at,
