@@ -664,6 +664,16 @@ mod tests {
         (verts.iter().map(|v| v.p).collect(), segs.iter().map(|s| (s.a, s.b)).collect())
     }
 
+    /// A xorshift64 generator of uniform values in [0, 1) (53 bits).
+    fn unit_rng(mut seed: u64) -> impl FnMut() -> f64 {
+        move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
     /// Skipping the later pass at clean crossings gives the arrangement
     /// running it everywhere gives, on input made to make it fire: chords
     /// through nearly one point (crossings a few EPS apart at clear
@@ -671,13 +681,7 @@ mod tests {
     /// far below CLEAR_SIN), and random polygons.
     #[test]
     fn skipping_clean_crossings_changes_nothing() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut rnd = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = unit_rng(0x2545_f491_4f6c_dd1du64);
         let mut fired = 0;
         for k in 0..600 {
             let m = 4 + (rnd() * 20.0) as usize;
@@ -729,13 +733,7 @@ mod tests {
     /// loop and (more than [`ALL_PAIRS`] edges) the grid's pairs.
     #[test]
     fn pair_shortcut_changes_nothing() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut rnd = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = unit_rng(0x9e37_79b9_7f4a_7c15u64);
         let (mut touched, mut crossed) = (0, 0);
         for k in 0..900 {
             let m = if k % 10 == 9 { 50 + (rnd() * 30.0) as usize } else { 4 + (rnd() * 24.0) as usize };
