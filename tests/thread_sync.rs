@@ -77,6 +77,18 @@ unsafe fn read_of(out: &mut Vec<Vec<u8>>, w: i32, h: i32) {
     out.push(px);
 }
 
+/// Reads back the depth (32-bit) and stencil (bytes) of a w x h window.
+unsafe fn read_depth_stencil_of(out: &mut Vec<Vec<u8>>, w: i32, h: i32) {
+    let mut d = vec![0u8; (w * h * 4) as usize];
+    glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, d.as_mut_ptr() as *mut c_void);
+    out.push(d);
+    let mut s = vec![0u8; (w * h) as usize];
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s.as_mut_ptr() as *mut c_void);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    out.push(s);
+}
+
 unsafe fn texture_image(r: &mut Rng, sub: bool) {
     let texels: Vec<u8> = (0..16 * 16 * 4).map(|_| r.next() as u8).collect();
     if sub {
@@ -433,14 +445,7 @@ unsafe fn pixel_rects_scene(threads: usize, reference: bool) -> Vec<Vec<u8>> {
     let mut out = Vec::new();
     let read_all = |out: &mut Vec<Vec<u8>>| {
         read_of(out, W3, H3);
-        let mut d = vec![0u8; (W3 * H3 * 4) as usize];
-        glReadPixels(0, 0, W3, H3, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, d.as_mut_ptr() as *mut c_void);
-        out.push(d);
-        let mut s = vec![0u8; (W3 * H3) as usize];
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, W3, H3, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s.as_mut_ptr() as *mut c_void);
-        glPixelStorei(GL_PACK_ALIGNMENT, 4);
-        out.push(s);
+        read_depth_stencil_of(out, W3, H3);
     };
     glClearColor(0.2, 0.1, 0.3, 0.6);
     glClearStencil(3);
@@ -549,16 +554,7 @@ unsafe fn deferred_clear_scene(threads: usize, limits: (usize, u64, u64)) -> Vec
     softgl::render::tile::set_batch_limits(&(*ctx).gl.derived.render, limits.0, limits.1, limits.2);
     let mut r = Rng(0xc1ea5);
     let mut out = Vec::new();
-    let read_depth_stencil = |out: &mut Vec<Vec<u8>>| {
-        let mut d = vec![0u8; (W3 * H3 * 4) as usize];
-        glReadPixels(0, 0, W3, H3, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, d.as_mut_ptr() as *mut c_void);
-        out.push(d);
-        let mut s = vec![0u8; (W3 * H3) as usize];
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, W3, H3, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s.as_mut_ptr() as *mut c_void);
-        glPixelStorei(GL_PACK_ALIGNMENT, 4);
-        out.push(s);
-    };
+    let read_depth_stencil = |out: &mut Vec<Vec<u8>>| read_depth_stencil_of(out, W3, H3);
     // A full clear, then nothing but a read-back.
     glClearColor(0.1, 0.6, 0.3, 0.8);
     glClearDepth(0.75);
