@@ -244,6 +244,10 @@ pub struct Batch {
     /// Work in pixels: the triangles' bounding boxes, the lines' and
     /// points' fragments, plus [`SETUP_PIXELS`] per primitive.
     work: u64,
+    /// The stamp of the render state `states.last()` was captured from
+    /// (0: none yet), and what [`state_of`] answers while it is drawn.
+    last_stamp: u64,
+    last: (u32, bool, bool),
 }
 
 /// Record arrays of at least this many bytes made by [`Batch::reserve_like`]
@@ -470,16 +474,37 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
 
 /// The batch's index of the state `rs` draws under (added when it
 /// changed), whether it is flat shaded and whether it reads texture
-/// coordinates or fog. Inlined: called per triangle on the calling
-/// thread, where a call cost about 20 of its 56 instructions.
+/// coordinates or fog. Inlined: called per primitive on the calling
+/// thread. Round 12: the answer is kept in the batch with the stamp of
+/// the render state it was captured from, so a primitive drawn under the
+/// state of the one before (all but the first after a change) costs a
+/// stamp compare, not the `ShadeCache` borrow, its stamp check and the
+/// `Arc::ptr_eq` against the last state (about 25 instructions). A
+/// stamp is never reused and `gl::validate` gives a new one to every
+/// change before anything is drawn (`shade_state`), so the same stamp is
+/// the same state; a batch starts (and is emptied) with none.
 #[inline(always)]
 fn state_of(rs: &RenderState, b: &mut Batch) -> (u32, bool, bool) {
-    rs.shade.with(rs, |st| {
+    if rs.stamp == b.last_stamp && b.last_stamp != 0 {
+        return b.last;
+    }
+    state_captured(rs, b)
+}
+
+/// [`state_of`] for a state not yet seen by this batch (or changed).
+#[cold]
+#[inline(never)]
+fn state_captured(rs: &RenderState, b: &mut Batch) -> (u32, bool, bool) {
+    let got = rs.shade.with(rs, |st| {
         if !b.states.last().is_some_and(|l| Arc::ptr_eq(l, st)) {
             b.states.push(st.clone());
         }
         (b.states.len() as u32 - 1, st.flat, st.texture.is_some() || st.fog.is_some())
-    })
+    });
+    // A reference or never-validated state is captured anew each time.
+    b.last_stamp = if rs.reference { 0 } else { rs.stamp };
+    b.last = got;
+    got
 }
 
 /// Counts `work` more in the batch just added to; true when it should be
@@ -757,6 +782,7 @@ impl Flight {
         b.points.clear();
         b.states.clear();
         b.work = 0;
+        b.last_stamp = 0;
         self.first_clear = None;
         for bin in self.bins.get_mut() {
             bin.clear();
