@@ -204,23 +204,25 @@ fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer
     // Window y points up, so counter-clockwise is positive area.
     let ccw = area > 0;
     let Some(front_facing) = rs.facing(ccw) else { return };
+    // Two-sided lighting: a back-facing polygon shows its back colours.
+    let back = rs.two_side && !front_facing;
+    if super::tile::binning(rs) && !fb.draw_both && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2] {
+        // Set up later, in the tile workers; the record takes the
+        // vertices in positive orientation (the box does not depend on
+        // their order).
+        if let Some(bbox) = super::tile::bounds(rs, fx, fy) {
+            if super::tile::push(rs, fx, fy, bbox, pos, attrs, ccw, flat_color[back as usize], back, front_facing) {
+                super::tile::submit(rs, fb);
+            }
+        }
+        return;
+    }
     // Rasterize with positive orientation.
     let order = if ccw { [0, 1, 2] } else { [0, 2, 1] };
     let ex = order.map(|i| fx[i]);
     let ey = order.map(|i| fy[i]);
     let zq = order.map(|i| (pos[i][2], pos[i][3]));
     let v = order.map(|i| attrs[i]);
-    // Two-sided lighting: a back-facing polygon shows its back colours.
-    let back = rs.two_side && !front_facing;
-    if super::tile::binning(rs) && !fb.draw_both && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2] {
-        // Set up later, in the tile workers.
-        if let Some(bbox) = super::tile::bounds(rs, ex, ey) {
-            if super::tile::push(rs, ex, ey, bbox, zq, v, flat_color[back as usize], back, front_facing) {
-                super::tile::submit(rs, fb);
-            }
-        }
-        return;
-    }
     // Drawn now: after what is binned (two colour buffers).
     super::tile::sync(rs, fb);
     // A short triangle's runs are found first: covering no pixel (most

@@ -431,9 +431,12 @@ pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Option<Rect> {
     (!bbox.is_empty()).then_some(bbox)
 }
 
-/// Adds a triangle to the batch, to be set up in a worker: positively
-/// oriented fixed-point vertices (x, y), their window depth and 1/w, and
-/// their attributes; `flat_color` and `back` as for `setup::planes_of`.
+/// Adds a triangle to the batch, to be set up in a worker: fixed-point
+/// vertices (x, y), their window positions (`pos`: x, y, depth, 1/w) and
+/// attributes in submission order, `ccw` when that order is positively
+/// oriented; `flat_color` and `back` as for `setup::planes_of`. The
+/// record holds them in positive orientation (vertices 1 and 2 swapped
+/// when not `ccw`).
 /// True when the batch should be handed to the workers now ([`submit`]):
 /// it reached [`MAX_BATCH`], or [`SUBMIT_WORK`] while the workers are
 /// idle.
@@ -442,13 +445,14 @@ pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Option<Rect> {
 // path): a call passed its arrays through stack copies, about 25
 // instructions a triangle on the calling thread.
 #[inline(always)]
-pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rect, zq: [(f64, f64); 3], v: [&A; 3], flat_color: Vec4, back: bool, front_facing: bool) -> bool {
+pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rect, pos: [[f64; 4]; 3], v: [&A; 3], ccw: bool, flat_color: Vec4, back: bool, front_facing: bool) -> bool {
     let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
     // Safety: binning runs on the context's thread (its framebuffer is
     // borrowed mutably by the caller).
     let b = unsafe { filling(&rs.batch) };
     let (state, flat, extra) = state_of(rs, b);
     let extra = if extra {
+        let v = if ccw { v } else { [v[0], v[2], v[1]] };
         b.extras.push(BinExtra {
             tex: std::array::from_fn(|i| std::array::from_fn(|u| v[i].tex(u))),
             fog: std::array::from_fn(|i| v[i].fog()),
@@ -467,8 +471,31 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
             v[i].color()
         }
     };
-    let v = std::array::from_fn(|i| BinVertex { z: zq[i].0, q: zq[i].1, color: color(i) });
-    b.tris.push(Binned { x, y, v, bbox, state, extra, prim: TRIANGLE, front_facing });
+    // Round 12: each vertex is stored straight into its slot of the
+    // record (submitted vertex i in slot `at[i]`) rather than the three
+    // arrays being permuted first, in registers and stack copies, and
+    // then copied in (about 30 instructions a triangle).
+    let at = [0, 2 - ccw as usize, 1 + ccw as usize];
+    b.tris.reserve(1);
+    // Safety: `reserve` made room for one record past the length; every
+    // field is written (x, y and v through the three distinct slots of
+    // `at`) before the length takes it in.
+    unsafe {
+        let t = b.tris.as_mut_ptr().add(b.tris.len());
+        let (tx, ty) = (std::ptr::addr_of_mut!((*t).x) as *mut i64, std::ptr::addr_of_mut!((*t).y) as *mut i64);
+        let tv = std::ptr::addr_of_mut!((*t).v) as *mut BinVertex;
+        for i in 0..3 {
+            tx.add(at[i]).write(x[i]);
+            ty.add(at[i]).write(y[i]);
+            tv.add(at[i]).write(BinVertex { z: pos[i][2], q: pos[i][3], color: color(i) });
+        }
+        std::ptr::addr_of_mut!((*t).bbox).write(bbox);
+        std::ptr::addr_of_mut!((*t).state).write(state);
+        std::ptr::addr_of_mut!((*t).extra).write(extra);
+        std::ptr::addr_of_mut!((*t).prim).write(TRIANGLE);
+        std::ptr::addr_of_mut!((*t).front_facing).write(front_facing);
+        b.tris.set_len(b.tris.len() + 1);
+    }
     added(&rs.batch, b, area + SETUP_PIXELS)
 }
 
