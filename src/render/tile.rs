@@ -441,7 +441,7 @@ pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Option<Rect> {
 /// it reached [`MAX_BATCH`], or [`SUBMIT_WORK`] while the workers are
 /// idle.
 #[allow(clippy::too_many_arguments)]
-// Inlined into `setup::triangle_snapped` (its one caller on the hot
+// Inlined into `setup::bin_snapped` (its one caller on the hot
 // path): a call passed its arrays through stack copies, about 25
 // instructions a triangle on the calling thread.
 #[inline(always)]
