@@ -669,3 +669,91 @@ fn the_pool_has_the_workers_these_tests_use() {
         OSMesaDestroyContext(ctx);
     }
 }
+
+/// Random strips, fans, triangles, quads, quad strips and polygons, some
+/// vertices outside the window (clipped) and some triangles culled, with
+/// the state changed between primitives (flat and smooth shading,
+/// texturing, fog, culling, two-sided lighting), so that one batch holds
+/// triangles drawn under many states, one after another and back again
+/// (round 12: the binned path keeps the state of the last primitive by
+/// its stamp).
+unsafe fn state_changes_scene(threads: usize, limits: (usize, u64, u64)) -> Vec<Vec<u8>> {
+    let mut buf = vec![0u8; (W2 * H2 * 4) as usize];
+    let ctx = context_of(threads, &mut buf, W2, H2);
+    softgl::render::tile::set_batch_limits(&(*ctx).gl.derived.render, limits.0, limits.1, limits.2);
+    let mut r = Rng(0x57a7e);
+    let mut out = Vec::new();
+    glClearColor(0.1, 0.1, 0.2, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    let mut tex = 0u32;
+    glGenTextures(1, &mut tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    texture_image(&mut r, false);
+    glFogf(softgl::gl::fog::GL_FOG_DENSITY, 0.7);
+    let light = [0.2f32, 0.4, 1.0, 0.0];
+    glLightfv(GL_LIGHT0, GL_POSITION, light.as_ptr());
+    glEnable(GL_LIGHT0);
+    glEnable(GL_COLOR_MATERIAL);
+    let modes = [GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON];
+    for step in 0..400 {
+        let toggle = |cap: u32, on: bool| if on { glEnable(cap) } else { glDisable(cap) };
+        match r.next() % 6 {
+            0 => glShadeModel(if r.next() % 2 == 0 { GL_FLAT } else { GL_SMOOTH }),
+            1 => toggle(GL_TEXTURE_2D, r.next() % 2 == 0),
+            2 => toggle(GL_FOG, r.next() % 2 == 0),
+            3 => toggle(GL_CULL_FACE, r.next() % 3 == 0),
+            4 => {
+                toggle(GL_LIGHTING, r.next() % 3 == 0);
+                glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, (r.next() % 2) as i32);
+            }
+            _ => {}
+        }
+        let mode = modes[r.next() as usize % modes.len()];
+        let n = 3 + r.next() as usize % 14;
+        let (cx, cy) = (r.unit() * 2.2 - 1.1, r.unit() * 2.2 - 1.1);
+        let size = if r.next() % 10 == 0 { 2.5 } else { 0.35 };
+        glBegin(mode);
+        for i in 0..n {
+            glColor4ub(r.next() as u8, r.next() as u8, r.next() as u8, 255);
+            glNormal3f(r.unit() - 0.5, r.unit() - 0.5, 1.0);
+            glTexCoord2f(r.unit() * 2.0, r.unit() * 2.0);
+            // Strips and fans walk on; the others scatter about the centre.
+            let t = i as f32 * 0.7;
+            let (x, y) = match mode {
+                GL_TRIANGLE_STRIP | GL_QUAD_STRIP => (cx + t * 0.1 * size, cy + if i % 2 == 0 { 0.0 } else { size * 0.4 }),
+                GL_TRIANGLE_FAN | GL_POLYGON if i > 0 => (cx + t.cos() * size * 0.5, cy + t.sin() * size * 0.5),
+                _ => (cx + (r.unit() - 0.5) * size, cy + (r.unit() - 0.5) * size),
+            };
+            glVertex3f(x, y, r.unit() * 1.8 - 0.9);
+        }
+        glEnd();
+        if step % 100 == 99 {
+            read_of(&mut out, W2, H2);
+        }
+    }
+    glDeleteTextures(1, &tex);
+    OSMesaDestroyContext(ctx);
+    out
+}
+
+/// The binned path (2 and 3 threads) gives the 1-thread path's pixels
+/// (which sets each triangle up at once) with states changing between the
+/// primitives of one batch: the batch limits let the whole scene between
+/// two read-backs be one batch, or cut it every few triangles.
+#[test]
+fn state_changes_within_a_batch_do_not_depend_on_thread_count() {
+    for limits in [(1 << 20, 1 << 40, 0), (5, 0, 0)] {
+        let one = unsafe { state_changes_scene(1, limits) };
+        for w in one.windows(2) {
+            assert_ne!(w[0], w[1], "each part draws");
+        }
+        for threads in [2, 3] {
+            let many = unsafe { state_changes_scene(threads, limits) };
+            for (k, (a, b)) in one.iter().zip(&many).enumerate() {
+                let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
+                assert_eq!(diff, 0, "limits {limits:?} read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
+            }
+        }
+    }
+}

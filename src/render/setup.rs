@@ -179,48 +179,98 @@ pub fn triangle(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, w: &
 /// [`triangle`] for clip vertices whose window positions are already
 /// computed (`ClipVertex::place`).
 pub fn triangle_placed(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, v: [&ClipVertex; 3], flat_color: [Vec4; 2]) {
+    // Round 12: the binning path in a function of its own (a jump from
+    // here), so that neither path's code is compiled around the other's
+    // (both inlined here cost the shading path about 12 instructions a
+    // triangle).
+    if binned_here(rs, fb) {
+        return bin_placed(rs, fb, v, flat_color);
+    }
     let pos = v.map(|cv| cv.win);
     let fx = v.map(|cv| cv.snapped[0]);
     let fy = v.map(|cv| cv.snapped[1]);
-    triangle_snapped(rs, fb, pos, fx, fy, v, flat_color)
+    let Some(o) = oriented(rs, fx, fy) else { return };
+    shade_snapped(rs, fb, pos, fx, fy, v, flat_color, o)
 }
 
-/// [`triangle`] for window positions `pos` (x, y, z, 1/w) whose other
+/// [`triangle_placed`] while binning.
+#[inline(never)]
+fn bin_placed(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, v: [&ClipVertex; 3], flat_color: [Vec4; 2]) {
+    let pos = v.map(|cv| cv.win);
+    let fx = v.map(|cv| cv.snapped[0]);
+    let fy = v.map(|cv| cv.snapped[1]);
+    let Some(o) = oriented(rs, fx, fy) else { return };
+    bin_snapped(rs, fb, pos, fx, fy, v, flat_color, o)
+}
+
+/// [`triangle_at`] for window positions `pos` (x, y, z, 1/w) whose other
 /// attributes are read from `attrs`.
 #[inline]
 pub fn triangle_at<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], attrs: [&A; 3], flat_color: [Vec4; 2]) {
     let fx = pos.map(|p| snap(p[0]));
     let fy = pos.map(|p| snap(p[1]));
-    triangle_snapped(rs, fb, pos, fx, fy, attrs, flat_color)
+    let Some(o) = oriented(rs, fx, fy) else { return };
+    if binned_here(rs, fb) {
+        bin_snapped(rs, fb, pos, fx, fy, attrs, flat_color, o)
+    } else {
+        shade_snapped(rs, fb, pos, fx, fy, attrs, flat_color, o)
+    }
 }
 
-/// [`triangle_at`] with the vertices already snapped to (fx, fy).
+/// Is a filled triangle binned (set up later, in the tile workers)
+/// rather than shaded now?
 #[inline(always)]
-fn triangle_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], fx: [i64; 3], fy: [i64; 3], attrs: [&A; 3], flat_color: [Vec4; 2]) {
+fn binned_here(rs: &RenderState, fb: &crate::framebuffer::Framebuffer) -> bool {
+    super::tile::binning(rs) && !fb.draw_both && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2]
+}
+
+/// A snapped triangle's orientation: whether its vertices are counter-
+/// clockwise, whether it faces the front and whether it shows its back
+/// colours; None when it has no area or is culled.
+#[derive(Clone, Copy)]
+struct Oriented {
+    ccw: bool,
+    front_facing: bool,
+    back: bool,
+}
+
+#[inline(always)]
+fn oriented(rs: &RenderState, fx: [i64; 3], fy: [i64; 3]) -> Option<Oriented> {
     let area = (fx[1] - fx[0]) * (fy[2] - fy[0]) - (fx[2] - fx[0]) * (fy[1] - fy[0]);
     if area == 0 {
-        return;
+        return None;
     }
     // Window y points up, so counter-clockwise is positive area.
     let ccw = area > 0;
-    let Some(front_facing) = rs.facing(ccw) else { return };
+    let front_facing = rs.facing(ccw)?;
+    // Two-sided lighting: a back-facing polygon shows its back colours.
+    Some(Oriented { ccw, front_facing, back: rs.two_side && !front_facing })
+}
+
+/// Bins a snapped triangle, to be set up later in the tile workers; the
+/// record takes the vertices in positive orientation (the box does not
+/// depend on their order).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn bin_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], fx: [i64; 3], fy: [i64; 3], attrs: [&A; 3], flat_color: [Vec4; 2], o: Oriented) {
+    if let Some(bbox) = super::tile::bounds(rs, fx, fy) {
+        if super::tile::push(rs, fx, fy, bbox, pos, attrs, o.ccw, flat_color[o.back as usize], o.back, o.front_facing) {
+            super::tile::submit(rs, fb);
+        }
+    }
+}
+
+/// Sets up and shades a snapped triangle now.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], fx: [i64; 3], fy: [i64; 3], attrs: [&A; 3], flat_color: [Vec4; 2], o: Oriented) {
+    let Oriented { ccw, front_facing, back } = o;
     // Rasterize with positive orientation.
     let order = if ccw { [0, 1, 2] } else { [0, 2, 1] };
     let ex = order.map(|i| fx[i]);
     let ey = order.map(|i| fy[i]);
     let zq = order.map(|i| (pos[i][2], pos[i][3]));
     let v = order.map(|i| attrs[i]);
-    // Two-sided lighting: a back-facing polygon shows its back colours.
-    let back = rs.two_side && !front_facing;
-    if super::tile::binning(rs) && !fb.draw_both && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2] {
-        // Set up later, in the tile workers.
-        if let Some(bbox) = super::tile::bounds(rs, ex, ey) {
-            if super::tile::push(rs, ex, ey, bbox, zq, v, flat_color[back as usize], back, front_facing) {
-                super::tile::submit(rs, fb);
-            }
-        }
-        return;
-    }
     // Drawn now: after what is binned (two colour buffers).
     super::tile::sync(rs, fb);
     // A short triangle's runs are found first: covering no pixel (most

@@ -244,6 +244,10 @@ pub struct Batch {
     /// Work in pixels: the triangles' bounding boxes, the lines' and
     /// points' fragments, plus [`SETUP_PIXELS`] per primitive.
     work: u64,
+    /// The stamp of the render state `states.last()` was captured from
+    /// (0: none yet), and what [`state_of`] answers while it is drawn.
+    last_stamp: u64,
+    last: (u32, bool, bool),
 }
 
 /// Record arrays of at least this many bytes made by [`Batch::reserve_like`]
@@ -427,24 +431,28 @@ pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Option<Rect> {
     (!bbox.is_empty()).then_some(bbox)
 }
 
-/// Adds a triangle to the batch, to be set up in a worker: positively
-/// oriented fixed-point vertices (x, y), their window depth and 1/w, and
-/// their attributes; `flat_color` and `back` as for `setup::planes_of`.
+/// Adds a triangle to the batch, to be set up in a worker: fixed-point
+/// vertices (x, y), their window positions (`pos`: x, y, depth, 1/w) and
+/// attributes in submission order, `ccw` when that order is positively
+/// oriented; `flat_color` and `back` as for `setup::planes_of`. The
+/// record holds them in positive orientation (vertices 1 and 2 swapped
+/// when not `ccw`).
 /// True when the batch should be handed to the workers now ([`submit`]):
 /// it reached [`MAX_BATCH`], or [`SUBMIT_WORK`] while the workers are
 /// idle.
 #[allow(clippy::too_many_arguments)]
-// Inlined into `setup::triangle_snapped` (its one caller on the hot
+// Inlined into `setup::bin_snapped` (its one caller on the hot
 // path): a call passed its arrays through stack copies, about 25
 // instructions a triangle on the calling thread.
 #[inline(always)]
-pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rect, zq: [(f64, f64); 3], v: [&A; 3], flat_color: Vec4, back: bool, front_facing: bool) -> bool {
+pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rect, pos: [[f64; 4]; 3], v: [&A; 3], ccw: bool, flat_color: Vec4, back: bool, front_facing: bool) -> bool {
     let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
     // Safety: binning runs on the context's thread (its framebuffer is
     // borrowed mutably by the caller).
     let b = unsafe { filling(&rs.batch) };
     let (state, flat, extra) = state_of(rs, b);
     let extra = if extra {
+        let v = if ccw { v } else { [v[0], v[2], v[1]] };
         b.extras.push(BinExtra {
             tex: std::array::from_fn(|i| std::array::from_fn(|u| v[i].tex(u))),
             fog: std::array::from_fn(|i| v[i].fog()),
@@ -463,23 +471,67 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
             v[i].color()
         }
     };
-    let v = std::array::from_fn(|i| BinVertex { z: zq[i].0, q: zq[i].1, color: color(i) });
-    b.tris.push(Binned { x, y, v, bbox, state, extra, prim: TRIANGLE, front_facing });
+    // Round 12: each vertex is stored straight into its slot of the
+    // record (submitted vertex i in slot `at[i]`) rather than the three
+    // arrays being permuted first, in registers and stack copies, and
+    // then copied in (about 30 instructions a triangle).
+    let at = [0, 2 - ccw as usize, 1 + ccw as usize];
+    b.tris.reserve(1);
+    // Safety: `reserve` made room for one record past the length; every
+    // field is written (x, y and v through the three distinct slots of
+    // `at`) before the length takes it in.
+    unsafe {
+        let t = b.tris.as_mut_ptr().add(b.tris.len());
+        let (tx, ty) = (std::ptr::addr_of_mut!((*t).x) as *mut i64, std::ptr::addr_of_mut!((*t).y) as *mut i64);
+        let tv = std::ptr::addr_of_mut!((*t).v) as *mut BinVertex;
+        for i in 0..3 {
+            tx.add(at[i]).write(x[i]);
+            ty.add(at[i]).write(y[i]);
+            tv.add(at[i]).write(BinVertex { z: pos[i][2], q: pos[i][3], color: color(i) });
+        }
+        std::ptr::addr_of_mut!((*t).bbox).write(bbox);
+        std::ptr::addr_of_mut!((*t).state).write(state);
+        std::ptr::addr_of_mut!((*t).extra).write(extra);
+        std::ptr::addr_of_mut!((*t).prim).write(TRIANGLE);
+        std::ptr::addr_of_mut!((*t).front_facing).write(front_facing);
+        b.tris.set_len(b.tris.len() + 1);
+    }
     added(&rs.batch, b, area + SETUP_PIXELS)
 }
 
 /// The batch's index of the state `rs` draws under (added when it
 /// changed), whether it is flat shaded and whether it reads texture
-/// coordinates or fog. Inlined: called per triangle on the calling
-/// thread, where a call cost about 20 of its 56 instructions.
+/// coordinates or fog. Inlined: called per primitive on the calling
+/// thread. Round 12: the answer is kept in the batch with the stamp of
+/// the render state it was captured from, so a primitive drawn under the
+/// state of the one before (all but the first after a change) costs a
+/// stamp compare, not the `ShadeCache` borrow, its stamp check and the
+/// `Arc::ptr_eq` against the last state (about 25 instructions). A
+/// stamp is never reused and `gl::validate` gives a new one to every
+/// change before anything is drawn (`shade_state`), so the same stamp is
+/// the same state; a batch starts (and is emptied) with none.
 #[inline(always)]
 fn state_of(rs: &RenderState, b: &mut Batch) -> (u32, bool, bool) {
-    rs.shade.with(rs, |st| {
+    if rs.stamp == b.last_stamp && b.last_stamp != 0 {
+        return b.last;
+    }
+    state_captured(rs, b)
+}
+
+/// [`state_of`] for a state not yet seen by this batch (or changed).
+#[cold]
+#[inline(never)]
+fn state_captured(rs: &RenderState, b: &mut Batch) -> (u32, bool, bool) {
+    let got = rs.shade.with(rs, |st| {
         if !b.states.last().is_some_and(|l| Arc::ptr_eq(l, st)) {
             b.states.push(st.clone());
         }
         (b.states.len() as u32 - 1, st.flat, st.texture.is_some() || st.fog.is_some())
-    })
+    });
+    // A reference or never-validated state is captured anew each time.
+    b.last_stamp = if rs.reference { 0 } else { rs.stamp };
+    b.last = got;
+    got
 }
 
 /// Counts `work` more in the batch just added to; true when it should be
@@ -757,6 +809,7 @@ impl Flight {
         b.points.clear();
         b.states.clear();
         b.work = 0;
+        b.last_stamp = 0;
         self.first_clear = None;
         for bin in self.bins.get_mut() {
             bin.clear();
