@@ -399,11 +399,16 @@ mod x86 {
     /// libm's f. About 1 % of pixels are (3 channels x 2/512).
     #[inline(always)]
     unsafe fn fog_pixels(fog: &Fog, col: &[__m128; 4], v: &[f32; 4], bits: i32, fc: __m128) -> [__m128i; 4] {
-        let exact = |k: usize| to_u8_lanes(fog_blend(col[k], fog.fragment_factor(v[k]), fc));
+        let mut out = [_mm_setzero_si128(); 4];
         if !fog.per_fragment || fog.mode == GL_LINEAR {
             // Only lanes that are written pay for f; the others' colours
             // are dropped.
-            return std::array::from_fn(|k| if bits & (1 << k) != 0 { exact(k) } else { _mm_setzero_si128() });
+            for k in 0..4 {
+                if bits & (1 << k) != 0 {
+                    out[k] = to_u8_lanes(fog_blend(col[k], fog.fragment_factor(v[k]), fc));
+                }
+            }
+            return out;
         }
         // x as `Fog::factor` computes it: -(d c)^2, or (-d) c.
         let c = _mm_loadu_ps(v.as_ptr());
@@ -416,20 +421,22 @@ mod x86 {
         let nan = _mm_movemask_ps(_mm_cmpunord_ps(x, x));
         let mut f = [0.0f32; 4];
         _mm_storeu_ps(f.as_mut_ptr(), _mm_min_ps(exp_lanes(x), _mm_set1_ps(1.0)));
-        std::array::from_fn(|k| {
+        for k in 0..4 {
             if bits & (1 << k) == 0 {
-                return _mm_setzero_si128();
-            }
-            if nan & (1 << k) != 0 {
-                return exact(k);
+                continue;
             }
             let (b, near) = to_u8_lanes_near(fog_blend(col[k], f[k], fc));
-            if near & 0b0111 != 0 {
-                exact(k)
-            } else {
-                b
-            }
-        })
+            out[k] = if (near & 0b0111) | (nan & (1 << k)) != 0 { fog_pixel_exact(fog, col[k], v[k], fc) } else { b };
+        }
+        out
+    }
+
+    /// One fogged pixel with libm's f (`Fog::apply`'s bytes): the guard's
+    /// fallback, out of line.
+    #[inline(never)]
+    #[cold]
+    unsafe fn fog_pixel_exact(fog: &Fog, col: __m128, v: f32, fc: __m128) -> __m128i {
+        to_u8_lanes(fog_blend(col, fog.fragment_factor(v), fc))
     }
 
     /// How far from an integer a fogged channel's `color_to_u8` argument
@@ -626,10 +633,15 @@ mod x86 {
                         let w = if c.perspective { recip4::<AVX>(c.qr, c.qdx, cx) } else { [1.0; 4] };
                         let v = fog_values::<AVX>(fog.r, fog.dx, cx, &w);
                         let flat = fog.flat.map(|c| _mm_loadu_ps(c.as_ref().as_ptr()));
-                        let col: [__m128; 4] = std::array::from_fn(|k| match flat {
-                            Some(col) => col,
-                            None => _mm_min_ps(_mm_max_ps(plane_color_f32::<AVX, true>(&c.cr, &c.cdx, cx + k as f64, w[k]), _mm_setzero_ps()), _mm_set1_ps(1.0)),
-                        });
+                        // Plain loops, not `array::from_fn`: its closures
+                        // stay calls here.
+                        let mut col = [_mm_setzero_ps(); 4];
+                        for k in 0..4 {
+                            col[k] = match flat {
+                                Some(col) => col,
+                                None => _mm_min_ps(_mm_max_ps(plane_color_f32::<AVX, true>(&c.cr, &c.cdx, cx + k as f64, w[k]), _mm_setzero_ps()), _mm_set1_ps(1.0)),
+                            };
+                        }
                         let p = fog_pixels(&fog.fog, &col, &v, bits, c.fog_color);
                         pack4(p[0], p[1], p[2], p[3])
                     }
