@@ -419,14 +419,31 @@ mod x86 {
             _mm_mul_ps(_mm_set1_ps(-fog.density), c)
         };
         let nan = _mm_movemask_ps(_mm_cmpunord_ps(x, x));
-        let mut f = [0.0f32; 4];
-        _mm_storeu_ps(f.as_mut_ptr(), _mm_min_ps(exp_lanes(x), _mm_set1_ps(1.0)));
-        for k in 0..4 {
-            if bits & (1 << k) == 0 {
-                continue;
+        let f = _mm_min_ps(exp_lanes(x), _mm_set1_ps(1.0));
+        let g = _mm_sub_ps(_mm_set1_ps(1.0), f);
+        // Pixel k's f and 1 - f in all lanes by shuffles (no store and
+        // reload); one branch for the group's guard.
+        let mut near = 0;
+        macro_rules! pixel {
+            ($k:literal, $imm:literal) => {{
+                let rgb = _mm_add_ps(_mm_mul_ps(col[$k], _mm_shuffle_ps::<$imm>(f, f)), _mm_mul_ps(fc, _mm_shuffle_ps::<$imm>(g, g)));
+                let alpha = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
+                let (b, n) = to_u8_lanes_near(_mm_or_ps(_mm_and_ps(alpha, col[$k]), _mm_andnot_ps(alpha, rgb)));
+                out[$k] = b;
+                near |= ((n & 0b0111 != 0) as i32) << $k;
+            }};
+        }
+        pixel!(0, 0x00);
+        pixel!(1, 0x55);
+        pixel!(2, 0xAA);
+        pixel!(3, 0xFF);
+        let redo = (near | nan) & bits;
+        if redo != 0 {
+            for k in 0..4 {
+                if redo & (1 << k) != 0 {
+                    out[k] = fog_pixel_exact(fog, col[k], v[k], fc);
+                }
             }
-            let (b, near) = to_u8_lanes_near(fog_blend(col[k], f[k], fc));
-            out[k] = if (near & 0b0111) | (nan & (1 << k)) != 0 { fog_pixel_exact(fog, col[k], v[k], fc) } else { b };
         }
         out
     }
@@ -445,12 +462,13 @@ mod x86 {
 
     /// The largest difference of [`exp_lanes`] from libm's `expf` on
     /// x <= 0 (tested exhaustively over f32 in [-88, 0]).
+    #[cfg_attr(not(test), allow(dead_code))]
     pub(super) const EXP_LANES_ERROR: f32 = 1.0e-6;
 
     /// e^x of four f32 lanes for x <= 0 (x > 0 gives 1, x below -87 gives
     /// e^-87; NaN lanes are the caller's to catch): x = k ln 2 + r with
     /// |r| <= ln 2 / 2 (Cody-Waite, ln 2 in two parts), e^r by its Taylor
-    /// polynomial of degree 6 (truncation error < 1.3e-7), times 2^k from
+    /// polynomial of degree 6 (truncation error < 1.3e-7; Estrin's order), times 2^k from
     /// the exponent bits (k >= -126: a normal number). Separate f32
     /// products and sums (no FMA), so every CPU level gives the same bits.
     #[inline(always)]
@@ -461,10 +479,14 @@ mod x86 {
         let kf = _mm_cvtepi32_ps(k);
         // 0.693359375 has 9 significant bits: kf * LN2_HI is exact.
         let r = _mm_sub_ps(_mm_sub_ps(x, _mm_mul_ps(kf, _mm_set1_ps(0.693_359_4))), _mm_mul_ps(kf, _mm_set1_ps(-2.121_944_4e-4)));
-        let mut p = _mm_set1_ps(1.0 / 720.0);
-        for a in [1.0 / 120.0, 1.0 / 24.0, 1.0 / 6.0, 0.5, 1.0, 1.0] {
-            p = _mm_add_ps(_mm_mul_ps(p, r), _mm_set1_ps(a));
-        }
+        // Estrin's scheme: (1 + r) + r^2 ((1/2 + r/6) + r^2 ((1/24 + r/120)
+        // + r^2/720)), a dependency chain of 7 operations, not Horner's 12.
+        let r2 = _mm_mul_ps(r, r);
+        let a = _mm_add_ps(_mm_set1_ps(1.0), r);
+        let b = _mm_add_ps(_mm_set1_ps(0.5), _mm_mul_ps(r, _mm_set1_ps(1.0 / 6.0)));
+        let c = _mm_add_ps(_mm_set1_ps(1.0 / 24.0), _mm_mul_ps(r, _mm_set1_ps(1.0 / 120.0)));
+        let d = _mm_add_ps(c, _mm_mul_ps(r2, _mm_set1_ps(1.0 / 720.0)));
+        let p = _mm_add_ps(a, _mm_mul_ps(r2, _mm_add_ps(b, _mm_mul_ps(r2, d))));
         let scale = _mm_castsi128_ps(_mm_slli_epi32::<23>(_mm_add_epi32(k, _mm_set1_epi32(127))));
         _mm_mul_ps(p, scale)
     }
