@@ -21,12 +21,9 @@
 //!   to nearest) mode, then the f32 clamp / ×255 / +½ / truncate of
 //!   `color_to_u8`;
 //! - fog (`CS_FOG`): the fog value `(r + dx * cx) * w` per lane in f64 and
-//!   to f32, then `Fog::apply`'s f32 products and sum in lanes, alpha
-//!   kept. f is `Fog::fragment_factor`'s (libm's `expf`) lane by lane,
-//!   except for EXP and EXP2 per fragment: there a polynomial in f32 lanes
-//!   (`exp_lanes`, within 1e-6 of libm's) gives f, and a pixel whose
-//!   red, green or blue byte could round the other way with libm's f is
-//!   done again with it (`fog_pixels`): the bytes are the same;
+//!   to f32, f from it by `Fog::fragment_factor` lane by lane (libm's
+//!   `expf` itself: no vector exponential reproduces its bits), then
+//!   `Fog::apply`'s f32 products and sum in lanes, alpha kept;
 //! - stepped colours use 32-bit lanes when the span's values stay in i32
 //!   (the scalar kernel's i64 values are then the same integers); the clamp
 //!   to [0, 255 << 16] followed by >> 16 equals >> 16 followed by the
@@ -196,7 +193,6 @@ mod x86 {
     use super::super::fast::{self, FogRow, CO_ADD, CO_NONE, CO_OVER, CS_AFFINE, CS_CONSTANT, CS_FOG, CS_PERSPECTIVE, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
     use super::super::{color_to_u8, CompareFunc, FragmentState, SpanPixels, StencilOp, StencilTest};
     use crate::framebuffer::DEPTH_MAX;
-    use crate::render::fog::{Fog, GL_EXP2, GL_LINEAR};
     use crate::render::setup::TriangleSetup;
     use std::arch::x86_64::*;
 
@@ -384,173 +380,6 @@ mod x86 {
         _mm_or_ps(_mm_and_ps(alpha, color), _mm_andnot_ps(alpha, rgb))
     }
 
-    /// Four fogged pixels' bytes: `color_to_u8(fog.apply(col[k], v[k]))`
-    /// for the lanes in `bits` (the others are dropped by the caller).
-    ///
-    /// EXP and EXP2 per fragment take f from [`exp_lanes`] (four pixels in
-    /// one polynomial instead of four calls of libm's `expf`), guarded so
-    /// that every byte stays `Fog::apply`'s: f is within `EXP_LANES_ERROR`
-    /// of libm's, and the colour and fog colour are in [0, 1], so a
-    /// channel's `color_to_u8` argument `c * 255 + 1/2` moves by less than
-    /// 255 * (EXP_LANES_ERROR + a few f32 roundings) < 5e-4 (and the clamp
-    /// does not increase the distance); a pixel with a red, green or blue argument
-    /// within `FOG_GUARD` (1/512) of an integer, where truncation could
-    /// go the other way, or whose exponent is NaN, is blended again with
-    /// libm's f. About 1 % of pixels are (3 channels x 2/512).
-    #[inline(always)]
-    unsafe fn fog_pixels(fog: &Fog, col: &[__m128; 4], v: &[f32; 4], f: Option<__m128>, bits: i32, fc: __m128) -> [__m128i; 4] {
-        let mut out = [_mm_setzero_si128(); 4];
-        let Some(f) = f else {
-            // Only lanes that are written pay for f; the others' colours
-            // are dropped.
-            for k in 0..4 {
-                if bits & (1 << k) != 0 {
-                    out[k] = to_u8_lanes(fog_blend(col[k], fog.fragment_factor(v[k]), fc));
-                }
-            }
-            return out;
-        };
-        let nan = _mm_movemask_ps(_mm_cmpunord_ps(f, f));
-        let g = _mm_sub_ps(_mm_set1_ps(1.0), f);
-        // Pixel k's f and 1 - f in all lanes by shuffles (no store and
-        // reload); one branch for the group's guard.
-        let mut near = 0;
-        macro_rules! pixel {
-            ($k:literal, $imm:literal) => {{
-                let rgb = _mm_add_ps(_mm_mul_ps(col[$k], _mm_shuffle_ps::<$imm>(f, f)), _mm_mul_ps(fc, _mm_shuffle_ps::<$imm>(g, g)));
-                let alpha = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
-                let (b, n) = to_u8_lanes_near(_mm_or_ps(_mm_and_ps(alpha, col[$k]), _mm_andnot_ps(alpha, rgb)));
-                out[$k] = b;
-                near |= ((n & 0b0111 != 0) as i32) << $k;
-            }};
-        }
-        pixel!(0, 0x00);
-        pixel!(1, 0x55);
-        pixel!(2, 0xAA);
-        pixel!(3, 0xFF);
-        let redo = (near | nan) & bits;
-        if redo != 0 {
-            for k in 0..4 {
-                if redo & (1 << k) != 0 {
-                    out[k] = fog_pixel_exact(fog, col[k], v[k], fc);
-                }
-            }
-        }
-        out
-    }
-
-    /// Whether [`fog_factors`] gives the span kernels' f (EXP and EXP2 per
-    /// fragment); otherwise `Fog::fragment_factor` does, pixel by pixel.
-    #[inline(always)]
-    pub(super) fn fog_in_lanes(fog: &Fog) -> bool {
-        fog.per_fragment && fog.mode != GL_LINEAR
-    }
-
-    /// f of four fog values by [`exp_lanes`], min 1; NaN where the
-    /// exponent is NaN (for [`fog_pixels`] to redo with libm).
-    #[inline(always)]
-    unsafe fn fog_factors(fog: &Fog, c: __m128) -> __m128 {
-        // x as `Fog::factor` computes it: -(d c)^2, or (-d) c.
-        let x = if fog.mode == GL_EXP2 {
-            let dc = _mm_mul_ps(_mm_set1_ps(fog.density), c);
-            _mm_xor_ps(_mm_set1_ps(-0.0), _mm_mul_ps(dc, dc))
-        } else {
-            _mm_mul_ps(_mm_set1_ps(-fog.density), c)
-        };
-        _mm_or_ps(_mm_min_ps(exp_lanes(x), _mm_set1_ps(1.0)), _mm_cmpunord_ps(x, x))
-    }
-
-    /// Pixels per pass of [`fog_pass`].
-    const FOG_CHUNK: usize = 64;
-
-    /// The fog factors of `count` pixels from cx on (rounded up to 4),
-    /// into `f`: a pass of its own ahead of the pixels' groups, so that
-    /// the exponential's long dependency chain is not inside a group's
-    /// (independent iterations overlap).
-    #[inline(always)]
-    unsafe fn fog_pass<const AVX: bool>(c: &Ctx, fog: &FogRow, cx: f64, count: usize, f: &mut [f32; FOG_CHUNK]) {
-        let mut j = 0;
-        while j < count {
-            let cxj = cx + j as f64;
-            let w = if c.perspective { recip4::<AVX>(c.qr, c.qdx, cxj) } else { [1.0; 4] };
-            let v = fog_values::<AVX>(fog.r, fog.dx, cxj, &w);
-            _mm_storeu_ps(f.as_mut_ptr().add(j), fog_factors(&fog.fog, _mm_loadu_ps(v.as_ptr())));
-            j += 4;
-        }
-    }
-
-    /// The fog factors of the group at pixel i of an n-pixel span (from
-    /// `fbuf`, refilled by [`fog_pass`] at each chunk's start), or null
-    /// when f is not computed in lanes.
-    #[inline(always)]
-    unsafe fn fog_at<const AVX: bool>(lanes_fog: bool, c: &Ctx, n: usize, i: usize, cx: f64, fbuf: &mut [f32; FOG_CHUNK]) -> *const f32 {
-        if !lanes_fog {
-            return std::ptr::null();
-        }
-        if i % FOG_CHUNK == 0 {
-            if let Some(fog) = &c.fog {
-                fog_pass::<AVX>(c, fog, cx, (n - i).min(FOG_CHUNK), fbuf);
-            }
-        }
-        fbuf.as_ptr().add(i % FOG_CHUNK)
-    }
-
-    /// One fogged pixel with libm's f (`Fog::apply`'s bytes): the guard's
-    /// fallback, out of line.
-    #[inline(never)]
-    #[cold]
-    unsafe fn fog_pixel_exact(fog: &Fog, col: __m128, v: f32, fc: __m128) -> __m128i {
-        to_u8_lanes(fog_blend(col, fog.fragment_factor(v), fc))
-    }
-
-    /// How far from an integer a fogged channel's `color_to_u8` argument
-    /// must be for [`fog_pixels`] to keep [`exp_lanes`]'s byte.
-    pub(super) const FOG_GUARD: f32 = 1.0 / 512.0;
-
-    /// The largest difference of [`exp_lanes`] from libm's `expf` on
-    /// x <= 0 (tested exhaustively over f32 in [-88, 0]).
-    #[cfg_attr(not(test), allow(dead_code))]
-    pub(super) const EXP_LANES_ERROR: f32 = 1.0e-6;
-
-    /// e^x of four f32 lanes for x <= 0 (x > 0 gives 1, x below -87 gives
-    /// e^-87; NaN lanes are the caller's to catch): x = k ln 2 + r with
-    /// |r| <= ln 2 / 2 (Cody-Waite, ln 2 in two parts), e^r by its Taylor
-    /// polynomial of degree 6 (truncation error < 1.3e-7; Estrin's order), times 2^k from
-    /// the exponent bits (k >= -126: a normal number). Separate f32
-    /// products and sums (no FMA), so every CPU level gives the same bits.
-    #[inline(always)]
-    pub(super) unsafe fn exp_lanes(x: __m128) -> __m128 {
-        let x = _mm_min_ps(_mm_max_ps(x, _mm_set1_ps(-87.0)), _mm_setzero_ps());
-        // Round to nearest (MXCSR's default mode).
-        let k = _mm_cvtps_epi32(_mm_mul_ps(x, _mm_set1_ps(std::f32::consts::LOG2_E)));
-        let kf = _mm_cvtepi32_ps(k);
-        // 0.693359375 has 9 significant bits: kf * LN2_HI is exact.
-        let r = _mm_sub_ps(_mm_sub_ps(x, _mm_mul_ps(kf, _mm_set1_ps(0.693_359_4))), _mm_mul_ps(kf, _mm_set1_ps(-2.121_944_4e-4)));
-        // Estrin's scheme: (1 + r) + r^2 ((1/2 + r/6) + r^2 ((1/24 + r/120)
-        // + r^2/720)), a dependency chain of 7 operations, not Horner's 12.
-        let r2 = _mm_mul_ps(r, r);
-        let a = _mm_add_ps(_mm_set1_ps(1.0), r);
-        let b = _mm_add_ps(_mm_set1_ps(0.5), _mm_mul_ps(r, _mm_set1_ps(1.0 / 6.0)));
-        let c = _mm_add_ps(_mm_set1_ps(1.0 / 24.0), _mm_mul_ps(r, _mm_set1_ps(1.0 / 120.0)));
-        let d = _mm_add_ps(c, _mm_mul_ps(r2, _mm_set1_ps(1.0 / 720.0)));
-        let p = _mm_add_ps(a, _mm_mul_ps(r2, _mm_add_ps(b, _mm_mul_ps(r2, d))));
-        let scale = _mm_castsi128_ps(_mm_slli_epi32::<23>(_mm_add_epi32(k, _mm_set1_epi32(127))));
-        _mm_mul_ps(p, scale)
-    }
-
-    /// [`to_u8_lanes`], and which lanes' arguments `c * 255 + 1/2` lie
-    /// within [`FOG_GUARD`] of an integer (bit k for lane k).
-    #[inline(always)]
-    unsafe fn to_u8_lanes_near(c: __m128) -> (__m128i, i32) {
-        let c = _mm_min_ps(_mm_max_ps(c, _mm_setzero_ps()), _mm_set1_ps(1.0));
-        let a = _mm_add_ps(_mm_mul_ps(c, _mm_set1_ps(255.0)), _mm_set1_ps(0.5));
-        let t = _mm_cvttps_epi32(a);
-        // a in [1/2, 255.5]: the fraction is exact.
-        let frac = _mm_sub_ps(a, _mm_cvtepi32_ps(t));
-        let near = _mm_or_ps(_mm_cmplt_ps(frac, _mm_set1_ps(FOG_GUARD)), _mm_cmpgt_ps(frac, _mm_set1_ps(1.0 - FOG_GUARD)));
-        (t, _mm_movemask_ps(near))
-    }
-
     #[inline]
     #[target_feature(enable = "avx2")]
     unsafe fn plane_color_avx<const PERSP: bool>(cr: &[f64; 4], cdx: &[f64; 4], cx: f64, w: f64) -> __m128 {
@@ -644,7 +473,6 @@ mod x86 {
         mut m: __m128i,
         cx: f64,
         step: &[__m128i; 4],
-        fl: *const f32,
     ) -> u32 {
         // Stencil (section 4.1.5): the four bytes as i32 lanes.
         let (mut s_in, mut s_new) = (_mm_setzero_si128(), _mm_setzero_si128());
@@ -702,53 +530,23 @@ mod x86 {
                         // per lane, the blend.
                         let w = if c.perspective { recip4::<AVX>(c.qr, c.qdx, cx) } else { [1.0; 4] };
                         let v = fog_values::<AVX>(fog.r, fog.dx, cx, &w);
+                        // Only lanes that are written pay for f (libm's
+                        // exp per fragment); the others' colours are dropped.
+                        let mut f = [0.0f32; 4];
+                        for k in 0..4 {
+                            if bits & (1 << k) != 0 {
+                                f[k] = fog.fog.fragment_factor(v[k]);
+                            }
+                        }
                         let flat = fog.flat.map(|c| _mm_loadu_ps(c.as_ref().as_ptr()));
-                        macro_rules! col {
-                            ($k:expr) => {
-                                match flat {
-                                    Some(col) => col,
-                                    None => _mm_min_ps(_mm_max_ps(plane_color_f32::<AVX, true>(&c.cr, &c.cdx, cx + $k as f64, w[$k]), _mm_setzero_ps()), _mm_set1_ps(1.0)),
-                                }
+                        let p = |k: usize| {
+                            let col = match flat {
+                                Some(col) => col,
+                                None => _mm_min_ps(_mm_max_ps(plane_color_f32::<AVX, true>(&c.cr, &c.cdx, cx + k as f64, w[k]), _mm_setzero_ps()), _mm_set1_ps(1.0)),
                             };
-                        }
-                        if fl.is_null() {
-                            // Only lanes that are written pay for f (libm's
-                            // exp per fragment); the others' colours are dropped.
-                            let mut f = [0.0f32; 4];
-                            for k in 0..4 {
-                                if bits & (1 << k) != 0 {
-                                    f[k] = fog.fog.fragment_factor(v[k]);
-                                }
-                            }
-                            let p = |k: usize| to_u8_lanes(fog_blend(col!(k), f[k], c.fog_color));
-                            pack4(p(0), p(1), p(2), p(3))
-                        } else {
-                            // f from `fog_pass`, guarded (`fog_pixels`).
-                            let f = _mm_loadu_ps(fl);
-                            let g = _mm_sub_ps(_mm_set1_ps(1.0), f);
-                            let nan = _mm_movemask_ps(_mm_cmpunord_ps(f, f));
-                            let mut near = 0;
-                            let alpha = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
-                            macro_rules! px {
-                                ($k:literal, $imm:literal) => {{
-                                    let col = col!($k);
-                                    let rgb = _mm_add_ps(_mm_mul_ps(col, _mm_shuffle_ps::<$imm>(f, f)), _mm_mul_ps(c.fog_color, _mm_shuffle_ps::<$imm>(g, g)));
-                                    let (b, n) = to_u8_lanes_near(_mm_or_ps(_mm_and_ps(alpha, col), _mm_andnot_ps(alpha, rgb)));
-                                    near |= ((n & 0b0111 != 0) as i32) << $k;
-                                    b
-                                }};
-                            }
-                            let mut p = [px!(0, 0x00), px!(1, 0x55), px!(2, 0xAA), px!(3, 0xFF)];
-                            let redo = (near | nan) & bits;
-                            if redo != 0 {
-                                for k in 0..4 {
-                                    if redo & (1 << k) != 0 {
-                                        p[k] = fog_pixel_exact(&fog.fog, col!(k), v[k], c.fog_color);
-                                    }
-                                }
-                            }
-                            pack4(p[0], p[1], p[2], p[3])
-                        }
+                            to_u8_lanes(fog_blend(col, f[k], c.fog_color))
+                        };
+                        pack4(p(0), p(1), p(2), p(3))
                     }
                     None => c.flat,
                 },
@@ -832,15 +630,11 @@ mod x86 {
         let pick = |i: usize, zb: *mut u32, cb: *mut u8, sb: *mut u8| -> (*mut u32, *mut u8, *mut u8) {
             (if D != D_OFF { dep.add(i) } else { zb }, if CO != CO_NONE { col.add(4 * i) } else { cb }, if S { sten.add(i) } else { sb })
         };
-        // EXP / EXP2 fog per fragment: f of each chunk of the span first.
-        let lanes_fog = CS == CS_FOG && ctx.fog.as_ref().is_some_and(|f| fog_in_lanes(&f.fog));
-        let mut fbuf = [0.0f32; FOG_CHUNK];
         let full = n & !3;
         let mut i = 0;
         while i < full {
             let (zp, cp, sp) = pick(i, zbuf.as_mut_ptr(), cbuf.as_mut_ptr().cast(), sbuf.as_mut_ptr());
-            let fl = fog_at::<AVX>(lanes_fog, &ctx, n, i, cx, &mut fbuf);
-            passed += group::<AVX, S, D, CS, CO>(&ctx, zp, cp, sp, _mm_set1_epi32(-1), cx, &step, fl) as u64;
+            passed += group::<AVX, S, D, CS, CO>(&ctx, zp, cp, sp, _mm_set1_epi32(-1), cx, &step) as u64;
             if CS == CS_STEPPED {
                 for s in step.iter_mut() {
                     *s = _mm_add_epi32(*s, step4);
@@ -864,8 +658,7 @@ mod x86 {
                 }
             }
             let m = _mm_cmpgt_epi32(_mm_set1_epi32(left as i32), lanes);
-            let fl = fog_at::<AVX>(lanes_fog, &ctx, n, i, cx, &mut fbuf);
-            passed += group::<AVX, S, D, CS, CO>(&ctx, zbuf.as_mut_ptr(), cbuf.as_mut_ptr().cast(), sbuf.as_mut_ptr(), m, cx, &step, fl) as u64;
+            passed += group::<AVX, S, D, CS, CO>(&ctx, zbuf.as_mut_ptr(), cbuf.as_mut_ptr().cast(), sbuf.as_mut_ptr(), m, cx, &step) as u64;
             for k in 0..left {
                 if S {
                     *sten.add(i + k) = sbuf[k];
@@ -894,92 +687,6 @@ mod x86 {
                 let got = unsafe { _mm_extract_epi16::<0>(div255(_mm_set1_epi16(v as u16 as i16))) } as u32;
                 assert_eq!(got, v / 255, "v = {v}");
             }
-        }
-
-        /// `exp_lanes` against libm's `expf` (what `Fog::factor` calls) on
-        /// every f32 in [-88, 0] (its reduction's range and beyond), and on
-        /// positive, infinite and huge x (f clamped to 1 as the factor is).
-        #[test]
-        fn exp_lanes_within_error_of_expf() {
-            let mut worst = 0.0f32;
-            let check = |xs: [f32; 4], worst: &mut f32| {
-                let mut got = [0.0f32; 4];
-                unsafe { _mm_storeu_ps(got.as_mut_ptr(), _mm_min_ps(exp_lanes(_mm_loadu_ps(xs.as_ptr())), _mm_set1_ps(1.0))) };
-                for k in 0..4 {
-                    let want = xs[k].exp().clamp(0.0, 1.0);
-                    let err = (got[k] - want).abs();
-                    assert!(err <= EXP_LANES_ERROR, "x = {:e}: {:e}, expf {:e}", xs[k], got[k], want);
-                    *worst = worst.max(err);
-                }
-            };
-            // -0.0 (bits 0x8000_0000) to -88.0 (0xC2B0_0000), four at a time.
-            let mut b = 0x8000_0000u32;
-            while b <= 0xC2B0_0000 {
-                check(std::array::from_fn(|k| f32::from_bits(b + k as u32)), &mut worst);
-                b += 4;
-            }
-            check([0.0, 1.0e-30, 3.5, 1.0e30], &mut worst);
-            check([f32::INFINITY, f32::NEG_INFINITY, -1.0e30, f32::MAX], &mut worst);
-            eprintln!("exp_lanes: largest difference from expf {worst:e}");
-        }
-
-        /// `fog_pixels` (guarded polynomial f) against `color_to_u8` of
-        /// `Fog::apply` (libm's f) on 4 M random pixels: every mode, per
-        /// fragment and per vertex, fog values near 0, in the scene range,
-        /// negative, huge, infinite and NaN; colours on and between byte
-        /// steps.
-        #[test]
-        fn fog_pixels_match_apply() {
-            use crate::render::fog::GL_EXP;
-            let mut seed = 0x9E37_79B9_7F4A_7C15u64;
-            let mut next = || {
-                seed ^= seed << 13;
-                seed ^= seed >> 7;
-                seed ^= seed << 17;
-                seed
-            };
-            let unit = |n: &mut dyn FnMut() -> u64| (n() >> 40) as f32 / (1u64 << 24) as f32;
-            let (mut pixels, mut near) = (0u64, 0u64);
-            for i in 0..1_000_000u32 {
-                let mode = [GL_EXP, GL_EXP2, GL_EXP2, GL_EXP, GL_LINEAR][(i % 5) as usize];
-                let color = glam::Vec4::new(unit(&mut next), unit(&mut next), unit(&mut next), unit(&mut next));
-                let fog = Fog { mode, density: unit(&mut next) * 3.0, start: unit(&mut next) * 2.0 - 1.0, end: unit(&mut next) * 30.0, color, per_fragment: i % 7 != 0 };
-                let col: [glam::Vec4; 4] = std::array::from_fn(|_| {
-                    let c = glam::Vec4::new(unit(&mut next), unit(&mut next), unit(&mut next), unit(&mut next));
-                    if next() % 4 == 0 { (c * 255.0).round() / 255.0 } else { c }
-                });
-                let v: [f32; 4] = std::array::from_fn(|_| match next() % 16 {
-                    0 => f32::NAN,
-                    1 => -unit(&mut next) * 50.0,
-                    2 => unit(&mut next) * 1.0e6,
-                    3 => [f32::INFINITY, f32::NEG_INFINITY, 0.0, -0.0][(next() % 4) as usize],
-                    4 => unit(&mut next) * 1.0e-3,
-                    _ => unit(&mut next) * 40.0,
-                });
-                let bits = (next() % 16) as i32 | if i % 3 == 0 { 15 } else { 0 };
-                let lanes: [__m128; 4] = std::array::from_fn(|k| unsafe { _mm_loadu_ps(col[k].as_ref().as_ptr()) });
-                let f = unsafe { fog_in_lanes(&fog).then(|| fog_factors(&fog, _mm_loadu_ps(v.as_ptr()))) };
-                let got = unsafe { fog_pixels(&fog, &lanes, &v, f, bits, _mm_loadu_ps(fog.color.as_ref().as_ptr())) };
-                for k in 0..4 {
-                    if bits & (1 << k) == 0 {
-                        continue;
-                    }
-                    let mut b = [0i32; 4];
-                    unsafe { _mm_storeu_si128(b.as_mut_ptr().cast(), got[k]) };
-                    let want = color_to_u8(fog.apply(col[k], v[k]));
-                    assert_eq!(b.map(|x| x as u8), want, "{fog:?} colour {:?} fog value {:e}", col[k], v[k]);
-                    let a = fog.apply(col[k], v[k]);
-                    pixels += 1;
-                    if (0..3).any(|ch| {
-                        let x = a[ch].clamp(0.0, 1.0) * 255.0 + 0.5;
-                        let fr = x - x.trunc();
-                        !(FOG_GUARD..=1.0 - FOG_GUARD).contains(&fr)
-                    }) {
-                        near += 1;
-                    }
-                }
-            }
-            eprintln!("fog_pixels: {pixels} pixels, {near} near a rounding boundary or NaN by libm's f");
         }
 
         /// The 4-pixel blends against fast.rs's scalar formulas.
