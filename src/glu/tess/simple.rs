@@ -134,18 +134,41 @@ fn interact_near(pa: [f64; 2], pb: [f64; 2], pc: [f64; 2], pd: [f64; 2], a: u32,
     ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
 }
 
+/// Up to this many vertices, [`sort_small`] orders them.
+const SMALL_SORT: usize = 32;
+
+/// Sorts keys made in index order as `sort_unstable` would: an insertion
+/// sort on (x, y) as one 128-bit key (cheaper comparisons than the
+/// tuple's), stable, so equal positions stay in index order, the tuple's
+/// tie-break.
+fn sort_small(k: &mut [(u64, u64, u32)]) {
+    let key = |e: &(u64, u64, u32)| (e.0 as u128) << 64 | e.1 as u128;
+    for i in 1..k.len() {
+        let e = k[i];
+        let ke = key(&e);
+        let mut j = i;
+        while j > 0 && key(&k[j - 1]) > ke {
+            k[j] = k[j - 1];
+            j -= 1;
+        }
+        k[j] = e;
+    }
+}
+
 /// Tessellates contours `starts` (first indices; the last runs to the end)
-/// of `verts` into `region` (boundary always, triangles unless
-/// `boundary_only`); see [`Outcome`].
-pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: bool, sc: &mut Scratch, pool: &mut Pool, region: &mut Region) -> Outcome {
-    tessellate_with(verts, starts, rule, boundary_only, sc, pool, region, verts.len() <= blocks::CAP)
+/// of `verts` into `region` (the boundary if `edges` or `boundary_only`,
+/// triangles unless `boundary_only`); see [`Outcome`]. (Triangles without
+/// edge flags need no boundary: not collecting it saves a push per edge.)
+#[allow(clippy::too_many_arguments)]
+pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: bool, edges: bool, sc: &mut Scratch, pool: &mut Pool, region: &mut Region) -> Outcome {
+    tessellate_with(verts, starts, rule, boundary_only, edges || boundary_only, sc, pool, region, verts.len() <= blocks::CAP)
 }
 
 /// [`tessellate`] with the active list chosen: `small` a vector (for at
 /// most [`blocks::CAP`] vertices, or the output may differ), else the
 /// block list. (Tests compare the two.)
 #[allow(clippy::too_many_arguments)]
-fn tessellate_with(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: bool, sc: &mut Scratch, pool: &mut Pool, region: &mut Region, small: bool) -> Outcome {
+fn tessellate_with(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: bool, edges: bool, sc: &mut Scratch, pool: &mut Pool, region: &mut Region, small: bool) -> Outcome {
     let n = verts.len();
     region.boundary.clear();
     region.triangles.clear();
@@ -177,7 +200,11 @@ fn tessellate_with(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: 
     // few within EPS in x, which the window below visits.
     sc.keyed.clear();
     sc.keyed.extend(verts.iter().enumerate().map(|(i, v)| (ord_key(v.p[0]), ord_key(v.p[1]), i as u32)));
-    sc.keyed.sort_unstable();
+    if n <= SMALL_SORT {
+        sort_small(&mut sc.keyed);
+    } else {
+        sc.keyed.sort_unstable();
+    }
     sc.rank.clear();
     sc.rank.resize(n, 0);
     for (r, k) in sc.keyed.iter().enumerate() {
@@ -199,10 +226,11 @@ fn tessellate_with(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: 
     sc.distinct = true;
     let Scratch { keyed, rank, next, prev, active, small: vec, .. } = sc;
     let mut t = Tri { verts, out: &mut region.triangles, pool };
+    let boundary = edges.then_some(&mut region.boundary);
     if small {
-        run(verts, keyed, rank, next, prev, rule, boundary_only, vec, &mut t, &mut region.boundary)
+        run(verts, keyed, rank, next, prev, rule, boundary_only, vec, &mut t, boundary)
     } else {
-        run(verts, keyed, rank, next, prev, rule, boundary_only, active, &mut t, &mut region.boundary)
+        run(verts, keyed, rank, next, prev, rule, boundary_only, active, &mut t, boundary)
     }
 }
 
@@ -219,10 +247,10 @@ fn run(
     boundary_only: bool,
     active: &mut impl Active<Entry>,
     t: &mut Tri,
-    boundary: &mut Vec<(usize, usize)>,
+    mut boundary: Option<&mut Vec<(usize, usize)>>,
 ) -> Outcome {
     active.clear_with(drop);
-    let out = sweep(verts, keyed, rank, next, prev, rule, boundary_only, active, t, boundary);
+    let out = sweep(verts, keyed, rank, next, prev, rule, boundary_only, active, t, &mut boundary);
     // Regions left behind after giving up: back to the pool.
     active.clear_with(|e| {
         if let Some(r) = e.reg {
@@ -243,7 +271,7 @@ fn sweep(
     boundary_only: bool,
     active: &mut impl Active<Entry>,
     t: &mut Tri,
-    boundary: &mut Vec<(usize, usize)>,
+    boundary: &mut Option<&mut Vec<(usize, usize)>>,
 ) -> Outcome {
     let at = |i: u32| verts[i as usize].p;
     // v is above (left of) the entry's edge.
@@ -362,7 +390,6 @@ fn sweep(
                         return Outcome::No;
                     }
                 }
-                let mut reg = None;
                 if rule.inside(w0 as i64) != i1 {
                     push_boundary(boundary, v, far, i1);
                 }
@@ -379,9 +406,11 @@ fn sweep(
                         None if i1 => e.reg = Some(t.start(v as usize)),
                         None => {}
                     }
-                    reg = e.reg.take();
                 }
-                *active.get_mut(pos) = Entry { lo: v, hi: far, w: w1, reg };
+                // The entry becomes edge v→far, its region (if any) kept in
+                // place (field writes: no drop of the old region to check).
+                let e = active.get_mut(pos);
+                (e.lo, e.hi, e.w) = (v, far, w1);
             }
         }
     }
@@ -390,8 +419,10 @@ fn sweep(
 
 /// The boundary edge lo→hi (lo left of hi), directed with the region on its left.
 #[inline]
-fn push_boundary(boundary: &mut Vec<(usize, usize)>, lo: u32, hi: u32, inside_above: bool) {
-    boundary.push(if inside_above { (lo as usize, hi as usize) } else { (hi as usize, lo as usize) });
+fn push_boundary(boundary: &mut Option<&mut Vec<(usize, usize)>>, lo: u32, hi: u32, inside_above: bool) {
+    if let Some(b) = boundary {
+        b.push(if inside_above { (lo as usize, hi as usize) } else { (hi as usize, lo as usize) });
+    }
 }
 
 #[cfg(test)]
@@ -407,7 +438,7 @@ mod tests {
             n += c.len();
         }
         let (mut sc, mut pool, mut region) = (Scratch::default(), Pool::default(), Region::default());
-        (tessellate(&verts, &starts, rule, false, &mut sc, &mut pool, &mut region), region)
+        (tessellate(&verts, &starts, rule, false, true, &mut sc, &mut pool, &mut region), region)
     }
 
     fn run(contours: &[&[[f64; 2]]], rule: Rule) -> Option<Region> {
@@ -552,8 +583,8 @@ mod tests {
             let rule = [Rule::Odd, Rule::NonZero, Rule::Positive, Rule::Negative, Rule::AbsGeqTwo][case % 5];
             let bo = case % 7 == 0;
             let (mut ra, mut rb) = (Region::default(), Region::default());
-            let a = tessellate_with(&verts, &starts, rule, bo, &mut sc, &mut pool, &mut ra, true);
-            let b = tessellate_with(&verts, &starts, rule, bo, &mut sc, &mut pool, &mut rb, false);
+            let a = tessellate_with(&verts, &starts, rule, bo, true, &mut sc, &mut pool, &mut ra, true);
+            let b = tessellate_with(&verts, &starts, rule, bo, true, &mut sc, &mut pool, &mut rb, false);
             assert_eq!(a, b, "case {case}");
             assert_eq!(ra.triangles, rb.triangles, "case {case}");
             assert_eq!(ra.boundary, rb.boundary, "case {case}");
@@ -565,5 +596,28 @@ mod tests {
         }
         // Both outcomes are exercised, often.
         assert!(done > 2000 && no > 1000, "done {done}, given up {no}");
+    }
+
+    /// `sort_small` gives `sort_unstable`'s order, ties in x and in (x, y)
+    /// included (keys made in index order, as `tessellate` makes them).
+    #[test]
+    fn small_sort_matches_sort_unstable() {
+        let mut s = 0x2545_f491_4f6c_dd1du64;
+        let mut rnd = move |m: u64| {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            s % m
+        };
+        for case in 0..20000 {
+            let n = rnd(SMALL_SORT as u64 + 1) as usize;
+            // Few distinct values: many ties.
+            let m = if case % 2 == 0 { 4 } else { 1 << 40 };
+            let mut k: Vec<(u64, u64, u32)> = (0..n as u32).map(|i| (rnd(m) << 20, rnd(m), i)).collect();
+            let mut want = k.clone();
+            want.sort_unstable();
+            sort_small(&mut k);
+            assert_eq!(k, want, "case {case}");
+        }
     }
 }
