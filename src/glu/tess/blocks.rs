@@ -8,8 +8,91 @@
 //! Invariant: no run is empty; an empty list has no runs. Spare run
 //! vectors are kept for reuse, so the list does not allocate in steady
 //! state.
+//!
+//! [`Active`] is the interface the fast path's sweep uses, implemented by
+//! [`BlockList`] and by a plain `Vec` (for polygons of at most [`CAP`]
+//! vertices, where the block list is a single run anyway: the same
+//! positions and the same binary search, without finding the run).
 
-const CAP: usize = 256;
+/// The longest run; a list never longer than this is one run.
+pub const CAP: usize = 256;
+
+/// A sequence with positional insert and remove and a binary search.
+/// (No `is_empty`: the sweep asks only positions against `len`.)
+#[allow(clippy::len_without_is_empty)]
+pub trait Active<T> {
+    fn len(&self) -> usize;
+    fn get(&self, i: usize) -> &T;
+    fn get_mut(&mut self, i: usize) -> &mut T;
+    fn insert(&mut self, i: usize, x: T);
+    fn remove(&mut self, i: usize) -> T;
+    /// As `slice::partition_point`.
+    fn partition_point(&self, pred: impl FnMut(&T) -> bool) -> usize;
+    /// Empties the list, handing each element to `f`.
+    fn clear_with(&mut self, f: impl FnMut(T));
+}
+
+impl<T> Active<T> for Vec<T> {
+    #[inline]
+    fn len(&self) -> usize {
+        Vec::len(self)
+    }
+    #[inline]
+    fn get(&self, i: usize) -> &T {
+        &self[i]
+    }
+    #[inline]
+    fn get_mut(&mut self, i: usize) -> &mut T {
+        &mut self[i]
+    }
+    #[inline]
+    fn insert(&mut self, i: usize, x: T) {
+        Vec::insert(self, i, x)
+    }
+    #[inline]
+    fn remove(&mut self, i: usize) -> T {
+        Vec::remove(self, i)
+    }
+    #[inline]
+    fn partition_point(&self, pred: impl FnMut(&T) -> bool) -> usize {
+        self[..].partition_point(pred)
+    }
+    #[inline]
+    fn clear_with(&mut self, f: impl FnMut(T)) {
+        self.drain(..).for_each(f)
+    }
+}
+
+impl<T> Active<T> for BlockList<T> {
+    #[inline]
+    fn len(&self) -> usize {
+        BlockList::len(self)
+    }
+    #[inline]
+    fn get(&self, i: usize) -> &T {
+        BlockList::get(self, i)
+    }
+    #[inline]
+    fn get_mut(&mut self, i: usize) -> &mut T {
+        BlockList::get_mut(self, i)
+    }
+    #[inline]
+    fn insert(&mut self, i: usize, x: T) {
+        BlockList::insert(self, i, x)
+    }
+    #[inline]
+    fn remove(&mut self, i: usize) -> T {
+        BlockList::remove(self, i)
+    }
+    #[inline]
+    fn partition_point(&self, pred: impl FnMut(&T) -> bool) -> usize {
+        BlockList::partition_point(self, pred)
+    }
+    #[inline]
+    fn clear_with(&mut self, f: impl FnMut(T)) {
+        BlockList::clear_with(self, f)
+    }
+}
 
 pub struct BlockList<T> {
     runs: Vec<Vec<T>>,
@@ -44,7 +127,7 @@ impl<T> BlockList<T> {
             i -= run.len();
         }
         let last = self.runs.len().saturating_sub(1);
-        (last, self.runs.get(last).map_or(0, |r| r.len()))
+        (last, self.runs[..].get(last).map_or(0, |r| r.len()))
     }
 
     #[inline]
@@ -101,7 +184,7 @@ impl<T> BlockList<T> {
         // The first run whose last element fails, by binary search over runs.
         let r = self.runs.partition_point(|run| run.last().is_some_and(&mut pred));
         let before: usize = self.runs[..r].iter().map(|run| run.len()).sum();
-        match self.runs.get(r) {
+        match self.runs[..].get(r) {
             Some(run) => before + run.partition_point(pred),
             None => before,
         }

@@ -726,7 +726,7 @@ impl Job {
         // Already a planar arrangement (checked as it goes): one sweep.
         verts.clear();
         verts.extend(p2.iter().map(|&p| Vert { p }));
-        match simple::tessellate(verts, contours.starts, self.rule, self.boundary_only, si, &mut sw.pool, &mut sw.region) {
+        match simple::tessellate(verts, contours.starts, self.rule, self.boundary_only, self.has_edge_flag(), si, &mut sw.pool, &mut sw.region) {
             simple::Outcome::Done => {
                 data.clear();
                 data.extend(all().map(|v| v.data));

@@ -27,9 +27,12 @@
 //! Edge e is the contour edge from vertex e to its successor; vertex ids
 //! are input indices (nothing is merged). The active list is a
 //! [`BlockList`], so polygons with tens of thousands of edges active at
-//! once stay O(n sqrt n) in the worst case.
+//! once stay O(n sqrt n) in the worst case; polygons of at most
+//! [`blocks::CAP`] vertices use a plain vector instead (the block list
+//! would be one run: the same positions and binary searches, so the same
+//! output, without the run bookkeeping that small polygons pay per step).
 
-use super::blocks::BlockList;
+use super::blocks::{self, Active, BlockList};
 use super::sweep::{orient, Pool, Reg, Region, Rule, Side, Tri, Vert, EPS};
 
 /// What the fast path did with a polygon.
@@ -64,6 +67,7 @@ pub struct Scratch {
     next: Vec<u32>,
     prev: Vec<u32>,
     active: BlockList<Entry>,
+    small: Vec<Entry>,
 }
 
 impl Scratch {
@@ -130,10 +134,41 @@ fn interact_near(pa: [f64; 2], pb: [f64; 2], pc: [f64; 2], pd: [f64; 2], a: u32,
     ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
 }
 
+/// Up to this many vertices, [`sort_small`] orders them.
+const SMALL_SORT: usize = 32;
+
+/// Sorts keys made in index order as `sort_unstable` would: an insertion
+/// sort on (x, y) as one 128-bit key (cheaper comparisons than the
+/// tuple's), stable, so equal positions stay in index order, the tuple's
+/// tie-break.
+fn sort_small(k: &mut [(u64, u64, u32)]) {
+    let key = |e: &(u64, u64, u32)| (e.0 as u128) << 64 | e.1 as u128;
+    for i in 1..k.len() {
+        let e = k[i];
+        let ke = key(&e);
+        let mut j = i;
+        while j > 0 && key(&k[j - 1]) > ke {
+            k[j] = k[j - 1];
+            j -= 1;
+        }
+        k[j] = e;
+    }
+}
+
 /// Tessellates contours `starts` (first indices; the last runs to the end)
-/// of `verts` into `region` (boundary always, triangles unless
-/// `boundary_only`); see [`Outcome`].
-pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: bool, sc: &mut Scratch, pool: &mut Pool, region: &mut Region) -> Outcome {
+/// of `verts` into `region` (the boundary if `edges` or `boundary_only`,
+/// triangles unless `boundary_only`); see [`Outcome`]. (Triangles without
+/// edge flags need no boundary: not collecting it saves a push per edge.)
+#[allow(clippy::too_many_arguments)]
+pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: bool, edges: bool, sc: &mut Scratch, pool: &mut Pool, region: &mut Region) -> Outcome {
+    tessellate_with(verts, starts, rule, boundary_only, edges || boundary_only, sc, pool, region, verts.len() <= blocks::CAP)
+}
+
+/// [`tessellate`] with the active list chosen: `small` a vector (for at
+/// most [`blocks::CAP`] vertices, or the output may differ), else the
+/// block list. (Tests compare the two.)
+#[allow(clippy::too_many_arguments)]
+fn tessellate_with(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: bool, edges: bool, sc: &mut Scratch, pool: &mut Pool, region: &mut Region, small: bool) -> Outcome {
     let n = verts.len();
     region.boundary.clear();
     region.triangles.clear();
@@ -165,7 +200,11 @@ pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_
     // few within EPS in x, which the window below visits.
     sc.keyed.clear();
     sc.keyed.extend(verts.iter().enumerate().map(|(i, v)| (ord_key(v.p[0]), ord_key(v.p[1]), i as u32)));
-    sc.keyed.sort_unstable();
+    if n <= SMALL_SORT {
+        sort_small(&mut sc.keyed);
+    } else {
+        sc.keyed.sort_unstable();
+    }
     sc.rank.clear();
     sc.rank.resize(n, 0);
     for (r, k) in sc.keyed.iter().enumerate() {
@@ -185,10 +224,33 @@ pub(super) fn tessellate(verts: &[Vert], starts: &[usize], rule: Rule, boundary_
         }
     }
     sc.distinct = true;
-    let Scratch { keyed, rank, next, prev, active, .. } = sc;
-    active.clear_with(drop);
+    let Scratch { keyed, rank, next, prev, active, small: vec, .. } = sc;
     let mut t = Tri { verts, out: &mut region.triangles, pool };
-    let out = sweep(verts, keyed, rank, next, prev, rule, boundary_only, active, &mut t, &mut region.boundary);
+    let boundary = edges.then_some(&mut region.boundary);
+    if small {
+        run(verts, keyed, rank, next, prev, rule, boundary_only, vec, &mut t, boundary)
+    } else {
+        run(verts, keyed, rank, next, prev, rule, boundary_only, active, &mut t, boundary)
+    }
+}
+
+/// The sweep on an emptied active list, emptied again afterwards.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn run(
+    verts: &[Vert],
+    keyed: &[(u64, u64, u32)],
+    rank: &[u32],
+    next: &[u32],
+    prev: &[u32],
+    rule: Rule,
+    boundary_only: bool,
+    active: &mut impl Active<Entry>,
+    t: &mut Tri,
+    mut boundary: Option<&mut Vec<(usize, usize)>>,
+) -> Outcome {
+    active.clear_with(drop);
+    let out = sweep(verts, keyed, rank, next, prev, rule, boundary_only, active, t, &mut boundary);
     // Regions left behind after giving up: back to the pool.
     active.clear_with(|e| {
         if let Some(r) = e.reg {
@@ -207,9 +269,9 @@ fn sweep(
     prev: &[u32],
     rule: Rule,
     boundary_only: bool,
-    active: &mut BlockList<Entry>,
+    active: &mut impl Active<Entry>,
     t: &mut Tri,
-    boundary: &mut Vec<(usize, usize)>,
+    boundary: &mut Option<&mut Vec<(usize, usize)>>,
 ) -> Outcome {
     let at = |i: u32| verts[i as usize].p;
     // v is above (left of) the entry's edge.
@@ -328,7 +390,6 @@ fn sweep(
                         return Outcome::No;
                     }
                 }
-                let mut reg = None;
                 if rule.inside(w0 as i64) != i1 {
                     push_boundary(boundary, v, far, i1);
                 }
@@ -345,9 +406,11 @@ fn sweep(
                         None if i1 => e.reg = Some(t.start(v as usize)),
                         None => {}
                     }
-                    reg = e.reg.take();
                 }
-                *active.get_mut(pos) = Entry { lo: v, hi: far, w: w1, reg };
+                // The entry becomes edge v→far, its region (if any) kept in
+                // place (field writes: no drop of the old region to check).
+                let e = active.get_mut(pos);
+                (e.lo, e.hi, e.w) = (v, far, w1);
             }
         }
     }
@@ -356,8 +419,10 @@ fn sweep(
 
 /// The boundary edge lo→hi (lo left of hi), directed with the region on its left.
 #[inline]
-fn push_boundary(boundary: &mut Vec<(usize, usize)>, lo: u32, hi: u32, inside_above: bool) {
-    boundary.push(if inside_above { (lo as usize, hi as usize) } else { (hi as usize, lo as usize) });
+fn push_boundary(boundary: &mut Option<&mut Vec<(usize, usize)>>, lo: u32, hi: u32, inside_above: bool) {
+    if let Some(b) = boundary {
+        b.push(if inside_above { (lo as usize, hi as usize) } else { (hi as usize, lo as usize) });
+    }
 }
 
 #[cfg(test)]
@@ -373,7 +438,7 @@ mod tests {
             n += c.len();
         }
         let (mut sc, mut pool, mut region) = (Scratch::default(), Pool::default(), Region::default());
-        (tessellate(&verts, &starts, rule, false, &mut sc, &mut pool, &mut region), region)
+        (tessellate(&verts, &starts, rule, false, true, &mut sc, &mut pool, &mut region), region)
     }
 
     fn run(contours: &[&[[f64; 2]]], rule: Rule) -> Option<Region> {
@@ -447,5 +512,112 @@ mod tests {
         let b = [[0.0, 1.0], [2.0, 1.0], [1.0, -1.0]];
         assert_eq!(outcome(&[&a, &b], Rule::Odd).0, Outcome::No);
         assert_eq!(outcome(&[&a, &b], Rule::AbsGeqTwo).0, Outcome::No);
+    }
+
+    /// The vector active list (polygons of at most `blocks::CAP` vertices)
+    /// gives what the block list gives: outcome, triangles and boundary, on
+    /// thousands of random polygons: star-shaped ones (done), with holes,
+    /// random point lists (mostly crossing: given up), and some with
+    /// duplicated or near-coincident vertices (given up before the sweep).
+    #[test]
+    fn vector_list_matches_block_list() {
+        let mut s = 0x853c_49e6_748f_ea9bu64;
+        let mut rnd = move || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut sc, mut pool) = (Scratch::default(), Pool::default());
+        let (mut done, mut no) = (0, 0);
+        for case in 0..6000 {
+            let n = 3 + (rnd() * if case % 50 == 0 { 250.0 } else { 30.0 }) as usize;
+            let mut contours: Vec<Vec<[f64; 2]>> = Vec::new();
+            let kind = case % 4;
+            let star = |rnd: &mut dyn FnMut() -> f64, n: usize, c: [f64; 2], r: f64, ccw: bool| {
+                let mut a: Vec<f64> = (0..n).map(|_| rnd() * std::f64::consts::TAU).collect();
+                a.sort_by(f64::total_cmp);
+                if !ccw {
+                    a.reverse();
+                }
+                a.iter().map(|&t| {
+                    let rr = r * (0.3 + 0.7 * rnd());
+                    [c[0] + rr * t.cos(), c[1] + rr * t.sin()]
+                }).collect::<Vec<_>>()
+            };
+            match kind {
+                0 => contours.push(star(&mut rnd, n, [0.0, 0.0], 1.0, true)),
+                1 => {
+                    let ccw = rnd() < 0.5;
+                    contours.push(star(&mut rnd, n, [0.0, 0.0], 1.0, ccw));
+                    for _ in 0..1 + (rnd() * 3.0) as usize {
+                        let (c, m, ccw) = ([rnd() * 0.4 - 0.2, rnd() * 0.4 - 0.2], 3 + (rnd() * 6.0) as usize, rnd() < 0.5);
+                        contours.push(star(&mut rnd, m, c, 0.1, ccw));
+                    }
+                }
+                2 => contours.push((0..n).map(|_| [rnd() * 2.0 - 1.0, rnd() * 2.0 - 1.0]).collect()),
+                _ => {
+                    // On a coarse grid: shared coordinates, collinear and
+                    // repeated vertices.
+                    let mut c = star(&mut rnd, n, [0.0, 0.0], 1.0, true);
+                    for p in &mut c {
+                        *p = p.map(|x| (x * 4.0).round() / 4.0);
+                    }
+                    if rnd() < 0.3 {
+                        let k = (rnd() * n as f64) as usize % n;
+                        c[k][1] += 1e-14;
+                    }
+                    contours.push(c);
+                }
+            }
+            let verts: Vec<Vert> = contours.iter().flat_map(|c| c.iter().map(|&p| Vert { p })).collect();
+            if verts.len() > blocks::CAP {
+                continue;
+            }
+            let mut starts = Vec::new();
+            let mut m = 0;
+            for c in &contours {
+                starts.push(m);
+                m += c.len();
+            }
+            let rule = [Rule::Odd, Rule::NonZero, Rule::Positive, Rule::Negative, Rule::AbsGeqTwo][case % 5];
+            let bo = case % 7 == 0;
+            let (mut ra, mut rb) = (Region::default(), Region::default());
+            let a = tessellate_with(&verts, &starts, rule, bo, true, &mut sc, &mut pool, &mut ra, true);
+            let b = tessellate_with(&verts, &starts, rule, bo, true, &mut sc, &mut pool, &mut rb, false);
+            assert_eq!(a, b, "case {case}");
+            assert_eq!(ra.triangles, rb.triangles, "case {case}");
+            assert_eq!(ra.boundary, rb.boundary, "case {case}");
+            if a == Outcome::Done {
+                done += 1;
+            } else {
+                no += 1;
+            }
+        }
+        // Both outcomes are exercised, often.
+        assert!(done > 2000 && no > 1000, "done {done}, given up {no}");
+    }
+
+    /// `sort_small` gives `sort_unstable`'s order, ties in x and in (x, y)
+    /// included (keys made in index order, as `tessellate` makes them).
+    #[test]
+    fn small_sort_matches_sort_unstable() {
+        let mut s = 0x2545_f491_4f6c_dd1du64;
+        let mut rnd = move |m: u64| {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            s % m
+        };
+        for case in 0..20000 {
+            let n = rnd(SMALL_SORT as u64 + 1) as usize;
+            // Few distinct values: many ties.
+            let m = if case % 2 == 0 { 4 } else { 1 << 40 };
+            let mut k: Vec<(u64, u64, u32)> = (0..n as u32).map(|i| (rnd(m) << 20, rnd(m), i)).collect();
+            let mut want = k.clone();
+            want.sort_unstable();
+            sort_small(&mut k);
+            assert_eq!(k, want, "case {case}");
+        }
     }
 }
