@@ -263,6 +263,8 @@ fn config(depth: i32, stencil: i32, accum: i32) -> Config {
 /// OSMesaCreateContextExt. A non-NULL `share` must be a live context: the
 /// new one shares its display lists, textures and buffer objects
 /// (gl::share).
+// `share` is the C caller's, under OSMesa's contract above.
+#[allow(clippy::not_unsafe_ptr_arg_deref)]
 pub fn create_context_ext(format: u32, depth: i32, stencil: i32, accum: i32, share: *mut OsContext) -> *mut OsContext {
     if !is_format(format) {
         return null_mut();

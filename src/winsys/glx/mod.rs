@@ -1121,6 +1121,8 @@ pub fn in_begin_end_on(drawable: Xid) -> bool {
 
 /// glXIsDirect: every softgl context is direct; GLXBadContext (and
 /// False) for a handle that is not a live context.
+// The display pointer is the C caller's, as for every GLX entry point.
+#[allow(clippy::not_unsafe_ptr_arg_deref)]
 pub fn is_direct(dpy: *mut Display, ctx: *mut GlxContext) -> Bool {
     const X_GLX_IS_DIRECT: u16 = 6;
     if !handles::is_live(ctx) {
