@@ -905,6 +905,25 @@ impl Job {
     }
 }
 
+/// The tessellator's unit tests' random numbers: xorshift64 steps, and
+/// uniform values in [0, 1) (53 bits) from them.
+#[cfg(test)]
+pub(super) mod test_rng {
+    pub fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
+        move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        }
+    }
+
+    pub fn unit_rng(seed: u64) -> impl FnMut() -> f64 {
+        let mut next = xorshift(seed);
+        move || (next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::pow2_inv;

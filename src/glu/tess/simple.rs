@@ -521,13 +521,7 @@ mod tests {
     /// duplicated or near-coincident vertices (given up before the sweep).
     #[test]
     fn vector_list_matches_block_list() {
-        let mut s = 0x853c_49e6_748f_ea9bu64;
-        let mut rnd = move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = crate::glu::tess::test_rng::unit_rng(0x853c_49e6_748f_ea9b);
         let (mut sc, mut pool) = (Scratch::default(), Pool::default());
         let (mut done, mut no) = (0, 0);
         for case in 0..6000 {
@@ -602,13 +596,8 @@ mod tests {
     /// included (keys made in index order, as `tessellate` makes them).
     #[test]
     fn small_sort_matches_sort_unstable() {
-        let mut s = 0x2545_f491_4f6c_dd1du64;
-        let mut rnd = move |m: u64| {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            s % m
-        };
+        let mut next = crate::glu::tess::test_rng::xorshift(0x2545_f491_4f6c_dd1d);
+        let mut rnd = move |m: u64| next() % m;
         for case in 0..20000 {
             let n = rnd(SMALL_SORT as u64 + 1) as usize;
             // Few distinct values: many ties.

@@ -638,6 +638,7 @@ fn cross(verts: &mut Vec<Vert>, grid: &mut Grid, i: usize, j: usize, s: Seg, r: 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::glu::tess::test_rng::unit_rng;
 
     struct Plain;
     impl Combiner for Plain {
@@ -662,16 +663,6 @@ mod tests {
         let mut segs: Vec<Seg> = (0..n).map(|i| Seg { a: i, b: (i + 1) % n }).collect();
         assert!(split_all(&mut verts, &mut grid, &mut segs, &mut Plain, &mut sc));
         (verts.iter().map(|v| v.p).collect(), segs.iter().map(|s| (s.a, s.b)).collect())
-    }
-
-    /// A xorshift64 generator of uniform values in [0, 1) (53 bits).
-    fn unit_rng(mut seed: u64) -> impl FnMut() -> f64 {
-        move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        }
     }
 
     /// Skipping the later pass at clean crossings gives the arrangement
