@@ -11,6 +11,9 @@ LD_LIBRARY_PATH=build/lib swaps in softgl's libOSMesa.so.8.
 """
 import argparse, json, os, statistics, subprocess, sys, time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import targets  # noqa: E402  (bench/targets.py: issue 9's targets and what limits a miss)
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "out", "bench")
 BIN = os.path.join(ROOT, "build", "bench", "bench_scene")
@@ -82,6 +85,12 @@ def run_one(impl, scene, w, h, frames, pam):
         return {"error": (p.stderr or p.stdout).strip()[-300:]}
     r = json.loads(p.stdout.strip().splitlines()[-1])
     r["first_frame_s"] = r["first_frame_wall"] - start
+    # bench_scene is linked against Mesa's libOSMesa: if softgl's library is
+    # missing from build/lib, the run silently measures Mesa instead. The
+    # renderer string says which library drew.
+    want = "softgl" if impl.startswith("softgl") else impl.split("-")[0]
+    if want not in r.get("renderer", "").lower():
+        return {"error": f"renderer is {r.get('renderer')!r}, expected {want}"}
     return r
 
 
@@ -229,6 +238,10 @@ def write_markdown(results, sizes, scenes, impls):
             "`softgl` uses every core (SOFTGL_THREADS unset), `softgl-1t` one thread.", "",
             "Scenes:", ""] + [f"- `{k}`: {v[0]}" for k, v in SCENES.items() if k in scenes] + \
            ([""] + ["Not runnable yet (softgl lacks the features): " + "; ".join(f"{k} ({v})" for k, v in NOT_YET.items())] if NOT_YET else []) + ["", *lines, ""]
+    for (w, h) in sizes:
+        size = f"{w}x{h}"
+        by_size = {(s, i): r for (s, sz, i), r in by.items() if sz == size}
+        text += targets.markdown(by_size, scenes, size)
     with open(os.path.join(OUT, "results.md"), "w") as f:
         f.write("\n".join(text))
     print("\n".join(lines))

@@ -1,0 +1,166 @@
+"""Issue 9's targets, judged per scene from one benchmark run, and what
+limits each scene that misses one.
+
+Used by bench/run.py (the "Targets" section of out/bench/results.md) and
+tools/bench_readme_table.py (the README's counts). The ratios come from
+the run; the explanations in LIMITS come from the instruction profiles in
+docs/perf-notes.md and the image comparisons in docs/bench-results.md, and
+are shown only for a scene that misses the target in this run.
+"""
+
+# The targets, in the issue's order. "accuracy" is the second half of the
+# first target: image error no larger than llvmpipe's against the same
+# reference, judged against each of the two references the bench has.
+TARGETS = [
+    ("ahead 2t", "median frame time below llvmpipe's, both with every core"),
+    ("ahead 1t", "median frame time below llvmpipe's, both with 1 thread"),
+    ("accuracy vs softpipe", "RMSE against softpipe's image no larger than llvmpipe's (to 0.01)"),
+    ("accuracy vs reference", "RMSE against softgl's reference path (SOFTGL_REFERENCE=1) no larger than llvmpipe's (to 0.01)"),
+    ("10x softpipe", "median frame time at most 1/10 of softpipe's"),
+    ("first frame 5x", "time from process start to the first finished frame at most 1/5 of llvmpipe's"),
+    ("scaling 1.7x", "every core (2 here) at least 1.7x the 1-thread speed"),
+]
+
+_VERTEX = ("vertex-bound: per-vertex transform and per-triangle set-up, span finding and span kernel "
+           "calls for triangles of a few pixels (spheres_l, 1 thread: span shading 29 %, span finding 19 %, "
+           "set-up planes 12 % of instructions)")
+_MILLION = ("vertex-bound: per vertex about 140 instructions of transform and assembly (plus about 76 in "
+            "the glVertex entry point in immediate mode), per 1-pixel triangle about 1,000 of set-up and "
+            "shading; with 2 threads the calling thread's serial front end (886-1,103 M instructions over 3 "
+            "frames against 920 M of band work, round 12) bounds the frame")
+_SCALE_VERTEX = ("the calling thread bins every triangle (spheres_l: about 770 M of 2,060 M instructions over 3 "
+                 "frames); the clock's 2-thread speed-up is below the instruction model's 1.7x")
+_ROUNDING = ("1/255 rounding ties: softgl converts colours to 8 bits from the exact value, rounded to "
+             "nearest (GL 1.5 2.14.9: 0.3 x 255 = 76.500003 -> 77); Mesa rounds the single-precision product "
+             "(76.5) to even (76), and llvmpipe shares softpipe's conversions; no pixel off by more than 2/255 "
+             "beyond llvmpipe's share")
+
+LIMITS = {
+    "10x softpipe": {
+        "spheres_s": _VERTEX, "spheres_m": _VERTEX, "spheres_l": _VERTEX,
+        "lit_spheres": _VERTEX + "; plus per-vertex lighting (about 410 instructions a vertex)",
+        "immediate_1m": _MILLION, "display_list_1m": _MILLION, "arrays_1m": _MILLION,
+        "fog_spheres": ("the per-fragment EXP2 fog factor (libm exp, about 16 % of the frame; an f32 exponential "
+                        "in lanes took fewer instructions but more time, round 12) and f64 plane interpolation "
+                        "with a per-pixel 1/w"),
+        "fog_spheres_fast": ("the GL_NICEST fog kernel minus the exponential: f64 plane interpolation with a "
+                             "per-pixel 1/w (no stepped GL_FASTEST fog kernel yet)"),
+        "accum_blur": ("glAccum is memory-bound: about a third of the frame's instructions, each of the five "
+                       "passes a frame reads and writes the 8-byte accumulation pixel and reads the colour buffer"),
+    },
+    "ahead 2t": {
+        "arrays_1m": _MILLION, "immediate_1m": _MILLION, "display_list_1m": _MILLION,
+    },
+    "ahead 1t": {
+        "arrays_1m": _MILLION, "immediate_1m": _MILLION, "textured": "the per-pixel trilinear filter",
+    },
+    "scaling 1.7x": {
+        "spheres_s": _SCALE_VERTEX, "spheres_m": _SCALE_VERTEX, "spheres_l": _SCALE_VERTEX,
+        "lit_spheres": _SCALE_VERTEX,
+        "immediate_1m": _MILLION, "display_list_1m": _MILLION, "arrays_1m": _MILLION,
+        "fog_spheres": "spheres_m's binning on the calling thread beside the fog kernel's band work",
+        "fog_spheres_fast": "spheres_m's binning on the calling thread beside the fog kernel's band work",
+        "*": ("frames of a few milliseconds: the hand-off to the worker and the frame's serial parts "
+              "(glClear's first touch, glFinish's wait for the last band) are a large share"),
+    },
+    "first frame 5x": {
+        "*": ("the first frame is at least the scene's own drawing (the steady frame time) plus the first "
+              "touch of the buffers' pages. In brackets: llvmpipe's first frame over softgl's steady frame, the "
+              "most any start-up work could reach; below 5x the target cannot be met by start-up alone"),
+    },
+    "accuracy vs softpipe": {
+        "readpixels": _ROUNDING, "copypixels": _ROUNDING, "book_decal": _ROUNDING,
+        "accum_blur": ("1/255 differences on 7.5 % of pixels: the average of four frames at 1/4 is a multiple of "
+                       "1/4 in 8-bit units, and its halves (ties) round one way through softgl's 16-bit "
+                       "accumulation buffer and the other through Mesa's; other values are too far from a "
+                       "rounding boundary for either buffer's precision to change them"),
+        "spheres_m": ("1/255 differences of interpolated colours (softgl's f64 planes against Mesa's f32) on "
+                      "0.08 % of pixels (llvmpipe 0.005 %)"),
+        "lit_spheres": ("a few more silhouette pixels differ (0.0003 % of pixels against llvmpipe's 0.0002 %); "
+                        "no 1/255 differences; not analysed further"),
+        "fog_spheres": "1/255 differences of fogged, interpolated colours (f64 against Mesa's f32) on 0.05 % of pixels",
+        "fog_spheres_fast": "1/255 differences of fogged, interpolated colours (f64 against Mesa's f32) on 0.05 % of pixels",
+        "lines": "softpipe and llvmpipe place wide and stippled line pixels differently; softgl follows 3.4's rules",
+        "smooth_lines": ("softgl's coverage is the exact area of the line's rectangle in each pixel square "
+                         "(GL 1.5 3.4.2); Mesa's antialiased lines use their own approximation, shared by "
+                         "llvmpipe and softpipe; and the width-3 lines' green of 0.3 rounds to 77 (see readpixels)"),
+        "smooth_lines_fast": "as smooth_lines (GL_FASTEST is drawn with the same exact area)",
+        "book_dino": ("the GLU tessellators triangulate the dinosaur's caps differently (softgl's own GLU against "
+                      "the SGI tessellator), so Gouraud interpolation differs on 2.6 % of pixels"),
+    },
+    "accuracy vs reference": {
+        "*": "GL_DONT_CARE or GL_FASTEST approximations allowed by the hint (within 2/255 of the reference)",
+    },
+}
+
+
+def judge(by, scenes):
+    """Per target: (met, missed, bounds), where `by` maps (scene, impl) to a
+    results.json row of one size, and `bounds` maps a scene to the best
+    first-frame ratio its steady frame allows."""
+    def ms(s, i):
+        return by.get((s, i), {}).get("median_ms")
+
+    def err(s, i, ref):
+        e = by.get((s, i), {}).get(ref)
+        return None if not e else e["rmse"]
+
+    out = {}
+    bounds = {}
+    for name, _ in TARGETS:
+        met, missed = [], []
+        for s in scenes:
+            g, g1, l1, l, sp = (ms(s, i) for i in ("softgl", "softgl-1t", "llvmpipe-1t", "llvmpipe", "softpipe"))
+            ok = None
+            if name == "ahead 2t" and g and l:
+                ok = g < l
+            elif name == "ahead 1t" and g1 and l1:
+                ok = g1 < l1
+            elif name.startswith("accuracy"):
+                ref = "vs_softpipe" if name.endswith("softpipe") else "vs_ref"
+                eg, el = err(s, "softgl", ref), err(s, "llvmpipe", ref)
+                if eg is not None and el is not None:
+                    ok = round(eg, 2) <= round(el, 2)
+            elif name == "10x softpipe" and g and sp:
+                ok = g <= 0.1 * sp
+            elif name == "first frame 5x":
+                fg = by.get((s, "softgl"), {}).get("first_frame_ms")
+                fl = by.get((s, "llvmpipe"), {}).get("first_frame_ms")
+                if fg and fl:
+                    ok = fl / fg >= 5
+                    if g:
+                        bounds[s] = fl / g
+            elif name == "scaling 1.7x" and g and g1:
+                ok = g1 / g >= 1.7
+            if ok is True:
+                met.append(s)
+            elif ok is False:
+                missed.append(s)
+        out[name] = (met, missed)
+    return out, bounds
+
+
+def limit(target, scene):
+    """What limits `scene` on `target` (docs/perf-notes.md), or None."""
+    table = LIMITS.get(target, {})
+    return table.get(scene) or table.get("*")
+
+
+def markdown(by, scenes, size):
+    """The targets section for one size: counts, and the missed scenes
+    grouped by what limits them."""
+    res, bounds = judge(by, scenes)
+    lines = [f"### Targets at {size}", ""]
+    for name, what in TARGETS:
+        if name == "scaling 1.7x" and size != "1920x1080":
+            continue  # the issue sets the scaling target for 1920x1080 only
+        met, missed = res[name]
+        lines.append(f"- **{name}** ({what}): {len(met)}/{len(met) + len(missed)} met" + (", missed:" if missed else ""))
+        groups = {}
+        for s in missed:
+            groups.setdefault(limit(name, s) or "not analysed", []).append(s)
+        for why, ss in groups.items():
+            if name == "first frame 5x":
+                ss = [f"{s} ({bounds[s]:.1f}x)" if s in bounds else s for s in ss]
+            lines.append(f"  - {', '.join(ss)}: {why}")
+    return lines + [""]
