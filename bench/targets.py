@@ -30,10 +30,10 @@ _MILLION = ("vertex-bound: per vertex about 140 instructions of transform and as
             "frames against 920 M of band work, round 12) bounds the frame")
 _SCALE_VERTEX = ("the calling thread bins every triangle (spheres_l: about 770 M of 2,060 M instructions over 3 "
                  "frames); the clock's 2-thread speed-up is below the instruction model's 1.7x")
-_ROUNDING = ("1/255 rounding ties: softgl converts colours to 8 bits from the exact value, rounded to "
-             "nearest (GL 1.5 2.14.9: 0.3 x 255 = 76.500003 -> 77); Mesa rounds the single-precision product "
-             "(76.5) to even (76), and llvmpipe shares softpipe's conversions; no pixel off by more than 2/255 "
-             "beyond llvmpipe's share")
+_ROUNDING = ("1/255 rounding of halves: both compute c x 255 in single precision, softgl rounds a half up "
+             "and Mesa (llvmpipe and softpipe alike) to even; for a colour of 0.3 (as a float 0.30000001) the "
+             "product is 76.5 in single precision, but 76.500003 exactly, so softgl's 77 is the nearest value "
+             "GL 1.5 2.14.9 asks for and Mesa's is 76; no more pixels off by more than 2/255 than llvmpipe's")
 
 LIMITS = {
     "10x softpipe": {
