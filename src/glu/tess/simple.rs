@@ -227,30 +227,33 @@ fn tessellate_with(verts: &[Vert], starts: &[usize], rule: Rule, boundary_only: 
     let Scratch { keyed, rank, next, prev, active, small: vec, .. } = sc;
     let mut t = Tri { verts, out: &mut region.triangles, pool };
     let boundary = edges.then_some(&mut region.boundary);
+    let input = Input { verts, keyed, rank, next, prev, rule, boundary_only };
     if small {
-        run(verts, keyed, rank, next, prev, rule, boundary_only, vec, &mut t, boundary)
+        run(&input, vec, &mut t, boundary)
     } else {
-        run(verts, keyed, rank, next, prev, rule, boundary_only, active, &mut t, boundary)
+        run(&input, active, &mut t, boundary)
     }
 }
 
-/// The sweep on an emptied active list, emptied again afterwards.
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-fn run(
-    verts: &[Vert],
-    keyed: &[(u64, u64, u32)],
-    rank: &[u32],
-    next: &[u32],
-    prev: &[u32],
+/// What the sweep reads and never changes: the vertices, their sweep order
+/// (`keyed`) and rank in it, the contours' successors and predecessors,
+/// the winding rule and whether only the boundary is wanted.
+#[derive(Clone, Copy)]
+struct Input<'a> {
+    verts: &'a [Vert],
+    keyed: &'a [(u64, u64, u32)],
+    rank: &'a [u32],
+    next: &'a [u32],
+    prev: &'a [u32],
     rule: Rule,
     boundary_only: bool,
-    active: &mut impl Active<Entry>,
-    t: &mut Tri,
-    mut boundary: Option<&mut Vec<(usize, usize)>>,
-) -> Outcome {
+}
+
+/// The sweep on an emptied active list, emptied again afterwards.
+#[inline(always)]
+fn run(input: &Input, active: &mut impl Active<Entry>, t: &mut Tri, mut boundary: Option<&mut Vec<(usize, usize)>>) -> Outcome {
     active.clear_with(drop);
-    let out = sweep(verts, keyed, rank, next, prev, rule, boundary_only, active, t, &mut boundary);
+    let out = sweep(input, active, t, &mut boundary);
     // Regions left behind after giving up: back to the pool.
     active.clear_with(|e| {
         if let Some(r) = e.reg {
@@ -260,19 +263,10 @@ fn run(
     out
 }
 
-#[allow(clippy::too_many_arguments)]
-fn sweep(
-    verts: &[Vert],
-    keyed: &[(u64, u64, u32)],
-    rank: &[u32],
-    next: &[u32],
-    prev: &[u32],
-    rule: Rule,
-    boundary_only: bool,
-    active: &mut impl Active<Entry>,
-    t: &mut Tri,
-    boundary: &mut Option<&mut Vec<(usize, usize)>>,
-) -> Outcome {
+/// The sweep proper: the vertices in order, the active list's edges and
+/// regions, triangles and the boundary out; see [`Outcome`].
+fn sweep(input: &Input, active: &mut impl Active<Entry>, t: &mut Tri, boundary: &mut Option<&mut Vec<(usize, usize)>>) -> Outcome {
+    let Input { verts, keyed, rank, next, prev, rule, boundary_only } = *input;
     let at = |i: u32| verts[i as usize].p;
     // v is above (left of) the entry's edge.
     let above = |e: &Entry, pv: [f64; 2]| orient(at(e.lo), at(e.hi), pv);
