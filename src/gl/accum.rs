@@ -291,12 +291,176 @@ fn fill_pending_clear(threads: usize, fb: &mut Framebuffer) {
     }
 }
 
+/// One glAccum's work, row by row (section 4.2.4): everything a row
+/// needs, computed once per call. The immediate bands ([`for_bands`]) and
+/// a band recorded in a flight of the rasterizer (round 13:
+/// `render::tile::defer_band_op`) both run [`AccumRows::row`], so the
+/// bytes do not depend on the path.
+struct AccumRows {
+    op: u32,
+    value: f32,
+    /// The scissored rectangle.
+    r: Rect,
+    /// ACCUM and LOAD read the colour buffer that is not drawn.
+    read_other: bool,
+    /// GL_RETURN writes both colour buffers (FRONT_AND_BACK).
+    both: bool,
+    mask: [bool; 4],
+    /// The AVX2 rows may run (`avx2_for`).
+    lanes: bool,
+    /// A byte's value times `value`, and its LOAD result.
+    add: [f32; 256],
+    load: [i16; 256],
+    /// GL_RETURN's byte per accumulation value, for large rectangles
+    /// outside the AVX2 rows.
+    table: Option<Vec<u8>>,
+    /// A recorded accumulation clear written first (recorded bands only;
+    /// the immediate path writes it in its own pass before).
+    fill: Option<(Rect, [i16; 4])>,
+}
+
+impl AccumRows {
+    fn new(op: u32, value: f32, r: Rect, read_other: bool, both: bool, mask: [bool; 4]) -> AccumRows {
+        let lanes = avx2_for(value);
+        let add: [f32; 256] = std::array::from_fn(|c| value * (c as f32 / 255.0));
+        let load: [i16; 256] = std::array::from_fn(|c| to_fixed(add[c]));
+        let whole = mask == [true; 4] && !both;
+        let big = (r.x1 - r.x0) as usize * (r.y1 - r.y0) as usize * 4 >= RETURN_TABLE_MIN;
+        let table = (op == GL_RETURN && !(lanes && whole) && big).then(|| (0..=u16::MAX).map(|a| returned(value, a as i16)).collect());
+        AccumRows { op, value, r, read_other, both, mask, lanes, add, load, table, fill: None }
+    }
+
+    /// The operation on one row: `a` and `color` are whole rows of the
+    /// accumulation buffer and the drawn colour buffer, `other` the row
+    /// of the other colour buffer (None when single-buffered).
+    fn row(&self, a: &mut [[i16; 4]], color: &mut [[u8; 4]], other: Option<&mut [[u8; 4]]>) {
+        let (x0, x1) = (self.r.x0 as usize, self.r.x1 as usize);
+        let (op, value, lanes) = (self.op, self.value, self.lanes);
+        match op {
+            GL_ACCUM | GL_LOAD => {
+                let (add, load) = (&self.add, &self.load);
+                let s: &[[u8; 4]] = if self.read_other { other.expect("a second colour buffer") } else { color };
+                let (s, a) = (&s[x0..x1], &mut a[x0..x1]);
+                let load_px = |acc: &mut [i16; 4], c: [u8; 4]| *acc = c.map(|v| load[v as usize]);
+                let accum_px = |acc: &mut [i16; 4], c: [u8; 4]| *acc = accum_pixel(*acc, c.map(|v| add[v as usize]));
+                #[cfg(target_arch = "x86_64")]
+                if lanes {
+                    // Safety: AVX2 checked (`avx2_for`).
+                    unsafe {
+                        if op == GL_LOAD {
+                            simd::avx2::load_row(a, s, value, load_px);
+                        } else {
+                            simd::avx2::accum_row(a, s, value, accum_px);
+                        }
+                    }
+                    return;
+                }
+                if op == GL_LOAD {
+                    for (acc, c) in a.iter_mut().zip(s) {
+                        load_px(acc, *c);
+                    }
+                } else if !simd::accum_row(a, s, add) {
+                    for (acc, c) in a.iter_mut().zip(s) {
+                        accum_px(acc, *c);
+                    }
+                }
+            }
+            GL_MULT | GL_ADD => {
+                let px = |a: &mut [i16; 4]| {
+                    for ch in a.iter_mut() {
+                        *ch = to_fixed(if op == GL_MULT { from_fixed(*ch) * value } else { from_fixed(*ch) + value });
+                    }
+                };
+                #[cfg(target_arch = "x86_64")]
+                if lanes {
+                    // Safety: AVX2 checked (`avx2_for`).
+                    unsafe { simd::avx2::mult_add_row(&mut a[x0..x1], op == GL_MULT, value, px) };
+                    return;
+                }
+                a[x0..x1].iter_mut().for_each(px);
+            }
+            _ => self.return_row(a, color, other),
+        }
+    }
+
+    /// GL_RETURN: value * acc, clamped, through the masks, into each draw
+    /// buffer.
+    fn return_row(&self, acc: &[[i16; 4]], color: &mut [[u8; 4]], mut other: Option<&mut [[u8; 4]]>) {
+        let (x0, x1) = (self.r.x0 as usize, self.r.x1 as usize);
+        let (value, mask, both) = (self.value, self.mask, self.both);
+        let whole = mask == [true; 4] && !both;
+        let (acc, color) = (&acc[x0..x1], &mut color[x0..x1]);
+        #[cfg(target_arch = "x86_64")]
+        if self.lanes && whole {
+            // Safety: AVX2 checked (`avx2_for`).
+            unsafe { simd::avx2::return_row(acc, color, value, |out, a| *out = a.map(|a| returned(value, a))) };
+            return;
+        }
+        let table = &self.table;
+        if let (Some(t), true) = (table, whole) {
+            // The common case: a whole row of whole pixels.
+            for (out, acc) in color.iter_mut().zip(acc) {
+                *out = acc.map(|a| t[a as u16 as usize]);
+            }
+            return;
+        }
+        let byte = |a: i16| match table {
+            Some(t) => t[a as u16 as usize],
+            None => returned(value, a),
+        };
+        for (i, acc) in acc.iter().enumerate() {
+            let mut out = color[i];
+            for ch in 0..4 {
+                if mask[ch] {
+                    out[ch] = byte(acc[ch]);
+                }
+            }
+            color[i] = out;
+            if let (true, Some(other)) = (both, other.as_deref_mut()) {
+                let o = &mut other[x0 + i];
+                for ch in 0..4 {
+                    if mask[ch] {
+                        o[ch] = out[ch];
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A glAccum recorded in a flight (round 13): recorded only when it reads
+/// and writes the drawn colour buffer alone (`Context::accum`).
+impl crate::render::tile::BandOp for AccumRows {
+    fn band(&self, y0: usize, y1: usize, width: usize, color: &mut [[u8; 4]], accum: &mut [[i16; 4]]) {
+        if accum.len() < (y1 - y0) * width || color.len() < (y1 - y0) * width {
+            return;
+        }
+        if let Some((c, v)) = self.fill {
+            let (x0, x1) = (c.x0 as usize, c.x1 as usize);
+            for y in y0.max(c.y0 as usize)..y1.min(c.y1 as usize) {
+                accum[(y - y0) * width..][x0..x1].fill(v);
+            }
+        }
+        for y in y0.max(self.r.y0 as usize)..y1.min(self.r.y1 as usize) {
+            let at = (y - y0) * width..(y - y0 + 1) * width;
+            self.row(&mut accum[at.clone()], &mut color[at], None);
+        }
+    }
+}
+
 impl Context {
     /// glAccum. Whole rows at a time; the colour of a byte c is c / 255
     /// times `value`, the same f32 expression per byte whether computed per
     /// pixel, in lanes or once into a 256-entry table, so the tables and
     /// lanes change no result (tests below compare with the per-pixel
     /// arithmetic).
+    ///
+    /// Round 13: while the rasterizer's threads bin, a large glAccum that
+    /// reads and writes only the drawn colour buffer is not run at once:
+    /// it is recorded in the batch after the primitives drawn before it
+    /// (`render::tile::defer_band_op`), and each band of the flight runs
+    /// it on its rows right after drawing them (`Command::Accum` does not
+    /// sync before it; every other case syncs here).
     pub fn accum(&mut self, op: u32, value: f32) {
         if !matches!(op, GL_ACCUM | GL_LOAD | GL_RETURN | GL_MULT | GL_ADD) {
             return self.set_error(GL_INVALID_ENUM);
@@ -309,113 +473,31 @@ impl Context {
             return;
         }
         let mask = if self.color_buffer.draw_buffer == 0 { [false; 4] } else { self.fb.config.color_mask(self.color_buffer.write_mask) };
-        self.sync_draw_buffer();
+        self.sync_draw_buffer_keeping_batch();
         let read_back = matches!(self.pixel_read_buffer, GL_BACK | 0x0402 /* BACK_LEFT */);
         let threads = self.derived.render.threads;
+        // The read buffer of ACCUM and LOAD: the drawn one, or the other.
+        let read_other = !(read_back == self.fb.color_is_back || !self.fb.is_double_buffered());
+        let both = self.fb.draw_both;
+        let pixels = (r.x1 - r.x0) as usize * (r.y1 - r.y0) as usize;
+        let record = crate::render::tile::binning(&self.derived.render) && pixels >= PARALLEL_PIXELS && !both && (!read_other || matches!(op, GL_MULT | GL_ADD | GL_RETURN)) && self.fb.accum.len() >= self.fb.width * self.fb.height;
+        if !record {
+            self.sync_render();
+        }
         let fb = &mut self.fb;
         // A recorded clear: a LOAD over all of it overwrites it unseen.
         if fb.accum_clear.is_some_and(|(c, _)| op == GL_LOAD && covers(r, c)) {
             fb.accum_clear = None;
         }
-        fill_pending_clear(threads, fb);
-        // The read buffer of ACCUM and LOAD: the drawn one, or the other.
-        let read_other = !(read_back == fb.color_is_back || !fb.is_double_buffered());
-        let both = fb.draw_both;
-        let (x0, x1) = (r.x0 as usize, r.x1 as usize);
-        let lanes = avx2_for(value);
-        // Each row is independent of the others: bands of rows in parallel.
-        match op {
-            GL_ACCUM | GL_LOAD => {
-                let add: [f32; 256] = std::array::from_fn(|c| value * (c as f32 / 255.0));
-                let load: [i16; 256] = std::array::from_fn(|c| to_fixed(add[c]));
-                for_bands(threads, fb, r, |_, a, color, other| {
-                    let s: &[[u8; 4]] = if read_other { other.expect("a second colour buffer") } else { color };
-                    let (s, a) = (&s[x0..x1], &mut a[x0..x1]);
-                    let load_px = |acc: &mut [i16; 4], c: [u8; 4]| *acc = c.map(|v| load[v as usize]);
-                    let accum_px = |acc: &mut [i16; 4], c: [u8; 4]| *acc = accum_pixel(*acc, c.map(|v| add[v as usize]));
-                    #[cfg(target_arch = "x86_64")]
-                    if lanes {
-                        // Safety: AVX2 checked (`avx2_for`).
-                        unsafe {
-                            if op == GL_LOAD {
-                                simd::avx2::load_row(a, s, value, load_px);
-                            } else {
-                                simd::avx2::accum_row(a, s, value, accum_px);
-                            }
-                        }
-                        return;
-                    }
-                    if op == GL_LOAD {
-                        for (acc, c) in a.iter_mut().zip(s) {
-                            load_px(acc, *c);
-                        }
-                    } else if !simd::accum_row(a, s, &add) {
-                        for (acc, c) in a.iter_mut().zip(s) {
-                            accum_px(acc, *c);
-                        }
-                    }
-                });
-            }
-            GL_MULT | GL_ADD => {
-                let px = |a: &mut [i16; 4]| {
-                    for ch in a.iter_mut() {
-                        *ch = to_fixed(if op == GL_MULT { from_fixed(*ch) * value } else { from_fixed(*ch) + value });
-                    }
-                };
-                for_bands(threads, fb, r, |_, a, _, _| {
-                    #[cfg(target_arch = "x86_64")]
-                    if lanes {
-                        // Safety: AVX2 checked (`avx2_for`).
-                        unsafe { simd::avx2::mult_add_row(&mut a[x0..x1], op == GL_MULT, value, px) };
-                        return;
-                    }
-                    a[x0..x1].iter_mut().for_each(px);
-                });
-            }
-            _ => {
-                // GL_RETURN: value * acc, clamped, through the masks, into
-                // each draw buffer.
-                let whole = mask == [true; 4] && !both;
-                let table: Option<Vec<u8>> = (!(lanes && whole) && (x1 - x0) * (r.y1 - r.y0) as usize * 4 >= RETURN_TABLE_MIN).then(|| (0..=u16::MAX).map(|a| returned(value, a as i16)).collect());
-                let byte = |a: i16| match &table {
-                    Some(t) => t[a as u16 as usize],
-                    None => returned(value, a),
-                };
-                for_bands(threads, fb, r, |_, acc, color, mut other| {
-                    let (acc, color) = (&acc[x0..x1], &mut color[x0..x1]);
-                    #[cfg(target_arch = "x86_64")]
-                    if lanes && whole {
-                        // Safety: AVX2 checked (`avx2_for`).
-                        unsafe { simd::avx2::return_row(acc, color, value, |out, a| *out = a.map(|a| returned(value, a))) };
-                        return;
-                    }
-                    if let (Some(t), true) = (&table, whole) {
-                        // The common case: a whole row of whole pixels.
-                        for (out, acc) in color.iter_mut().zip(acc) {
-                            *out = acc.map(|a| t[a as u16 as usize]);
-                        }
-                        return;
-                    }
-                    for (i, acc) in acc.iter().enumerate() {
-                        let mut out = color[i];
-                        for ch in 0..4 {
-                            if mask[ch] {
-                                out[ch] = byte(acc[ch]);
-                            }
-                        }
-                        color[i] = out;
-                        if let (true, Some(other)) = (both, other.as_deref_mut()) {
-                            let o = &mut other[x0 + i];
-                            for ch in 0..4 {
-                                if mask[ch] {
-                                    o[ch] = out[ch];
-                                }
-                            }
-                        }
-                    }
-                });
-            }
+        let mut rows = AccumRows::new(op, value, r, read_other, both, mask);
+        if record {
+            rows.fill = fb.accum_clear.take();
+            crate::render::tile::defer_band_op(&self.derived.render, Box::new(rows));
+            return;
         }
+        fill_pending_clear(threads, fb);
+        // Each row is independent of the others: bands of rows in parallel.
+        for_bands(threads, fb, r, |_, a, color, other| rows.row(a, color, other));
     }
 
     /// The accumulation part of glClear: recorded, written by the next
@@ -429,6 +511,8 @@ impl Context {
         let threads = self.derived.render.threads;
         let fb = &mut self.fb;
         if fb.accum_clear.is_some_and(|(c, _)| !covers(r, c)) {
+            // Recorded glAccum bands may still be in flight (round 13).
+            crate::render::tile::sync(&self.derived.render, fb);
             fill_pending_clear(threads, fb);
         }
         fb.accum_clear = Some((r, v));
