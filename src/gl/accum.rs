@@ -721,6 +721,9 @@ mod tests {
                     c.fb.color.copy_from_slice(&color);
                     c.fb.accum.copy_from_slice(&acc);
                     c.accum(op, value);
+                    // A large glAccum may be recorded for the rasterizer's
+                    // threads (round 13): whatever reads the buffers syncs.
+                    c.sync_render();
                     for i in 0..w * h {
                         let (s, a) = (color[i], acc[i]);
                         let want_acc: [i16; 4] = std::array::from_fn(|ch| match op {

@@ -73,7 +73,9 @@
 //! (glAccum, large glClear and glReadPixels) are cut into bands of rows
 //! by `pool::for_pieces` and `gl::accum`; a large glClear made while
 //! binning is instead recorded for the next flight, which writes each
-//! band's rows just before drawing that band ([`defer_clear`], round 11).
+//! band's rows just before drawing that band ([`defer_clear`], round 11),
+//! and a large glAccum is recorded in the batch between the primitives,
+//! run by each band after the drawing before it ([`BandOp`], round 13).
 
 use super::fragment::fast::Kernel;
 use super::fragment::{Buffers, SpanPixels};
@@ -635,8 +637,9 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
 /// in cache when the band's fragments read and write the same pixels, the
 /// calling thread goes on with the front end meanwhile, and nothing
 /// waits for a separate hand-off. Only while binning (more than one
-/// thread): the 1-thread path writes clears at once. Anything binned
-/// before is shaded first (glClear syncs anyway), so the clear keeps its
+/// thread): the 1-thread path writes clears at once. Anything binned or
+/// recorded before is handed to the workers first (round 13: without
+/// waiting for it), and flights run in order, so the clear keeps its
 /// place in GL's order.
 pub fn defer_clear(rs: &RenderState, fb: &mut Framebuffer, c: Clear) {
     let cell = &rs.batch;
