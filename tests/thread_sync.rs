@@ -819,7 +819,7 @@ unsafe fn accum_mix_scene(threads: usize, limits: (usize, u64, u64), seed: u64, 
             }
             9 => {
                 glClearColor(r.unit(), r.unit(), r.unit(), r.unit());
-                let depth = if r.next() % 2 == 0 { GL_DEPTH_BUFFER_BIT } else { 0 };
+                let depth = if r.next().is_multiple_of(2) { GL_DEPTH_BUFFER_BIT } else { 0 };
                 glClear(GL_COLOR_BUFFER_BIT | depth);
             }
             10 => {
@@ -840,7 +840,7 @@ unsafe fn accum_mix_scene(threads: usize, limits: (usize, u64, u64), seed: u64, 
             }
             12 => {
                 let m = r.next();
-                if m % 3 == 0 {
+                if m.is_multiple_of(3) {
                     glColorMask((m >> 4) as u8 & 1, (m >> 5) as u8 & 1, (m >> 6) as u8 & 1, (m >> 7) as u8 & 1);
                 } else {
                     glColorMask(1, 1, 1, 1);
@@ -849,7 +849,7 @@ unsafe fn accum_mix_scene(threads: usize, limits: (usize, u64, u64), seed: u64, 
             13 => {
                 glDepthFunc(GL_ALWAYS);
                 glWindowPos3f((r.next() % 300) as f32, (r.next() % 200) as f32, 0.5);
-                if r.next() % 2 == 0 {
+                if r.next().is_multiple_of(2) {
                     glCopyPixels((r.next() % 300) as i32, (r.next() % 200) as i32, 200, 150, GL_COLOR);
                 } else {
                     let img: Vec<u8> = (0..160 * 90 * 4).map(|_| r.next() as u8).collect();

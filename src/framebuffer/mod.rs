@@ -166,7 +166,6 @@ impl Framebuffer {
     /// Points drawing at the buffers glDrawBuffer names. Cheap when nothing
     /// changes; a no-op on a single-buffered surface, whose one buffer is
     /// every name that exists.
-
     pub fn select_draw(&mut self, target: DrawTarget) {
         if !self.double {
             return;

@@ -495,7 +495,7 @@ impl Context {
         let read_back = matches!(self.pixel_read_buffer, GL_BACK | 0x0402 /* BACK_LEFT */);
         let threads = self.derived.render.threads;
         // The read buffer of ACCUM and LOAD: the drawn one, or the other.
-        let read_other = !(read_back == self.fb.color_is_back || !self.fb.is_double_buffered());
+        let read_other = read_back != self.fb.color_is_back && self.fb.is_double_buffered();
         let both = self.fb.draw_both;
         let pixels = (r.x1 - r.x0) as usize * (r.y1 - r.y0) as usize;
         let record = crate::render::tile::binning(&self.derived.render) && pixels >= PARALLEL_PIXELS && !both && (!read_other || matches!(op, GL_MULT | GL_ADD | GL_RETURN)) && self.fb.accum.len() >= self.fb.width * self.fb.height;
