@@ -757,3 +757,148 @@ fn state_changes_within_a_batch_do_not_depend_on_thread_count() {
         }
     }
 }
+
+/// `n` pixel-aligned flat rectangles (drawn the same by the reference
+/// path and the fast path), depth-tested at random depths.
+unsafe fn flat_rects(r: &mut Rng, n: usize) {
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0.0, W3 as f64, 0.0, H3 as f64, -1.0, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    for _ in 0..n {
+        glColor4ub(r.next() as u8, r.next() as u8, r.next() as u8, r.next() as u8);
+        let (x, y) = ((r.next() % W3 as u32) as i32 - 40, (r.next() % H3 as u32) as i32 - 40);
+        let (w, h) = (1 + (r.next() % 400) as i32, 1 + (r.next() % 300) as i32);
+        let z = r.unit() * 1.8 - 0.9;
+        glBegin(GL_QUADS);
+        glVertex3f(x as f32, y as f32, z);
+        glVertex3f((x + w) as f32, y as f32, z);
+        glVertex3f((x + w) as f32, (y + h) as f32, z);
+        glVertex3f(x as f32, (y + h) as f32, z);
+        glEnd();
+    }
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+}
+
+/// A random mix of draws, colour and depth clears, accumulation clears,
+/// scissor boxes, colour masks, pixel rectangles and every glAccum
+/// operation (round 13: a large glAccum made while binning is recorded
+/// in the batch and run band by band after the drawing before it), read
+/// back at random sync points and at the end (the accumulation buffer
+/// through GL_RETURN). `flat` draws only flat pixel-aligned rectangles
+/// (for the comparison with the reference path); `reference` turns the
+/// reference path on after the first clear.
+unsafe fn accum_mix_scene(threads: usize, limits: (usize, u64, u64), seed: u64, flat: bool, reference: bool) -> Vec<Vec<u8>> {
+    let mut buf = vec![0u8; (W3 * H3 * 4) as usize];
+    let ctx = context_of(threads, &mut buf, W3, H3);
+    softgl::render::tile::set_batch_limits(&(*ctx).gl.derived.render, limits.0, limits.1, limits.2);
+    let mut r = Rng(seed);
+    let mut out = Vec::new();
+    glClearColor(0.3, 0.5, 0.2, 0.9);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);
+    (*ctx).gl.derived.render.reference = reference;
+    glEnable(GL_DEPTH_TEST);
+    let ops = [GL_ACCUM, GL_LOAD, GL_RETURN, GL_MULT, GL_ADD];
+    for _ in 0..60 {
+        match r.next() % 16 {
+            0..=4 => {
+                let n = r.next() as usize;
+                if flat {
+                    flat_rects(&mut r, 1 + n % 12);
+                } else {
+                    triangles(&mut r, 1 + n % 40);
+                }
+            }
+            5..=8 => {
+                let op = ops[(r.next() % 5) as usize];
+                let value = r.unit() * 3.0 - 1.5;
+                glAccum(op, value);
+            }
+            9 => {
+                glClearColor(r.unit(), r.unit(), r.unit(), r.unit());
+                let depth = if r.next().is_multiple_of(2) { GL_DEPTH_BUFFER_BIT } else { 0 };
+                glClear(GL_COLOR_BUFFER_BIT | depth);
+            }
+            10 => {
+                glClearAccum(r.unit() * 2.0 - 1.0, r.unit() * 2.0 - 1.0, r.unit() * 2.0 - 1.0, r.unit() * 2.0 - 1.0);
+                glClear(GL_ACCUM_BUFFER_BIT);
+            }
+            11 => {
+                // A scissor box: off, large (recorded glAccum) or small.
+                match r.next() % 3 {
+                    0 => glDisable(GL_SCISSOR_TEST),
+                    k => {
+                        let (x, y) = ((r.next() % 200) as i32 - 20, (r.next() % 150) as i32 - 20);
+                        let (w, h) = if k == 1 { (300 + (r.next() % 400) as i32, 200 + (r.next() % 300) as i32) } else { (1 + (r.next() % 100) as i32, 1 + (r.next() % 100) as i32) };
+                        glScissor(x, y, w, h);
+                        glEnable(GL_SCISSOR_TEST);
+                    }
+                }
+            }
+            12 => {
+                let m = r.next();
+                if m.is_multiple_of(3) {
+                    glColorMask((m >> 4) as u8 & 1, (m >> 5) as u8 & 1, (m >> 6) as u8 & 1, (m >> 7) as u8 & 1);
+                } else {
+                    glColorMask(1, 1, 1, 1);
+                }
+            }
+            13 => {
+                glDepthFunc(GL_ALWAYS);
+                glWindowPos3f((r.next() % 300) as f32, (r.next() % 200) as f32, 0.5);
+                if r.next().is_multiple_of(2) {
+                    glCopyPixels((r.next() % 300) as i32, (r.next() % 200) as i32, 200, 150, GL_COLOR);
+                } else {
+                    let img: Vec<u8> = (0..160 * 90 * 4).map(|_| r.next() as u8).collect();
+                    glDrawPixels(160, 90, GL_RGBA, GL_UNSIGNED_BYTE, img.as_ptr() as *const c_void);
+                }
+                glDepthFunc(GL_LESS);
+            }
+            _ => read_of(&mut out, W3, H3),
+        }
+    }
+    // The accumulation buffer, whole: returned as is, then shifted by +1
+    // and halved (its negative values show).
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(1, 1, 1, 1);
+    read_of(&mut out, W3, H3);
+    glAccum(GL_RETURN, 1.0);
+    read_of(&mut out, W3, H3);
+    glAccum(GL_ADD, 1.0);
+    glAccum(GL_RETURN, 0.5);
+    read_of(&mut out, W3, H3);
+    OSMesaDestroyContext(ctx);
+    out
+}
+
+/// Round 13's recorded glAccum against the immediate one: the same
+/// random command streams with 2 and 3 threads (tiny batches handed to
+/// the workers at once, and batches too small for them) as with 1 thread,
+/// and, with flat rectangles, as on the reference path.
+#[test]
+fn recorded_accum_does_not_depend_on_thread_count() {
+    for seed in [1u64, 2, 3, 4] {
+        let one = unsafe { accum_mix_scene(1, (7, 0, 0), seed, false, false) };
+        let n = one.len();
+        assert!(n >= 4 && one[n - 3] != one[n - 2] && one[n - 2] != one[n - 1], "seed {seed}: the final GL_RETURNs change nothing");
+        for limits in [(7, 0, 0), (32 * 1024, 1 << 40, 1 << 40)] {
+            for threads in [2, 3] {
+                let many = unsafe { accum_mix_scene(threads, limits, seed, false, false) };
+                for (k, (a, b)) in one.iter().zip(&many).enumerate() {
+                    let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
+                    assert_eq!(diff, 0, "seed {seed} limits {limits:?} read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
+                }
+            }
+        }
+        let flat_one = unsafe { accum_mix_scene(1, (7, 0, 0), seed, true, false) };
+        for (name, other) in [("reference", unsafe { accum_mix_scene(1, (7, 0, 0), seed, true, true) }), ("2 threads", unsafe { accum_mix_scene(2, (7, 0, 0), seed, true, false) })] {
+            for (k, (a, b)) in flat_one.iter().zip(&other).enumerate() {
+                let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
+                assert_eq!(diff, 0, "seed {seed} flat read-back {k}: 1 thread / {name} differ in {diff} bytes");
+            }
+        }
+    }
+}

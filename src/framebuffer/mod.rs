@@ -152,6 +152,17 @@ impl Framebuffer {
         self.double
     }
 
+    /// Whether [`Self::select_draw`] of `target` would swap the colour
+    /// buffers.
+    pub fn select_swaps(&self, target: DrawTarget) -> bool {
+        let want_back = match target {
+            DrawTarget::Front => false,
+            DrawTarget::Back | DrawTarget::FrontAndBack => true,
+            DrawTarget::None => self.color_is_back,
+        };
+        self.double && want_back != self.color_is_back
+    }
+
     /// Points drawing at the buffers glDrawBuffer names. Cheap when nothing
     /// changes; a no-op on a single-buffered surface, whose one buffer is
     /// every name that exists.

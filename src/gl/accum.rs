@@ -131,14 +131,26 @@ mod simd {
         #[inline(always)]
         unsafe fn store_fixed(p: *mut [i16; 4], v: __m256) {
             let v = _mm256_mul_ps(_mm256_min_ps(_mm256_set1_ps(1.0), _mm256_max_ps(_mm256_set1_ps(-1.0), v)), _mm256_set1_ps(ONE));
-            let t = _mm256_cvttps_epi32(v);
-            let frac = _mm256_sub_ps(v, _mm256_cvtepi32_ps(t));
-            // Masks are -1 where true: t + 1 at or above half, t - 1 at or below minus half.
-            let up = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_GE_OQ>(frac, _mm256_set1_ps(0.5)));
-            let down = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LE_OQ>(frac, _mm256_set1_ps(-0.5)));
-            let r = _mm256_add_epi32(_mm256_sub_epi32(t, up), down);
+            let r = round_half_away(v);
             let packed = _mm_packs_epi32(_mm256_castsi256_si128(r), _mm256_extracti128_si256::<1>(r));
             _mm_storeu_si128(p as *mut __m128i, packed);
+        }
+
+        /// `round_small` in lanes, for |x| <= 32767 (round 13): the
+        /// truncation of x + copysign(pred(1/2), x), 4 instructions
+        /// instead of truncate, convert back, subtract, two compares and
+        /// two integer steps. Exact: with x = n + f (0 <= f < 1), f >= 1/2
+        /// makes the sum at least n + 1 - 2^-25, which rounds to n + 1 or
+        /// above (the spacing below n + 1 is at least 2^-24; at x = 1/2
+        /// the tie goes to the even 1.0) and stays below n + 3/2; f < 1/2
+        /// means f <= 1/2 - ulp(x), so the sum lies more than ulp(x) below
+        /// n + 1, farther than half the spacing there (at most 2 ulp(x)):
+        /// it rounds below n + 1. Negative x mirrors (truncation is
+        /// towards zero). Tested against `round_small` below.
+        #[inline(always)]
+        pub unsafe fn round_half_away(x: __m256) -> __m256i {
+            let half = _mm256_or_ps(_mm256_and_ps(x, _mm256_set1_ps(-0.0)), _mm256_set1_ps(f32::from_bits(0x3eff_ffff)));
+            _mm256_cvttps_epi32(_mm256_add_ps(x, half))
         }
 
         /// GL_ACCUM: acc = to_fixed(from_fixed(acc) + value * c / 255).
@@ -148,6 +160,12 @@ mod simd {
             let v = _mm256_set1_ps(value);
             let (a, c) = (acc.as_mut_ptr(), src.as_ptr());
             let mut i = 0;
+            // Two pairs an iteration (round 13: half the loop's counting).
+            while i + 4 <= n {
+                store_fixed(a.add(i), _mm256_add_ps(from_fixed(a.add(i)), byte_value(c.add(i), v)));
+                store_fixed(a.add(i + 2), _mm256_add_ps(from_fixed(a.add(i + 2)), byte_value(c.add(i + 2), v)));
+                i += 4;
+            }
             while i + 2 <= n {
                 store_fixed(a.add(i), _mm256_add_ps(from_fixed(a.add(i)), byte_value(c.add(i), v)));
                 i += 2;
@@ -291,12 +309,176 @@ fn fill_pending_clear(threads: usize, fb: &mut Framebuffer) {
     }
 }
 
+/// One glAccum's work, row by row (section 4.2.4): everything a row
+/// needs, computed once per call. The immediate bands ([`for_bands`]) and
+/// a band recorded in a flight of the rasterizer (round 13:
+/// `render::tile::defer_band_op`) both run [`AccumRows::row`], so the
+/// bytes do not depend on the path.
+struct AccumRows {
+    op: u32,
+    value: f32,
+    /// The scissored rectangle.
+    r: Rect,
+    /// ACCUM and LOAD read the colour buffer that is not drawn.
+    read_other: bool,
+    /// GL_RETURN writes both colour buffers (FRONT_AND_BACK).
+    both: bool,
+    mask: [bool; 4],
+    /// The AVX2 rows may run (`avx2_for`).
+    lanes: bool,
+    /// A byte's value times `value`, and its LOAD result.
+    add: [f32; 256],
+    load: [i16; 256],
+    /// GL_RETURN's byte per accumulation value, for large rectangles
+    /// outside the AVX2 rows.
+    table: Option<Vec<u8>>,
+    /// A recorded accumulation clear written first (recorded bands only;
+    /// the immediate path writes it in its own pass before).
+    fill: Option<(Rect, [i16; 4])>,
+}
+
+impl AccumRows {
+    fn new(op: u32, value: f32, r: Rect, read_other: bool, both: bool, mask: [bool; 4]) -> AccumRows {
+        let lanes = avx2_for(value);
+        let add: [f32; 256] = std::array::from_fn(|c| value * (c as f32 / 255.0));
+        let load: [i16; 256] = std::array::from_fn(|c| to_fixed(add[c]));
+        let whole = mask == [true; 4] && !both;
+        let big = (r.x1 - r.x0) as usize * (r.y1 - r.y0) as usize * 4 >= RETURN_TABLE_MIN;
+        let table = (op == GL_RETURN && !(lanes && whole) && big).then(|| (0..=u16::MAX).map(|a| returned(value, a as i16)).collect());
+        AccumRows { op, value, r, read_other, both, mask, lanes, add, load, table, fill: None }
+    }
+
+    /// The operation on one row: `a` and `color` are whole rows of the
+    /// accumulation buffer and the drawn colour buffer, `other` the row
+    /// of the other colour buffer (None when single-buffered).
+    fn row(&self, a: &mut [[i16; 4]], color: &mut [[u8; 4]], other: Option<&mut [[u8; 4]]>) {
+        let (x0, x1) = (self.r.x0 as usize, self.r.x1 as usize);
+        let (op, value, lanes) = (self.op, self.value, self.lanes);
+        match op {
+            GL_ACCUM | GL_LOAD => {
+                let (add, load) = (&self.add, &self.load);
+                let s: &[[u8; 4]] = if self.read_other { other.expect("a second colour buffer") } else { color };
+                let (s, a) = (&s[x0..x1], &mut a[x0..x1]);
+                let load_px = |acc: &mut [i16; 4], c: [u8; 4]| *acc = c.map(|v| load[v as usize]);
+                let accum_px = |acc: &mut [i16; 4], c: [u8; 4]| *acc = accum_pixel(*acc, c.map(|v| add[v as usize]));
+                #[cfg(target_arch = "x86_64")]
+                if lanes {
+                    // Safety: AVX2 checked (`avx2_for`).
+                    unsafe {
+                        if op == GL_LOAD {
+                            simd::avx2::load_row(a, s, value, load_px);
+                        } else {
+                            simd::avx2::accum_row(a, s, value, accum_px);
+                        }
+                    }
+                    return;
+                }
+                if op == GL_LOAD {
+                    for (acc, c) in a.iter_mut().zip(s) {
+                        load_px(acc, *c);
+                    }
+                } else if !simd::accum_row(a, s, add) {
+                    for (acc, c) in a.iter_mut().zip(s) {
+                        accum_px(acc, *c);
+                    }
+                }
+            }
+            GL_MULT | GL_ADD => {
+                let px = |a: &mut [i16; 4]| {
+                    for ch in a.iter_mut() {
+                        *ch = to_fixed(if op == GL_MULT { from_fixed(*ch) * value } else { from_fixed(*ch) + value });
+                    }
+                };
+                #[cfg(target_arch = "x86_64")]
+                if lanes {
+                    // Safety: AVX2 checked (`avx2_for`).
+                    unsafe { simd::avx2::mult_add_row(&mut a[x0..x1], op == GL_MULT, value, px) };
+                    return;
+                }
+                a[x0..x1].iter_mut().for_each(px);
+            }
+            _ => self.return_row(a, color, other),
+        }
+    }
+
+    /// GL_RETURN: value * acc, clamped, through the masks, into each draw
+    /// buffer.
+    fn return_row(&self, acc: &[[i16; 4]], color: &mut [[u8; 4]], mut other: Option<&mut [[u8; 4]]>) {
+        let (x0, x1) = (self.r.x0 as usize, self.r.x1 as usize);
+        let (value, mask, both) = (self.value, self.mask, self.both);
+        let whole = mask == [true; 4] && !both;
+        let (acc, color) = (&acc[x0..x1], &mut color[x0..x1]);
+        #[cfg(target_arch = "x86_64")]
+        if self.lanes && whole {
+            // Safety: AVX2 checked (`avx2_for`).
+            unsafe { simd::avx2::return_row(acc, color, value, |out, a| *out = a.map(|a| returned(value, a))) };
+            return;
+        }
+        let table = &self.table;
+        if let (Some(t), true) = (table, whole) {
+            // The common case: a whole row of whole pixels.
+            for (out, acc) in color.iter_mut().zip(acc) {
+                *out = acc.map(|a| t[a as u16 as usize]);
+            }
+            return;
+        }
+        let byte = |a: i16| match table {
+            Some(t) => t[a as u16 as usize],
+            None => returned(value, a),
+        };
+        for (i, acc) in acc.iter().enumerate() {
+            let mut out = color[i];
+            for ch in 0..4 {
+                if mask[ch] {
+                    out[ch] = byte(acc[ch]);
+                }
+            }
+            color[i] = out;
+            if let (true, Some(other)) = (both, other.as_deref_mut()) {
+                let o = &mut other[x0 + i];
+                for ch in 0..4 {
+                    if mask[ch] {
+                        o[ch] = out[ch];
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A glAccum recorded in a flight (round 13): recorded only when it reads
+/// and writes the drawn colour buffer alone (`Context::accum`).
+impl crate::render::tile::BandOp for AccumRows {
+    fn band(&self, y0: usize, y1: usize, width: usize, color: &mut [[u8; 4]], accum: &mut [[i16; 4]]) {
+        if accum.len() < (y1 - y0) * width || color.len() < (y1 - y0) * width {
+            return;
+        }
+        if let Some((c, v)) = self.fill {
+            let (x0, x1) = (c.x0 as usize, c.x1 as usize);
+            for y in y0.max(c.y0 as usize)..y1.min(c.y1 as usize) {
+                accum[(y - y0) * width..][x0..x1].fill(v);
+            }
+        }
+        for y in y0.max(self.r.y0 as usize)..y1.min(self.r.y1 as usize) {
+            let at = (y - y0) * width..(y - y0 + 1) * width;
+            self.row(&mut accum[at.clone()], &mut color[at], None);
+        }
+    }
+}
+
 impl Context {
     /// glAccum. Whole rows at a time; the colour of a byte c is c / 255
     /// times `value`, the same f32 expression per byte whether computed per
     /// pixel, in lanes or once into a 256-entry table, so the tables and
     /// lanes change no result (tests below compare with the per-pixel
     /// arithmetic).
+    ///
+    /// Round 13: while the rasterizer's threads bin, a large glAccum that
+    /// reads and writes only the drawn colour buffer is not run at once:
+    /// it is recorded in the batch after the primitives drawn before it
+    /// (`render::tile::defer_band_op`), and each band of the flight runs
+    /// it on its rows right after drawing them (`Command::Accum` does not
+    /// sync before it; every other case syncs here).
     pub fn accum(&mut self, op: u32, value: f32) {
         if !matches!(op, GL_ACCUM | GL_LOAD | GL_RETURN | GL_MULT | GL_ADD) {
             return self.set_error(GL_INVALID_ENUM);
@@ -309,113 +491,31 @@ impl Context {
             return;
         }
         let mask = if self.color_buffer.draw_buffer == 0 { [false; 4] } else { self.fb.config.color_mask(self.color_buffer.write_mask) };
-        self.sync_draw_buffer();
+        self.sync_draw_buffer_keeping_batch();
         let read_back = matches!(self.pixel_read_buffer, GL_BACK | 0x0402 /* BACK_LEFT */);
         let threads = self.derived.render.threads;
+        // The read buffer of ACCUM and LOAD: the drawn one, or the other.
+        let read_other = read_back != self.fb.color_is_back && self.fb.is_double_buffered();
+        let both = self.fb.draw_both;
+        let pixels = (r.x1 - r.x0) as usize * (r.y1 - r.y0) as usize;
+        let record = crate::render::tile::binning(&self.derived.render) && pixels >= PARALLEL_PIXELS && !both && (!read_other || matches!(op, GL_MULT | GL_ADD | GL_RETURN)) && self.fb.accum.len() >= self.fb.width * self.fb.height;
+        if !record {
+            self.sync_render();
+        }
         let fb = &mut self.fb;
         // A recorded clear: a LOAD over all of it overwrites it unseen.
         if fb.accum_clear.is_some_and(|(c, _)| op == GL_LOAD && covers(r, c)) {
             fb.accum_clear = None;
         }
-        fill_pending_clear(threads, fb);
-        // The read buffer of ACCUM and LOAD: the drawn one, or the other.
-        let read_other = !(read_back == fb.color_is_back || !fb.is_double_buffered());
-        let both = fb.draw_both;
-        let (x0, x1) = (r.x0 as usize, r.x1 as usize);
-        let lanes = avx2_for(value);
-        // Each row is independent of the others: bands of rows in parallel.
-        match op {
-            GL_ACCUM | GL_LOAD => {
-                let add: [f32; 256] = std::array::from_fn(|c| value * (c as f32 / 255.0));
-                let load: [i16; 256] = std::array::from_fn(|c| to_fixed(add[c]));
-                for_bands(threads, fb, r, |_, a, color, other| {
-                    let s: &[[u8; 4]] = if read_other { other.expect("a second colour buffer") } else { color };
-                    let (s, a) = (&s[x0..x1], &mut a[x0..x1]);
-                    let load_px = |acc: &mut [i16; 4], c: [u8; 4]| *acc = c.map(|v| load[v as usize]);
-                    let accum_px = |acc: &mut [i16; 4], c: [u8; 4]| *acc = accum_pixel(*acc, c.map(|v| add[v as usize]));
-                    #[cfg(target_arch = "x86_64")]
-                    if lanes {
-                        // Safety: AVX2 checked (`avx2_for`).
-                        unsafe {
-                            if op == GL_LOAD {
-                                simd::avx2::load_row(a, s, value, load_px);
-                            } else {
-                                simd::avx2::accum_row(a, s, value, accum_px);
-                            }
-                        }
-                        return;
-                    }
-                    if op == GL_LOAD {
-                        for (acc, c) in a.iter_mut().zip(s) {
-                            load_px(acc, *c);
-                        }
-                    } else if !simd::accum_row(a, s, &add) {
-                        for (acc, c) in a.iter_mut().zip(s) {
-                            accum_px(acc, *c);
-                        }
-                    }
-                });
-            }
-            GL_MULT | GL_ADD => {
-                let px = |a: &mut [i16; 4]| {
-                    for ch in a.iter_mut() {
-                        *ch = to_fixed(if op == GL_MULT { from_fixed(*ch) * value } else { from_fixed(*ch) + value });
-                    }
-                };
-                for_bands(threads, fb, r, |_, a, _, _| {
-                    #[cfg(target_arch = "x86_64")]
-                    if lanes {
-                        // Safety: AVX2 checked (`avx2_for`).
-                        unsafe { simd::avx2::mult_add_row(&mut a[x0..x1], op == GL_MULT, value, px) };
-                        return;
-                    }
-                    a[x0..x1].iter_mut().for_each(px);
-                });
-            }
-            _ => {
-                // GL_RETURN: value * acc, clamped, through the masks, into
-                // each draw buffer.
-                let whole = mask == [true; 4] && !both;
-                let table: Option<Vec<u8>> = (!(lanes && whole) && (x1 - x0) * (r.y1 - r.y0) as usize * 4 >= RETURN_TABLE_MIN).then(|| (0..=u16::MAX).map(|a| returned(value, a as i16)).collect());
-                let byte = |a: i16| match &table {
-                    Some(t) => t[a as u16 as usize],
-                    None => returned(value, a),
-                };
-                for_bands(threads, fb, r, |_, acc, color, mut other| {
-                    let (acc, color) = (&acc[x0..x1], &mut color[x0..x1]);
-                    #[cfg(target_arch = "x86_64")]
-                    if lanes && whole {
-                        // Safety: AVX2 checked (`avx2_for`).
-                        unsafe { simd::avx2::return_row(acc, color, value, |out, a| *out = a.map(|a| returned(value, a))) };
-                        return;
-                    }
-                    if let (Some(t), true) = (&table, whole) {
-                        // The common case: a whole row of whole pixels.
-                        for (out, acc) in color.iter_mut().zip(acc) {
-                            *out = acc.map(|a| t[a as u16 as usize]);
-                        }
-                        return;
-                    }
-                    for (i, acc) in acc.iter().enumerate() {
-                        let mut out = color[i];
-                        for ch in 0..4 {
-                            if mask[ch] {
-                                out[ch] = byte(acc[ch]);
-                            }
-                        }
-                        color[i] = out;
-                        if let (true, Some(other)) = (both, other.as_deref_mut()) {
-                            let o = &mut other[x0 + i];
-                            for ch in 0..4 {
-                                if mask[ch] {
-                                    o[ch] = out[ch];
-                                }
-                            }
-                        }
-                    }
-                });
-            }
+        let mut rows = AccumRows::new(op, value, r, read_other, both, mask);
+        if record {
+            rows.fill = fb.accum_clear.take();
+            crate::render::tile::defer_band_op(&self.derived.render, Box::new(rows));
+            return;
         }
+        fill_pending_clear(threads, fb);
+        // Each row is independent of the others: bands of rows in parallel.
+        for_bands(threads, fb, r, |_, a, color, other| rows.row(a, color, other));
     }
 
     /// The accumulation part of glClear: recorded, written by the next
@@ -429,6 +529,8 @@ impl Context {
         let threads = self.derived.render.threads;
         let fb = &mut self.fb;
         if fb.accum_clear.is_some_and(|(c, _)| !covers(r, c)) {
+            // Recorded glAccum bands may still be in flight (round 13).
+            crate::render::tile::sync(&self.derived.render, fb);
             fill_pending_clear(threads, fb);
         }
         fb.accum_clear = Some((r, v));
@@ -458,6 +560,48 @@ mod tests {
         }
         for v in (-1100..=1100).map(|i| i as f32 / 1000.0) {
             assert_eq!(to_fixed(v), (v.clamp(-1.0, 1.0) * ONE).round() as i16, "{v}");
+        }
+    }
+
+    /// The AVX2 rounding against `round_small` on every f32 within 8
+    /// units in the last place of each integer and each half-integer up
+    /// to 32767 (where the result changes), both signs, and a million
+    /// random values in range.
+    #[test]
+    #[cfg(target_arch = "x86_64")]
+    fn avx2_rounding_is_round_small() {
+        if !is_x86_feature_detected!("avx2") {
+            return;
+        }
+        let mut xs = vec![0.0f32, -0.0, 32767.0, -32767.0];
+        for k in 0..=32767i32 {
+            for c in [k as f32, k as f32 + 0.5] {
+                for d in -8i32..=8 {
+                    let x = f32::from_bits((c.to_bits() as i32 + d).max(0) as u32);
+                    if x <= 32767.0 {
+                        xs.extend([x, -x]);
+                    }
+                }
+            }
+        }
+        let mut seed = 31u64;
+        for _ in 0..1_000_000 {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            xs.push(((seed >> 40) as f32 / (1u64 << 24) as f32) * 65534.0 - 32767.0);
+        }
+        while xs.len() % 8 != 0 {
+            xs.push(0.25);
+        }
+        for x in xs.chunks(8) {
+            let mut got = [0i32; 8];
+            // Safety: AVX2 checked above.
+            unsafe {
+                use std::arch::x86_64::*;
+                _mm256_storeu_si256(got.as_mut_ptr() as *mut __m256i, simd::avx2::round_half_away(_mm256_loadu_ps(x.as_ptr())));
+            }
+            for (g, &x) in got.iter().zip(x) {
+                assert_eq!(*g, round_small(x) as i32, "{x} ({:#x})", x.to_bits());
+            }
         }
     }
 
@@ -637,6 +781,9 @@ mod tests {
                     c.fb.color.copy_from_slice(&color);
                     c.fb.accum.copy_from_slice(&acc);
                     c.accum(op, value);
+                    // A large glAccum may be recorded for the rasterizer's
+                    // threads (round 13): whatever reads the buffers syncs.
+                    c.sync_render();
                     for i in 0..w * h {
                         let (s, a) = (color[i], acc[i]);
                         let want_acc: [i16; 4] = std::array::from_fn(|ch| match op {

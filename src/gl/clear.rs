@@ -6,7 +6,8 @@
 //! Large clears are written in bands of rows by the rasterizer's threads;
 //! while they bin triangles, a large clear is instead recorded for the
 //! next flight of triangles, whose workers write each band's rows just
-//! before they draw into it (round 11: `render::tile::defer_clear`).
+//! before they draw into it (round 11: `render::tile::defer_clear`), and
+//! since round 13 without waiting for the batches binned before it.
 
 use super::context::Context;
 use super::enums::*;
@@ -75,7 +76,10 @@ impl Context {
             return;
         }
         // Each draw buffer is cleared (4.2.3): both for FRONT_AND_BACK.
-        self.sync_draw_buffer();
+        // `Command::Clear` does not sync first (round 13): a clear
+        // recorded for the next flight leaves the batches binned before it
+        // to the workers; every other case syncs below.
+        self.sync_draw_buffer_keeping_batch();
         let threads = self.derived.render.threads;
         let (has_depth, has_stencil) = (self.fb.has_depth(), self.fb.has_stencil());
         let config = self.fb.config;
@@ -109,6 +113,7 @@ impl Context {
             // just before they draw into it (see `tile::defer_clear`).
             crate::render::tile::defer_clear(&self.derived.render, &mut self.fb, c);
         } else if writes {
+            self.sync_render();
             let Framebuffer { width: w, color, other_color, draw_both, depth, stencil, .. } = &mut self.fb;
             let w = *w;
             let mut bands: Vec<Band> = Vec::new();

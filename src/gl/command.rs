@@ -245,7 +245,9 @@ impl Context {
             }
             _ => {}
         }
-        if !cmd.leaves_framebuffer() {
+        // glClear and glAccum sync themselves unless they record their
+        // work in the rasterizer's batch (round 13).
+        if !cmd.leaves_framebuffer() && !matches!(cmd, Command::Clear(_) | Command::Accum(..)) {
             self.sync_render();
         }
         if self.in_begin_end() && !cmd.allowed_in_begin_end() {

@@ -77,14 +77,31 @@ impl Context {
 impl Context {
     /// Points the framebuffer at the buffers the draw-buffer state names.
     pub fn sync_draw_buffer(&mut self) {
-        let target = match self.color_buffer.draw_buffer {
+        let target = self.draw_target();
+        self.fb.select_draw(target);
+    }
+
+    /// [`Self::sync_draw_buffer`] for a command that may record itself
+    /// in the rasterizer's batch (round 13: glClear, glAccum) rather than
+    /// sync first: when it would swap the colour buffers, whatever is
+    /// binned is shaded first (it draws into the buffer drawn before).
+    pub fn sync_draw_buffer_keeping_batch(&mut self) {
+        let target = self.draw_target();
+        if self.fb.select_swaps(target) {
+            self.sync_render();
+        }
+        self.fb.select_draw(target);
+    }
+
+    /// The colour buffers the draw-buffer state names.
+    fn draw_target(&self) -> DrawTarget {
+        match self.color_buffer.draw_buffer {
             GL_FRONT | GL_FRONT_LEFT => DrawTarget::Front,
             GL_BACK | GL_BACK_LEFT => DrawTarget::Back,
             // Table 4.4: LEFT names the front and back left buffers.
             GL_FRONT_AND_BACK | GL_LEFT => DrawTarget::FrontAndBack,
             _ => DrawTarget::None,
-        };
-        self.fb.select_draw(target);
+        }
     }
 
     /// The colour buffer glReadBuffer names (FRONT and LEFT: the front

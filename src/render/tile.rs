@@ -73,7 +73,9 @@
 //! (glAccum, large glClear and glReadPixels) are cut into bands of rows
 //! by `pool::for_pieces` and `gl::accum`; a large glClear made while
 //! binning is instead recorded for the next flight, which writes each
-//! band's rows just before drawing that band ([`defer_clear`], round 11).
+//! band's rows just before drawing that band ([`defer_clear`], round 11),
+//! and a large glAccum is recorded in the batch between the primitives,
+//! run by each band after the drawing before it ([`BandOp`], round 13).
 
 use super::fragment::fast::Kernel;
 use super::fragment::{Buffers, SpanPixels};
@@ -241,6 +243,10 @@ pub struct Batch {
     points: Vec<PointRun>,
     /// The states the triangles were drawn under, in order.
     states: Vec<Arc<ShadeState>>,
+    /// Band commands recorded between the primitives (round 13:
+    /// glAccum), each with the number of primitives recorded before it:
+    /// a band applies it after those and before the rest ([`defer_band_op`]).
+    ops: Vec<(usize, Box<dyn BandOp>)>,
     /// Work in pixels: the triangles' bounding boxes, the lines' and
     /// points' fragments, plus [`SETUP_PIXELS`] per primitive.
     work: u64,
@@ -289,6 +295,18 @@ impl std::fmt::Debug for Batch {
     fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
         write!(f, "Batch({} triangles)", self.tris.len())
     }
+}
+
+/// A command other than a primitive applied band by band inside a flight
+/// (round 13: glAccum, `gl::accum`): each band runs it on its own rows
+/// after the primitives recorded before it and before those recorded
+/// after it, so it sees exactly the drawing GL's order puts before it.
+pub trait BandOp: Send + Sync {
+    /// Applies the command to rows [y0, y1) of planes `width` wide, given
+    /// as the slices holding exactly those rows (the drawn colour buffer
+    /// and the accumulation buffer); rows outside the command's
+    /// rectangle are left alone.
+    fn band(&self, y0: usize, y1: usize, width: usize, color: &mut [[u8; 4]], accum: &mut [[i16; 4]]);
 }
 
 /// A context's batch and whether it holds anything. Beside it, the batch
@@ -619,17 +637,40 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
 /// in cache when the band's fragments read and write the same pixels, the
 /// calling thread goes on with the front end meanwhile, and nothing
 /// waits for a separate hand-off. Only while binning (more than one
-/// thread): the 1-thread path writes clears at once. Anything binned
-/// before is shaded first (glClear syncs anyway), so the clear keeps its
+/// thread): the 1-thread path writes clears at once. Anything binned or
+/// recorded before is handed to the workers first (round 13: without
+/// waiting for it), and flights run in order, so the clear keeps its
 /// place in GL's order.
 pub fn defer_clear(rs: &RenderState, fb: &mut Framebuffer, c: Clear) {
     let cell = &rs.batch;
+    // Round 13: whatever is binned or recorded before the clear is handed
+    // to the workers without waiting for it (`gl::clear` no longer syncs
+    // first when it records); flights run in order, so the clear's flight
+    // comes after it.
     // Safety: the context's thread (as `filling`).
-    if !unsafe { filling(cell) }.tris.is_empty() || unsafe { (*cell.clear.get()).is_some() } || cell.flying.load(Ordering::Relaxed) {
-        flush(rs, fb);
+    let b = unsafe { filling(cell) };
+    if !b.tris.is_empty() || !b.ops.is_empty() || unsafe { (*cell.clear.get()).is_some() } {
+        submit(rs, fb);
     }
     // Safety: as above; no flight holds this slot (flights take it).
     unsafe { *cell.clear.get() = Some(c) };
+    cell.pending.store(true, Ordering::Relaxed);
+}
+
+/// Records a band command (round 13: glAccum) after everything binned so
+/// far: each band of the flight that takes the batch runs it on its rows
+/// just after drawing the primitives binned before it, while those rows
+/// are in the thread's cache, and the calling thread goes on (no sync, no
+/// separate hand-off). Primitives binned after it join the same batch and
+/// are drawn after it in each band. Only while binning; the caller has
+/// checked that the command reads and writes nothing but the drawn
+/// colour buffer and the accumulation buffer, which nothing else touches
+/// until the next sync point.
+pub fn defer_band_op(rs: &RenderState, op: Box<dyn BandOp>) {
+    let cell = &rs.batch;
+    // Safety: the context's thread (as `filling`).
+    let b = unsafe { filling(cell) };
+    b.ops.push((b.tris.len(), op));
     cell.pending.store(true, Ordering::Relaxed);
 }
 
@@ -647,6 +688,8 @@ pub fn sync(rs: &RenderState, fb: &mut Framebuffer) {
 struct RawPixels {
     width: usize,
     color: *mut [u8; 4],
+    /// The accumulation buffer (null when there is none).
+    accum: *mut [i16; 4],
     depth: *mut u32,
     stencil: *mut u8,
     has_depth: bool,
@@ -662,11 +705,24 @@ impl RawPixels {
         RawPixels {
             width: fb.width,
             color: fb.color.as_mut_ptr(),
+            accum: if fb.accum.len() >= fb.width * fb.height { fb.accum.as_mut_ptr() } else { std::ptr::null_mut() },
             depth: fb.depth.as_mut_ptr(),
             stencil: fb.stencil.as_mut_ptr(),
             has_depth: fb.has_depth(),
             has_stencil: fb.has_stencil(),
         }
+    }
+
+    /// Rows [y0, y1) of the colour and accumulation buffers (the latter
+    /// empty when there is none).
+    ///
+    /// Safety: the rows lie inside the framebuffer, and no other live
+    /// slice of them exists.
+    #[allow(clippy::mut_from_ref)]
+    unsafe fn rows(&self, y0: usize, y1: usize) -> (&mut [[u8; 4]], &mut [[i16; 4]]) {
+        let (at, n) = (y0 * self.width, (y1 - y0) * self.width);
+        let accum = if self.accum.is_null() { &mut [][..] } else { std::slice::from_raw_parts_mut(self.accum.add(at), n) };
+        (std::slice::from_raw_parts_mut(self.color.add(at), n), accum)
     }
 
     /// Pixels [x0, x1) of row y.
@@ -738,7 +794,7 @@ impl Flight {
             binned: AtomicU8::new(UNBINNED),
             rows: BAND,
             surface: Rect::new(0, 0, 0, 0),
-            raw: RawPixels { width: 0, color: std::ptr::null_mut(), depth: std::ptr::null_mut(), stencil: std::ptr::null_mut(), has_depth: false, has_stencil: false },
+            raw: RawPixels { width: 0, color: std::ptr::null_mut(), accum: std::ptr::null_mut(), depth: std::ptr::null_mut(), stencil: std::ptr::null_mut(), has_depth: false, has_stencil: false },
             next: AtomicUsize::new(0),
             left,
             passed: AtomicU64::new(0),
@@ -808,6 +864,7 @@ impl Flight {
         b.lines.clear();
         b.points.clear();
         b.states.clear();
+        b.ops.clear();
         b.work = 0;
         b.last_stamp = 0;
         self.first_clear = None;
@@ -836,7 +893,19 @@ impl pool::Work for Flight {
                 let px = unsafe { raw.span(y, 0, (tile.y1 as usize - y) * raw.width) };
                 c.rows(raw.width, y, tile.y1 as usize, px.color, px.depth, px.stencil);
             }
+            // Band commands recorded between the primitives: each after
+            // the primitives before it (`at`), in order.
+            let mut ops = b.ops.iter().peekable();
+            let band_op = |op: &dyn BandOp| {
+                // Safety: the band's rows, which no other thread holds; no
+                // other slice of them is alive during the call.
+                let (color, accum) = unsafe { raw.rows(y, tile.y1 as usize) };
+                op.band(y, tile.y1 as usize, raw.width, color, accum);
+            };
             for &i in &bins[k] {
+                while let Some((_, op)) = ops.next_if(|(at, _)| *at <= i as usize) {
+                    band_op(&**op);
+                }
                 let t = &b.tris[i as usize];
                 let r = t.bbox.intersect(tile);
                 if r.is_empty() {
@@ -858,6 +927,9 @@ impl pool::Work for Flight {
                     kernel(&st.fragment, setup, &mut px, py, lo, hi);
                     local += px.passed;
                 });
+            }
+            for (_, op) in ops {
+                band_op(&**op);
             }
             self.left.fetch_sub(1, Ordering::Release);
         }
@@ -890,7 +962,7 @@ fn take_batch(cell: &SharedBatch, fl: &mut Flights) -> Option<Box<Flight>> {
     cell.pending.store(false, Ordering::Relaxed);
     // Safety: as `filling`.
     let clear = unsafe { (*cell.clear.get()).take() };
-    if b.tris.is_empty() && clear.is_none() {
+    if b.tris.is_empty() && clear.is_none() && b.ops.is_empty() {
         return None;
     }
     let mut flight = match fl.spare.pop() {
@@ -922,8 +994,9 @@ pub fn submit(rs: &RenderState, fb: &mut Framebuffer) {
 /// Starts `flight` on the workers (or shades it now if it is small).
 fn launch(rs: &RenderState, fl: &mut Flights, mut flight: Box<Flight>, fb: &mut Framebuffer) {
     let b = &flight.batch;
-    // A recorded clear is a whole-frame's work: always on the threads.
-    if rs.threads <= 1 || (b.work < rs.batch.parallel_work.load(Ordering::Relaxed) && flight.first_clear.is_none()) {
+    // A recorded clear or band command is a whole-frame's work: always
+    // on the threads.
+    if rs.threads <= 1 || (b.work < rs.batch.parallel_work.load(Ordering::Relaxed) && flight.first_clear.is_none() && b.ops.is_empty()) {
         if let Some(c) = flight.first_clear.take() {
             c.rows(fb.width, 0, fb.height, &mut fb.color[..], &mut fb.depth[..], &mut fb.stencil[..]);
         }
@@ -946,7 +1019,11 @@ fn launch(rs: &RenderState, fl: &mut Flights, mut flight: Box<Flight>, fb: &mut 
 fn shade_here(b: &Batch, fb: &mut Framebuffer) {
     let surface = Rect::new(0, 0, fb.width as i32, fb.height as i32);
     let width = fb.width;
-    for t in &b.tris {
+    let mut ops = b.ops.iter().peekable();
+    for (i, t) in b.tris.iter().enumerate() {
+        while let Some((_, op)) = ops.next_if(|(at, _)| *at <= i) {
+            op.band(0, fb.height, width, &mut fb.color[..], &mut fb.accum[..]);
+        }
         let (st, extra) = (&*b.states[t.state as usize], b.extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
         if t.prim != TRIANGLE {
             draw_prim(b, t, st, fb, width, t.bbox.intersect(surface));
@@ -958,6 +1035,9 @@ fn shade_here(b: &Batch, fb: &mut Framebuffer) {
             let passed = px.passed;
             fb.samples_passed = fb.samples_passed.wrapping_add(passed);
         });
+    }
+    for (_, op) in ops {
+        op.band(0, fb.height, width, &mut fb.color[..], &mut fb.accum[..]);
     }
 }
 
