@@ -754,6 +754,8 @@ struct Flight {
     left: Arc<AtomicUsize>,
     /// Fragments that passed the depth test (occlusion queries).
     passed: AtomicU64,
+    /// Trace: the flight's number.
+    seq: u32,
 }
 
 /// [`Flight::binned`]: the band lists are empty, being filled, filled.
@@ -782,6 +784,7 @@ impl Flight {
             next: AtomicUsize::new(0),
             left,
             passed: AtomicU64::new(0),
+            seq: 0,
         })
     }
 
@@ -879,12 +882,15 @@ impl pool::Work for Flight {
         let of = |t: &Binned| (&*b.states[t.state as usize], b.extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
         let raw = &self.raw;
         let mut local = 0u64;
+        let t0 = super::trace::now();
         let (bins, order) = self.bin_once();
+        super::trace::rec(b'l', t0, self.seq);
         loop {
             let Some(&k) = order.get(self.next.fetch_add(1, Ordering::Relaxed)) else {
                 break;
             };
             let k = k as usize;
+            let t0 = super::trace::now();
             let y = k * self.rows;
             let tile = Rect { x0: 0, y0: y as i32, x1: self.surface.x1, y1: (y + self.rows) as i32 }.intersect(self.surface);
             if let Some(c) = &self.first_clear {
@@ -915,6 +921,7 @@ impl pool::Work for Flight {
                     local += px.passed;
                 });
             }
+            super::trace::rec(b'b', t0, (self.seq << 8) | k as u32);
             self.left.fetch_sub(1, Ordering::Release);
         }
         self.passed.fetch_add(local, Ordering::Relaxed);
@@ -967,6 +974,12 @@ fn take_batch(cell: &SharedBatch, fl: &mut Flights) -> Option<Box<Flight>> {
 /// for it (after waiting for the one before it: batches are shaded in
 /// order). A batch with little work is shaded at once on this thread.
 pub fn submit(rs: &RenderState, fb: &mut Framebuffer) {
+    let t0 = super::trace::now();
+    submit_(rs, fb);
+    super::trace::rec(b'S', t0, 0);
+}
+
+fn submit_(rs: &RenderState, fb: &mut Framebuffer) {
     let cell = &rs.batch;
     // Safety: the context's thread (as `filling`).
     let len = unsafe { filling(cell) }.tris.len();
@@ -1007,6 +1020,8 @@ fn launch(rs: &RenderState, fl: &mut Flights, mut flight: Box<Flight>, fb: &mut 
         return;
     }
     flight.prepare(fb, rs.threads);
+    flight.seq = FLIGHTS.load(Ordering::Relaxed) as u32;
+    super::trace::rec(b'L', super::trace::now(), flight.batch.tris.len() as u32);
     // Safety: the flight is boxed (its address stays put) and is only
     // dropped or reused after `finish`, which every path to the
     // framebuffer and the context's end calls first (`sync`).
@@ -1043,6 +1058,16 @@ pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
     if !cell.pending.load(Ordering::Relaxed) && !cell.flying.load(Ordering::Relaxed) {
         return;
     }
+    let t0 = super::trace::now();
+    flush_(rs, fb);
+    super::trace::rec(b'F', t0, 0);
+    if super::trace::on() {
+        super::trace::dump();
+    }
+}
+
+fn flush_(rs: &RenderState, fb: &mut Framebuffer) {
+    let cell = &rs.batch;
     let mut fl = lock_flights(cell);
     finish(cell, &mut fl, fb);
     if let Some(flight) = take_batch(cell, &mut fl) {
