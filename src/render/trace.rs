@@ -1,7 +1,9 @@
-//! Temporary timeline instrumentation (round 13, scal6): with
+//! Timeline instrumentation of the threaded rasterizer (round 13): with
 //! `SOFTGL_TRACE=FILE` every thread's band work, waits and hand-offs are
 //! appended to FILE as text lines `thread kind t0 t1 arg` (nanoseconds),
-//! written at each flush. Off (one relaxed load) by default.
+//! written at each flush (`tools/trace_frames.py` sums them per thread
+//! and frame). Off by default: each event costs a check of a once-set
+//! flag.
 
 use std::sync::atomic::{AtomicU32, Ordering};
 use std::sync::{Mutex, OnceLock};
