@@ -24,7 +24,11 @@
 //! (two batches in rotation, their vectors reused). Only the next
 //! submission (batches are shaded in order) and the sync points wait for
 //! the flight, and the waiting thread shades the bands left rather than
-//! sleep: at a sync point every thread shades. A Flight owns all it reads
+//! sleep: at a sync point every thread shades. Round 13: a batch three
+//! quarters full while the flight before is still shaded makes the
+//! calling thread take that flight's untaken bands and bin on rather than
+//! wait for the last band ([`submit`]), and a flight's bands are taken
+//! heaviest first ([`Flight::bin_once`]). A Flight owns all it reads
 //! (triangle records, Arc'ed immutable states whose textures are
 //! copy-on-write), and writes the framebuffer's planes through raw
 //! pointers, which stay valid because everything that reads, writes,
