@@ -874,6 +874,59 @@ unsafe fn accum_mix_scene(threads: usize, limits: (usize, u64, u64), seed: u64, 
     out
 }
 
+const W4: i32 = 200;
+const H4: i32 = 700;
+
+/// Clusters of small triangles (a few bands hold most of the work, so the
+/// bands are taken in a different order than top to bottom: round 13's
+/// heaviest band first) with some large ones across many bands, after a
+/// recorded clear, counted by an occlusion query and read back now and
+/// then. With `limits` = (64 triangles, submit work never reached, every
+/// batch to the workers), each batch is handed over only when full, and
+/// the calling thread, reaching 48 triangles while the flight before is
+/// still shaded, takes that flight's untaken bands and goes on binning
+/// (round 13: `tile::submit`'s help).
+unsafe fn helped_flights_scene(threads: usize, limits: (usize, u64, u64)) -> Vec<Vec<u8>> {
+    let mut buf = vec![0u8; (W4 * H4 * 4) as usize];
+    let ctx = context_of(threads, &mut buf, W4, H4);
+    softgl::render::tile::set_batch_limits(&(*ctx).gl.derived.render, limits.0, limits.1, limits.2);
+    let mut r = Rng(0x4e1f);
+    let mut out = Vec::new();
+    glEnable(GL_DEPTH_TEST);
+    for frame in 0..4 {
+        glClearColor(0.2 * frame as f32, 0.1, 0.3, 1.0);
+        glClearDepth(0.8);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        let mut q = 0u32;
+        glGenQueries(1, &mut q);
+        glBeginQuery(GL_SAMPLES_PASSED, q);
+        for cluster in 0..30 {
+            let (cx, cy) = (r.unit() * 1.6 - 0.8, r.unit() * 1.6 - 0.8);
+            glBegin(GL_TRIANGLES);
+            for t in 0..(20 + r.next() as usize % 100) {
+                let size = if t % 50 == 49 { 1.8 } else { 0.08 };
+                let (tx, ty) = (cx + (r.unit() - 0.5) * 0.3, cy + (r.unit() - 0.5) * 0.3);
+                for _ in 0..3 {
+                    glColor4ub(r.next() as u8, r.next() as u8, r.next() as u8, 255);
+                    glVertex3f(tx + (r.unit() - 0.5) * size, ty + (r.unit() - 0.5) * size, r.unit() * 2.0 - 1.0);
+                }
+            }
+            glEnd();
+            if cluster % 11 == 10 {
+                read_of(&mut out, W4, H4);
+            }
+        }
+        glEndQuery(GL_SAMPLES_PASSED);
+        let mut passed = 0u32;
+        glGetQueryObjectuiv(q, GL_QUERY_RESULT, &mut passed);
+        out.push(passed.to_le_bytes().to_vec());
+        glFinish();
+        read_of(&mut out, W4, H4);
+    }
+    OSMesaDestroyContext(ctx);
+    out
+}
+
 /// Round 13's recorded glAccum against the immediate one: the same
 /// random command streams with 2 and 3 threads (tiny batches handed to
 /// the workers at once, and batches too small for them) as with 1 thread,
@@ -901,4 +954,26 @@ fn recorded_accum_does_not_depend_on_thread_count() {
             }
         }
     }
+}
+
+/// Flights helped by the calling thread before they are full and bands
+/// taken heaviest first give the 1-thread pixels and occlusion counts with
+/// 2 and 3 threads; the help happened.
+#[test]
+fn helped_flights_do_not_depend_on_thread_count() {
+    let helps = softgl::render::tile::helps_started();
+    for limits in [(64, 1 << 40, 0), (40, 3000, 0), (7, 0, 0)] {
+        let one = unsafe { helped_flights_scene(1, limits) };
+        for w in one.windows(2) {
+            assert_ne!(w[0], w[1], "each part draws");
+        }
+        for threads in [2, 3] {
+            let many = unsafe { helped_flights_scene(threads, limits) };
+            for (k, (a, b)) in one.iter().zip(&many).enumerate() {
+                let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
+                assert_eq!(diff, 0, "limits {limits:?} read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
+            }
+        }
+    }
+    assert!(softgl::render::tile::helps_started() > helps, "the calling thread helped a flight before its batch was full");
 }

@@ -23,6 +23,7 @@ pub mod shade_state;
 pub mod smooth;
 pub mod texture;
 pub mod tile;
+pub mod trace;
 pub mod vertex;
 pub mod vertex4;
 

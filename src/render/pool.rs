@@ -145,12 +145,16 @@ fn worker(p: &'static Pool) {
     loop {
         // Poll before sleeping: the next batch of a frame usually comes
         // within microseconds, and then needs no system call either side.
+        let t0 = super::trace::now();
         spin_until(SPIN, || p.posted.load(Ordering::Acquire) != seen);
+        super::trace::rec(b'p', t0, 0);
         let job = {
             let mut s = lock(&p.state);
             while s.generation == seen {
                 s.sleeping += 1;
+                let t0 = super::trace::now();
                 s = p.wake.wait(s).unwrap_or_else(|e| e.into_inner());
+                super::trace::rec(b'z', t0, 0);
                 s.sleeping -= 1;
             }
             seen = s.generation;
@@ -164,7 +168,9 @@ fn worker(p: &'static Pool) {
             }
         };
         // Safety: `finish` keeps the job alive until `running` is back to 0.
+        let t0 = super::trace::now();
         let ok = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| unsafe { (*job.0).work() })).is_ok();
+        super::trace::rec(b'j', t0, 0);
         let mut s = lock(&p.state);
         s.running -= 1;
         p.running.store(s.running, Ordering::Release);
@@ -229,7 +235,10 @@ pub unsafe fn start(threads: usize, job: &(dyn Work + '_)) -> Posted {
 /// workers still at it, and returns when every run has finished. A panic
 /// in a worker's run is raised again here.
 pub fn finish(posted: Posted, job: &(dyn Work + '_)) {
+    let t0 = super::trace::now();
     let mine = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job.work()));
+    super::trace::rec(b'o', t0, 0);
+    let t0 = super::trace::now();
     let mut panicked = false;
     if let Some(p) = posted.pool {
         let mut s = lock(&p.state);
@@ -249,6 +258,7 @@ pub fn finish(posted: Posted, job: &(dyn Work + '_)) {
         drop(s);
         p.busy.store(false, Ordering::Release);
     }
+    super::trace::rec(b'w', t0, 0);
     if let Err(e) = mine {
         std::panic::resume_unwind(e);
     }

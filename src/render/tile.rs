@@ -24,7 +24,11 @@
 //! (two batches in rotation, their vectors reused). Only the next
 //! submission (batches are shaded in order) and the sync points wait for
 //! the flight, and the waiting thread shades the bands left rather than
-//! sleep: at a sync point every thread shades. A Flight owns all it reads
+//! sleep: at a sync point every thread shades. Round 13: a batch three
+//! quarters full while the flight before is still shaded makes the
+//! calling thread take that flight's untaken bands and bin on rather than
+//! wait for the last band ([`submit`]), and a flight's bands are taken
+//! heaviest first ([`Flight::bin_once`]). A Flight owns all it reads
 //! (triangle records, Arc'ed immutable states whose textures are
 //! copy-on-write), and writes the framebuffer's planes through raw
 //! pointers, which stay valid because everything that reads, writes,
@@ -330,6 +334,10 @@ pub struct BatchCell {
     flying: AtomicBool,
     /// Tiles of the flight not shaded yet (0: none in flight, or done).
     left: Arc<AtomicUsize>,
+    /// The calling thread has already helped with the flight's untaken
+    /// bands while filling this batch ([`submit`]); touched only by the
+    /// context's thread.
+    helped: AtomicBool,
     /// [`MAX_BATCH`], [`SUBMIT_WORK`] and [`PARALLEL_WORK`], unless a
     /// test set others.
     max_batch: AtomicUsize,
@@ -356,6 +364,7 @@ impl Default for BatchCell {
             flights: Mutex::default(),
             flying: AtomicBool::new(false),
             left: Arc::default(),
+            helped: AtomicBool::new(false),
             max_batch: AtomicUsize::new(MAX_BATCH),
             submit_work: AtomicU64::new(tuned("SOFTGL_SUBMIT_WORK", SUBMIT_WORK)),
             parallel_work: AtomicU64::new(tuned("SOFTGL_PARALLEL_WORK", PARALLEL_WORK)),
@@ -418,6 +427,14 @@ pub fn flights_started() -> u64 {
 }
 
 static FLIGHTS: AtomicU64 = AtomicU64::new(0);
+
+/// Times the calling thread helped a flight before its next batch was
+/// full, in this process ([`submit`]; tests check the path ran).
+pub fn helps_started() -> u64 {
+    HELPS.load(Ordering::Relaxed)
+}
+
+static HELPS: AtomicU64 = AtomicU64::new(0);
 
 /// Flights (batch vectors besides the one being filled) a context has
 /// allocated: at most two however many batches it draws (tests).
@@ -552,14 +569,33 @@ fn state_captured(rs: &RenderState, b: &mut Batch) -> (u32, bool, bool) {
     got
 }
 
-/// Counts `work` more in the batch just added to; true when it should be
-/// handed to the workers now: full, or worth handing to workers that have
-/// nothing to do.
+/// Counts `work` more in the batch just added to; true when [`submit`]
+/// should be called now: the batch is full, or worth handing to workers
+/// that have nothing to do, or three quarters full while the flight
+/// before it is still being shaded and the calling thread has not helped
+/// with it yet ([`help_at`]).
 #[inline]
 fn added(cell: &SharedBatch, b: &mut Batch, work: u64) -> bool {
     cell.pending.store(true, Ordering::Relaxed);
     b.work += work;
-    b.tris.len() >= cell.max_batch.load(Ordering::Relaxed) || (b.work >= cell.submit_work.load(Ordering::Relaxed) && cell.left.load(Ordering::Relaxed) == 0)
+    let (len, max) = (b.tris.len(), cell.max_batch.load(Ordering::Relaxed));
+    if len >= max {
+        return true;
+    }
+    if cell.left.load(Ordering::Relaxed) == 0 {
+        b.work >= cell.submit_work.load(Ordering::Relaxed)
+    } else {
+        len >= help_at(max) && !cell.helped.load(Ordering::Relaxed)
+    }
+}
+
+/// The batch length at which the calling thread, while the flight before
+/// is still being shaded, takes that flight's bands nobody has taken yet
+/// and then goes on binning (round 13): the rest of the batch covers the
+/// time the other threads need to finish the bands they hold, which the
+/// calling thread used to wait out in [`submit`] once the batch was full.
+fn help_at(max: usize) -> usize {
+    (max - max / 4).max(1)
 }
 
 /// A record of a line or point: its box and state only.
@@ -760,6 +796,12 @@ struct Flight {
     /// the vertex-bound scenes); resized and cleared only while no
     /// thread runs the flight.
     bins: UnsafeCell<Vec<Vec<u32>>>,
+    /// The bands in the order they are taken: most work first (round 13),
+    /// so that the last bands taken, which decide when the last thread
+    /// is done, are short. Filled with `bins`, under the same rules.
+    order: UnsafeCell<Vec<u32>>,
+    /// Per band, its estimated work (`bin_once`'s scratch).
+    weight: UnsafeCell<Vec<u64>>,
     /// [`UNBINNED`], [`BINNING`] or [`BINNED`].
     binned: AtomicU8,
     /// Rows per band.
@@ -772,6 +814,8 @@ struct Flight {
     left: Arc<AtomicUsize>,
     /// Fragments that passed the depth test (occlusion queries).
     passed: AtomicU64,
+    /// Trace: the flight's number.
+    seq: u32,
 }
 
 /// [`Flight::binned`]: the band lists are empty, being filled, filled.
@@ -791,6 +835,8 @@ impl Flight {
             batch: Batch::default(),
             first_clear: None,
             bins: UnsafeCell::new(Vec::new()),
+            order: UnsafeCell::new(Vec::new()),
+            weight: UnsafeCell::new(Vec::new()),
             binned: AtomicU8::new(UNBINNED),
             rows: BAND,
             surface: Rect::new(0, 0, 0, 0),
@@ -798,6 +844,7 @@ impl Flight {
             next: AtomicUsize::new(0),
             left,
             passed: AtomicU64::new(0),
+            seq: 0,
         })
     }
 
@@ -825,22 +872,17 @@ impl Flight {
     /// The per-band lists, filled by the first thread to get here; the
     /// others wait for it (a few microseconds a batch: a pass over the
     /// records, no shading).
-    fn bin_once(&self) -> &[Vec<u32>] {
+    fn bin_once(&self) -> (&[Vec<u32>], &[u32]) {
         if self.binned.load(Ordering::Acquire) != BINNED {
             if self.binned.compare_exchange(UNBINNED, BINNING, Ordering::Acquire, Ordering::Acquire).is_ok() {
                 // Safety: only this thread writes the lists (the state
                 // was UNBINNED), and no thread reads them before BINNED.
-                let bins = unsafe { &mut *self.bins.get() };
-                let (surface, rows) = (self.surface, self.rows);
-                for (i, t) in self.batch.tris.iter().enumerate() {
-                    let b = t.bbox.intersect(surface);
-                    if b.is_empty() {
-                        continue;
-                    }
-                    for band in &mut bins[b.y0 as usize / rows..=(b.y1 as usize - 1) / rows] {
-                        band.push(i as u32);
-                    }
-                }
+                let (bins, order, weight) = unsafe { (&mut *self.bins.get(), &mut *self.order.get(), &mut *self.weight.get()) };
+                list_bands(&self.batch.tris, self.surface, self.rows, bins, weight);
+                order.clear();
+                order.extend(0..bins.len() as u32);
+                // Stable: equal bands keep top-to-bottom order.
+                order.sort_by_key(|&k| std::cmp::Reverse(weight[k as usize]));
                 self.binned.store(BINNED, Ordering::Release);
             } else {
                 // Under load the binning thread may be preempted: yield
@@ -852,7 +894,7 @@ impl Flight {
         }
         // Safety: BINNED: nobody writes the lists until `clear`, which
         // runs after every thread has left the flight.
-        unsafe { &*self.bins.get() }
+        unsafe { (&*self.bins.get(), &*self.order.get()) }
     }
 
     /// Back to empty, keeping the vectors' capacity (no regrowth and
@@ -874,18 +916,42 @@ impl Flight {
     }
 }
 
+/// Lists each record of `tris` in the bands of `rows` rows its box meets
+/// within `surface` (`bins`, one list per band, emptied before), in
+/// submission order, and estimates each band's work into `weight`: the
+/// pixels of the boxes within the band plus [`SETUP_PIXELS`] a record.
+fn list_bands(tris: &[Binned], surface: Rect, rows: usize, bins: &mut [Vec<u32>], weight: &mut Vec<u64>) {
+    weight.clear();
+    weight.resize(bins.len(), 0);
+    for (i, t) in tris.iter().enumerate() {
+        let b = t.bbox.intersect(surface);
+        if b.is_empty() {
+            continue;
+        }
+        let (y0, y1, w) = (b.y0 as usize, b.y1 as usize, (b.x1 - b.x0) as u64);
+        for k in y0 / rows..=(y1 - 1) / rows {
+            bins[k].push(i as u32);
+            let h = y1.min((k + 1) * rows) - y0.max(k * rows);
+            weight[k] += w * h as u64 + SETUP_PIXELS;
+        }
+    }
+}
+
 impl pool::Work for Flight {
     fn work(&self) {
         let b = &self.batch;
         let of = |t: &Binned| (&*b.states[t.state as usize], b.extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
         let raw = &self.raw;
         let mut local = 0u64;
-        let bins = self.bin_once();
+        let t0 = super::trace::now();
+        let (bins, order) = self.bin_once();
+        super::trace::rec(b'l', t0, self.seq);
         loop {
-            let k = self.next.fetch_add(1, Ordering::Relaxed);
-            if k >= bins.len() {
+            let Some(&k) = order.get(self.next.fetch_add(1, Ordering::Relaxed)) else {
                 break;
-            }
+            };
+            let k = k as usize;
+            let t0 = super::trace::now();
             let y = k * self.rows;
             let tile = Rect { x0: 0, y0: y as i32, x1: self.surface.x1, y1: (y + self.rows) as i32 }.intersect(self.surface);
             if let Some(c) = &self.first_clear {
@@ -931,6 +997,7 @@ impl pool::Work for Flight {
             for (_, op) in ops {
                 band_op(&**op);
             }
+            super::trace::rec(b'b', t0, (self.seq << 8) | k as u32);
             self.left.fetch_sub(1, Ordering::Release);
         }
         self.passed.fetch_add(local, Ordering::Relaxed);
@@ -946,6 +1013,7 @@ fn finish(cell: &SharedBatch, fl: &mut Flights, fb: &mut Framebuffer) {
         fb.samples_passed = fb.samples_passed.wrapping_add(flight.passed.load(Ordering::Relaxed));
         flight.clear();
         cell.left.store(0, Ordering::Relaxed);
+        cell.helped.store(false, Ordering::Relaxed);
         cell.flying.store(false, Ordering::Relaxed);
         fl.spare.push(flight);
     }
@@ -982,7 +1050,30 @@ fn take_batch(cell: &SharedBatch, fl: &mut Flights) -> Option<Box<Flight>> {
 /// for it (after waiting for the one before it: batches are shaded in
 /// order). A batch with little work is shaded at once on this thread.
 pub fn submit(rs: &RenderState, fb: &mut Framebuffer) {
+    let t0 = super::trace::now();
+    submit_(rs, fb);
+    super::trace::rec(b'S', t0, 0);
+}
+
+fn submit_(rs: &RenderState, fb: &mut Framebuffer) {
     let cell = &rs.batch;
+    // Safety: the context's thread (as `filling`).
+    let len = unsafe { filling(cell) }.tris.len();
+    if len < cell.max_batch.load(Ordering::Relaxed) && cell.left.load(Ordering::Acquire) > 0 && !cell.helped.load(Ordering::Relaxed) {
+        // Round 13: the batch is not full and the flight before it still
+        // has bands being shaded: shade the bands nobody has taken, then
+        // go back to binning instead of waiting for the others' last
+        // bands (the next primitive submits once the flight is done, or
+        // when the batch is full).
+        cell.helped.store(true, Ordering::Relaxed);
+        let fl = lock_flights(cell);
+        if let Some((flight, _)) = &fl.current {
+            HELPS.fetch_add(1, Ordering::Relaxed);
+            // The flight stays alive: it is only finished by this thread.
+            pool::Work::work(&**flight);
+        }
+        return;
+    }
     let mut fl = lock_flights(cell);
     let Some(flight) = take_batch(cell, &mut fl) else {
         return;
@@ -1006,12 +1097,15 @@ fn launch(rs: &RenderState, fl: &mut Flights, mut flight: Box<Flight>, fb: &mut 
         return;
     }
     flight.prepare(fb, rs.threads);
+    flight.seq = FLIGHTS.load(Ordering::Relaxed) as u32;
+    super::trace::rec(b'L', super::trace::now(), flight.batch.tris.len() as u32);
     // Safety: the flight is boxed (its address stays put) and is only
     // dropped or reused after `finish`, which every path to the
     // framebuffer and the context's end calls first (`sync`).
     let posted = unsafe { pool::start(rs.threads, &*flight) };
     FLIGHTS.fetch_add(1, Ordering::Relaxed);
     fl.current = Some((flight, posted));
+    rs.batch.helped.store(false, Ordering::Relaxed);
     rs.batch.flying.store(true, Ordering::Relaxed);
 }
 
@@ -1048,6 +1142,16 @@ pub fn flush(rs: &RenderState, fb: &mut Framebuffer) {
     if !cell.pending.load(Ordering::Relaxed) && !cell.flying.load(Ordering::Relaxed) {
         return;
     }
+    let t0 = super::trace::now();
+    flush_(rs, fb);
+    super::trace::rec(b'F', t0, 0);
+    if super::trace::on() {
+        super::trace::dump();
+    }
+}
+
+fn flush_(rs: &RenderState, fb: &mut Framebuffer) {
+    let cell = &rs.batch;
     let mut fl = lock_flights(cell);
     finish(cell, &mut fl, fb);
     if let Some(flight) = take_batch(cell, &mut fl) {
@@ -1128,11 +1232,33 @@ mod tests {
                 .collect();
             let f = &*flight;
             std::thread::scope(|s| {
-                let runs: Vec<_> = (0..4).map(|_| s.spawn(|| f.bin_once().to_vec())).collect();
+                let runs: Vec<_> = (0..4).map(|_| s.spawn(|| f.bin_once().0.to_vec())).collect();
                 for r in runs {
                     assert_eq!(r.join().unwrap(), expected, "round {round}");
                 }
             });
+            // Each band's work: its boxes' pixels within it and the
+            // set-up of each; the bands taken heaviest first, each once,
+            // equal ones top to bottom.
+            let weight: Vec<u64> = (0..bands)
+                .map(|k| {
+                    let band = Rect { x0: 0, y0: (k * rows) as i32, x1: w, y1: ((k + 1) * rows) as i32 }.intersect(surface);
+                    let cost = |i: u32| {
+                        let b = flight.batch.tris[i as usize].bbox.intersect(surface).intersect(band);
+                        (b.x1 - b.x0) as u64 * (b.y1 - b.y0) as u64 + SETUP_PIXELS
+                    };
+                    expected[k].iter().map(|&i| cost(i)).sum()
+                })
+                .collect();
+            assert_eq!(flight.weight.get_mut(), &weight, "round {round}");
+            let order = flight.order.get_mut().clone();
+            let mut sorted = order.clone();
+            sorted.sort();
+            assert_eq!(sorted, (0..bands as u32).collect::<Vec<_>>(), "round {round}: every band once");
+            for p in order.windows(2) {
+                let (a, b) = (weight[p[0] as usize], weight[p[1] as usize]);
+                assert!(a > b || (a == b && p[0] < p[1]), "round {round}: order {order:?} weights {weight:?}");
+            }
             flight.clear();
         }
     }
