@@ -381,6 +381,17 @@ impl Runs {
         self.len == 0
     }
 
+    /// The runs of a [`Cover`]: each row's covered centres, which are
+    /// contiguous (the triangle is convex), as `find` would give them.
+    pub fn of_cover(c: &Cover) -> Runs {
+        let mut r = Runs::new();
+        for (py, lo, hi) in c.rows() {
+            r.runs[r.len].write((py as u32, lo as u32, hi as u32));
+            r.len += 1;
+        }
+        r
+    }
+
     /// The runs (y, x0, x1), bottom to top.
     pub fn iter(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
         // SAFETY: the first `len` runs were written by `find`.
@@ -396,6 +407,124 @@ impl Runs {
             fb.samples_passed = fb.samples_passed.wrapping_add(passed);
         }
     }
+}
+
+/// The covered pixel centres of a tiny triangle, found all at once
+/// (round 13): a block of up to [`Cover::COLS`] columns and
+/// [`Cover::ROWS`] rows from (col0, row0), bit `4 j + i` for pixel
+/// (col0 + i, row0 + j). The same exact edge tests as [`Runs::find`]
+/// (top-left rule included), so the same pixels; shaded as a block by
+/// `fragment::stamp` or, for states it does not cover, as the runs of
+/// [`Runs::of_cover`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Cover {
+    pub row0: usize,
+    pub col0: usize,
+    pub mask: u32,
+}
+
+impl Cover {
+    /// The block's width: one row of pixels is one set of four lanes.
+    pub const COLS: i64 = 4;
+    /// The block's height (four bits a row in `mask`).
+    pub const ROWS: i64 = 8;
+
+    /// No pixel.
+    pub const EMPTY: Cover = Cover { row0: 0, col0: 0, mask: 0 };
+
+    /// The cover of triangle (x, y) (positively oriented) within `rect`
+    /// when its box of pixel centres there fits the block, the extents
+    /// fit the lanes and the CPU has AVX2; None otherwise (then take
+    /// [`Runs::find`]). No stipple: callers with one do not ask.
+    #[inline(always)]
+    pub fn find(x: [i64; 3], y: [i64; 3], rect: Rect) -> Option<Cover> {
+        let (row0, row1, col0, col1) = centre_box(x, y, rect);
+        let (rows, cols) = (row1 - row0, col1 - col0);
+        if rows > Cover::ROWS || cols > Cover::COLS || !stamp_level() {
+            return None;
+        }
+        // No pixel centre in the box (most triangles smaller than a
+        // pixel): nothing to test.
+        if rows <= 0 || cols <= 0 {
+            return Some(Cover::EMPTY);
+        }
+        if !lanes_fit(x, y) {
+            return None;
+        }
+        #[cfg(target_arch = "x86_64")]
+        {
+            // SAFETY: `stamp_level` saw AVX2; the values fit in i32
+            // (`lanes_fit`, and `cover_avx2`'s bound).
+            let mask = unsafe { cover_avx2(x, y, row0, rows, col0, cols) };
+            Some(Cover { row0: row0 as usize, col0: col0 as usize, mask })
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        None
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.mask == 0
+    }
+
+    /// The covered runs (y, x0, x1), bottom to top.
+    pub fn rows(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
+        (0..Cover::ROWS as usize).filter_map(move |j| {
+            let bits = (self.mask >> (4 * j)) & 15;
+            (bits != 0).then(|| (self.row0 + j, self.col0 + bits.trailing_zeros() as usize, self.col0 + (32 - bits.leading_zeros()) as usize))
+        })
+    }
+}
+
+/// Are tiny triangles covered and shaded as blocks on this thread
+/// (AVX2, not lowered by `SOFTGL_SIMD` or a test)?
+#[inline(always)]
+fn stamp_level() -> bool {
+    fragment::simd::level_here() == fragment::simd::Level::Avx2
+}
+
+/// The cover of the box [row0, row0 + rows) x [col0, col0 + cols) (at
+/// most `Cover::ROWS` by `Cover::COLS`, not empty): each edge function at
+/// two rows of four centres in eight i32 lanes, stepped two rows at a
+/// time; a centre is outside when the union of its three values has the
+/// sign bit. Each lane holds `Edge::new`'s E = dx (Py - ya) - dy (Px -
+/// xa) - bias at its centre exactly: with both extents at most 2^14
+/// (`lanes_fit`) and the box's first centre within them, every centre of
+/// the block (up to 3 columns and 7 rows further) is within 2^14 + 2^11
+/// of every vertex, so |E| < 2^29.3.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn cover_avx2(x: [i64; 3], y: [i64; 3], row0: i64, rows: i64, col0: i64, cols: i64) -> u32 {
+    use std::arch::x86_64::*;
+    let half = ONE / 2;
+    let (px, py) = (col0 * ONE + half, row0 * ONE + half);
+    let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
+    let lane_j = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
+    let mut v = [_mm256_setzero_si256(); 3];
+    let mut step = [_mm256_setzero_si256(); 3];
+    for e in 0..3 {
+        let f = if e == 2 { 0 } else { e + 1 };
+        let (dx, dy) = (x[f] - x[e], y[f] - y[e]);
+        // `Edge::new`'s top-left rule: centres on other edges are out.
+        let bias = !(dy < 0 || (dy == 0 && dx < 0)) as i64;
+        let first = dx * (py - y[e]) - dy * (px - x[e]) - bias;
+        let (a, b) = ((-dy * ONE) as i32, (dx * ONE) as i32);
+        let across = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_set1_epi32(a), lane_i), _mm256_mullo_epi32(_mm256_set1_epi32(b), lane_j));
+        v[e] = _mm256_add_epi32(_mm256_set1_epi32(first as i32), across);
+        step[e] = _mm256_set1_epi32(2 * b);
+    }
+    let mut outside = 0u32;
+    let mut j = 0;
+    while j < rows {
+        let any = _mm256_or_si256(_mm256_or_si256(v[0], v[1]), v[2]);
+        outside |= (_mm256_movemask_ps(_mm256_castsi256_ps(any)) as u32) << (4 * j);
+        for e in 0..3 {
+            v[e] = _mm256_add_epi32(v[e], step[e]);
+        }
+        j += 2;
+    }
+    // The box's columns in each of its rows.
+    let row_bits = (0x1111_1111u64 & ((1u64 << (4 * rows)) - 1)) as u32;
+    !outside & row_bits * ((1u32 << cols) - 1)
 }
 
 /// Calls `emit(py, lo, hi)` for every run of covered pixels [lo, hi) of
