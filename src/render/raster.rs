@@ -715,6 +715,82 @@ mod tests {
         assert!(compared > 100_000 && covered > 50_000 && at_extent > 10_000 && ties > 5_000, "{compared} {covered} {at_extent} {ties}");
     }
 
+    /// A tiny triangle's block cover (round 13) has exactly `Runs::find`'s
+    /// runs: random triangles of every orientation whose centre boxes
+    /// are up to 5 columns and 9 rows (so some do not fit the block), on
+    /// the half-pixel grid in a fifth of them (centres on edges: the
+    /// top-left rule decides), horizontal and vertical edges, slivers and
+    /// degenerate ones, large ones cut to a small box by a random
+    /// rectangle (a band or the scissor), negative coordinates.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn cover_matches_runs() {
+        if !stamp_level() {
+            eprintln!("no AVX2: the block cover is not used");
+            return;
+        }
+        let mut rnd = crate::render::test_rng::below(2026, 21);
+        let (mut compared, mut covered, mut ties, mut cut, mut flat) = (0, 0, 0, 0, 0);
+        for n in 0..400_000 {
+            let size = match n % 5 {
+                0 => 2 * ONE,
+                1 => 4 * ONE,
+                2 => 6 * ONE,
+                3 => 64 * ONE,
+                _ => ONE / 2,
+            };
+            let (bx, by) = (rnd(40 * ONE) - 20 * ONE, rnd(40 * ONE) - 20 * ONE);
+            let mut x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
+            let mut y = [by + rnd(size), by + rnd(size), by + rnd(size)];
+            if n % 5 == 1 || n % 11 == 0 {
+                x = x.map(|c| c & !(ONE / 2 - 1));
+                y = y.map(|c| c & !(ONE / 2 - 1));
+            }
+            match n % 13 {
+                0 => y[1] = y[0],
+                1 => x[2] = x[0],
+                2 => (x[2], y[2]) = (x[0] + (x[1] - x[0]) / 2, y[0] + (y[1] - y[0]) / 2),
+                _ => {}
+            }
+            // Positive orientation, as setup hands triangles on; a
+            // degenerate one stays as it is.
+            let area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+            if area < 0 {
+                x.swap(1, 2);
+                y.swap(1, 2);
+            }
+            flat += (area == 0) as usize;
+            let rect = if size > 8 * ONE || n % 3 == 0 {
+                // A band or a scissor box somewhere over the triangle.
+                let (cx, cy) = (x[rnd(3) as usize] / ONE, y[rnd(3) as usize] / ONE);
+                let (w, h) = (1 + rnd(6), 1 + rnd(10));
+                let x0 = (cx - rnd(w + 1)) as i32;
+                let y0 = (cy - rnd(h + 1)) as i32;
+                Rect { x0, y0, x1: x0 + w as i32, y1: y0 + h as i32 }
+            } else {
+                Rect { x0: -64, y0: -64, x1: 64, y1: 64 }
+            };
+            let Some(cover) = Cover::find(x, y, rect) else { continue };
+            let mut runs = Runs::new();
+            assert!(runs.find(x, y, rect, None), "a short triangle");
+            // (Runs hold u32: compare negative coordinates as they wrap.)
+            let narrow = |(py, lo, hi): (usize, usize, usize)| (py as u32, lo as u32, hi as u32);
+            let (c, r): (Vec<_>, Vec<_>) = (cover.rows().map(narrow).collect(), runs.iter().map(narrow).collect());
+            assert_eq!(c, r, "{x:?} {y:?} {rect:?} {cover:?}");
+            let of: Vec<_> = Runs::of_cover(&cover).iter().map(narrow).collect();
+            assert_eq!(of, r, "{x:?} {y:?} {rect:?}");
+            compared += 1;
+            covered += !c.is_empty() as usize;
+            cut += (rect.x1 - rect.x0 < 8) as usize;
+            if area != 0 {
+                let (_, _, edges) = ccw_edges(x, y).unwrap();
+                let (row0, row1, col0, col1) = centre_box(x, y, rect);
+                ties += (row0..row1).any(|py| (col0..col1).any(|px| edges.iter().any(|e| matches!(e.a * px + e.b * py + e.c, 0 | -1)))) as usize;
+            }
+        }
+        assert!(compared > 200_000 && covered > 80_000 && ties > 20_000 && cut > 30_000 && flat > 10_000, "{compared} {covered} {ties} {cut} {flat}");
+    }
+
     /// Stepping the span solution row by row gives `span`'s answer for
     /// every row, on triangles as large as the guard band allows.
     #[test]

@@ -242,3 +242,151 @@ mod x86 {
         passed
     }
 }
+
+#[cfg(all(test, target_arch = "x86_64"))]
+mod tests {
+    use super::super::{fast, reference, CompareFunc, SpanPixels};
+    use super::*;
+    use crate::framebuffer::{Rect, DEPTH_MAX};
+    use crate::render::raster::{Cover, Runs};
+    use crate::render::setup::{Plane, ONE};
+
+    /// A random plane whose values over the block lie in about
+    /// [lo, hi], at times constant (zero slopes of either sign).
+    fn plane(rnd: &mut impl FnMut(i64) -> i64, lo: f64, hi: f64, constant: bool) -> Plane {
+        let u = |rnd: &mut dyn FnMut(i64) -> i64| rnd(1 << 20) as f64 / (1 << 20) as f64;
+        let a0 = lo + (hi - lo) * u(rnd);
+        if constant {
+            let z = if rnd(2) == 0 { 0.0 } else { -0.0 };
+            return Plane { a0, dx: z, dy: z };
+        }
+        let slope = (hi - lo) / 3.0;
+        Plane { a0, dx: slope * (2.0 * u(rnd) - 1.0), dy: slope * (2.0 * u(rnd) - 1.0) }
+    }
+
+    /// The block kernels give what the span kernels give on the cover's
+    /// runs (and what the reference gives): colour, depth, the passed
+    /// count, stencil untouched, pixels outside the cover untouched. Random
+    /// tiny triangles (as `raster::tests::cover_matches_runs` makes them,
+    /// clipped by random rectangles) with random planes: depth partly
+    /// outside [0, 1], stored depths equal to, just above and just below
+    /// the fragment's (ties), perspective and affine, flat and constant
+    /// colours (zero slopes of either sign), colours outside [0, 1];
+    /// depth off / LESS / LEQUAL, colour stored or not, alpha_fix on and off.
+    #[test]
+    fn stamp_matches_span_kernels() {
+        if super::super::simd::level_here() != super::super::simd::Level::Avx2 {
+            eprintln!("no AVX2: no block kernels");
+            return;
+        }
+        const W: usize = 24;
+        const H: usize = 24;
+        let mut rnd = crate::render::test_rng::below(1313, 19);
+        let (mut shaded, mut written, mut ties, mut kinds) = (0usize, 0u64, 0usize, [0usize; 4]);
+        for n in 0..120_000 {
+            let size = [ONE, 2 * ONE, 4 * ONE, 7 * ONE][n % 4];
+            let (bx, by) = (rnd(16 * ONE) + 2 * ONE, rnd(14 * ONE) + 2 * ONE);
+            let mut x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
+            let mut y = [by + rnd(size), by + rnd(size), by + rnd(size)];
+            if n % 4 == 1 {
+                x = x.map(|c| c & !(ONE / 2 - 1));
+                y = y.map(|c| c & !(ONE / 2 - 1));
+            }
+            let area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+            if area == 0 {
+                continue;
+            }
+            if area < 0 {
+                x.swap(1, 2);
+                y.swap(1, 2);
+            }
+            let rect = if n % 3 == 0 {
+                let (x0, y0) = ((x[0] / ONE) as i32 - rnd(3) as i32, (y[0] / ONE) as i32 - rnd(4) as i32);
+                Rect { x0, y0, x1: x0 + 1 + rnd(4) as i32, y1: y0 + 1 + rnd(6) as i32 }.intersect(Rect { x0: 0, y0: 0, x1: W as i32, y1: H as i32 })
+            } else {
+                Rect { x0: 0, y0: 0, x1: W as i32, y1: H as i32 }
+            };
+            let Some(cover) = Cover::find(x, y, rect) else { continue };
+            if cover.is_empty() {
+                continue;
+            }
+            // The triangle's planes.
+            let perspective = rnd(3) != 0;
+            let constant = rnd(4) == 0;
+            let flat = rnd(6) == 0;
+            let z_constant = rnd(20) == 0;
+            let mut t = TriangleSetup {
+                x0: x[0] as f64 / ONE as f64,
+                y0: y[0] as f64 / ONE as f64,
+                z: plane(&mut rnd, -0.2, 1.2, z_constant),
+                q: if perspective { plane(&mut rnd, 0.3, 3.0, false) } else { Plane { a0: 1.0, dx: 0.0, dy: 0.0 } },
+                color: [0; 4].map(|_| plane(&mut rnd, -0.3, 1.3, constant)),
+                perspective,
+                flat: None,
+                front_facing: true,
+                tex: None,
+                fog: None,
+                secondary: None,
+            };
+            if flat {
+                t.flat = Some([0; 4].map(|_| rnd(256) as u8));
+                t.color = [Plane::default(); 4];
+            }
+            let mut fs = FragmentState::default();
+            match rnd(3) {
+                0 => fs.depth_test = false,
+                1 => (fs.depth_test, fs.depth_func) = (true, CompareFunc::Less),
+                _ => (fs.depth_test, fs.depth_func) = (true, CompareFunc::Lequal),
+            }
+            if rnd(5) == 0 {
+                fs.color = ColorOp::None;
+            }
+            fs.alpha_fix = if rnd(4) == 0 { 255 } else { 0 };
+            let Some(sk) = select(&fs, &t, false) else { panic!("a block kernel for {fs:?}") };
+            kinds[t.flat.is_some() as usize * 2 + perspective as usize] += 1;
+            // Buffers: random colours and stencil; depths near the
+            // fragments' own, some exactly equal.
+            let color: Vec<[u8; 4]> = (0..W * H).map(|_| [0; 4].map(|_| rnd(256) as u8)).collect();
+            let mut depth: Vec<u32> = (0..W * H).map(|_| rnd(DEPTH_MAX as i64 + 1) as u32).collect();
+            let stencil: Vec<u8> = (0..W * H).map(|_| rnd(256) as u8).collect();
+            for (py, lo, hi) in cover.rows() {
+                for px in lo..hi {
+                    let cx = px as f64 + 0.5 - t.x0;
+                    let cy = py as f64 + 0.5 - t.y0;
+                    let z = super::super::depth_to_fixed((t.z.a0 + t.z.dy * cy) + t.z.dx * cx);
+                    let i = py * W + px;
+                    match rnd(4) {
+                        0 => depth[i] = z,
+                        1 => depth[i] = z.saturating_add(1).min(DEPTH_MAX),
+                        2 => depth[i] = z.saturating_sub(1),
+                        _ => {}
+                    }
+                    ties += (depth[i] == z) as usize;
+                }
+            }
+            let (mut c1, mut d1, s1) = (color.clone(), depth.clone(), stencil.clone());
+            let target = Target { color: c1.as_mut_ptr(), depth: d1.as_mut_ptr(), width: W };
+            // SAFETY: the cover lies within the W x H buffers.
+            let passed = unsafe { sk(&fs, &t, &target, &cover) };
+            // The span kernels (SIMD where they have them) and the
+            // reference on the cover's runs.
+            for k in [fast::select(&fs, &t, false), reference::shade_span as fast::Kernel] {
+                let (mut c2, mut d2, mut s2) = (color.clone(), depth.clone(), stencil.clone());
+                let mut expect = 0;
+                for (py, lo, hi) in Runs::of_cover(&cover).iter() {
+                    let (a, b) = (py * W + lo, py * W + hi);
+                    let mut px = SpanPixels { color: &mut c2[a..b], depth: &mut d2[a..b], stencil: &mut s2[a..b], other: None, passed: 0 };
+                    k(&fs, &t, &mut px, py, lo, hi);
+                    expect += px.passed;
+                }
+                assert_eq!(passed, expect, "passed: {x:?} {y:?} {rect:?} {cover:?} {fs:?} {t:?}");
+                assert!(d1 == d2, "depth: {x:?} {y:?} {rect:?} {cover:?} {fs:?} {t:?}");
+                assert!(c1 == c2, "colour: {x:?} {y:?} {rect:?} {cover:?} {fs:?} {t:?}");
+                assert!(s1 == s2 && s2 == stencil, "stencil");
+            }
+            shaded += 1;
+            written += passed;
+        }
+        assert!(shaded > 30_000 && written > 40_000 && ties > 20_000 && kinds.iter().all(|&k| k > 1000), "{shaded} {written} {ties} {kinds:?}");
+    }
+}
