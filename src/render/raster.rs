@@ -486,31 +486,43 @@ fn stamp_level() -> bool {
 /// most `Cover::ROWS` by `Cover::COLS`, not empty): each edge function at
 /// two rows of four centres in eight i32 lanes, stepped two rows at a
 /// time; a centre is outside when the union of its three values has the
-/// sign bit. Each lane holds `Edge::new`'s E = dx (Py - ya) - dy (Px -
-/// xa) - bias at its centre exactly: with both extents at most 2^14
-/// (`lanes_fit`) and the box's first centre within them, every centre of
-/// the block (up to 3 columns and 7 rows further) is within 2^14 + 2^11
-/// of every vertex, so |E| < 2^29.3.
+/// sign bit. The three edges are set up side by side in four lanes.
+///
+/// Exact: each lane holds `Edge::new`'s E = dx (Py - ya) - dy (Px - xa)
+/// - bias at its centre P. With both extents at most 2^14 (`lanes_fit`)
+/// and the box's first centre within them, the vertices relative to that
+/// centre are within 2^14, the edge vectors within 2^14, every centre of
+/// the block (up to 3 columns and 7 rows further) within 2^14 + 2^11 of
+/// every vertex, so |E| < 2^29.3 and no lane wraps.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn cover_avx2(x: [i64; 3], y: [i64; 3], row0: i64, rows: i64, col0: i64, cols: i64) -> u32 {
     use std::arch::x86_64::*;
     let half = ONE / 2;
     let (px, py) = (col0 * ONE + half, row0 * ONE + half);
+    // Lanes 0, 1, 2: edge e from vertex e to vertex e + 1 (mod 3).
+    let vx = _mm_setr_epi32((x[0] - px) as i32, (x[1] - px) as i32, (x[2] - px) as i32, 0);
+    let vy = _mm_setr_epi32((y[0] - py) as i32, (y[1] - py) as i32, (y[2] - py) as i32, 0);
+    let dx = _mm_sub_epi32(_mm_shuffle_epi32::<0b11_00_10_01>(vx), vx);
+    let dy = _mm_sub_epi32(_mm_shuffle_epi32::<0b11_00_10_01>(vy), vy);
+    // E at the first centre: dx (0 - Y) - dy (0 - X) = dy X - dx Y.
+    let zero = _mm_setzero_si128();
+    let first = _mm_sub_epi32(_mm_mullo_epi32(dy, vx), _mm_mullo_epi32(dx, vy));
+    // `Edge::new`'s top-left rule: a centre on an edge that is neither
+    // top nor left (dy < 0, or dy = 0 and dx < 0) is out: minus 1.
+    let top_left = _mm_or_si128(_mm_cmpgt_epi32(zero, dy), _mm_and_si128(_mm_cmpeq_epi32(dy, zero), _mm_cmpgt_epi32(zero, dx)));
+    let first = _mm_add_epi32(first, _mm_xor_si128(top_left, _mm_set1_epi32(-1)));
+    // Steps: a column is -256 dy, a row 256 dx.
+    let a = _mm_slli_epi32::<8>(_mm_sub_epi32(zero, dy));
+    let b = _mm_slli_epi32::<8>(dx);
     let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
     let lane_j = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
     let mut v = [_mm256_setzero_si256(); 3];
     let mut step = [_mm256_setzero_si256(); 3];
     for e in 0..3 {
-        let f = if e == 2 { 0 } else { e + 1 };
-        let (dx, dy) = (x[f] - x[e], y[f] - y[e]);
-        // `Edge::new`'s top-left rule: centres on other edges are out.
-        let bias = !(dy < 0 || (dy == 0 && dx < 0)) as i64;
-        let first = dx * (py - y[e]) - dy * (px - x[e]) - bias;
-        let (a, b) = ((-dy * ONE) as i32, (dx * ONE) as i32);
-        let across = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_set1_epi32(a), lane_i), _mm256_mullo_epi32(_mm256_set1_epi32(b), lane_j));
-        v[e] = _mm256_add_epi32(_mm256_set1_epi32(first as i32), across);
-        step[e] = _mm256_set1_epi32(2 * b);
+        let (be, ae) = (lane_of(b, e as i32), lane_of(a, e as i32));
+        v[e] = _mm256_add_epi32(lane_of(first, e as i32), _mm256_add_epi32(_mm256_mullo_epi32(ae, lane_i), _mm256_mullo_epi32(be, lane_j)));
+        step[e] = _mm256_add_epi32(be, be);
     }
     let mut outside = 0u32;
     let mut j = 0;
@@ -525,6 +537,15 @@ unsafe fn cover_avx2(x: [i64; 3], y: [i64; 3], row0: i64, rows: i64, col0: i64, 
     // The box's columns in each of its rows.
     let row_bits = (0x1111_1111u64 & ((1u64 << (4 * rows)) - 1)) as u32;
     !outside & row_bits * ((1u32 << cols) - 1)
+}
+
+/// Lane `e` of `v` in all eight lanes (a function, not a closure: a
+/// closure in `cover_avx2` would not have its target features).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn lane_of(v: std::arch::x86_64::__m128i, e: i32) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::*;
+    _mm256_permutevar8x32_epi32(_mm256_castsi128_si256(v), _mm256_set1_epi32(e))
 }
 
 /// Calls `emit(py, lo, hi)` for every run of covered pixels [lo, hi) of

@@ -170,7 +170,8 @@ mod x86 {
     /// covered ones read or written.
     #[target_feature(enable = "avx2")]
     pub(super) unsafe fn stamp_avx2<const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &Target, c: &Cover) -> u64 {
-        let cx0 = c.col0 as f64 + 0.5 - t.x0;
+        // (Through i64: one conversion instruction, not usize's several.)
+        let cx0 = c.col0 as i64 as f64 + 0.5 - t.x0;
         let cx = _mm256_add_pd(_mm256_set1_pd(cx0), _mm256_setr_pd(0.0, 1.0, 2.0, 3.0));
         let zdx = _mm256_set1_pd(t.z.dx);
         let qdx = _mm256_set1_pd(t.q.dx);
@@ -189,7 +190,7 @@ mod x86 {
             src = _mm_set1_epi32(u32::from_ne_bytes(t.flat.unwrap_or_default()) as i32);
         } else if CS == CS_CONSTANT {
             // a0 + (+-0) * cy: the same value in every row (module comment).
-            let cy = c.row0 as f64 + 0.5 - t.y0;
+            let cy = c.row0 as i64 as f64 + 0.5 - t.y0;
             let cr = [0, 1, 2, 3].map(|ch| (t.color[ch].a0 + t.color[ch].dy * cy) as f32);
             src = _mm_set1_epi32(u32::from_ne_bytes(color_to_u8(glam::Vec4::from_array(cr))) as i32);
         }
@@ -202,7 +203,7 @@ mod x86 {
             let bits = mask & 15;
             mask >>= 4;
             if bits != 0 {
-                let cy = row as f64 + 0.5 - t.y0;
+                let cy = row as i64 as f64 + 0.5 - t.y0;
                 let mut lanes = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(bits as i32), bit), bit);
                 if D != D_OFF {
                     let zr = t.z.a0 + t.z.dy * cy;
