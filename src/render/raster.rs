@@ -488,8 +488,8 @@ fn stamp_level() -> bool {
 /// time; a centre is outside when the union of its three values has the
 /// sign bit. The three edges are set up side by side in four lanes.
 ///
-/// Exact: each lane holds `Edge::new`'s E = dx (Py - ya) - dy (Px - xa)
-/// - bias at its centre P. With both extents at most 2^14 (`lanes_fit`)
+/// Exact: each lane holds `Edge::new`'s E = dx (Py - ya) - dy (Px - xa) -
+/// bias at its centre P. With both extents at most 2^14 (`lanes_fit`)
 /// and the box's first centre within them, the vertices relative to that
 /// centre are within 2^14, the edge vectors within 2^14, every centre of
 /// the block (up to 3 columns and 7 rows further) within 2^14 + 2^11 of
@@ -536,7 +536,7 @@ unsafe fn cover_avx2(x: [i64; 3], y: [i64; 3], row0: i64, rows: i64, col0: i64, 
     }
     // The box's columns in each of its rows.
     let row_bits = (0x1111_1111u64 & ((1u64 << (4 * rows)) - 1)) as u32;
-    !outside & row_bits * ((1u32 << cols) - 1)
+    !outside & (row_bits * ((1u32 << cols) - 1))
 }
 
 /// Lane `e` of `v` in all eight lanes (a function, not a closure: a
