@@ -275,8 +275,9 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
     super::tile::sync(rs, fb);
     // A tiny triangle (round 13) is covered as one block and, under the
     // common states, shaded as one (`fragment::stamp`).
+    let centres = raster::CentreBox::of(ex, ey, rs.draw_rect);
     if rs.polygon_stipple.is_none() && !rs.reference && !fb.draw_both {
-        if let Some(cover) = raster::Cover::find(ex, ey, rs.draw_rect) {
+        if let Some(cover) = raster::Cover::find_in(ex, ey, centres) {
             if !cover.is_empty() {
                 shade_cover(rs, fb, zq, v, ex, ey, flat_color[back as usize], back, front_facing, &cover);
             }
@@ -287,7 +288,7 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
     // often through the stipple or between pixel centres), it needs no
     // planes.
     let mut found = raster::Runs::new();
-    let runs = found.find(ex, ey, rs.draw_rect, rs.polygon_stipple.as_deref()).then_some(&found);
+    let runs = found.find_in(ex, ey, centres, rs.draw_rect, rs.polygon_stipple.as_deref()).then_some(&found);
     if runs.is_some_and(|r| r.is_empty()) {
         return;
     }

@@ -607,8 +607,9 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
     let stipple = st.polygon_stipple.as_deref();
     let a = [0, 1, 2].map(|i| BinAttributes { color: t.v[i].color, extra, i });
     let zq = t.v.map(|v| (v.z, v.q));
+    let centres = raster::CentreBox::of(t.x, t.y, rect);
     if stipple.is_none() {
-        if let Some(cover) = raster::Cover::find(t.x, t.y, rect) {
+        if let Some(cover) = raster::Cover::find_in(t.x, t.y, centres) {
             if cover.is_empty() {
                 return;
             }
@@ -626,7 +627,7 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
         }
     }
     let mut runs = raster::Runs::new();
-    let found = runs.find(t.x, t.y, rect, stipple);
+    let found = runs.find_in(t.x, t.y, centres, rect, stipple);
     if found && runs.is_empty() {
         return;
     }
