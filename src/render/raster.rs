@@ -455,20 +455,31 @@ impl Cover {
 
     /// The cover of triangle (x, y) (positively oriented) within `rect`
     /// when its box of pixel centres there fits the block, the extents
-    /// fit the lanes and the CPU has AVX2; None otherwise (then take
-    /// [`Runs::find`]). No stipple: callers with one do not ask.
+    /// fit the lanes and the CPU has AVX2, for a box of any size up to
+    /// the block's (the tests' entry: the renderer asks [`Cover::find_in`],
+    /// which leaves the smallest boxes to [`Runs`]); None otherwise. No
+    /// stipple: callers with one do not ask.
     #[inline(always)]
     pub fn find(x: [i64; 3], y: [i64; 3], rect: Rect) -> Option<Cover> {
-        Cover::find_in(x, y, CentreBox::of(x, y, rect))
+        Cover::of_box(x, y, CentreBox::of(x, y, rect), 0)
     }
 
-    /// [`Cover::find`] with the centre box already taken. Boxes of at
-    /// most 2x2 centres are left to [`Runs::find_in`]: its SSE2 lanes
-    /// were faster by the clock for them (immediate_1m, whose triangles
-    /// all cover one pixel of a 2x2 box: 39.3 ms a frame against 41.7
-    /// through the block, 1 thread, round 13), though not by instructions.
+    /// [`Cover::find`] with the centre box already taken, for the
+    /// renderer. Boxes of at most 2x2 centres are left to
+    /// [`Runs::find_in`]: its SSE2 lanes were faster by the clock for them
+    /// (immediate_1m, whose triangles all cover one pixel of a 2x2 box:
+    /// 39.5 ms a frame against 41.9 through the block, 1 thread, round
+    /// 13), though not by instructions.
     #[inline(always)]
     pub fn find_in(x: [i64; 3], y: [i64; 3], b: CentreBox) -> Option<Cover> {
+        Cover::of_box(x, y, b, 4)
+    }
+
+    /// The cover of box `b` when it has more than `smallest` centres
+    /// (or none: [`Cover::EMPTY`]) and fits the block and the lanes, on a
+    /// CPU with AVX2.
+    #[inline(always)]
+    fn of_box(x: [i64; 3], y: [i64; 3], b: CentreBox, smallest: i64) -> Option<Cover> {
         let CentreBox(row0, row1, col0, col1) = b;
         let (rows, cols) = (row1 - row0, col1 - col0);
         // No pixel centre in the box (most triangles smaller than a
@@ -476,7 +487,7 @@ impl Cover {
         if rows <= 0 || cols <= 0 {
             return Some(Cover::EMPTY);
         }
-        if rows * cols <= 4 || rows > Cover::ROWS || cols > Cover::COLS || !stamp_level() || !lanes_fit(x, y) {
+        if rows * cols <= smallest || rows > Cover::ROWS || cols > Cover::COLS || !stamp_level() || !lanes_fit(x, y) {
             return None;
         }
         #[cfg(target_arch = "x86_64")]
