@@ -173,16 +173,30 @@ const NARROW: i64 = 8;
 /// box, cut to `rect`: [row0, row1) x [col0, col1).
 #[inline]
 fn centre_box(x: [i64; 3], y: [i64; 3], rect: Rect) -> (i64, i64, i64, i64) {
-    let half = ONE / 2;
-    let (ymin, ymax) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
-    let (xmin, xmax) = (x[0].min(x[1]).min(x[2]), x[0].max(x[1]).max(x[2]));
-    // Centre p * ONE + half lies in [min, max] for ceil((min - half) / ONE)
-    // <= p <= floor((max - half) / ONE).
-    let row0 = (-floor_div(half - ymin, ONE)).max(rect.y0 as i64);
-    let row1 = (floor_div(ymax - half, ONE) + 1).min(rect.y1 as i64);
-    let col0 = (-floor_div(half - xmin, ONE)).max(rect.x0 as i64);
-    let col1 = (floor_div(xmax - half, ONE) + 1).min(rect.x1 as i64);
+    let CentreBox(row0, row1, col0, col1) = CentreBox::of(x, y, rect);
     (row0, row1, col0, col1)
+}
+
+/// The rows [row0, row1) and columns [col0, col1) of the pixel centres in
+/// a triangle's bounding box, cut to a rectangle: taken once and shared
+/// by [`Cover::find_in`] and [`Runs::find_in`].
+#[derive(Clone, Copy)]
+pub struct CentreBox(i64, i64, i64, i64);
+
+impl CentreBox {
+    #[inline(always)]
+    pub fn of(x: [i64; 3], y: [i64; 3], rect: Rect) -> CentreBox {
+        let half = ONE / 2;
+        let (ymin, ymax) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
+        let (xmin, xmax) = (x[0].min(x[1]).min(x[2]), x[0].max(x[1]).max(x[2]));
+        // Centre p * ONE + half lies in [min, max] for ceil((min - half) / ONE)
+        // <= p <= floor((max - half) / ONE).
+        let row0 = (-floor_div(half - ymin, ONE)).max(rect.y0 as i64);
+        let row1 = (floor_div(ymax - half, ONE) + 1).min(rect.y1 as i64);
+        let col0 = (-floor_div(half - xmin, ONE)).max(rect.x0 as i64);
+        let col1 = (floor_div(xmax - half, ONE) + 1).min(rect.x1 as i64);
+        CentreBox(row0, row1, col0, col1)
+    }
 }
 
 /// The covered pixels [lo, hi) of row `py` (empty when lo >= hi): by the
@@ -251,7 +265,14 @@ impl Runs {
     /// [`triangle`]. (Filled in place: no copy of the array per triangle.)
     #[inline]
     pub fn find(&mut self, x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>) -> bool {
-        let (row0, row1, col0, col1) = centre_box(x, y, rect);
+        self.find_in(x, y, CentreBox::of(x, y, rect), rect, stipple)
+    }
+
+    /// [`Runs::find`] with the triangle's centre box in `rect` already
+    /// taken (`CentreBox::of(x, y, rect)`).
+    #[inline]
+    pub fn find_in(&mut self, x: [i64; 3], y: [i64; 3], b: CentreBox, rect: Rect, stipple: Option<&[u32; 32]>) -> bool {
+        let CentreBox(row0, row1, col0, col1) = b;
         if row1 - row0 > Runs::MAX as i64 {
             return false;
         }
@@ -381,6 +402,17 @@ impl Runs {
         self.len == 0
     }
 
+    /// The runs of a [`Cover`]: each row's covered centres, which are
+    /// contiguous (the triangle is convex), as `find` would give them.
+    pub fn of_cover(c: &Cover) -> Runs {
+        let mut r = Runs::new();
+        for (py, lo, hi) in c.rows() {
+            r.runs[r.len].write((py as u32, lo as u32, hi as u32));
+            r.len += 1;
+        }
+        r
+    }
+
     /// The runs (y, x0, x1), bottom to top.
     pub fn iter(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
         // SAFETY: the first `len` runs were written by `find`.
@@ -396,6 +428,163 @@ impl Runs {
             fb.samples_passed = fb.samples_passed.wrapping_add(passed);
         }
     }
+}
+
+/// The covered pixel centres of a tiny triangle, found all at once
+/// (round 13): a block of up to [`Cover::COLS`] columns and
+/// [`Cover::ROWS`] rows from (col0, row0), bit `4 j + i` for pixel
+/// (col0 + i, row0 + j). The same exact edge tests as [`Runs::find`]
+/// (top-left rule included), so the same pixels; shaded as a block by
+/// `fragment::stamp` or, for states it does not cover, as the runs of
+/// [`Runs::of_cover`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Cover {
+    pub row0: usize,
+    pub col0: usize,
+    pub mask: u32,
+}
+
+impl Cover {
+    /// The block's width: one row of pixels is one set of four lanes.
+    pub const COLS: i64 = 4;
+    /// The block's height (four bits a row in `mask`).
+    pub const ROWS: i64 = 8;
+
+    /// No pixel.
+    pub const EMPTY: Cover = Cover { row0: 0, col0: 0, mask: 0 };
+
+    /// The cover of triangle (x, y) (positively oriented) within `rect`
+    /// when its box of pixel centres there fits the block, the extents
+    /// fit the lanes and the CPU has AVX2, for a box of any size up to
+    /// the block's (the tests' entry: the renderer asks [`Cover::find_in`],
+    /// which leaves the smallest boxes to [`Runs`]); None otherwise. No
+    /// stipple: callers with one do not ask.
+    #[inline(always)]
+    pub fn find(x: [i64; 3], y: [i64; 3], rect: Rect) -> Option<Cover> {
+        Cover::of_box(x, y, CentreBox::of(x, y, rect), 0)
+    }
+
+    /// [`Cover::find`] with the centre box already taken, for the
+    /// renderer. Boxes of at most 2x2 centres are left to
+    /// [`Runs::find_in`]: its SSE2 lanes were faster by the clock for them
+    /// (immediate_1m, whose triangles all cover one pixel of a 2x2 box:
+    /// 39.5 ms a frame against 41.9 through the block, 1 thread, round
+    /// 13), though not by instructions.
+    #[inline(always)]
+    pub fn find_in(x: [i64; 3], y: [i64; 3], b: CentreBox) -> Option<Cover> {
+        Cover::of_box(x, y, b, 4)
+    }
+
+    /// The cover of box `b` when it has more than `smallest` centres
+    /// (or none: [`Cover::EMPTY`]) and fits the block and the lanes, on a
+    /// CPU with AVX2.
+    #[inline(always)]
+    fn of_box(x: [i64; 3], y: [i64; 3], b: CentreBox, smallest: i64) -> Option<Cover> {
+        let CentreBox(row0, row1, col0, col1) = b;
+        let (rows, cols) = (row1 - row0, col1 - col0);
+        // No pixel centre in the box (most triangles smaller than a
+        // pixel): nothing to test.
+        if rows <= 0 || cols <= 0 {
+            return Some(Cover::EMPTY);
+        }
+        if rows * cols <= smallest || rows > Cover::ROWS || cols > Cover::COLS || !stamp_level() || !lanes_fit(x, y) {
+            return None;
+        }
+        #[cfg(target_arch = "x86_64")]
+        {
+            // SAFETY: `stamp_level` saw AVX2; the values fit in i32
+            // (`lanes_fit`, and `cover_avx2`'s bound).
+            let mask = unsafe { cover_avx2(x, y, row0, rows, col0, cols) };
+            Some(Cover { row0: row0 as usize, col0: col0 as usize, mask })
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        None
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.mask == 0
+    }
+
+    /// The covered runs (y, x0, x1), bottom to top.
+    pub fn rows(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
+        (0..Cover::ROWS as usize).filter_map(move |j| {
+            let bits = (self.mask >> (4 * j)) & 15;
+            (bits != 0).then(|| (self.row0 + j, self.col0 + bits.trailing_zeros() as usize, self.col0 + (32 - bits.leading_zeros()) as usize))
+        })
+    }
+}
+
+/// Are tiny triangles covered and shaded as blocks on this thread
+/// (AVX2, not lowered by `SOFTGL_SIMD` or a test)?
+#[inline(always)]
+fn stamp_level() -> bool {
+    fragment::simd::level_here() == fragment::simd::Level::Avx2
+}
+
+/// The cover of the box [row0, row0 + rows) x [col0, col0 + cols) (at
+/// most `Cover::ROWS` by `Cover::COLS`, not empty): each edge function at
+/// two rows of four centres in eight i32 lanes, stepped two rows at a
+/// time; a centre is outside when the union of its three values has the
+/// sign bit. The three edges are set up side by side in four lanes.
+///
+/// Exact: each lane holds `Edge::new`'s E = dx (Py - ya) - dy (Px - xa) -
+/// bias at its centre P. With both extents at most 2^14 (`lanes_fit`)
+/// and the box's first centre within them, the vertices relative to that
+/// centre are within 2^14, the edge vectors within 2^14, every centre of
+/// the block (up to 3 columns and 7 rows further) within 2^14 + 2^11 of
+/// every vertex, so |E| < 2^29.3 and no lane wraps.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn cover_avx2(x: [i64; 3], y: [i64; 3], row0: i64, rows: i64, col0: i64, cols: i64) -> u32 {
+    use std::arch::x86_64::*;
+    let half = ONE / 2;
+    let (px, py) = (col0 * ONE + half, row0 * ONE + half);
+    // Lanes 0, 1, 2: edge e from vertex e to vertex e + 1 (mod 3).
+    let vx = _mm_setr_epi32((x[0] - px) as i32, (x[1] - px) as i32, (x[2] - px) as i32, 0);
+    let vy = _mm_setr_epi32((y[0] - py) as i32, (y[1] - py) as i32, (y[2] - py) as i32, 0);
+    let dx = _mm_sub_epi32(_mm_shuffle_epi32::<0b11_00_10_01>(vx), vx);
+    let dy = _mm_sub_epi32(_mm_shuffle_epi32::<0b11_00_10_01>(vy), vy);
+    // E at the first centre: dx (0 - Y) - dy (0 - X) = dy X - dx Y.
+    let zero = _mm_setzero_si128();
+    let first = _mm_sub_epi32(_mm_mullo_epi32(dy, vx), _mm_mullo_epi32(dx, vy));
+    // `Edge::new`'s top-left rule: a centre on an edge that is neither
+    // top nor left (dy < 0, or dy = 0 and dx < 0) is out: minus 1.
+    let top_left = _mm_or_si128(_mm_cmpgt_epi32(zero, dy), _mm_and_si128(_mm_cmpeq_epi32(dy, zero), _mm_cmpgt_epi32(zero, dx)));
+    let first = _mm_add_epi32(first, _mm_xor_si128(top_left, _mm_set1_epi32(-1)));
+    // Steps: a column is -256 dy, a row 256 dx.
+    let a = _mm_slli_epi32::<8>(_mm_sub_epi32(zero, dy));
+    let b = _mm_slli_epi32::<8>(dx);
+    let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
+    let lane_j = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
+    let mut v = [_mm256_setzero_si256(); 3];
+    let mut step = [_mm256_setzero_si256(); 3];
+    for e in 0..3 {
+        let (be, ae) = (lane_of(b, e as i32), lane_of(a, e as i32));
+        v[e] = _mm256_add_epi32(lane_of(first, e as i32), _mm256_add_epi32(_mm256_mullo_epi32(ae, lane_i), _mm256_mullo_epi32(be, lane_j)));
+        step[e] = _mm256_add_epi32(be, be);
+    }
+    let mut outside = 0u32;
+    let mut j = 0;
+    while j < rows {
+        let any = _mm256_or_si256(_mm256_or_si256(v[0], v[1]), v[2]);
+        outside |= (_mm256_movemask_ps(_mm256_castsi256_ps(any)) as u32) << (4 * j);
+        for e in 0..3 {
+            v[e] = _mm256_add_epi32(v[e], step[e]);
+        }
+        j += 2;
+    }
+    // The box's columns in each of its rows.
+    let row_bits = (0x1111_1111u64 & ((1u64 << (4 * rows)) - 1)) as u32;
+    !outside & (row_bits * ((1u32 << cols) - 1))
+}
+
+/// Lane `e` of `v` in all eight lanes (a function, not a closure: a
+/// closure in `cover_avx2` would not have its target features).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn lane_of(v: std::arch::x86_64::__m128i, e: i32) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::*;
+    _mm256_permutevar8x32_epi32(_mm256_castsi128_si256(v), _mm256_set1_epi32(e))
 }
 
 /// Calls `emit(py, lo, hi)` for every run of covered pixels [lo, hi) of
@@ -584,6 +773,82 @@ mod tests {
             ties += on_edge as usize;
         }
         assert!(compared > 100_000 && covered > 50_000 && at_extent > 10_000 && ties > 5_000, "{compared} {covered} {at_extent} {ties}");
+    }
+
+    /// A tiny triangle's block cover (round 13) has exactly `Runs::find`'s
+    /// runs: random triangles of every orientation whose centre boxes
+    /// are up to 5 columns and 9 rows (so some do not fit the block), on
+    /// the half-pixel grid in a fifth of them (centres on edges: the
+    /// top-left rule decides), horizontal and vertical edges, slivers and
+    /// degenerate ones, large ones cut to a small box by a random
+    /// rectangle (a band or the scissor), negative coordinates.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn cover_matches_runs() {
+        if !stamp_level() {
+            eprintln!("no AVX2: the block cover is not used");
+            return;
+        }
+        let mut rnd = crate::render::test_rng::below(2026, 21);
+        let (mut compared, mut covered, mut ties, mut cut, mut flat) = (0, 0, 0, 0, 0);
+        for n in 0..400_000 {
+            let size = match n % 5 {
+                0 => 2 * ONE,
+                1 => 4 * ONE,
+                2 => 6 * ONE,
+                3 => 64 * ONE,
+                _ => ONE / 2,
+            };
+            let (bx, by) = (rnd(40 * ONE) - 20 * ONE, rnd(40 * ONE) - 20 * ONE);
+            let mut x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
+            let mut y = [by + rnd(size), by + rnd(size), by + rnd(size)];
+            if n % 5 == 1 || n % 11 == 0 {
+                x = x.map(|c| c & !(ONE / 2 - 1));
+                y = y.map(|c| c & !(ONE / 2 - 1));
+            }
+            match n % 13 {
+                0 => y[1] = y[0],
+                1 => x[2] = x[0],
+                2 => (x[2], y[2]) = (x[0] + (x[1] - x[0]) / 2, y[0] + (y[1] - y[0]) / 2),
+                _ => {}
+            }
+            // Positive orientation, as setup hands triangles on; a
+            // degenerate one stays as it is.
+            let area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+            if area < 0 {
+                x.swap(1, 2);
+                y.swap(1, 2);
+            }
+            flat += (area == 0) as usize;
+            let rect = if size > 8 * ONE || n % 3 == 0 {
+                // A band or a scissor box somewhere over the triangle.
+                let (cx, cy) = (x[rnd(3) as usize] / ONE, y[rnd(3) as usize] / ONE);
+                let (w, h) = (1 + rnd(6), 1 + rnd(10));
+                let x0 = (cx - rnd(w + 1)) as i32;
+                let y0 = (cy - rnd(h + 1)) as i32;
+                Rect { x0, y0, x1: x0 + w as i32, y1: y0 + h as i32 }
+            } else {
+                Rect { x0: -64, y0: -64, x1: 64, y1: 64 }
+            };
+            let Some(cover) = Cover::find(x, y, rect) else { continue };
+            let mut runs = Runs::new();
+            assert!(runs.find(x, y, rect, None), "a short triangle");
+            // (Runs hold u32: compare negative coordinates as they wrap.)
+            let narrow = |(py, lo, hi): (usize, usize, usize)| (py as u32, lo as u32, hi as u32);
+            let (c, r): (Vec<_>, Vec<_>) = (cover.rows().map(narrow).collect(), runs.iter().map(narrow).collect());
+            assert_eq!(c, r, "{x:?} {y:?} {rect:?} {cover:?}");
+            let of: Vec<_> = Runs::of_cover(&cover).iter().map(narrow).collect();
+            assert_eq!(of, r, "{x:?} {y:?} {rect:?}");
+            compared += 1;
+            covered += !c.is_empty() as usize;
+            cut += (rect.x1 - rect.x0 < 8) as usize;
+            if area != 0 {
+                let (_, _, edges) = ccw_edges(x, y).unwrap();
+                let (row0, row1, col0, col1) = centre_box(x, y, rect);
+                ties += (row0..row1).any(|py| (col0..col1).any(|px| edges.iter().any(|e| matches!(e.a * px + e.b * py + e.c, 0 | -1)))) as usize;
+            }
+        }
+        assert!(compared > 200_000 && covered > 80_000 && ties > 20_000 && cut > 30_000 && flat > 10_000, "{compared} {covered} {ties} {cut} {flat}");
     }
 
     /// Stepping the span solution row by row gives `span`'s answer for

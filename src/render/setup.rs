@@ -273,11 +273,22 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
     let v = order.map(|i| attrs[i]);
     // Drawn now: after what is binned (two colour buffers).
     super::tile::sync(rs, fb);
+    // A tiny triangle (round 13) is covered as one block and, under the
+    // common states, shaded as one (`fragment::stamp`).
+    let centres = raster::CentreBox::of(ex, ey, rs.draw_rect);
+    if rs.polygon_stipple.is_none() && !rs.reference && !fb.draw_both {
+        if let Some(cover) = raster::Cover::find_in(ex, ey, centres) {
+            if !cover.is_empty() {
+                shade_cover(rs, fb, zq, v, ex, ey, flat_color[back as usize], back, front_facing, &cover);
+            }
+            return;
+        }
+    }
     // A short triangle's runs are found first: covering no pixel (most
     // often through the stipple or between pixel centres), it needs no
     // planes.
     let mut found = raster::Runs::new();
-    let runs = found.find(ex, ey, rs.draw_rect, rs.polygon_stipple.as_deref()).then_some(&found);
+    let runs = found.find_in(ex, ey, centres, rs.draw_rect, rs.polygon_stipple.as_deref()).then_some(&found);
     if runs.is_some_and(|r| r.is_empty()) {
         return;
     }
@@ -286,6 +297,27 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
     match runs {
         Some(r) => r.shade(rs, fb, &setup, k),
         None => raster::triangle(rs, fb, ex, ey, &setup, k),
+    }
+}
+
+/// Sets up and shades a tiny triangle's cover now: by its block kernel,
+/// or its runs by its span kernel when the state has no block kernel.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn shade_cover<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool, cover: &raster::Cover) {
+    let setup = planes_of(rs, zq, v, ex, ey, flat_color, back, front_facing);
+    match rs.shade.stamp(rs, &setup) {
+        Some(sk) => {
+            // SAFETY: the cover lies within the draw rectangle, inside the
+            // framebuffer; the state tests depth only with a depth buffer;
+            // nothing else runs on the framebuffer (1 thread, or synced).
+            let passed = unsafe { sk(&rs.fragment, &setup, &super::fragment::stamp::Target::of(fb), cover) };
+            fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+        }
+        None => {
+            let k = raster::kernel(rs, fb, &setup);
+            raster::Runs::of_cover(cover).shade(rs, fb, &setup, k)
+        }
     }
 }
 

@@ -19,6 +19,7 @@
 
 use super::fog::Fog;
 use super::fragment::fast::{self, Kernel};
+use super::fragment::stamp::{self, StampKernel};
 use super::fragment::{self, FragmentState};
 use super::setup::{Plane, TexPlanes, TriangleSetup};
 use super::texture::{TextureStage, MAX_UNITS};
@@ -89,6 +90,9 @@ pub struct ShadeState {
     pub color_sum: bool,
     /// By [`Self::kernel_index`].
     kernels: [Kernel; 4],
+    /// The block kernels (`fragment::stamp`) for tiny triangles, where
+    /// the state has them; by [`Self::kernel_index`].
+    stamps: [Option<StampKernel>; 4],
 }
 
 impl ShadeState {
@@ -104,6 +108,7 @@ impl ShadeState {
             fog: rs.fog,
             color_sum: rs.color_sum,
             kernels: [fragment::reference::shade_span; 4],
+            stamps: [None; 4],
         };
         if !rs.reference {
             // A triangle of each kind, with exactly what `select` reads
@@ -126,6 +131,7 @@ impl ShadeState {
                     fog: s.fog.map(|f| (Plane::default(), f)),
                 };
                 *k = fast::select(&s.fragment, &t, rs.approximate);
+                s.stamps[i] = stamp::select(&s.fragment, &t, rs.approximate);
             }
         }
         s
@@ -154,6 +160,13 @@ impl ShadeState {
     pub fn kernel(&self, t: &TriangleSetup) -> Kernel {
         self.kernels[Self::kernel_index(t)]
     }
+
+    /// The block kernel for a tiny triangle set up under this state, if
+    /// there is one: it computes what [`Self::kernel`]'s does.
+    #[inline(always)]
+    pub fn stamp(&self, t: &TriangleSetup) -> Option<StampKernel> {
+        self.stamps[Self::kernel_index(t)]
+    }
 }
 
 /// A render state's last capture. Clones start empty (a clone may be
@@ -169,11 +182,12 @@ struct KernelCache {
     /// 0: empty (no validated state has stamp 0).
     stamp: u64,
     kernels: [Kernel; 4],
+    stamps: [Option<StampKernel>; 4],
 }
 
 impl Default for KernelCache {
     fn default() -> Self {
-        KernelCache { stamp: 0, kernels: [fragment::reference::shade_span; 4] }
+        KernelCache { stamp: 0, kernels: [fragment::reference::shade_span; 4], stamps: [None; 4] }
     }
 }
 
@@ -202,6 +216,25 @@ impl ShadeCache {
         self.kernel_captured(rs, t)
     }
 
+    /// The block kernel for a tiny triangle set up under `rs` (whose
+    /// cache this is) on the fast path, if the state has one: what
+    /// `with(rs, |st| st.stamp(t))` gives.
+    #[inline(always)]
+    pub fn stamp(&self, rs: &RenderState, t: &TriangleSetup) -> Option<StampKernel> {
+        let c = self.1.get();
+        if c.stamp == rs.stamp && c.stamp != 0 && !rs.reference {
+            return c.stamps[ShadeState::kernel_index(t)];
+        }
+        self.stamp_captured(rs, t)
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn stamp_captured(&self, rs: &RenderState, t: &TriangleSetup) -> Option<StampKernel> {
+        self.kernel_captured(rs, t);
+        self.with(rs, |st| st.stamp(t))
+    }
+
     #[cold]
     #[inline(never)]
     fn kernel_captured(&self, rs: &RenderState, t: &TriangleSetup) -> Kernel {
@@ -209,7 +242,7 @@ impl ShadeCache {
             // Only fast-path captures are copied out (the test above
             // leaves reference states to `with`).
             if !st.reference {
-                self.1.set(KernelCache { stamp: st.stamp, kernels: st.kernels });
+                self.1.set(KernelCache { stamp: st.stamp, kernels: st.kernels, stamps: st.stamps });
             }
             st.kernel(t)
         })

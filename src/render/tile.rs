@@ -82,6 +82,7 @@
 //! run by each band after the drawing before it ([`BandOp`], round 13).
 
 use super::fragment::fast::Kernel;
+use super::fragment::stamp::{StampKernel, Target as StampTarget};
 use super::fragment::{Buffers, SpanPixels};
 use super::line::{LineEnv, LineRun};
 use super::point::PointRun;
@@ -641,28 +642,57 @@ fn draw_prim(b: &Batch, t: &Binned, st: &ShadeState, fb: &mut impl Buffers, widt
     }
 }
 
-/// Sets up a binned triangle and hands its covered runs within `rect` to
-/// `span(kernel, setup, y, x0, x1)`; a triangle covering no pixel centre
-/// there is not set up. The setup is the one shading it at once would
-/// compute (the same inputs to `planes_of`), so the pixels are the same.
+/// How [`shade_binned`] has a triangle's pixels shaded.
+enum Shading<'a> {
+    /// Pixels [x0, x1) of row y by a span kernel.
+    Span(Kernel, &'a TriangleSetup, usize, usize, usize),
+    /// A tiny triangle's cover by its block kernel (round 13).
+    Stamp(StampKernel, &'a TriangleSetup, &'a raster::Cover),
+}
+
+/// Sets up a binned triangle and hands its covered pixels within `rect`
+/// to `shade`: a tiny triangle's cover at once when its state has a block
+/// kernel (`fragment::stamp`), else its runs one by one; a triangle
+/// covering no pixel centre there is not set up. The setup is the one
+/// shading it at once would compute (the same inputs to `planes_of`), so
+/// the pixels are the same.
 #[inline]
-fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut span: impl FnMut(Kernel, &TriangleSetup, usize, usize, usize)) {
+fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut shade: impl FnMut(Shading<'_>)) {
     let stipple = st.polygon_stipple.as_deref();
+    let a = [0, 1, 2].map(|i| BinAttributes { color: t.v[i].color, extra, i });
+    let zq = t.v.map(|v| (v.z, v.q));
+    let centres = raster::CentreBox::of(t.x, t.y, rect);
+    if stipple.is_none() {
+        if let Some(cover) = raster::Cover::find_in(t.x, t.y, centres) {
+            if cover.is_empty() {
+                return;
+            }
+            let setup = planes_of(st, zq, a.each_ref(), t.x, t.y, t.v[0].color, false, t.front_facing);
+            match st.stamp(&setup) {
+                Some(sk) => shade(Shading::Stamp(sk, &setup, &cover)),
+                None => {
+                    let k = st.kernel(&setup);
+                    for (py, lo, hi) in cover.rows() {
+                        shade(Shading::Span(k, &setup, py, lo, hi));
+                    }
+                }
+            }
+            return;
+        }
+    }
     let mut runs = raster::Runs::new();
-    let found = runs.find(t.x, t.y, rect, stipple);
+    let found = runs.find_in(t.x, t.y, centres, rect, stipple);
     if found && runs.is_empty() {
         return;
     }
-    let a = [0, 1, 2].map(|i| BinAttributes { color: t.v[i].color, extra, i });
-    let zq = t.v.map(|v| (v.z, v.q));
     let setup = planes_of(st, zq, a.each_ref(), t.x, t.y, t.v[0].color, false, t.front_facing);
     let k = st.kernel(&setup);
     if found {
         for (py, lo, hi) in runs.iter() {
-            span(k, &setup, py, lo, hi);
+            shade(Shading::Span(k, &setup, py, lo, hi));
         }
     } else {
-        raster::spans(t.x, t.y, rect, stipple, |py, lo, hi| span(k, &setup, py, lo, hi));
+        raster::spans(t.x, t.y, rect, stipple, |py, lo, hi| shade(Shading::Span(k, &setup, py, lo, hi)));
     }
 }
 
@@ -942,6 +972,7 @@ impl pool::Work for Flight {
         let b = &self.batch;
         let of = |t: &Binned| (&*b.states[t.state as usize], b.extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
         let raw = &self.raw;
+        let stamp_target = StampTarget { color: raw.color, depth: raw.depth, width: raw.width };
         let mut local = 0u64;
         let t0 = super::trace::now();
         let (bins, order) = self.bin_once();
@@ -986,12 +1017,20 @@ impl pool::Work for Flight {
                     local += band.px.passed;
                     continue;
                 }
-                shade_binned(t, st, extra, r, |kernel, setup, py, lo, hi| {
-                    // Safety: inside the surface and inside this tile, which
-                    // no other thread holds.
-                    let mut px = unsafe { raw.span(py, lo, hi) };
-                    kernel(&st.fragment, setup, &mut px, py, lo, hi);
-                    local += px.passed;
+                shade_binned(t, st, extra, r, |how| match how {
+                    Shading::Span(kernel, setup, py, lo, hi) => {
+                        // Safety: inside the surface and inside this tile,
+                        // which no other thread holds.
+                        let mut px = unsafe { raw.span(py, lo, hi) };
+                        kernel(&st.fragment, setup, &mut px, py, lo, hi);
+                        local += px.passed;
+                    }
+                    Shading::Stamp(sk, setup, cover) => {
+                        // Safety: the cover lies within `r`, inside the
+                        // surface and this tile, which no other thread
+                        // holds; a state testing depth has a depth buffer.
+                        local += unsafe { sk(&st.fragment, setup, &stamp_target, cover) };
+                    }
                 });
             }
             for (_, op) in ops {
@@ -1123,10 +1162,18 @@ fn shade_here(b: &Batch, fb: &mut Framebuffer) {
             draw_prim(b, t, st, fb, width, t.bbox.intersect(surface));
             continue;
         }
-        shade_binned(t, st, extra, t.bbox.intersect(surface), |k, setup, py, lo, hi| {
-            let mut px = SpanPixels::of(fb, py, lo, hi);
-            k(&st.fragment, setup, &mut px, py, lo, hi);
-            let passed = px.passed;
+        shade_binned(t, st, extra, t.bbox.intersect(surface), |how| {
+            let passed = match how {
+                Shading::Span(k, setup, py, lo, hi) => {
+                    let mut px = SpanPixels::of(fb, py, lo, hi);
+                    k(&st.fragment, setup, &mut px, py, lo, hi);
+                    px.passed
+                }
+                // Safety: the cover lies within the surface; nothing is
+                // binned while drawing to two colour buffers; this thread
+                // holds the framebuffer.
+                Shading::Stamp(sk, setup, cover) => unsafe { sk(&st.fragment, setup, &StampTarget::of(fb), cover) },
+            };
             fb.samples_passed = fb.samples_passed.wrapping_add(passed);
         });
     }

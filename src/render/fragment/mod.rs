@@ -436,3 +436,4 @@ pub mod reference;
 pub mod pixel_span;
 pub mod textured;
 pub mod simd;
+pub mod stamp;

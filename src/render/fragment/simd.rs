@@ -114,7 +114,7 @@ pub fn force_level_on_this_thread(level: Option<Level>) {
 /// The level for triangles selected on this thread (`level()` unless a
 /// test forced a lower one), as `pick` decides it.
 #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))] // its callers pick x86-64 kernels
-pub(super) fn level_here() -> Level {
+pub(crate) fn level_here() -> Level {
     let l = level();
     match if LEVEL_FORCED.load(Ordering::Relaxed) { LEVEL_HERE.with(|c| c.get()) } else { 0 } {
         1 => Level::Scalar,

@@ -1,0 +1,393 @@
+//! Tiny triangles shaded as one block (GL 1.5 section 4.1, the per-fragment
+//! operations of [`super::fast`]'s kernels; round 13).
+//!
+//! A triangle whose pixel centres fit a block of four columns and up to
+//! eight rows (`raster::Cover`: nearly every triangle of the sphere and
+//! million-vertex scenes at 1920x1080, one to six pixels each) is covered
+//! all at once and shaded here, a row of four pixels per set of lanes,
+//! instead of as a run per row through a span kernel (whose fixed cost per
+//! span, and `Runs::find`'s row solving, were most of the work on spans of
+//! one to four pixels).
+//!
+//! Covered: no stencil or alpha test; depth off, or LESS / LEQUAL with
+//! depth writes; colour flat, constant, affine or perspective (not stepped,
+//! fogged or textured); colour stored unmasked, or not written. Other
+//! states shade the cover's runs with their span kernel.
+//!
+//! Exactness: each lane computes, operation for operation, what the scalar
+//! span kernel (`fast::kernel`) computes for its pixel, so the same bits:
+//! - centres: `cx = x + 1/2 - x0` and `cy = y + 1/2 - y0` are multiples of
+//!   1/256 far below 2^44, exact however formed;
+//! - row terms `a0 + dy * cy` (depth, 1/w, each colour channel), then per
+//!   pixel `r + dx * cx`, separate IEEE f64 multiplies and adds (no FMA);
+//!   perspective colour times `1 / (qr + qdx * cx)`, a correctly rounded
+//!   division per pixel;
+//! - depth clamped with max / min (NaN to 0, as the scalar clamp and cast),
+//!   scaled by `DEPTH_MAX`, plus 1/2, truncated: `depth_to_fixed`;
+//!   compared unsigned (sign bits flipped);
+//! - colour channels to f32 (round to nearest), then `color_to_u8`'s f32
+//!   clamp, x255, +1/2, truncation; a constant colour's row term is
+//!   `a0 + (+-0)`, the same for every row, so it is converted once.
+//!
+//! Only covered pixels are read or written (masked loads and stores), so a
+//! block reaching past the framebuffer's edge, the band or the scissor
+//! rectangle touches nothing there.
+
+use super::fast::{depth_key, CO_NONE, CO_STORE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_PERSPECTIVE, D_ANY, D_LEQUAL, D_LESS, D_OFF};
+use super::{ColorOp, FragmentState};
+use crate::render::raster::Cover;
+use crate::render::setup::TriangleSetup;
+
+/// Where a block is shaded: a framebuffer's (or band's) colour and depth
+/// planes, `width` pixels a row, pixel (x, y) at `y * width + x`.
+#[derive(Clone, Copy)]
+pub struct Target {
+    pub color: *mut [u8; 4],
+    pub depth: *mut u32,
+    pub width: usize,
+}
+
+impl Target {
+    /// The framebuffer's colour buffer and depth (the stamp is never used
+    /// while drawing to two colour buffers: callers check `draw_both`).
+    pub fn of(fb: &mut crate::framebuffer::Framebuffer) -> Target {
+        Target { color: fb.color.as_mut_ptr(), depth: fb.depth.as_mut_ptr(), width: fb.width }
+    }
+}
+
+/// A block shader: shades `cover`'s pixels of triangle `t` into the
+/// target, returning how many passed the depth test.
+///
+/// Safety: every covered pixel lies inside the target's planes (and its
+/// depth plane exists when the state tests depth), and no other thread
+/// reads or writes those pixels meanwhile.
+pub type StampKernel = unsafe fn(&FragmentState, &TriangleSetup, &Target, &Cover) -> u64;
+
+/// The block shader for a triangle under a fragment state, if this state
+/// and triangle have one (the cases of the module comment) and the CPU
+/// has AVX2: mirrors [`super::fast::select`]'s choice of colour source, so
+/// that the kernel computes what the span kernel would.
+pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Option<StampKernel> {
+    if fs.alpha_test || fs.stencil_test || super::simd::level_here() != super::simd::Level::Avx2 {
+        return None;
+    }
+    let d = depth_key(fs);
+    if d == D_ANY {
+        return None;
+    }
+    let full = fs.color_mask == [true; 4];
+    let co = match fs.color {
+        ColorOp::None => CO_NONE,
+        ColorOp::Replace if full => CO_STORE,
+        _ => return None,
+    };
+    if co == CO_NONE {
+        return pick_d(d, CS_FLAT, CO_NONE);
+    }
+    let cs = if t.tex.is_some() || t.fog.is_some() {
+        return None;
+    } else if t.flat.is_some() {
+        CS_FLAT
+    } else if t.perspective {
+        CS_PERSPECTIVE
+    } else if t.color.iter().all(|p| p.dx == 0.0 && p.dy == 0.0) {
+        CS_CONSTANT
+    } else if approximate {
+        // Stepped in 16.16 fixed point by the span kernels.
+        return None;
+    } else {
+        CS_AFFINE
+    };
+    pick_d(d, cs, co)
+}
+
+fn pick_d(d: u8, cs: u8, co: u8) -> Option<StampKernel> {
+    match d {
+        D_OFF => pick_cs::<D_OFF>(cs, co),
+        D_LESS => pick_cs::<D_LESS>(cs, co),
+        _ => pick_cs::<D_LEQUAL>(cs, co),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+fn pick_cs<const D: u8>(cs: u8, co: u8) -> Option<StampKernel> {
+    use x86::stamp_avx2;
+    Some(match (cs, co) {
+        (_, CO_NONE) => stamp_avx2::<D, CS_FLAT, CO_NONE>,
+        (CS_FLAT, _) => stamp_avx2::<D, CS_FLAT, CO_STORE>,
+        (CS_CONSTANT, _) => stamp_avx2::<D, CS_CONSTANT, CO_STORE>,
+        (CS_AFFINE, _) => stamp_avx2::<D, CS_AFFINE, CO_STORE>,
+        _ => stamp_avx2::<D, CS_PERSPECTIVE, CO_STORE>,
+    })
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn pick_cs<const D: u8>(_: u8, _: u8) -> Option<StampKernel> {
+    None
+}
+
+#[cfg(target_arch = "x86_64")]
+mod x86 {
+    use super::super::fast::{CO_NONE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_PERSPECTIVE, D_LESS, D_OFF};
+    use super::super::{color_to_u8, FragmentState};
+    use super::Target;
+    use crate::framebuffer::DEPTH_MAX;
+    use crate::render::raster::Cover;
+    use crate::render::setup::TriangleSetup;
+    use std::arch::x86_64::*;
+
+    /// `color_to_u8` of eight f32 lanes (two channels of four pixels), as
+    /// i32 lanes in [0, 255]: max first, so NaN gives 0 as the scalar
+    /// clamp-then-cast does.
+    #[inline(always)]
+    unsafe fn to_u8_lanes(c: __m256) -> __m256i {
+        let c = _mm256_min_ps(_mm256_max_ps(c, _mm256_setzero_ps()), _mm256_set1_ps(1.0));
+        _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(c, _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5)))
+    }
+
+    /// Four pixels' RGBA bytes from their channels' f32 lanes.
+    #[inline(always)]
+    unsafe fn pixels(r: __m128, g: __m128, b: __m128, a: __m128) -> __m128i {
+        let rg = to_u8_lanes(_mm256_set_m128(g, r));
+        let ba = to_u8_lanes(_mm256_set_m128(a, b));
+        // i16 lanes: r0..r3 b0..b3 | g0..g3 a0..a3; then bytes
+        // r0..r3 b0..b3 g0..g3 a0..a3, gathered pixel by pixel.
+        let w = _mm256_packs_epi32(rg, ba);
+        let bytes = _mm_packus_epi16(_mm256_castsi256_si128(w), _mm256_extracti128_si256::<1>(w));
+        _mm_shuffle_epi8(bytes, _mm_setr_epi8(0, 8, 4, 12, 1, 9, 5, 13, 2, 10, 6, 14, 3, 11, 7, 15))
+    }
+
+    /// One channel of four pixels: `(r + dx * cx) * w` (w only under
+    /// perspective), to f32.
+    #[inline(always)]
+    unsafe fn channel<const CS: u8>(r: __m256d, dx: __m256d, cx: __m256d, w: __m256d) -> __m128 {
+        let v = _mm256_add_pd(r, _mm256_mul_pd(dx, cx));
+        _mm256_cvtpd_ps(if CS == CS_PERSPECTIVE { _mm256_mul_pd(v, w) } else { v })
+    }
+
+    /// The block kernel: the cover's rows bottom to top, four pixels
+    /// (columns col0 .. col0 + 3) in the lanes of each row, only the
+    /// covered ones read or written.
+    #[target_feature(enable = "avx2")]
+    pub(super) unsafe fn stamp_avx2<const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &Target, c: &Cover) -> u64 {
+        // (Through i64: one conversion instruction, not usize's several.)
+        let cx0 = c.col0 as i64 as f64 + 0.5 - t.x0;
+        let cx = _mm256_add_pd(_mm256_set1_pd(cx0), _mm256_setr_pd(0.0, 1.0, 2.0, 3.0));
+        let zdx = _mm256_set1_pd(t.z.dx);
+        let qdx = _mm256_set1_pd(t.q.dx);
+        let one = _mm256_set1_pd(1.0);
+        let (zero, scale, half) = (_mm256_setzero_pd(), _mm256_set1_pd(DEPTH_MAX as f64), _mm256_set1_pd(0.5));
+        let sign = _mm_set1_epi32(i32::MIN);
+        let bit = _mm_setr_epi32(1, 2, 4, 8);
+        let afix = _mm_set1_epi32(((fs.alpha_fix as u32) << 24) as i32);
+        // Colour planes: channels side by side for the row terms, each
+        // channel's dx in every lane for the pixels.
+        let ca0 = _mm256_setr_pd(t.color[0].a0, t.color[1].a0, t.color[2].a0, t.color[3].a0);
+        let cdy = _mm256_setr_pd(t.color[0].dy, t.color[1].dy, t.color[2].dy, t.color[3].dy);
+        let cdx = [_mm256_set1_pd(t.color[0].dx), _mm256_set1_pd(t.color[1].dx), _mm256_set1_pd(t.color[2].dx), _mm256_set1_pd(t.color[3].dx)];
+        let mut src = _mm_setzero_si128();
+        if CS == CS_FLAT {
+            src = _mm_set1_epi32(u32::from_ne_bytes(t.flat.unwrap_or_default()) as i32);
+        } else if CS == CS_CONSTANT {
+            // a0 + (+-0) * cy: the same value in every row (module comment).
+            let cy = c.row0 as i64 as f64 + 0.5 - t.y0;
+            let cr = [0, 1, 2, 3].map(|ch| (t.color[ch].a0 + t.color[ch].dy * cy) as f32);
+            src = _mm_set1_epi32(u32::from_ne_bytes(color_to_u8(glam::Vec4::from_array(cr))) as i32);
+        }
+        src = _mm_or_si128(src, afix);
+        let mut passed = 0u64;
+        let mut mask = c.mask;
+        let mut at = c.row0 * px.width + c.col0;
+        let mut row = c.row0;
+        while mask != 0 {
+            let bits = mask & 15;
+            mask >>= 4;
+            if bits != 0 {
+                let cy = row as i64 as f64 + 0.5 - t.y0;
+                let mut lanes = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(bits as i32), bit), bit);
+                if D != D_OFF {
+                    let zr = t.z.a0 + t.z.dy * cy;
+                    let z = _mm256_add_pd(_mm256_set1_pd(zr), _mm256_mul_pd(zdx, cx));
+                    let z = _mm256_min_pd(_mm256_max_pd(z, zero), one);
+                    let z = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(z, scale), half));
+                    let dp = px.depth.add(at).cast::<i32>();
+                    let stored = _mm_maskload_epi32(dp, lanes);
+                    let (zs, ss) = (_mm_xor_si128(z, sign), _mm_xor_si128(stored, sign));
+                    let pass = if D == D_LESS { _mm_cmplt_epi32(zs, ss) } else { _mm_xor_si128(_mm_cmpgt_epi32(zs, ss), _mm_set1_epi32(-1)) };
+                    lanes = _mm_and_si128(lanes, pass);
+                    _mm_maskstore_epi32(dp, lanes, z);
+                }
+                let m = _mm_movemask_ps(_mm_castsi128_ps(lanes));
+                passed += m.count_ones() as u64;
+                if CO != CO_NONE && m != 0 {
+                    if CS == CS_AFFINE || CS == CS_PERSPECTIVE {
+                        let cr = _mm256_add_pd(ca0, _mm256_mul_pd(cdy, _mm256_set1_pd(cy)));
+                        let w = if CS == CS_PERSPECTIVE {
+                            let qr = t.q.a0 + t.q.dy * cy;
+                            _mm256_div_pd(one, _mm256_add_pd(_mm256_set1_pd(qr), _mm256_mul_pd(qdx, cx)))
+                        } else {
+                            one
+                        };
+                        let r = channel::<CS>(_mm256_permute4x64_pd::<0x00>(cr), cdx[0], cx, w);
+                        let g = channel::<CS>(_mm256_permute4x64_pd::<0x55>(cr), cdx[1], cx, w);
+                        let b = channel::<CS>(_mm256_permute4x64_pd::<0xAA>(cr), cdx[2], cx, w);
+                        let a = channel::<CS>(_mm256_permute4x64_pd::<0xFF>(cr), cdx[3], cx, w);
+                        src = _mm_or_si128(pixels(r, g, b, a), afix);
+                    }
+                    _mm_maskstore_epi32(px.color.add(at).cast::<i32>(), lanes, src);
+                }
+            }
+            row += 1;
+            at += px.width;
+        }
+        passed
+    }
+}
+
+#[cfg(all(test, target_arch = "x86_64"))]
+mod tests {
+    use super::super::{fast, reference, CompareFunc, SpanPixels};
+    use super::*;
+    use crate::framebuffer::{Rect, DEPTH_MAX};
+    use crate::render::raster::{Cover, Runs};
+    use crate::render::setup::{Plane, ONE};
+
+    /// A random plane whose values over the block lie in about
+    /// [lo, hi], at times constant (zero slopes of either sign).
+    fn plane(rnd: &mut impl FnMut(i64) -> i64, lo: f64, hi: f64, constant: bool) -> Plane {
+        let u = |rnd: &mut dyn FnMut(i64) -> i64| rnd(1 << 20) as f64 / (1 << 20) as f64;
+        let a0 = lo + (hi - lo) * u(rnd);
+        if constant {
+            let z = if rnd(2) == 0 { 0.0 } else { -0.0 };
+            return Plane { a0, dx: z, dy: z };
+        }
+        let slope = (hi - lo) / 3.0;
+        Plane { a0, dx: slope * (2.0 * u(rnd) - 1.0), dy: slope * (2.0 * u(rnd) - 1.0) }
+    }
+
+    /// The block kernels give what the span kernels give on the cover's
+    /// runs (and what the reference gives): colour, depth, the passed
+    /// count, stencil untouched, pixels outside the cover untouched. Random
+    /// tiny triangles (as `raster::tests::cover_matches_runs` makes them,
+    /// clipped by random rectangles) with random planes: depth partly
+    /// outside [0, 1], stored depths equal to, just above and just below
+    /// the fragment's (ties), perspective and affine, flat and constant
+    /// colours (zero slopes of either sign), colours outside [0, 1];
+    /// depth off / LESS / LEQUAL, colour stored or not, alpha_fix on and off.
+    #[test]
+    fn stamp_matches_span_kernels() {
+        if super::super::simd::level_here() != super::super::simd::Level::Avx2 {
+            eprintln!("no AVX2: no block kernels");
+            return;
+        }
+        const W: usize = 24;
+        const H: usize = 24;
+        let mut rnd = crate::render::test_rng::below(1313, 19);
+        let (mut shaded, mut written, mut ties, mut kinds) = (0usize, 0u64, 0usize, [0usize; 4]);
+        for n in 0..120_000 {
+            let size = [ONE, 2 * ONE, 4 * ONE, 7 * ONE][n % 4];
+            let (bx, by) = (rnd(16 * ONE) + 2 * ONE, rnd(14 * ONE) + 2 * ONE);
+            let mut x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
+            let mut y = [by + rnd(size), by + rnd(size), by + rnd(size)];
+            if n % 4 == 1 {
+                x = x.map(|c| c & !(ONE / 2 - 1));
+                y = y.map(|c| c & !(ONE / 2 - 1));
+            }
+            let area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+            if area == 0 {
+                continue;
+            }
+            if area < 0 {
+                x.swap(1, 2);
+                y.swap(1, 2);
+            }
+            let rect = if n % 3 == 0 {
+                let (x0, y0) = ((x[0] / ONE) as i32 - rnd(3) as i32, (y[0] / ONE) as i32 - rnd(4) as i32);
+                Rect { x0, y0, x1: x0 + 1 + rnd(4) as i32, y1: y0 + 1 + rnd(6) as i32 }.intersect(Rect { x0: 0, y0: 0, x1: W as i32, y1: H as i32 })
+            } else {
+                Rect { x0: 0, y0: 0, x1: W as i32, y1: H as i32 }
+            };
+            let Some(cover) = Cover::find(x, y, rect) else { continue };
+            if cover.is_empty() {
+                continue;
+            }
+            // The triangle's planes.
+            let perspective = rnd(3) != 0;
+            let constant = rnd(4) == 0;
+            let flat = rnd(6) == 0;
+            let z_constant = rnd(20) == 0;
+            let mut t = TriangleSetup {
+                x0: x[0] as f64 / ONE as f64,
+                y0: y[0] as f64 / ONE as f64,
+                z: plane(&mut rnd, -0.2, 1.2, z_constant),
+                q: if perspective { plane(&mut rnd, 0.3, 3.0, false) } else { Plane { a0: 1.0, dx: 0.0, dy: 0.0 } },
+                color: [0; 4].map(|_| plane(&mut rnd, -0.3, 1.3, constant)),
+                perspective,
+                flat: None,
+                front_facing: true,
+                tex: None,
+                fog: None,
+                secondary: None,
+            };
+            if flat {
+                t.flat = Some([0; 4].map(|_| rnd(256) as u8));
+                t.color = [Plane::default(); 4];
+            }
+            let mut fs = FragmentState::default();
+            match rnd(3) {
+                0 => fs.depth_test = false,
+                1 => (fs.depth_test, fs.depth_func) = (true, CompareFunc::Less),
+                _ => (fs.depth_test, fs.depth_func) = (true, CompareFunc::Lequal),
+            }
+            if rnd(5) == 0 {
+                fs.color = ColorOp::None;
+            }
+            fs.alpha_fix = if rnd(4) == 0 { 255 } else { 0 };
+            let Some(sk) = select(&fs, &t, false) else { panic!("a block kernel for {fs:?}") };
+            kinds[t.flat.is_some() as usize * 2 + perspective as usize] += 1;
+            // Buffers: random colours and stencil; depths near the
+            // fragments' own, some exactly equal.
+            let color: Vec<[u8; 4]> = (0..W * H).map(|_| [0; 4].map(|_| rnd(256) as u8)).collect();
+            let mut depth: Vec<u32> = (0..W * H).map(|_| rnd(DEPTH_MAX as i64 + 1) as u32).collect();
+            let stencil: Vec<u8> = (0..W * H).map(|_| rnd(256) as u8).collect();
+            for (py, lo, hi) in cover.rows() {
+                for px in lo..hi {
+                    let cx = px as f64 + 0.5 - t.x0;
+                    let cy = py as f64 + 0.5 - t.y0;
+                    let z = super::super::depth_to_fixed((t.z.a0 + t.z.dy * cy) + t.z.dx * cx);
+                    let i = py * W + px;
+                    match rnd(4) {
+                        0 => depth[i] = z,
+                        1 => depth[i] = z.saturating_add(1).min(DEPTH_MAX),
+                        2 => depth[i] = z.saturating_sub(1),
+                        _ => {}
+                    }
+                    ties += (depth[i] == z) as usize;
+                }
+            }
+            let (mut c1, mut d1, s1) = (color.clone(), depth.clone(), stencil.clone());
+            let target = Target { color: c1.as_mut_ptr(), depth: d1.as_mut_ptr(), width: W };
+            // SAFETY: the cover lies within the W x H buffers.
+            let passed = unsafe { sk(&fs, &t, &target, &cover) };
+            // The span kernels (SIMD where they have them) and the
+            // reference on the cover's runs.
+            for k in [fast::select(&fs, &t, false), reference::shade_span as fast::Kernel] {
+                let (mut c2, mut d2, mut s2) = (color.clone(), depth.clone(), stencil.clone());
+                let mut expect = 0;
+                for (py, lo, hi) in Runs::of_cover(&cover).iter() {
+                    let (a, b) = (py * W + lo, py * W + hi);
+                    let mut px = SpanPixels { color: &mut c2[a..b], depth: &mut d2[a..b], stencil: &mut s2[a..b], other: None, passed: 0 };
+                    k(&fs, &t, &mut px, py, lo, hi);
+                    expect += px.passed;
+                }
+                assert_eq!(passed, expect, "passed: {x:?} {y:?} {rect:?} {cover:?} {fs:?} {t:?}");
+                assert!(d1 == d2, "depth: {x:?} {y:?} {rect:?} {cover:?} {fs:?} {t:?}");
+                assert!(c1 == c2, "colour: {x:?} {y:?} {rect:?} {cover:?} {fs:?} {t:?}");
+                assert!(s1 == s2 && s2 == stencil, "stencil");
+            }
+            shaded += 1;
+            written += passed;
+        }
+        assert!(shaded > 30_000 && written > 40_000 && ties > 20_000 && kinds.iter().all(|&k| k > 1000), "{shaded} {written} {ties} {kinds:?}");
+    }
+}
