@@ -380,7 +380,7 @@ pub fn draw_line(rs: &RenderState, fb: &mut Framebuffer, lp: &LineParams, a: &Cl
             // counter moves on as drawing would move it.
             *s = line.stipple_end();
             if !bbox.is_empty() && super::tile::push_line(rs, line, bbox) {
-                super::tile::submit(rs, fb);
+                super::tile::submit_binned(rs, fb);
             }
             return;
         }

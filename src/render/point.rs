@@ -95,7 +95,7 @@ pub fn draw_point(rs: &RenderState, fb: &mut Framebuffer, size: f32, v: &ClipVer
         }
         if super::tile::binning(rs) && !fb.draw_both {
             if super::tile::push_point(rs, p, bbox) {
-                super::tile::submit(rs, fb);
+                super::tile::submit_binned(rs, fb);
             }
             return;
         }

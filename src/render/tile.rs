@@ -1088,31 +1088,49 @@ fn take_batch(cell: &SharedBatch, fl: &mut Flights) -> Option<Box<Flight>> {
 /// Hands the pending batch to the workers and returns without waiting
 /// for it (after waiting for the one before it: batches are shaded in
 /// order). A batch with little work is shaded at once on this thread.
+/// Always hands the batch over: commands recorded after it (a deferred
+/// glClear) rely on that for their place in GL's order.
 pub fn submit(rs: &RenderState, fb: &mut Framebuffer) {
     let t0 = super::trace::now();
-    submit_(rs, fb);
+    hand_over(rs, fb);
     super::trace::rec(b'S', t0, 0);
 }
 
-fn submit_(rs: &RenderState, fb: &mut Framebuffer) {
-    let cell = &rs.batch;
+/// [`submit`] for the binning paths, when [`added`] says so: while the
+/// batch is not full and the flight before it still has bands being
+/// shaded, the calling thread may instead help with that flight once and
+/// go back to binning (round 13).
+pub fn submit_binned(rs: &RenderState, fb: &mut Framebuffer) {
+    let t0 = super::trace::now();
+    if !help(&rs.batch) {
+        hand_over(rs, fb);
+    }
+    super::trace::rec(b'S', t0, 0);
+}
+
+/// Round 13: when the batch is not full and the flight before it still
+/// has bands being shaded, shades the bands nobody has taken and returns
+/// true: the caller goes back to binning instead of waiting for the
+/// others' last bands (the next primitive submits once the flight is
+/// done, or when the batch is full).
+fn help(cell: &SharedBatch) -> bool {
     // Safety: the context's thread (as `filling`).
     let len = unsafe { filling(cell) }.tris.len();
-    if len < cell.max_batch.load(Ordering::Relaxed) && cell.left.load(Ordering::Acquire) > 0 && !cell.helped.load(Ordering::Relaxed) {
-        // Round 13: the batch is not full and the flight before it still
-        // has bands being shaded: shade the bands nobody has taken, then
-        // go back to binning instead of waiting for the others' last
-        // bands (the next primitive submits once the flight is done, or
-        // when the batch is full).
-        cell.helped.store(true, Ordering::Relaxed);
-        let fl = lock_flights(cell);
-        if let Some((flight, _)) = &fl.current {
-            HELPS.fetch_add(1, Ordering::Relaxed);
-            // The flight stays alive: it is only finished by this thread.
-            pool::Work::work(&**flight);
-        }
-        return;
+    if len >= cell.max_batch.load(Ordering::Relaxed) || cell.left.load(Ordering::Acquire) == 0 || cell.helped.load(Ordering::Relaxed) {
+        return false;
     }
+    cell.helped.store(true, Ordering::Relaxed);
+    let fl = lock_flights(cell);
+    if let Some((flight, _)) = &fl.current {
+        HELPS.fetch_add(1, Ordering::Relaxed);
+        // The flight stays alive: it is only finished by this thread.
+        pool::Work::work(&**flight);
+    }
+    true
+}
+
+fn hand_over(rs: &RenderState, fb: &mut Framebuffer) {
+    let cell = &rs.batch;
     let mut fl = lock_flights(cell);
     let Some(flight) = take_batch(cell, &mut fl) else {
         return;
