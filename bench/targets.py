@@ -21,9 +21,10 @@ TARGETS = [
     ("scaling 1.7x", "every core (2 here) at least 1.7x the 1-thread speed"),
 ]
 
-_VERTEX = ("vertex-bound: per-vertex transform and per-triangle set-up, span finding and span kernel "
-           "calls for triangles of a few pixels (spheres_l, 1 thread: span shading 29 %, span finding 19 %, "
-           "set-up planes 12 % of instructions)")
+_VERTEX = ("vertex-bound: per-vertex transform and per-triangle set-up for triangles of a few pixels "
+           "(spheres_l, 1 thread, before round 13: span shading 29 %, span finding 19 %, set-up planes 12 % "
+           "of instructions; round 13 covers and shades boxes of up to 4x8 centres as one block, -16 %); "
+           "spheres_m's triangles (boxes of 5x5 to 9x13) are still found and shaded span by span")
 _MILLION = ("vertex-bound: per vertex about 140 instructions of transform and assembly (plus about 76 in "
             "the glVertex entry point in immediate mode), per 1-pixel triangle about 1,000 of set-up and "
             "shading; with 2 threads the calling thread's serial front end (886-1,103 M instructions over 3 "
@@ -37,7 +38,9 @@ _ROUNDING = ("1/255 rounding of halves: both compute c x 255 in single precision
 
 LIMITS = {
     "10x softpipe": {
-        "spheres_s": _VERTEX, "spheres_m": _VERTEX, "spheres_l": _VERTEX,
+        "spheres_s": ("at the line (about 0.10x): its 6.4k triangles are larger (boxes of 8x12 pixels and more), "
+                      "so its frame is the span kernels' per-pixel work, not set-up (round 11)"),
+        "spheres_m": _VERTEX, "spheres_l": _VERTEX,
         "lit_spheres": _VERTEX + "; plus per-vertex lighting (about 410 instructions a vertex)",
         "immediate_1m": _MILLION, "display_list_1m": _MILLION, "arrays_1m": _MILLION,
         "fog_spheres": ("the per-fragment EXP2 fog factor (libm exp, about 16 % of the frame; an f32 exponential "
