@@ -79,6 +79,40 @@ fn blend_is(b: &Blend, src: BlendFactor, dst: BlendFactor) -> bool {
     b.equation == BlendEquation::Add && b.src_rgb == src && b.src_alpha == src && b.dst_rgb == dst && b.dst_alpha == dst
 }
 
+/// How a state writes colour: the `CO_*` key of [`select`] (and of the
+/// block kernels, `stamp::select`).
+pub(super) fn color_op(fs: &FragmentState) -> u8 {
+    let full = fs.color_mask == [true; 4];
+    match fs.color {
+        ColorOp::None => CO_NONE,
+        ColorOp::Replace if full => CO_STORE,
+        ColorOp::Blend(b) if full && blend_is(&b, BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha) => CO_OVER,
+        ColorOp::Blend(b) if full && blend_is(&b, BlendFactor::SrcAlpha, BlendFactor::One) => CO_ADD,
+        _ => CO_GENERAL,
+    }
+}
+
+/// Where a triangle's fragment colour comes from: the `CS_*` key of
+/// [`select`] (and of the block kernels, `stamp::select`, which take the
+/// same key so that they compute what the span kernel would).
+pub(super) fn color_source(t: &TriangleSetup, approximate: bool, co: u8) -> u8 {
+    if t.tex.is_some() {
+        CS_GENERAL
+    } else if t.fog.is_some() {
+        CS_FOG
+    } else if t.flat.is_some() {
+        CS_FLAT
+    } else if t.perspective {
+        CS_PERSPECTIVE
+    } else if t.color.iter().all(|p| p.dx == 0.0 && p.dy == 0.0) {
+        CS_CONSTANT
+    } else if approximate && co == CO_STORE {
+        CS_STEPPED
+    } else {
+        CS_AFFINE
+    }
+}
+
 /// The kernel for a triangle under a fragment state.
 ///
 /// `approximate`: GL_PERSPECTIVE_CORRECTION_HINT is not GL_NICEST, so
@@ -95,29 +129,8 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Kerne
         return k;
     }
     let d = depth_key(fs);
-    let full = fs.color_mask == [true; 4];
-    let co = match fs.color {
-        ColorOp::None => CO_NONE,
-        ColorOp::Replace if full => CO_STORE,
-        ColorOp::Blend(b) if full && blend_is(&b, BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha) => CO_OVER,
-        ColorOp::Blend(b) if full && blend_is(&b, BlendFactor::SrcAlpha, BlendFactor::One) => CO_ADD,
-        _ => CO_GENERAL,
-    };
-    let cs = if t.tex.is_some() {
-        CS_GENERAL
-    } else if t.fog.is_some() {
-        CS_FOG
-    } else if t.flat.is_some() {
-        CS_FLAT
-    } else if t.perspective {
-        CS_PERSPECTIVE
-    } else if t.color.iter().all(|p| p.dx == 0.0 && p.dy == 0.0) {
-        CS_CONSTANT
-    } else if approximate && co == CO_STORE {
-        CS_STEPPED
-    } else {
-        CS_AFFINE
-    };
+    let co = color_op(fs);
+    let cs = color_source(t, approximate, co);
     // The SIMD kernels (simd.rs) where the CPU has them, for the common
     // opaque, blended and stencil cases; they compute what `kernel` does.
     // Under the stencil test colours stay exact (no stepping), as before.

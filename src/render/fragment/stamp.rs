@@ -33,8 +33,8 @@
 //! block reaching past the framebuffer's edge, the band or the scissor
 //! rectangle touches nothing there.
 
-use super::fast::{depth_key, CO_NONE, CO_STORE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_PERSPECTIVE, D_ANY, D_LEQUAL, D_LESS, D_OFF};
-use super::{ColorOp, FragmentState};
+use super::fast::{depth_key, CO_NONE, CO_STORE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_FOG, CS_GENERAL, CS_PERSPECTIVE, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
+use super::FragmentState;
 use crate::render::raster::Cover;
 use crate::render::setup::TriangleSetup;
 
@@ -75,30 +75,16 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Optio
     if d == D_ANY {
         return None;
     }
-    let full = fs.color_mask == [true; 4];
-    let co = match fs.color {
-        ColorOp::None => CO_NONE,
-        ColorOp::Replace if full => CO_STORE,
-        _ => return None,
-    };
-    if co == CO_NONE {
-        return pick_d(d, CS_FLAT, CO_NONE);
+    match super::fast::color_op(fs) {
+        CO_NONE => pick_d(d, CS_FLAT, CO_NONE),
+        CO_STORE => match super::fast::color_source(t, approximate, CO_STORE) {
+            // Textures and fog have no block kernel; a stepped colour is
+            // the span kernels' 16.16 approximation.
+            CS_GENERAL | CS_FOG | CS_STEPPED => None,
+            cs => pick_d(d, cs, CO_STORE),
+        },
+        _ => None,
     }
-    let cs = if t.tex.is_some() || t.fog.is_some() {
-        return None;
-    } else if t.flat.is_some() {
-        CS_FLAT
-    } else if t.perspective {
-        CS_PERSPECTIVE
-    } else if t.color.iter().all(|p| p.dx == 0.0 && p.dy == 0.0) {
-        CS_CONSTANT
-    } else if approximate {
-        // Stepped in 16.16 fixed point by the span kernels.
-        return None;
-    } else {
-        CS_AFFINE
-    };
-    pick_d(d, cs, co)
 }
 
 fn pick_d(d: u8, cs: u8, co: u8) -> Option<StampKernel> {
@@ -246,7 +232,7 @@ mod x86 {
 
 #[cfg(all(test, target_arch = "x86_64"))]
 mod tests {
-    use super::super::{fast, reference, CompareFunc, SpanPixels};
+    use super::super::{fast, reference, ColorOp, CompareFunc, SpanPixels};
     use super::*;
     use crate::framebuffer::{Rect, DEPTH_MAX};
     use crate::render::raster::{Cover, Runs};
