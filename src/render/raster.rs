@@ -169,14 +169,6 @@ const STEPPED_ROWS: i64 = 16;
 /// solving for the span ends (three divisions per row).
 const NARROW: i64 = 8;
 
-/// The rows and columns of pixel centres within a triangle's bounding
-/// box, cut to `rect`: [row0, row1) x [col0, col1).
-#[inline]
-fn centre_box(x: [i64; 3], y: [i64; 3], rect: Rect) -> (i64, i64, i64, i64) {
-    let CentreBox(row0, row1, col0, col1) = CentreBox::of(x, y, rect);
-    (row0, row1, col0, col1)
-}
-
 /// The rows [row0, row1) and columns [col0, col1) of the pixel centres in
 /// a triangle's bounding box, cut to a rectangle: taken once and shared
 /// by [`Cover::find_in`] and [`Runs::find_in`].
@@ -595,7 +587,7 @@ pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, 
     let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
     // Rows and columns whose centres lie within the bounding box: a
     // superset is enough, spans are exact.
-    let (row0, row1, col0, col1) = centre_box(x, y, rect);
+    let CentreBox(row0, row1, col0, col1) = CentreBox::of(x, y, rect);
     if col0 >= col1 {
         return;
     }
@@ -751,7 +743,7 @@ mod tests {
             let (w, h) = (1 + rnd(NARROW), 1 + rnd(Runs::MAX as i64));
             let rect = Rect { x0: (cx - rnd(w)) as i32, y0: (cy - rnd(h)) as i32, x1: 0, y1: 0 };
             let rect = Rect { x1: rect.x0 + w as i32, y1: rect.y0 + h as i32, ..rect };
-            let (row0, row1, col0, col1) = centre_box(x, y, rect);
+            let CentreBox(row0, row1, col0, col1) = CentreBox::of(x, y, rect);
             if row0 >= row1 || col0 >= col1 {
                 continue;
             }
@@ -844,7 +836,7 @@ mod tests {
             cut += (rect.x1 - rect.x0 < 8) as usize;
             if area != 0 {
                 let (_, _, edges) = ccw_edges(x, y).unwrap();
-                let (row0, row1, col0, col1) = centre_box(x, y, rect);
+                let CentreBox(row0, row1, col0, col1) = CentreBox::of(x, y, rect);
                 ties += (row0..row1).any(|py| (col0..col1).any(|px| edges.iter().any(|e| matches!(e.a * px + e.b * py + e.c, 0 | -1)))) as usize;
             }
         }
