@@ -13,6 +13,7 @@
 use super::context::Context;
 use super::enums::*;
 use super::select;
+use crate::render::light4::{self, Normals};
 use crate::render::vertex4::{self, Positions, LANES};
 use crate::render::{self, ClipVertex};
 use glam::Vec4;
@@ -57,6 +58,13 @@ pub struct Assembly {
     /// are transformed and placed four at a time (`flush_vertices`).
     queue: Positions,
     pending: usize,
+    /// With `fast`: lit, with GL_COLOR_MATERIAL off, so a vertex's
+    /// colours depend only on its position, its normal and the materials;
+    /// they are lit four at a time in `flush_vertices`
+    /// (`render::light4`), the normals queued beside the positions. A
+    /// material change (glMaterial) flushes the queue first.
+    lit: bool,
+    normals: Normals,
 }
 
 /// The batched path's ring of slots: vertex n of the primitive lives in
@@ -114,7 +122,22 @@ impl Context {
         }
         let plain = self.derived.lighting.is_none() && self.texture.vertex.units.is_empty() && rs.texture.is_none() && rs.fog.is_none();
         let fp_trusted = self.fp_caller_masked;
-        self.prim = Some(Assembly { mode, verts, count: 0, stipple: 0, point_size: 1.0, fast, plain, direct, fp_trusted, queue: Positions::ORIGIN, pending: 0 });
+        let lit = fast && self.derived.lighting.is_some() && !self.lighting.color_material;
+        self.prim = Some(Assembly {
+            mode,
+            verts,
+            count: 0,
+            stipple: 0,
+            point_size: 1.0,
+            fast,
+            plain,
+            direct,
+            fp_trusted,
+            queue: Positions::ORIGIN,
+            pending: 0,
+            lit,
+            normals: Normals::ZERO,
+        });
     }
 
     pub fn end(&mut self) {
@@ -269,12 +292,17 @@ impl Context {
         // The attributes as `vertex` computes them (the same functions);
         // PLAIN (unlit, untextured, fog-free) skips the tests for what the
         // state cannot need.
+        let lit = !PLAIN && self.prim.as_ref().is_some_and(|a| a.lit);
         let [color, back_color, secondary, back_secondary] = if PLAIN {
             let rs = &self.derived.render;
             let c = Vec4::from_array(self.current.color);
             // `vertex_colors` without lighting or texturing.
             let s = if rs.color_sum { Vec4::from_array(self.current.secondary_color).truncate().extend(0.0) } else { Vec4::ZERO };
             [c + s, c + s, Vec4::ZERO, Vec4::ZERO]
+        } else if lit {
+            // Lit in `flush_vertices` with the three vertices queued
+            // beside it.
+            [Vec4::ZERO; 4]
         } else {
             self.vertex_colors(obj)
         };
@@ -282,6 +310,7 @@ impl Context {
         let tex = if textured { self.vertex_texcoords(obj) } else { [Vec4::ZERO; render::texture::MAX_UNITS] };
         let fog = if PLAIN { 0.0 } else { self.vertex_fog(obj) };
         let edge = self.current.edge_flag;
+        let normal = self.current.normal;
         let Some(a) = self.prim.as_mut() else { return };
         let n = a.count;
         a.count += 1;
@@ -302,6 +331,9 @@ impl Context {
         // a vertex's position feeds (assembly, setup) can be observed
         // before glEnd except through it.
         a.queue.set(a.pending, p);
+        if lit {
+            a.normals.set(a.pending, normal);
+        }
         a.pending += 1;
         if a.pending == LANES {
             self.flush_vertices();
@@ -332,6 +364,21 @@ impl Context {
             _ => s0 + i,
         });
         let rs = &self.derived.render;
+        if a.lit {
+            if let Some(ls) = &self.derived.lighting {
+                let lit = light4::light_lanes(ls, &self.lighting.materials, &a.queue, &a.normals, k);
+                // `vertex_colors`' colour sum.
+                let sum = rs.texture.is_none();
+                for (&s, c) in slots.iter().zip(lit).take(k) {
+                    let v = &mut a.verts[s];
+                    if sum {
+                        (v.color, v.back_color) = (c[0] + c[2], c[1] + c[3]);
+                    } else {
+                        (v.color, v.back_color, v.secondary, v.back_secondary) = (c[0], c[1], c[2], c[3]);
+                    }
+                }
+            }
+        }
         vertex4::transform_place(&self.derived.mvp, rs, &a.queue, k, &mut a.verts, slots);
         // One loop per mode: the assembly's choices fold away.
         let fb = &mut self.fb;
@@ -341,6 +388,14 @@ impl Context {
             GL_TRIANGLE_FAN => assemble_batch::<GL_TRIANGLE_FAN>(rs, fb, a, n0, k, slots),
             GL_QUADS => assemble_batch::<GL_QUADS>(rs, fb, a, n0, k, slots),
             _ => assemble_batch::<GL_QUAD_STRIP>(rs, fb, a, n0, k, slots),
+        }
+    }
+
+    /// Lights and places the vertices queued on a lit batched primitive
+    /// (called before the materials change).
+    pub(crate) fn flush_lit_vertices(&mut self) {
+        if self.prim.as_ref().is_some_and(|a| a.lit) {
+            self.flush_vertices();
         }
     }
 

@@ -179,6 +179,8 @@ impl Context {
         if !matches!(pname, GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_SHININESS | GL_AMBIENT_AND_DIFFUSE | GL_COLOR_INDEXES) {
             return false;
         }
+        // Vertices queued for lighting take the material as it was.
+        self.flush_lit_vertices();
         let c = Vec4::from_array(v);
         for &f in fs {
             let m = &mut self.lighting.materials[f];

@@ -11,6 +11,7 @@ pub mod clip;
 pub mod fog;
 pub mod fragment;
 pub mod light;
+pub mod light4;
 pub mod line;
 pub mod pixels;
 pub mod point;
