@@ -13,7 +13,7 @@
 use super::context::Context;
 use super::enums::*;
 use super::select;
-use crate::render::light4::{self, Normals};
+use crate::render::light4::{self, Normals, Tracked};
 use crate::render::vertex4::{self, Positions, LANES};
 use crate::render::{self, ClipVertex};
 use glam::Vec4;
@@ -58,13 +58,15 @@ pub struct Assembly {
     /// are transformed and placed four at a time (`flush_vertices`).
     queue: Positions,
     pending: usize,
-    /// With `fast`: lit, with GL_COLOR_MATERIAL off, so a vertex's
-    /// colours depend only on its position, its normal and the materials;
-    /// they are lit four at a time in `flush_vertices`
-    /// (`render::light4`), the normals queued beside the positions. A
-    /// material change (glMaterial) flushes the queue first.
+    /// With `fast`: lit, so a vertex's colours depend only on its
+    /// position, its normal, the materials and (GL_COLOR_MATERIAL) its
+    /// current colour; they are lit four at a time in `flush_vertices`
+    /// (`render::light4`), normals and colours queued beside the
+    /// positions. glMaterial and glColorMaterial flush the queue first.
     lit: bool,
     normals: Normals,
+    /// With `lit` and GL_COLOR_MATERIAL on: the queued current colours.
+    tracked: Option<Tracked>,
 }
 
 /// The batched path's ring of slots: vertex n of the primitive lives in
@@ -122,7 +124,11 @@ impl Context {
         }
         let plain = self.derived.lighting.is_none() && self.texture.vertex.units.is_empty() && rs.texture.is_none() && rs.fog.is_none();
         let fp_trusted = self.fp_caller_masked;
-        let lit = fast && self.derived.lighting.is_some() && !self.lighting.color_material;
+        let lit = fast && self.derived.lighting.is_some();
+        let tracked = (lit && self.lighting.color_material).then(|| {
+            let face = self.lighting.color_material_face;
+            Tracked { colors: [[0.0; LANES]; 4], faces: [face != GL_BACK, face != GL_FRONT], mode: self.lighting.color_material_mode }
+        });
         self.prim = Some(Assembly {
             mode,
             verts,
@@ -137,6 +143,7 @@ impl Context {
             pending: 0,
             lit,
             normals: Normals::ZERO,
+            tracked,
         });
     }
 
@@ -310,7 +317,7 @@ impl Context {
         let tex = if textured { self.vertex_texcoords(obj) } else { [Vec4::ZERO; render::texture::MAX_UNITS] };
         let fog = if PLAIN { 0.0 } else { self.vertex_fog(obj) };
         let edge = self.current.edge_flag;
-        let normal = self.current.normal;
+        let (normal, current) = (self.current.normal, self.current.color);
         let Some(a) = self.prim.as_mut() else { return };
         let n = a.count;
         a.count += 1;
@@ -333,6 +340,9 @@ impl Context {
         a.queue.set(a.pending, p);
         if lit {
             a.normals.set(a.pending, normal);
+            if let Some(t) = &mut a.tracked {
+                t.set(a.pending, current);
+            }
         }
         a.pending += 1;
         if a.pending == LANES {
@@ -366,7 +376,7 @@ impl Context {
         let rs = &self.derived.render;
         if a.lit {
             if let Some(ls) = &self.derived.lighting {
-                let lit = light4::light_lanes(ls, &self.lighting.materials, &a.queue, &a.normals, k);
+                let lit = light4::light_lanes(ls, &self.lighting.materials, a.tracked.as_ref(), &a.queue, &a.normals, k);
                 // `vertex_colors`' colour sum.
                 let sum = rs.texture.is_none();
                 for (&s, c) in slots.iter().zip(lit).take(k) {
@@ -392,7 +402,9 @@ impl Context {
     }
 
     /// Lights and places the vertices queued on a lit batched primitive
-    /// (called before the materials change).
+    /// (called before glMaterial or glColorMaterial changes what they
+    /// take; GL_COLOR_MATERIAL's own updates at glColor need not, as
+    /// each queued vertex keeps its colour).
     pub(crate) fn flush_lit_vertices(&mut self) {
         if self.prim.as_ref().is_some_and(|a| a.lit) {
             self.flush_vertices();

@@ -164,6 +164,8 @@ impl Context {
         if pname == GL_SHININESS && !(0.0..=128.0).contains(&v[0]) {
             return self.set_error(GL_INVALID_VALUE);
         }
+        // Vertices queued for lighting take the material as it was.
+        self.flush_lit_vertices();
         if !self.set_material(fs, pname, v) {
             return self.set_error(GL_INVALID_ENUM);
         }
@@ -179,8 +181,6 @@ impl Context {
         if !matches!(pname, GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_SHININESS | GL_AMBIENT_AND_DIFFUSE | GL_COLOR_INDEXES) {
             return false;
         }
-        // Vertices queued for lighting take the material as it was.
-        self.flush_lit_vertices();
         let c = Vec4::from_array(v);
         for &f in fs {
             let m = &mut self.lighting.materials[f];
@@ -204,6 +204,7 @@ impl Context {
         if faces(face).is_none() || !matches!(mode, GL_EMISSION | GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_AMBIENT_AND_DIFFUSE) {
             return self.set_error(GL_INVALID_ENUM);
         }
+        self.flush_lit_vertices();
         self.lighting.color_material_face = face;
         self.lighting.color_material_mode = mode;
         self.apply_color_material();

@@ -19,6 +19,7 @@
 
 use super::light::LightingSetup;
 use super::vertex4::{Positions, LANES};
+use crate::gl::enums::{GL_AMBIENT, GL_AMBIENT_AND_DIFFUSE, GL_DIFFUSE, GL_EMISSION, GL_SPECULAR};
 use crate::gl::lighting::Material;
 use glam::{Vec3, Vec4};
 
@@ -38,6 +39,25 @@ impl Normals {
         self.x[lane] = n[0];
         self.y[lane] = n[1];
         self.z[lane] = n[2];
+    }
+}
+
+/// GL_COLOR_MATERIAL (2.14.3) over the queued vertices: the current
+/// colour at each glVertex, one array per channel, stands for the tracked
+/// material property `mode` of the faces in `faces` (front, back).
+#[derive(Clone, Copy, Debug)]
+pub struct Tracked {
+    pub colors: [[f32; LANES]; 4],
+    pub faces: [bool; 2],
+    pub mode: u32,
+}
+
+impl Tracked {
+    #[inline(always)]
+    pub fn set(&mut self, lane: usize, c: [f32; 4]) {
+        for (ch, v) in self.colors.iter_mut().zip(c) {
+            ch[lane] = v;
+        }
     }
 }
 
@@ -285,14 +305,6 @@ impl C4 {
     fn splat(c: Vec4) -> C4 {
         C4([F::splat(c.x), F::splat(c.y), F::splat(c.z), F::splat(c.w)])
     }
-    /// glam's `self + k * Vec4::splat(s)` for a lane-invariant colour k,
-    /// in the lanes of `on` (the others keep `self`).
-    #[inline(always)]
-    fn add_scaled(&mut self, k: Vec4, s: F, on: M) {
-        for (c, kc) in self.0.iter_mut().zip(k.to_array()) {
-            *c = F::select(on, c.add(F::splat(kc).mul(s)), *c);
-        }
-    }
     /// glam's `self + o * Vec4::splat(s)` in the lanes of `on`.
     #[inline(always)]
     fn add_times(&mut self, o: &C4, s: F, on: M) {
@@ -306,23 +318,74 @@ impl C4 {
         C4(self.0.map(|c| c.max_sse(F::splat(0.0)).min_sse(F::splat(1.0))))
     }
     #[inline(always)]
+    fn load(c: &[[f32; LANES]; 4]) -> C4 {
+        C4(c.each_ref().map(F::load))
+    }
+    /// glam's `self * k` for a lane-invariant colour k.
+    #[inline(always)]
+    fn mul_by(&self, k: Vec4) -> C4 {
+        let k = k.to_array();
+        C4(std::array::from_fn(|c| self.0[c].mul(F::splat(k[c]))))
+    }
+    #[inline(always)]
     fn add(&self, o: &C4) -> C4 {
         C4(std::array::from_fn(|c| self.0[c].add(o.0[c])))
     }
     /// The colours as a `Vec4` per lane, alpha `a`.
     #[inline(always)]
-    fn lanes(&self, a: f32) -> [Vec4; LANES] {
+    fn lanes(&self, a: [f32; LANES]) -> [Vec4; LANES] {
         let [r, g, b] = [self.0[0].get(), self.0[1].get(), self.0[2].get()];
-        std::array::from_fn(|i| Vec4::new(r[i], g[i], b[i], a))
+        std::array::from_fn(|i| Vec4::new(r[i], g[i], b[i], a[i]))
+    }
+}
+
+/// A material per lane: the material's colours, with the property
+/// GL_COLOR_MATERIAL tracks taken from the lanes' current colours.
+struct LaneMaterial {
+    emission: C4,
+    ambient: C4,
+    diffuse: C4,
+    specular: C4,
+    shininess: f32,
+    /// The diffuse alpha per lane (the lit colour's alpha).
+    alpha: [f32; LANES],
+}
+
+impl LaneMaterial {
+    fn new(m: &Material, tracked: Option<(&Tracked, usize)>) -> LaneMaterial {
+        let mut l = LaneMaterial {
+            emission: C4::splat(m.emission),
+            ambient: C4::splat(m.ambient),
+            diffuse: C4::splat(m.diffuse),
+            specular: C4::splat(m.specular),
+            shininess: m.shininess,
+            alpha: [m.diffuse.w; LANES],
+        };
+        if let Some((t, _)) = tracked.filter(|(t, face)| t.faces[*face]) {
+            let c = C4::load(&t.colors);
+            match t.mode {
+                GL_EMISSION => l.emission = c,
+                GL_AMBIENT => l.ambient = c,
+                GL_DIFFUSE => l.diffuse = c,
+                GL_SPECULAR => l.specular = c,
+                GL_AMBIENT_AND_DIFFUSE => (l.ambient, l.diffuse) = (c, c),
+                _ => {}
+            }
+            if matches!(t.mode, GL_DIFFUSE | GL_AMBIENT_AND_DIFFUSE) {
+                l.alpha = t.colors[3];
+            }
+        }
+        l
     }
 }
 
 /// The lit colours of the first `k` queued vertices (object positions
 /// `obj`, object normals `normals`) under `ls` and the front and back
-/// materials `m`: per lane `[front, back, front secondary, back
-/// secondary]` as `shade_split` and `vertex_colors`' lighting arm give
-/// them (before the colour sum). Lanes from `k` on are left zero.
-pub fn light_lanes(ls: &LightingSetup, m: &[Material; 2], obj: &Positions, normals: &Normals, k: usize) -> LitColors {
+/// materials `m` (with GL_COLOR_MATERIAL's property from `tracked`): per
+/// lane `[front, back, front secondary, back secondary]` as `shade_split`
+/// and `vertex_colors`' lighting arm give them (before the colour sum).
+/// Lanes from `k` on are left zero.
+pub fn light_lanes(ls: &LightingSetup, m: &[Material; 2], tracked: Option<&Tracked>, obj: &Positions, normals: &Normals, k: usize) -> LitColors {
     // The eye position: glam's Mat4 * Vec4, ((c0 x + c1 y) + c2 z) + c3 w.
     let (x, y, z, w) = (F::load(&obj.x), F::load(&obj.y), F::load(&obj.z), F::load(&obj.w));
     let mv = ls.modelview.to_cols_array();
@@ -338,8 +401,8 @@ pub fn light_lanes(ls: &LightingSetup, m: &[Material; 2], obj: &Positions, norma
     let nrow = |j: usize| F::splat(nm[j]).mul(nx).add(F::splat(nm[3 + j]).mul(ny)).add(F::splat(nm[6 + j]).mul(nz));
     let e = V3 { x: nrow(0), y: nrow(1), z: nrow(2) };
     let n = if ls.normalize { e.normalize_or_zero() } else { e.scale(F::splat(ls.rescale)) };
-    let front = shade_lanes(ls, &m[0], v, n, k);
-    let back = if ls.two_side { shade_lanes(ls, &m[1], v, n.neg(), k) } else { front };
+    let front = shade_lanes(ls, &LaneMaterial::new(&m[0], tracked.map(|t| (t, 0))), v, n, k);
+    let back = if ls.two_side { shade_lanes(ls, &LaneMaterial::new(&m[1], tracked.map(|t| (t, 1))), v, n.neg(), k) } else { front };
     let mut out = [[Vec4::ZERO; 4]; LANES];
     for (i, o) in out.iter_mut().enumerate().take(k) {
         *o = [front[0][i], back[0][i], front[1][i], back[1][i]];
@@ -350,10 +413,10 @@ pub fn light_lanes(ls: &LightingSetup, m: &[Material; 2], obj: &Positions, norma
 /// `shade_split` per lane for eye positions `v` (already divided by w) and
 /// eye normals `n`: the primary and secondary colours of each lane.
 #[inline(always)]
-fn shade_lanes(ls: &LightingSetup, m: &Material, v: V3, n: V3, k: usize) -> [[Vec4; LANES]; 2] {
+fn shade_lanes(ls: &LightingSetup, m: &LaneMaterial, v: V3, n: V3, k: usize) -> [[Vec4; LANES]; 2] {
     let used = (1u32 << k) - 1;
     let zero = F::splat(0.0);
-    let mut primary = C4::splat(m.emission + m.ambient * ls.model_ambient);
+    let mut primary = m.emission.add(&m.ambient.mul_by(ls.model_ambient));
     let mut specular = C4::splat(Vec4::ZERO);
     for l in &ls.lights {
         let light = &l.light;
@@ -387,8 +450,8 @@ fn shade_lanes(ls: &LightingSetup, m: &Material, v: V3, n: V3, k: usize) -> [[Ve
         let on = kk.ne(zero);
         let ndotl = n.dot(vp);
         let lit = on.and(ndotl.gt(zero));
-        let mut c = C4::splat(m.ambient * light.ambient);
-        c.add_scaled(m.diffuse * light.diffuse, ndotl, lit);
+        let mut c = m.ambient.mul_by(light.ambient);
+        c.add_times(&m.diffuse.mul_by(light.diffuse), ndotl, lit);
         let lit_bits = lit.bits() & used;
         if lit_bits != 0 {
             let h = if !ls.local_viewer && !l.positional {
@@ -408,13 +471,13 @@ fn shade_lanes(ls: &LightingSetup, m: &Material, v: V3, n: V3, k: usize) -> [[Ve
                     }
                 }
             }
-            specular.add_scaled(m.specular * light.specular, F::load(&p).mul(kk), lit);
+            specular.add_times(&m.specular.mul_by(light.specular), F::load(&p).mul(kk), lit);
         }
         primary.add_times(&c, kk, on);
     }
-    let alpha = m.diffuse.w.clamp(0.0, 1.0);
+    let alpha = m.alpha.map(|a| a.clamp(0.0, 1.0));
     if ls.separate_specular {
-        [primary.clamp01().lanes(alpha), specular.clamp01().lanes(0.0)]
+        [primary.clamp01().lanes(alpha), specular.clamp01().lanes([0.0; LANES])]
     } else {
         [primary.add(&specular).clamp01().lanes(alpha), [Vec4::ZERO; LANES]]
     }
@@ -499,11 +562,35 @@ mod tests {
                 let n = if r.next() < 0.05 { [0.0; 3] } else { [r.range(-1.5, 1.5), r.range(-1.5, 1.5), r.range(-1.5, 1.5)] };
                 normals.set(i, n);
             }
-            let got = light_lanes(&ls, &m, &obj, &normals, k);
+            // GL_COLOR_MATERIAL in a third of the cases, every face and mode.
+            let tracked = (case % 3 == 1).then(|| {
+                let faces = [[true, false], [false, true], [true, true]][case / 3 % 3];
+                let mode = [GL_EMISSION, GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_AMBIENT_AND_DIFFUSE][case / 9 % 5];
+                let mut t = Tracked { colors: [[0.0; LANES]; 4], faces, mode };
+                for i in 0..LANES {
+                    t.set(i, r.color().to_array());
+                }
+                t
+            });
+            let got = light_lanes(&ls, &m, tracked.as_ref(), &obj, &normals, k);
             for i in 0..k {
                 let o = Vec4::new(obj.x[i], obj.y[i], obj.z[i], obj.w[i]);
                 let eye = ls.modelview * o;
                 let n = ls.eye_normal(Vec3::new(normals.x[i], normals.y[i], normals.z[i]));
+                // The materials as glColor's `apply_color_material` leaves them.
+                let mut m = m.clone();
+                if let Some(t) = &tracked {
+                    let c = Vec4::from_array(std::array::from_fn(|ch| t.colors[ch][i]));
+                    for f in (0..2).filter(|&f| t.faces[f]) {
+                        match t.mode {
+                            GL_EMISSION => m[f].emission = c,
+                            GL_AMBIENT => m[f].ambient = c,
+                            GL_DIFFUSE => m[f].diffuse = c,
+                            GL_SPECULAR => m[f].specular = c,
+                            _ => (m[f].ambient, m[f].diffuse) = (c, c),
+                        }
+                    }
+                }
                 let f = ls.shade_split(&m[0], eye, n);
                 let b = if ls.two_side { ls.shade_split(&m[1], eye, -n) } else { f };
                 let want = [f.0, b.0, f.1, b.1];
