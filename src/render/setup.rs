@@ -253,11 +253,26 @@ fn oriented(rs: &RenderState, fx: [i64; 3], fy: [i64; 3]) -> Option<Oriented> {
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn bin_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], fx: [i64; 3], fy: [i64; 3], attrs: [&A; 3], flat_color: [Vec4; 2], o: Oriented) {
+    // The record keeps x and y in i32 (round 14): the precision note
+    // bounds them by 2^27 after clipping; anything else is shaded now.
+    let fits = |c: [i64; 3]| c.iter().all(|&c| c == c as i32 as i64);
+    if !(fits(fx) && fits(fy)) {
+        return shade_unbinnable(rs, fb, pos, fx, fy, attrs, flat_color, o);
+    }
     if let Some(bbox) = super::tile::bounds(rs, fx, fy) {
         if super::tile::push(rs, fx, fy, bbox, pos, attrs, o.ccw, flat_color[o.back as usize], o.back, o.front_facing) {
             super::tile::submit_binned(rs, fb);
         }
     }
+}
+
+/// [`shade_snapped`] for a triangle too far out for a binned record
+/// (never reached after clipping; out of line).
+#[allow(clippy::too_many_arguments)]
+#[cold]
+#[inline(never)]
+fn shade_unbinnable<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], fx: [i64; 3], fy: [i64; 3], attrs: [&A; 3], flat_color: [Vec4; 2], o: Oriented) {
+    shade_snapped(rs, fb, pos, fx, fy, attrs, flat_color, o)
 }
 
 /// Sets up and shades a snapped triangle now.

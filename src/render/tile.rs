@@ -123,7 +123,7 @@ fn band_rows(height: usize, threads: usize) -> usize {
 }
 
 /// The most triangles a batch holds before it is shaded (its memory,
-/// about 180 bytes a triangle, stays bounded).
+/// 136 bytes a triangle since round 14, stays bounded).
 pub const MAX_BATCH: usize = 32 * 1024;
 
 /// A batch holding this much work is handed to the workers as soon as
@@ -157,13 +157,15 @@ pub fn threads_default() -> usize {
 }
 
 /// What setup reads of a binned vertex besides its position.
+/// Round 14: the colour as an array (alignment 8, not 16), so that the
+/// record has no padding; it is loaded unaligned on the band side.
 #[derive(Clone, Copy, Debug)]
 struct BinVertex {
     z: f64,
     q: f64,
     /// The colour of the side the triangle shows (two-sided lighting),
     /// or the provoking vertex's colour when flat shaded.
-    color: Vec4,
+    color: [f32; 4],
 }
 
 /// The attributes only texturing and fog read, per vertex.
@@ -181,28 +183,84 @@ const NO_EXTRA: BinExtra = BinExtra { tex: [[Vec4::ZERO; MAX_UNITS]; 3], fog: [0
 /// positively oriented fixed-point vertices, what setup reads of them,
 /// and the state it was drawn under.
 #[derive(Debug)]
+///
+/// Round 14: 136 bytes, not 176 (the calling thread writes one per
+/// triangle and the band side reads it twice, from the other core):
+/// snapped x and y in i32 (setup's precision note bounds them by 2^27;
+/// `setup::bin_snapped` shades anything else at once), the box in i16
+/// (within the draw rectangle, at most `framebuffer::MAX_SIZE`), the
+/// facing and the extra index packed into `prim`, no padding. Every value
+/// the band side reads is the one it read before, so the pixels are too.
 struct Binned {
-    x: [i64; 3],
-    y: [i64; 3],
     v: [BinVertex; 3],
+    x: [i32; 3],
+    y: [i32; 3],
     /// Pixels the triangle may touch: its bounding box within the draw
-    /// rectangle.
-    bbox: Rect,
+    /// rectangle (x0, y0, x1, y1; [`Binned::rect`]).
+    bbox: [i16; 4],
     /// Index in [`Batch::states`].
     state: u32,
-    /// Index in [`Batch::extras`], or `u32::MAX`.
-    extra: u32,
-    /// [`TRIANGLE`], or a line (index in [`Batch::lines`]) or a point
-    /// ([`POINT`] | index in [`Batch::points`]), whose other fields
-    /// except `bbox` and `state` are unused.
+    /// A line: its index in [`Batch::lines`] (bit 31 clear); a point:
+    /// [`POINT`] | its index in [`Batch::points`]; a triangle:
+    /// [`TRIANGLE`], [`FRONT`] when it faces the front, and its index in
+    /// [`Batch::extras`] in the low 29 bits ([`NO_EXTRA_INDEX`] for
+    /// none). A line's or point's other fields except the box and state
+    /// are unused.
     prim: u32,
-    front_facing: bool,
 }
 
-/// [`Binned::prim`] of a triangle.
-const TRIANGLE: u32 = u32::MAX;
-/// The bit of [`Binned::prim`] marking a point.
+// The record's size (round 14): no padding.
+const _: () = assert!(std::mem::size_of::<Binned>() == 136);
+
+/// The bits of [`Binned::prim`] marking a triangle.
+const TRIANGLE: u32 = 3 << 30;
+/// The bit of [`Binned::prim`] marking a point (with bit 30 clear).
 const POINT: u32 = 1 << 31;
+/// The bit of a triangle's [`Binned::prim`] set when it faces the front.
+const FRONT: u32 = 1 << 29;
+/// The low bits of a triangle's [`Binned::prim`]: its extra index.
+const NO_EXTRA_INDEX: u32 = FRONT - 1;
+
+impl Binned {
+    /// Is the record a triangle (not a line or point)?
+    #[inline(always)]
+    fn is_triangle(&self) -> bool {
+        self.prim >= TRIANGLE
+    }
+
+    /// Its box as a [`Rect`].
+    #[inline(always)]
+    fn rect(&self) -> Rect {
+        let [x0, y0, x1, y1] = self.bbox.map(i32::from);
+        Rect { x0, y0, x1, y1 }
+    }
+
+    /// A triangle's facing.
+    #[inline(always)]
+    fn front_facing(&self) -> bool {
+        self.prim & FRONT != 0
+    }
+
+    /// A triangle's index in [`Batch::extras`]; past the end (no extra)
+    /// for lines and points.
+    #[inline(always)]
+    fn extra(&self) -> usize {
+        if self.is_triangle() { (self.prim & NO_EXTRA_INDEX) as usize } else { usize::MAX }
+    }
+
+    /// The snapped vertices as setup reads them.
+    #[inline(always)]
+    fn xy(&self) -> ([i64; 3], [i64; 3]) {
+        (self.x.map(i64::from), self.y.map(i64::from))
+    }
+}
+
+/// A box within the draw rectangle as a record stores it (its
+/// coordinates lie within 0..=`framebuffer::MAX_SIZE`).
+#[inline(always)]
+fn packed_box(r: Rect) -> [i16; 4] {
+    [r.x0 as i16, r.y0 as i16, r.x1 as i16, r.y1 as i16]
+}
 
 /// One vertex of a binned triangle as setup reads it.
 struct BinAttributes<'a> {
@@ -496,7 +554,7 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
         });
         b.extras.len() as u32 - 1
     } else {
-        u32::MAX
+        NO_EXTRA_INDEX
     };
     let color = |i: usize| {
         if flat {
@@ -518,18 +576,17 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
     // `at`) before the length takes it in.
     unsafe {
         let t = b.tris.as_mut_ptr().add(b.tris.len());
-        let (tx, ty) = (std::ptr::addr_of_mut!((*t).x) as *mut i64, std::ptr::addr_of_mut!((*t).y) as *mut i64);
+        let (tx, ty) = (std::ptr::addr_of_mut!((*t).x) as *mut i32, std::ptr::addr_of_mut!((*t).y) as *mut i32);
         let tv = std::ptr::addr_of_mut!((*t).v) as *mut BinVertex;
         for i in 0..3 {
-            tx.add(at[i]).write(x[i]);
-            ty.add(at[i]).write(y[i]);
-            tv.add(at[i]).write(BinVertex { z: pos[i][2], q: pos[i][3], color: color(i) });
+            // `setup::bin_snapped` bins only vertices that fit.
+            tx.add(at[i]).write(x[i] as i32);
+            ty.add(at[i]).write(y[i] as i32);
+            tv.add(at[i]).write(BinVertex { z: pos[i][2], q: pos[i][3], color: color(i).to_array() });
         }
-        std::ptr::addr_of_mut!((*t).bbox).write(bbox);
+        std::ptr::addr_of_mut!((*t).bbox).write(packed_box(bbox));
         std::ptr::addr_of_mut!((*t).state).write(state);
-        std::ptr::addr_of_mut!((*t).extra).write(extra);
-        std::ptr::addr_of_mut!((*t).prim).write(TRIANGLE);
-        std::ptr::addr_of_mut!((*t).front_facing).write(front_facing);
+        std::ptr::addr_of_mut!((*t).prim).write(TRIANGLE | if front_facing { FRONT } else { 0 } | extra);
         b.tris.set_len(b.tris.len() + 1);
     }
     added(&rs.batch, b, area + SETUP_PIXELS)
@@ -601,8 +658,8 @@ fn help_at(max: usize) -> usize {
 
 /// A record of a line or point: its box and state only.
 fn prim_record(bbox: Rect, state: u32, prim: u32) -> Binned {
-    let v = BinVertex { z: 0.0, q: 0.0, color: Vec4::ZERO };
-    Binned { x: [0; 3], y: [0; 3], v: [v; 3], bbox, state, extra: u32::MAX, prim, front_facing: true }
+    let v = BinVertex { z: 0.0, q: 0.0, color: [0.0; 4] };
+    Binned { x: [0; 3], y: [0; 3], v: [v; 3], bbox: packed_box(bbox), state, prim }
 }
 
 /// Adds a line segment to the batch, to be drawn band by band in the
@@ -659,15 +716,17 @@ enum Shading<'a> {
 #[inline]
 fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut shade: impl FnMut(Shading<'_>)) {
     let stipple = st.polygon_stipple.as_deref();
-    let a = [0, 1, 2].map(|i| BinAttributes { color: t.v[i].color, extra, i });
+    let a = [0, 1, 2].map(|i| BinAttributes { color: Vec4::from_array(t.v[i].color), extra, i });
     let zq = t.v.map(|v| (v.z, v.q));
-    let centres = raster::CentreBox::of(t.x, t.y, rect);
+    let (x, y) = t.xy();
+    let (color, front_facing) = (Vec4::from_array(t.v[0].color), t.front_facing());
+    let centres = raster::CentreBox::of(x, y, rect);
     if stipple.is_none() {
-        if let Some(cover) = raster::Cover::find_in(t.x, t.y, centres) {
+        if let Some(cover) = raster::Cover::find_in(x, y, centres) {
             if cover.is_empty() {
                 return;
             }
-            let setup = planes_of(st, zq, a.each_ref(), t.x, t.y, t.v[0].color, false, t.front_facing);
+            let setup = planes_of(st, zq, a.each_ref(), x, y, color, false, front_facing);
             match st.stamp(&setup) {
                 Some(sk) => shade(Shading::Stamp(sk, &setup, &cover)),
                 None => {
@@ -681,18 +740,18 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
         }
     }
     let mut runs = raster::Runs::new();
-    let found = runs.find_in(t.x, t.y, centres, rect, stipple);
+    let found = runs.find_in(x, y, centres, rect, stipple);
     if found && runs.is_empty() {
         return;
     }
-    let setup = planes_of(st, zq, a.each_ref(), t.x, t.y, t.v[0].color, false, t.front_facing);
+    let setup = planes_of(st, zq, a.each_ref(), x, y, color, false, front_facing);
     let k = st.kernel(&setup);
     if found {
         for (py, lo, hi) in runs.iter() {
             shade(Shading::Span(k, &setup, py, lo, hi));
         }
     } else {
-        raster::spans(t.x, t.y, rect, stipple, |py, lo, hi| shade(Shading::Span(k, &setup, py, lo, hi)));
+        raster::spans(x, y, rect, stipple, |py, lo, hi| shade(Shading::Span(k, &setup, py, lo, hi)));
     }
 }
 
@@ -954,7 +1013,7 @@ fn list_bands(tris: &[Binned], surface: Rect, rows: usize, bins: &mut [Vec<u32>]
     weight.clear();
     weight.resize(bins.len(), 0);
     for (i, t) in tris.iter().enumerate() {
-        let b = t.bbox.intersect(surface);
+        let b = t.rect().intersect(surface);
         if b.is_empty() {
             continue;
         }
@@ -970,7 +1029,7 @@ fn list_bands(tris: &[Binned], surface: Rect, rows: usize, bins: &mut [Vec<u32>]
 impl pool::Work for Flight {
     fn work(&self) {
         let b = &self.batch;
-        let of = |t: &Binned| (&*b.states[t.state as usize], b.extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
+        let of = |t: &Binned| (&*b.states[t.state as usize], b.extras.get(t.extra()).unwrap_or(&NO_EXTRA));
         let raw = &self.raw;
         let stamp_target = StampTarget { color: raw.color, depth: raw.depth, width: raw.width };
         let mut local = 0u64;
@@ -1004,12 +1063,12 @@ impl pool::Work for Flight {
                     band_op(&**op);
                 }
                 let t = &b.tris[i as usize];
-                let r = t.bbox.intersect(tile);
+                let r = t.rect().intersect(tile);
                 if r.is_empty() {
                     continue;
                 }
                 let (st, extra) = of(t);
-                if t.prim != TRIANGLE {
+                if !t.is_triangle() {
                     // Safety: the band's rows, which no other thread holds.
                     let px = unsafe { raw.span(y, 0, (tile.y1 as usize - y) * raw.width) };
                     let mut band = runs::Band { px, base: y * raw.width };
@@ -1175,12 +1234,12 @@ fn shade_here(b: &Batch, fb: &mut Framebuffer) {
         while let Some((_, op)) = ops.next_if(|(at, _)| *at <= i) {
             op.band(0, fb.height, width, &mut fb.color[..], &mut fb.accum[..]);
         }
-        let (st, extra) = (&*b.states[t.state as usize], b.extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
-        if t.prim != TRIANGLE {
-            draw_prim(b, t, st, fb, width, t.bbox.intersect(surface));
+        let (st, extra) = (&*b.states[t.state as usize], b.extras.get(t.extra()).unwrap_or(&NO_EXTRA));
+        if !t.is_triangle() {
+            draw_prim(b, t, st, fb, width, t.rect().intersect(surface));
             continue;
         }
-        shade_binned(t, st, extra, t.bbox.intersect(surface), |how| {
+        shade_binned(t, st, extra, t.rect().intersect(surface), |how| {
             let passed = match how {
                 Shading::Span(k, setup, py, lo, hi) => {
                     let mut px = SpanPixels::of(fb, py, lo, hi);
@@ -1279,8 +1338,7 @@ mod tests {
                     2 => Rect { x0: next(w + 4) - 2, y0: -5, x1: w + 5, y1: h + next(9) },
                     _ => Rect { x0: next(w), y0, x1: next(w + 1), y1: y0 + next(100) - 10 },
                 };
-                let mut t = prim_record(bbox, 0, TRIANGLE);
-                t.prim = TRIANGLE;
+                let t = prim_record(bbox, 0, TRIANGLE | NO_EXTRA_INDEX);
                 flight.batch.tris.push(t);
             }
             let bands = (h as usize).div_ceil(rows);
@@ -1292,7 +1350,7 @@ mod tests {
             let expected: Vec<Vec<u32>> = (0..bands)
                 .map(|k| {
                     let band = Rect { x0: 0, y0: (k * rows) as i32, x1: w, y1: ((k + 1) * rows) as i32 }.intersect(surface);
-                    (0..n as u32).filter(|&i| !flight.batch.tris[i as usize].bbox.intersect(surface).intersect(band).is_empty()).collect()
+                    (0..n as u32).filter(|&i| !flight.batch.tris[i as usize].rect().intersect(surface).intersect(band).is_empty()).collect()
                 })
                 .collect();
             let f = &*flight;
@@ -1309,7 +1367,7 @@ mod tests {
                 .map(|k| {
                     let band = Rect { x0: 0, y0: (k * rows) as i32, x1: w, y1: ((k + 1) * rows) as i32 }.intersect(surface);
                     let cost = |i: u32| {
-                        let b = flight.batch.tris[i as usize].bbox.intersect(surface).intersect(band);
+                        let b = flight.batch.tris[i as usize].rect().intersect(surface).intersect(band);
                         (b.x1 - b.x0) as u64 * (b.y1 - b.y0) as u64 + SETUP_PIXELS
                     };
                     expected[k].iter().map(|&i| cost(i)).sum()
