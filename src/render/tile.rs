@@ -184,20 +184,20 @@ const NO_EXTRA: BinExtra = BinExtra { tex: [[Vec4::ZERO; MAX_UNITS]; 3], fog: [0
 /// and the state it was drawn under.
 #[derive(Debug)]
 ///
-/// Round 14: 136 bytes, not 176 (the calling thread writes one per
-/// triangle and the band side reads it twice, from the other core):
-/// snapped x and y in i32 (setup's precision note bounds them by 2^27;
-/// `setup::bin_snapped` shades anything else at once), the box in i16
-/// (within the draw rectangle, at most `framebuffer::MAX_SIZE`), the
-/// facing and the extra index packed into `prim`, no padding. Every value
-/// the band side reads is the one it read before, so the pixels are too.
+/// Round 14: 128 bytes and 8 more in [`Batch::boxes`], not 176 (the
+/// calling thread writes one per triangle and the band side read it
+/// twice, from the other core): snapped x and y in i32 (setup's
+/// precision note bounds them by 2^27; `setup::bin_snapped` shades
+/// anything else at once), the box apart (read alone by the band
+/// listing), the facing and the extra index packed into `prim`, no
+/// padding, aligned to cache lines (a record a band picks out touches
+/// two lines, not three). Every value the band side reads is the one it
+/// read before, so the pixels are too.
+#[repr(align(64))]
 struct Binned {
     v: [BinVertex; 3],
     x: [i32; 3],
     y: [i32; 3],
-    /// Pixels the triangle may touch: its bounding box within the draw
-    /// rectangle (x0, y0, x1, y1; [`Binned::rect`]).
-    bbox: [i16; 4],
     /// Index in [`Batch::states`].
     state: u32,
     /// A line: its index in [`Batch::lines`] (bit 31 clear); a point:
@@ -210,7 +210,7 @@ struct Binned {
 }
 
 // The record's size (round 14): no padding.
-const _: () = assert!(std::mem::size_of::<Binned>() == 136);
+const _: () = assert!(std::mem::size_of::<Binned>() == 128);
 
 /// The bits of [`Binned::prim`] marking a triangle.
 const TRIANGLE: u32 = 3 << 30;
@@ -226,13 +226,6 @@ impl Binned {
     #[inline(always)]
     fn is_triangle(&self) -> bool {
         self.prim >= TRIANGLE
-    }
-
-    /// Its box as a [`Rect`].
-    #[inline(always)]
-    fn rect(&self) -> Rect {
-        let [x0, y0, x1, y1] = self.bbox.map(i32::from);
-        Rect { x0, y0, x1, y1 }
     }
 
     /// A triangle's facing.
@@ -255,11 +248,22 @@ impl Binned {
     }
 }
 
-/// A box within the draw rectangle as a record stores it (its
-/// coordinates lie within 0..=`framebuffer::MAX_SIZE`).
+/// A record's box as [`Batch::boxes`] stores it: pixels the primitive
+/// may touch, within the draw rectangle (x0, y0, x1, y1: within
+/// 0..=`framebuffer::MAX_SIZE`).
+type BinBox = [i16; 4];
+
+/// A box within the draw rectangle as a record stores it.
 #[inline(always)]
-fn packed_box(r: Rect) -> [i16; 4] {
+fn packed_box(r: Rect) -> BinBox {
     [r.x0 as i16, r.y0 as i16, r.x1 as i16, r.y1 as i16]
+}
+
+/// A stored box as a [`Rect`].
+#[inline(always)]
+fn rect_of(b: BinBox) -> Rect {
+    let [x0, y0, x1, y1] = b.map(i32::from);
+    Rect { x0, y0, x1, y1 }
 }
 
 /// One vertex of a binned triangle as setup reads it.
@@ -301,6 +305,9 @@ impl Attributes for BinAttributes<'_> {
 pub struct Batch {
     /// Every primitive in submission order (lines and points by index).
     tris: Vec<Binned>,
+    /// Each record's box (round 14: apart from the record, so that the
+    /// band listing reads 8 bytes a record, not its cache lines).
+    boxes: Vec<BinBox>,
     extras: Vec<BinExtra>,
     lines: Vec<LineRun>,
     points: Vec<PointRun>,
@@ -348,6 +355,8 @@ impl Batch {
                 crate::framebuffer::plane::advise_huge_pages(self.tris.as_mut_ptr() as *mut u8, bytes);
             }
         }
+        // `room`'s invariant: at least the records' capacity.
+        fresh(&mut self.boxes, self.tris.capacity());
         fresh(&mut self.extras, other.extras.capacity());
         fresh(&mut self.lines, other.lines.capacity());
         fresh(&mut self.points, other.points.capacity());
@@ -507,22 +516,41 @@ pub fn binning(rs: &RenderState) -> bool {
     rs.threads > 1 && !rs.reference
 }
 
+/// What [`bounds`] finds of a triangle.
+pub enum Bounds {
+    /// Its box: to be binned.
+    Box(Rect),
+    /// No pixel of the draw rectangle: nothing to draw.
+    Empty,
+    /// A vertex too far out for the binned record (never after
+    /// clipping): to be shaded at once.
+    Far,
+}
+
 /// A triangle's bounding box (positively oriented fixed-point vertices)
 /// within the draw rectangle, widened by a pixel each way (a superset is
-/// enough: spans are exact); None when empty.
+/// enough: spans are exact). Round 14: the record keeps x and y in i32,
+/// which setup's precision note bounds by 2^27 after clipping; anything
+/// else is [`Bounds::Far`] (two compares on the min and max taken for
+/// the box anyway).
 #[inline]
-pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Option<Rect> {
+pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Bounds {
     let r = rs.draw_rect;
+    let (x_lo, x_hi) = (x[0].min(x[1]).min(x[2]), x[0].max(x[1]).max(x[2]));
+    let (y_lo, y_hi) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
+    if x_lo.min(y_lo) < i32::MIN as i64 || x_hi.max(y_hi) > i32::MAX as i64 {
+        return Bounds::Far;
+    }
     // Floor division by ONE; min/max rather than clamp (no assertion).
     let px = |c: i64| c >> super::setup::SUBPIXEL_BITS;
     let fit = |v: i64, lo: i32, hi: i32| v.max(lo as i64).min(hi as i64) as i32;
     let bbox = Rect {
-        x0: fit(px(x[0].min(x[1]).min(x[2])) - 1, r.x0, r.x1),
-        x1: fit(px(x[0].max(x[1]).max(x[2])) + 2, r.x0, r.x1),
-        y0: fit(px(y[0].min(y[1]).min(y[2])) - 1, r.y0, r.y1),
-        y1: fit(px(y[0].max(y[1]).max(y[2])) + 2, r.y0, r.y1),
+        x0: fit(px(x_lo) - 1, r.x0, r.x1),
+        x1: fit(px(x_hi) + 2, r.x0, r.x1),
+        y0: fit(px(y_lo) - 1, r.y0, r.y1),
+        y1: fit(px(y_hi) + 2, r.y0, r.y1),
     };
-    (!bbox.is_empty()).then_some(bbox)
+    if bbox.is_empty() { Bounds::Empty } else { Bounds::Box(bbox) }
 }
 
 /// Adds a triangle to the batch, to be set up in a worker: fixed-point
@@ -570,10 +598,10 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
     // arrays being permuted first, in registers and stack copies, and
     // then copied in (about 30 instructions a triangle).
     let at = [0, 2 - ccw as usize, 1 + ccw as usize];
-    b.tris.reserve(1);
-    // Safety: `reserve` made room for one record past the length; every
-    // field is written (x, y and v through the three distinct slots of
-    // `at`) before the length takes it in.
+    room(b);
+    // Safety: `room` made room for one record and one box past the
+    // lengths (equal); every field is written (x, y and v through the
+    // three distinct slots of `at`) before the lengths take them in.
     unsafe {
         let t = b.tris.as_mut_ptr().add(b.tris.len());
         let (tx, ty) = (std::ptr::addr_of_mut!((*t).x) as *mut i32, std::ptr::addr_of_mut!((*t).y) as *mut i32);
@@ -582,12 +610,23 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
             // `setup::bin_snapped` bins only vertices that fit.
             tx.add(at[i]).write(x[i] as i32);
             ty.add(at[i]).write(y[i] as i32);
-            tv.add(at[i]).write(BinVertex { z: pos[i][2], q: pos[i][3], color: color(i).to_array() });
+            let tv = tv.add(at[i]);
+            std::ptr::addr_of_mut!((*tv).z).write(pos[i][2]);
+            std::ptr::addr_of_mut!((*tv).q).write(pos[i][3]);
+            (std::ptr::addr_of_mut!((*tv).color) as *mut Vec4).write_unaligned(color(i));
         }
-        std::ptr::addr_of_mut!((*t).bbox).write(packed_box(bbox));
         std::ptr::addr_of_mut!((*t).state).write(state);
         std::ptr::addr_of_mut!((*t).prim).write(TRIANGLE | if front_facing { FRONT } else { 0 } | extra);
         b.tris.set_len(b.tris.len() + 1);
+        let n = b.boxes.len();
+        let bb = b.boxes.as_mut_ptr().add(n) as *mut i16;
+        // Four 16-bit stores (packing them into one 64-bit word first
+        // took about 10 instructions more).
+        bb.write(bbox.x0 as i16);
+        bb.add(1).write(bbox.y0 as i16);
+        bb.add(2).write(bbox.x1 as i16);
+        bb.add(3).write(bbox.y1 as i16);
+        b.boxes.set_len(n + 1);
     }
     added(&rs.batch, b, area + SETUP_PIXELS)
 }
@@ -656,10 +695,33 @@ fn help_at(max: usize) -> usize {
     (max - max / 4).max(1)
 }
 
-/// A record of a line or point: its box and state only.
-fn prim_record(bbox: Rect, state: u32, prim: u32) -> Binned {
+/// Adds the record of a line or point to `b`: its box and state only.
+fn push_prim(b: &mut Batch, bbox: Rect, state: u32, prim: u32) {
     let v = BinVertex { z: 0.0, q: 0.0, color: [0.0; 4] };
-    Binned { x: [0; 3], y: [0; 3], v: [v; 3], bbox: packed_box(bbox), state, prim }
+    room(b);
+    b.tris.push(Binned { x: [0; 3], y: [0; 3], v: [v; 3], state, prim });
+    b.boxes.push(packed_box(bbox));
+}
+
+/// Makes room for one more record and box (round 14: one capacity check
+/// for both): `boxes` always has at least the capacity of `tris`, and the
+/// same length.
+#[inline(always)]
+fn room(b: &mut Batch) {
+    debug_assert_eq!(b.tris.len(), b.boxes.len());
+    if b.tris.len() == b.tris.capacity() {
+        grow(b);
+    }
+    debug_assert!(b.boxes.capacity() > b.boxes.len());
+}
+
+/// [`room`]'s growth: the records as `Vec` grows them, the boxes to the
+/// records' capacity.
+#[cold]
+#[inline(never)]
+fn grow(b: &mut Batch) {
+    b.tris.reserve(1);
+    b.boxes.reserve_exact(b.tris.capacity() - b.boxes.len());
 }
 
 /// Adds a line segment to the batch, to be drawn band by band in the
@@ -670,7 +732,7 @@ pub fn push_line(rs: &RenderState, line: LineRun, bbox: Rect) -> bool {
     let b = unsafe { filling(&rs.batch) };
     let (state, _, _) = state_of(rs, b);
     let work = line.work();
-    b.tris.push(prim_record(bbox, state, b.lines.len() as u32));
+    push_prim(b, bbox, state, b.lines.len() as u32);
     b.lines.push(line);
     added(&rs.batch, b, work + SETUP_PIXELS)
 }
@@ -681,7 +743,7 @@ pub fn push_point(rs: &RenderState, p: PointRun, bbox: Rect) -> bool {
     let b = unsafe { filling(&rs.batch) };
     let (state, _, _) = state_of(rs, b);
     let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
-    b.tris.push(prim_record(bbox, state, POINT | b.points.len() as u32));
+    push_prim(b, bbox, state, POINT | b.points.len() as u32);
     b.points.push(p);
     added(&rs.batch, b, area + SETUP_PIXELS)
 }
@@ -967,7 +1029,7 @@ impl Flight {
                 // Safety: only this thread writes the lists (the state
                 // was UNBINNED), and no thread reads them before BINNED.
                 let (bins, order, weight) = unsafe { (&mut *self.bins.get(), &mut *self.order.get(), &mut *self.weight.get()) };
-                list_bands(&self.batch.tris, self.surface, self.rows, bins, weight);
+                list_bands(&self.batch.boxes, self.surface, self.rows, bins, weight);
                 order.clear();
                 order.extend(0..bins.len() as u32);
                 // Stable: equal bands keep top-to-bottom order.
@@ -991,6 +1053,7 @@ impl Flight {
     fn clear(&mut self) {
         let b = &mut self.batch;
         b.tris.clear();
+        b.boxes.clear();
         b.extras.clear();
         b.lines.clear();
         b.points.clear();
@@ -1009,11 +1072,11 @@ impl Flight {
 /// within `surface` (`bins`, one list per band, emptied before), in
 /// submission order, and estimates each band's work into `weight`: the
 /// pixels of the boxes within the band plus [`SETUP_PIXELS`] a record.
-fn list_bands(tris: &[Binned], surface: Rect, rows: usize, bins: &mut [Vec<u32>], weight: &mut Vec<u64>) {
+fn list_bands(boxes: &[BinBox], surface: Rect, rows: usize, bins: &mut [Vec<u32>], weight: &mut Vec<u64>) {
     weight.clear();
     weight.resize(bins.len(), 0);
-    for (i, t) in tris.iter().enumerate() {
-        let b = t.rect().intersect(surface);
+    for (i, &t) in boxes.iter().enumerate() {
+        let b = rect_of(t).intersect(surface);
         if b.is_empty() {
             continue;
         }
@@ -1062,11 +1125,11 @@ impl pool::Work for Flight {
                 while let Some((_, op)) = ops.next_if(|(at, _)| *at <= i as usize) {
                     band_op(&**op);
                 }
-                let t = &b.tris[i as usize];
-                let r = t.rect().intersect(tile);
+                let r = rect_of(b.boxes[i as usize]).intersect(tile);
                 if r.is_empty() {
                     continue;
                 }
+                let t = &b.tris[i as usize];
                 let (st, extra) = of(t);
                 if !t.is_triangle() {
                     // Safety: the band's rows, which no other thread holds.
@@ -1230,16 +1293,16 @@ fn shade_here(b: &Batch, fb: &mut Framebuffer) {
     let surface = Rect::new(0, 0, fb.width as i32, fb.height as i32);
     let width = fb.width;
     let mut ops = b.ops.iter().peekable();
-    for (i, t) in b.tris.iter().enumerate() {
+    for (i, (t, &bbox)) in b.tris.iter().zip(&b.boxes).enumerate() {
         while let Some((_, op)) = ops.next_if(|(at, _)| *at <= i) {
             op.band(0, fb.height, width, &mut fb.color[..], &mut fb.accum[..]);
         }
         let (st, extra) = (&*b.states[t.state as usize], b.extras.get(t.extra()).unwrap_or(&NO_EXTRA));
         if !t.is_triangle() {
-            draw_prim(b, t, st, fb, width, t.rect().intersect(surface));
+            draw_prim(b, t, st, fb, width, rect_of(bbox).intersect(surface));
             continue;
         }
-        shade_binned(t, st, extra, t.rect().intersect(surface), |how| {
+        shade_binned(t, st, extra, rect_of(bbox).intersect(surface), |how| {
             let passed = match how {
                 Shading::Span(k, setup, py, lo, hi) => {
                     let mut px = SpanPixels::of(fb, py, lo, hi);
@@ -1295,16 +1358,17 @@ mod tests {
     fn reserved_batches_take_the_filled_size() {
         let mut filled = Batch::default();
         for i in 0..5000 {
-            filled.tris.push(prim_record(Rect::new(0, 0, 1, 1), 0, i));
+            push_prim(&mut filled, Rect::new(0, 0, 1, 1), 0, i);
         }
         filled.extras.push(NO_EXTRA);
         let mut spare = Batch::default();
         spare.reserve_like(&filled);
         assert!(spare.tris.is_empty() && spare.tris.capacity() >= filled.tris.capacity());
+        assert!(spare.boxes.is_empty() && spare.boxes.capacity() >= spare.tris.capacity(), "room for a box per record");
         assert!(spare.extras.capacity() >= filled.extras.capacity());
         let at = spare.tris.as_ptr();
         let mut small = Batch::default();
-        small.tris.push(prim_record(Rect::new(0, 0, 1, 1), 0, 0));
+        push_prim(&mut small, Rect::new(0, 0, 1, 1), 0, 0);
         spare.reserve_like(&small);
         assert_eq!(spare.tris.as_ptr(), at, "a large enough batch is not reallocated");
     }
@@ -1338,8 +1402,7 @@ mod tests {
                     2 => Rect { x0: next(w + 4) - 2, y0: -5, x1: w + 5, y1: h + next(9) },
                     _ => Rect { x0: next(w), y0, x1: next(w + 1), y1: y0 + next(100) - 10 },
                 };
-                let t = prim_record(bbox, 0, TRIANGLE | NO_EXTRA_INDEX);
-                flight.batch.tris.push(t);
+                push_prim(&mut flight.batch, bbox, 0, TRIANGLE | NO_EXTRA_INDEX);
             }
             let bands = (h as usize).div_ceil(rows);
             flight.bins.get_mut().resize_with(bands, Vec::new);
@@ -1350,7 +1413,7 @@ mod tests {
             let expected: Vec<Vec<u32>> = (0..bands)
                 .map(|k| {
                     let band = Rect { x0: 0, y0: (k * rows) as i32, x1: w, y1: ((k + 1) * rows) as i32 }.intersect(surface);
-                    (0..n as u32).filter(|&i| !flight.batch.tris[i as usize].rect().intersect(surface).intersect(band).is_empty()).collect()
+                    (0..n as u32).filter(|&i| !rect_of(flight.batch.boxes[i as usize]).intersect(surface).intersect(band).is_empty()).collect()
                 })
                 .collect();
             let f = &*flight;
@@ -1367,7 +1430,7 @@ mod tests {
                 .map(|k| {
                     let band = Rect { x0: 0, y0: (k * rows) as i32, x1: w, y1: ((k + 1) * rows) as i32 }.intersect(surface);
                     let cost = |i: u32| {
-                        let b = flight.batch.tris[i as usize].rect().intersect(surface).intersect(band);
+                        let b = rect_of(flight.batch.boxes[i as usize]).intersect(surface).intersect(band);
                         (b.x1 - b.x0) as u64 * (b.y1 - b.y0) as u64 + SETUP_PIXELS
                     };
                     expected[k].iter().map(|&i| cost(i)).sum()
