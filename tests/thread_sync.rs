@@ -977,3 +977,108 @@ fn helped_flights_do_not_depend_on_thread_count() {
     }
     assert!(softgl::render::tile::helps_started() > helps, "the calling thread helped a flight before its batch was full");
 }
+
+const W5: i32 = 16384;
+const H5: i32 = 10;
+
+/// Round 14's smaller binned record (x and y in i32, the box in i16, the
+/// facing and the extra index packed) at its bounds: a window as wide as
+/// the framebuffer allows (boxes up to 16384), viewports moved far to the
+/// left and right of it (clipped vertices up to the guard band, hundreds
+/// of thousands of pixels out: snapped values of 27 bits), tiny and huge
+/// random strips, fans, triangles, quads, quad strips and polygons, both
+/// windings, with flat / smooth shading, texturing, fog, culling and
+/// two-sided lighting changing between them.
+unsafe fn far_records_scene(threads: usize, limits: (usize, u64, u64)) -> Vec<Vec<u8>> {
+    let mut buf = vec![0u8; (W5 * H5 * 4) as usize];
+    let ctx = context_of(threads, &mut buf, W5, H5);
+    softgl::render::tile::set_batch_limits(&(*ctx).gl.derived.render, limits.0, limits.1, limits.2);
+    let mut r = Rng(0xfa7);
+    let mut out = Vec::new();
+    glClearColor(0.1, 0.2, 0.1, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    let mut tex = 0u32;
+    glGenTextures(1, &mut tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    texture_image(&mut r, false);
+    glFogf(softgl::gl::fog::GL_FOG_DENSITY, 0.7);
+    let light = [0.2f32, 0.4, 1.0, 0.0];
+    glLightfv(GL_LIGHT0, GL_POSITION, light.as_ptr());
+    glEnable(GL_LIGHT0);
+    glEnable(GL_COLOR_MATERIAL);
+    glMatrixMode(GL_PROJECTION);
+    glOrtho(0.0, W5 as f64, 0.0, H5 as f64, -1.0, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+    let modes = [GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON];
+    let mut off = 0i32;
+    for step in 0..300 {
+        let toggle = |cap: u32, on: bool| if on { glEnable(cap) } else { glDisable(cap) };
+        match r.next() % 7 {
+            0 => glShadeModel(if r.next() % 2 == 0 { GL_FLAT } else { GL_SMOOTH }),
+            1 => toggle(GL_TEXTURE_2D, r.next() % 2 == 0),
+            2 => toggle(GL_FOG, r.next() % 2 == 0),
+            3 => toggle(GL_CULL_FACE, r.next() % 3 == 0),
+            4 => {
+                toggle(GL_LIGHTING, r.next() % 3 == 0);
+                glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, (r.next() % 2) as i32);
+            }
+            5 => {
+                // The viewport's origin far off the window: the visible
+                // part of the guard band is far from the viewport.
+                off = [0, -200_000, 150_000, -1000][r.next() as usize % 4];
+                glViewport(off, 0, W5, H5);
+            }
+            _ => {}
+        }
+        let mode = modes[r.next() as usize % modes.len()];
+        let n = 3 + r.next() as usize % 10;
+        // Centred on the window (in window x), spread little or far.
+        let cx = (r.unit() * 1.2 - 0.1) * W5 as f32 - off as f32;
+        let cy = r.unit() * 14.0 - 2.0;
+        let size = match r.next() % 4 {
+            0 => 800_000.0,
+            1 => 20_000.0,
+            _ => 60.0,
+        };
+        glBegin(mode);
+        for i in 0..n {
+            glColor4ub(r.next() as u8, r.next() as u8, r.next() as u8, 255);
+            glNormal3f(r.unit() - 0.5, r.unit() - 0.5, 1.0);
+            glTexCoord2f(r.unit() * 2.0, r.unit() * 2.0);
+            let t = i as f32 * 0.7;
+            let (x, y) = match mode {
+                GL_TRIANGLE_STRIP | GL_QUAD_STRIP => (cx + t * 0.1 * size, cy + if i % 2 == 0 { -3.0 } else { 9.0 }),
+                GL_TRIANGLE_FAN | GL_POLYGON if i > 0 => (cx + t.cos() * size * 0.5, cy + t.sin() * 8.0),
+                _ => (cx + (r.unit() - 0.5) * size, cy + (r.unit() - 0.5) * 16.0),
+            };
+            glVertex3f(x, y, r.unit() * 1.8 - 0.9);
+        }
+        glEnd();
+        if step % 60 == 59 {
+            read_of(&mut out, W5, H5);
+        }
+    }
+    glDeleteTextures(1, &tex);
+    OSMesaDestroyContext(ctx);
+    out
+}
+
+/// The binned path (2 and 3 threads, round 14's record) gives the
+/// 1-thread path's pixels at the record's bounds ([`far_records_scene`]).
+#[test]
+fn far_and_wide_records_do_not_depend_on_thread_count() {
+    for limits in [(1 << 20, 1 << 40, 0), (5, 0, 0)] {
+        let one = unsafe { far_records_scene(1, limits) };
+        for w in one.windows(2) {
+            assert_ne!(w[0], w[1], "each part draws");
+        }
+        for threads in [2, 3] {
+            let many = unsafe { far_records_scene(threads, limits) };
+            for (k, (a, b)) in one.iter().zip(&many).enumerate() {
+                let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
+                assert_eq!(diff, 0, "limits {limits:?} read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
+            }
+        }
+    }
+}

@@ -200,7 +200,22 @@ fn bin_placed(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, v: [&C
     let fx = v.map(|cv| cv.snapped[0]);
     let fy = v.map(|cv| cv.snapped[1]);
     let Some(o) = oriented(rs, fx, fy) else { return };
-    bin_snapped(rs, fb, pos, fx, fy, v, flat_color, o)
+    if !bin_snapped(rs, fb, pos, fx, fy, v, flat_color, o) {
+        shade_placed(rs, fb, v, flat_color)
+    }
+}
+
+/// [`triangle_placed`]'s shading path for a triangle [`bin_snapped`]
+/// cannot bin (round 14: never reached after clipping); out of line, so
+/// that the binning path keeps its arrays in registers.
+#[cold]
+#[inline(never)]
+fn shade_placed(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, v: [&ClipVertex; 3], flat_color: [Vec4; 2]) {
+    let pos = v.map(|cv| cv.win);
+    let fx = v.map(|cv| cv.snapped[0]);
+    let fy = v.map(|cv| cv.snapped[1]);
+    let Some(o) = oriented(rs, fx, fy) else { return };
+    shade_snapped(rs, fb, pos, fx, fy, v, flat_color, o)
 }
 
 /// [`triangle_at`] for window positions `pos` (x, y, z, 1/w) whose other
@@ -210,9 +225,7 @@ pub fn triangle_at<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer:
     let fx = pos.map(|p| snap(p[0]));
     let fy = pos.map(|p| snap(p[1]));
     let Some(o) = oriented(rs, fx, fy) else { return };
-    if binned_here(rs, fb) {
-        bin_snapped(rs, fb, pos, fx, fy, attrs, flat_color, o)
-    } else {
+    if !(binned_here(rs, fb) && bin_snapped(rs, fb, pos, fx, fy, attrs, flat_color, o)) {
         shade_snapped(rs, fb, pos, fx, fy, attrs, flat_color, o)
     }
 }
@@ -249,14 +262,20 @@ fn oriented(rs: &RenderState, fx: [i64; 3], fy: [i64; 3]) -> Option<Oriented> {
 
 /// Bins a snapped triangle, to be set up later in the tile workers; the
 /// record takes the vertices in positive orientation (the box does not
-/// depend on their order).
+/// depend on their order). False when it cannot be binned (a vertex too
+/// far out, [`super::tile::Bounds::Far`]): the caller shades it now.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn bin_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], fx: [i64; 3], fy: [i64; 3], attrs: [&A; 3], flat_color: [Vec4; 2], o: Oriented) {
-    if let Some(bbox) = super::tile::bounds(rs, fx, fy) {
-        if super::tile::push(rs, fx, fy, bbox, pos, attrs, o.ccw, flat_color[o.back as usize], o.back, o.front_facing) {
-            super::tile::submit_binned(rs, fb);
+fn bin_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], fx: [i64; 3], fy: [i64; 3], attrs: [&A; 3], flat_color: [Vec4; 2], o: Oriented) -> bool {
+    match super::tile::bounds(rs, fx, fy) {
+        super::tile::Bounds::Box(bbox) => {
+            if super::tile::push(rs, fx, fy, bbox, pos, attrs, o.ccw, flat_color[o.back as usize], o.back, o.front_facing) {
+                super::tile::submit_binned(rs, fb);
+            }
+            true
         }
+        super::tile::Bounds::Empty => true,
+        super::tile::Bounds::Far => false,
     }
 }
 

@@ -123,7 +123,7 @@ fn band_rows(height: usize, threads: usize) -> usize {
 }
 
 /// The most triangles a batch holds before it is shaded (its memory,
-/// about 180 bytes a triangle, stays bounded).
+/// 136 bytes a triangle since round 14, stays bounded).
 pub const MAX_BATCH: usize = 32 * 1024;
 
 /// A batch holding this much work is handed to the workers as soon as
@@ -157,13 +157,15 @@ pub fn threads_default() -> usize {
 }
 
 /// What setup reads of a binned vertex besides its position.
+/// Round 14: the colour as an array (alignment 8, not 16), so that the
+/// record has no padding; it is loaded unaligned on the band side.
 #[derive(Clone, Copy, Debug)]
 struct BinVertex {
     z: f64,
     q: f64,
     /// The colour of the side the triangle shows (two-sided lighting),
     /// or the provoking vertex's colour when flat shaded.
-    color: Vec4,
+    color: [f32; 4],
 }
 
 /// The attributes only texturing and fog read, per vertex.
@@ -181,28 +183,88 @@ const NO_EXTRA: BinExtra = BinExtra { tex: [[Vec4::ZERO; MAX_UNITS]; 3], fog: [0
 /// positively oriented fixed-point vertices, what setup reads of them,
 /// and the state it was drawn under.
 #[derive(Debug)]
+///
+/// Round 14: 128 bytes and 8 more in [`Batch::boxes`], not 176 (the
+/// calling thread writes one per triangle and the band side read it
+/// twice, from the other core): snapped x and y in i32 (setup's
+/// precision note bounds them by 2^27; `setup::bin_snapped` shades
+/// anything else at once), the box apart (read alone by the band
+/// listing), the facing and the extra index packed into `prim`, no
+/// padding, aligned to cache lines (a record a band picks out touches
+/// two lines, not three). Every value the band side reads is the one it
+/// read before, so the pixels are too.
+#[repr(align(64))]
 struct Binned {
-    x: [i64; 3],
-    y: [i64; 3],
     v: [BinVertex; 3],
-    /// Pixels the triangle may touch: its bounding box within the draw
-    /// rectangle.
-    bbox: Rect,
+    x: [i32; 3],
+    y: [i32; 3],
     /// Index in [`Batch::states`].
     state: u32,
-    /// Index in [`Batch::extras`], or `u32::MAX`.
-    extra: u32,
-    /// [`TRIANGLE`], or a line (index in [`Batch::lines`]) or a point
-    /// ([`POINT`] | index in [`Batch::points`]), whose other fields
-    /// except `bbox` and `state` are unused.
+    /// A line: its index in [`Batch::lines`] (bit 31 clear); a point:
+    /// [`POINT`] | its index in [`Batch::points`]; a triangle:
+    /// [`TRIANGLE`], [`FRONT`] when it faces the front, and its index in
+    /// [`Batch::extras`] in the low 29 bits ([`NO_EXTRA_INDEX`] for
+    /// none). A line's or point's other fields except the box and state
+    /// are unused.
     prim: u32,
-    front_facing: bool,
 }
 
-/// [`Binned::prim`] of a triangle.
-const TRIANGLE: u32 = u32::MAX;
-/// The bit of [`Binned::prim`] marking a point.
+// The record's size (round 14): no padding.
+const _: () = assert!(std::mem::size_of::<Binned>() == 128);
+
+/// The bits of [`Binned::prim`] marking a triangle.
+const TRIANGLE: u32 = 3 << 30;
+/// The bit of [`Binned::prim`] marking a point (with bit 30 clear).
 const POINT: u32 = 1 << 31;
+/// The bit of a triangle's [`Binned::prim`] set when it faces the front.
+const FRONT: u32 = 1 << 29;
+/// The low bits of a triangle's [`Binned::prim`]: its extra index.
+const NO_EXTRA_INDEX: u32 = FRONT - 1;
+
+impl Binned {
+    /// Is the record a triangle (not a line or point)?
+    #[inline(always)]
+    fn is_triangle(&self) -> bool {
+        self.prim >= TRIANGLE
+    }
+
+    /// A triangle's facing.
+    #[inline(always)]
+    fn front_facing(&self) -> bool {
+        self.prim & FRONT != 0
+    }
+
+    /// A triangle's index in [`Batch::extras`]; past the end (no extra)
+    /// for lines and points.
+    #[inline(always)]
+    fn extra(&self) -> usize {
+        if self.is_triangle() { (self.prim & NO_EXTRA_INDEX) as usize } else { usize::MAX }
+    }
+
+    /// The snapped vertices as setup reads them.
+    #[inline(always)]
+    fn xy(&self) -> ([i64; 3], [i64; 3]) {
+        (self.x.map(i64::from), self.y.map(i64::from))
+    }
+}
+
+/// A record's box as [`Batch::boxes`] stores it: pixels the primitive
+/// may touch, within the draw rectangle (x0, y0, x1, y1: within
+/// 0..=`framebuffer::MAX_SIZE`).
+type BinBox = [i16; 4];
+
+/// A box within the draw rectangle as a record stores it.
+#[inline(always)]
+fn packed_box(r: Rect) -> BinBox {
+    [r.x0 as i16, r.y0 as i16, r.x1 as i16, r.y1 as i16]
+}
+
+/// A stored box as a [`Rect`].
+#[inline(always)]
+fn rect_of(b: BinBox) -> Rect {
+    let [x0, y0, x1, y1] = b.map(i32::from);
+    Rect { x0, y0, x1, y1 }
+}
 
 /// One vertex of a binned triangle as setup reads it.
 struct BinAttributes<'a> {
@@ -243,6 +305,9 @@ impl Attributes for BinAttributes<'_> {
 pub struct Batch {
     /// Every primitive in submission order (lines and points by index).
     tris: Vec<Binned>,
+    /// Each record's box (round 14: apart from the record, so that the
+    /// band listing reads 8 bytes a record, not its cache lines).
+    boxes: Vec<BinBox>,
     extras: Vec<BinExtra>,
     lines: Vec<LineRun>,
     points: Vec<PointRun>,
@@ -290,6 +355,8 @@ impl Batch {
                 crate::framebuffer::plane::advise_huge_pages(self.tris.as_mut_ptr() as *mut u8, bytes);
             }
         }
+        // `room`'s invariant: at least the records' capacity.
+        fresh(&mut self.boxes, self.tris.capacity());
         fresh(&mut self.extras, other.extras.capacity());
         fresh(&mut self.lines, other.lines.capacity());
         fresh(&mut self.points, other.points.capacity());
@@ -449,22 +516,41 @@ pub fn binning(rs: &RenderState) -> bool {
     rs.threads > 1 && !rs.reference
 }
 
+/// What [`bounds`] finds of a triangle.
+pub enum Bounds {
+    /// Its box: to be binned.
+    Box(Rect),
+    /// No pixel of the draw rectangle: nothing to draw.
+    Empty,
+    /// A vertex too far out for the binned record (never after
+    /// clipping): to be shaded at once.
+    Far,
+}
+
 /// A triangle's bounding box (positively oriented fixed-point vertices)
 /// within the draw rectangle, widened by a pixel each way (a superset is
-/// enough: spans are exact); None when empty.
+/// enough: spans are exact). Round 14: the record keeps x and y in i32,
+/// which setup's precision note bounds by 2^27 after clipping; anything
+/// else is [`Bounds::Far`] (two compares on the min and max taken for
+/// the box anyway).
 #[inline]
-pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Option<Rect> {
+pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Bounds {
     let r = rs.draw_rect;
+    let (x_lo, x_hi) = (x[0].min(x[1]).min(x[2]), x[0].max(x[1]).max(x[2]));
+    let (y_lo, y_hi) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
+    if x_lo.min(y_lo) < i32::MIN as i64 || x_hi.max(y_hi) > i32::MAX as i64 {
+        return Bounds::Far;
+    }
     // Floor division by ONE; min/max rather than clamp (no assertion).
     let px = |c: i64| c >> super::setup::SUBPIXEL_BITS;
     let fit = |v: i64, lo: i32, hi: i32| v.max(lo as i64).min(hi as i64) as i32;
     let bbox = Rect {
-        x0: fit(px(x[0].min(x[1]).min(x[2])) - 1, r.x0, r.x1),
-        x1: fit(px(x[0].max(x[1]).max(x[2])) + 2, r.x0, r.x1),
-        y0: fit(px(y[0].min(y[1]).min(y[2])) - 1, r.y0, r.y1),
-        y1: fit(px(y[0].max(y[1]).max(y[2])) + 2, r.y0, r.y1),
+        x0: fit(px(x_lo) - 1, r.x0, r.x1),
+        x1: fit(px(x_hi) + 2, r.x0, r.x1),
+        y0: fit(px(y_lo) - 1, r.y0, r.y1),
+        y1: fit(px(y_hi) + 2, r.y0, r.y1),
     };
-    (!bbox.is_empty()).then_some(bbox)
+    if bbox.is_empty() { Bounds::Empty } else { Bounds::Box(bbox) }
 }
 
 /// Adds a triangle to the batch, to be set up in a worker: fixed-point
@@ -496,7 +582,7 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
         });
         b.extras.len() as u32 - 1
     } else {
-        u32::MAX
+        NO_EXTRA_INDEX
     };
     let color = |i: usize| {
         if flat {
@@ -512,25 +598,35 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
     // arrays being permuted first, in registers and stack copies, and
     // then copied in (about 30 instructions a triangle).
     let at = [0, 2 - ccw as usize, 1 + ccw as usize];
-    b.tris.reserve(1);
-    // Safety: `reserve` made room for one record past the length; every
-    // field is written (x, y and v through the three distinct slots of
-    // `at`) before the length takes it in.
+    room(b);
+    // Safety: `room` made room for one record and one box past the
+    // lengths (equal); every field is written (x, y and v through the
+    // three distinct slots of `at`) before the lengths take them in.
     unsafe {
         let t = b.tris.as_mut_ptr().add(b.tris.len());
-        let (tx, ty) = (std::ptr::addr_of_mut!((*t).x) as *mut i64, std::ptr::addr_of_mut!((*t).y) as *mut i64);
+        let (tx, ty) = (std::ptr::addr_of_mut!((*t).x) as *mut i32, std::ptr::addr_of_mut!((*t).y) as *mut i32);
         let tv = std::ptr::addr_of_mut!((*t).v) as *mut BinVertex;
         for i in 0..3 {
-            tx.add(at[i]).write(x[i]);
-            ty.add(at[i]).write(y[i]);
-            tv.add(at[i]).write(BinVertex { z: pos[i][2], q: pos[i][3], color: color(i) });
+            // `setup::bin_snapped` bins only vertices that fit.
+            tx.add(at[i]).write(x[i] as i32);
+            ty.add(at[i]).write(y[i] as i32);
+            let tv = tv.add(at[i]);
+            std::ptr::addr_of_mut!((*tv).z).write(pos[i][2]);
+            std::ptr::addr_of_mut!((*tv).q).write(pos[i][3]);
+            (std::ptr::addr_of_mut!((*tv).color) as *mut Vec4).write_unaligned(color(i));
         }
-        std::ptr::addr_of_mut!((*t).bbox).write(bbox);
         std::ptr::addr_of_mut!((*t).state).write(state);
-        std::ptr::addr_of_mut!((*t).extra).write(extra);
-        std::ptr::addr_of_mut!((*t).prim).write(TRIANGLE);
-        std::ptr::addr_of_mut!((*t).front_facing).write(front_facing);
+        std::ptr::addr_of_mut!((*t).prim).write(TRIANGLE | if front_facing { FRONT } else { 0 } | extra);
         b.tris.set_len(b.tris.len() + 1);
+        let n = b.boxes.len();
+        let bb = b.boxes.as_mut_ptr().add(n) as *mut i16;
+        // Four 16-bit stores (packing them into one 64-bit word first
+        // took about 10 instructions more).
+        bb.write(bbox.x0 as i16);
+        bb.add(1).write(bbox.y0 as i16);
+        bb.add(2).write(bbox.x1 as i16);
+        bb.add(3).write(bbox.y1 as i16);
+        b.boxes.set_len(n + 1);
     }
     added(&rs.batch, b, area + SETUP_PIXELS)
 }
@@ -599,10 +695,33 @@ fn help_at(max: usize) -> usize {
     (max - max / 4).max(1)
 }
 
-/// A record of a line or point: its box and state only.
-fn prim_record(bbox: Rect, state: u32, prim: u32) -> Binned {
-    let v = BinVertex { z: 0.0, q: 0.0, color: Vec4::ZERO };
-    Binned { x: [0; 3], y: [0; 3], v: [v; 3], bbox, state, extra: u32::MAX, prim, front_facing: true }
+/// Adds the record of a line or point to `b`: its box and state only.
+fn push_prim(b: &mut Batch, bbox: Rect, state: u32, prim: u32) {
+    let v = BinVertex { z: 0.0, q: 0.0, color: [0.0; 4] };
+    room(b);
+    b.tris.push(Binned { x: [0; 3], y: [0; 3], v: [v; 3], state, prim });
+    b.boxes.push(packed_box(bbox));
+}
+
+/// Makes room for one more record and box (round 14: one capacity check
+/// for both): `boxes` always has at least the capacity of `tris`, and the
+/// same length.
+#[inline(always)]
+fn room(b: &mut Batch) {
+    debug_assert_eq!(b.tris.len(), b.boxes.len());
+    if b.tris.len() == b.tris.capacity() {
+        grow(b);
+    }
+    debug_assert!(b.boxes.capacity() > b.boxes.len());
+}
+
+/// [`room`]'s growth: the records as `Vec` grows them, the boxes to the
+/// records' capacity.
+#[cold]
+#[inline(never)]
+fn grow(b: &mut Batch) {
+    b.tris.reserve(1);
+    b.boxes.reserve_exact(b.tris.capacity() - b.boxes.len());
 }
 
 /// Adds a line segment to the batch, to be drawn band by band in the
@@ -613,7 +732,7 @@ pub fn push_line(rs: &RenderState, line: LineRun, bbox: Rect) -> bool {
     let b = unsafe { filling(&rs.batch) };
     let (state, _, _) = state_of(rs, b);
     let work = line.work();
-    b.tris.push(prim_record(bbox, state, b.lines.len() as u32));
+    push_prim(b, bbox, state, b.lines.len() as u32);
     b.lines.push(line);
     added(&rs.batch, b, work + SETUP_PIXELS)
 }
@@ -624,7 +743,7 @@ pub fn push_point(rs: &RenderState, p: PointRun, bbox: Rect) -> bool {
     let b = unsafe { filling(&rs.batch) };
     let (state, _, _) = state_of(rs, b);
     let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
-    b.tris.push(prim_record(bbox, state, POINT | b.points.len() as u32));
+    push_prim(b, bbox, state, POINT | b.points.len() as u32);
     b.points.push(p);
     added(&rs.batch, b, area + SETUP_PIXELS)
 }
@@ -659,15 +778,17 @@ enum Shading<'a> {
 #[inline]
 fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut shade: impl FnMut(Shading<'_>)) {
     let stipple = st.polygon_stipple.as_deref();
-    let a = [0, 1, 2].map(|i| BinAttributes { color: t.v[i].color, extra, i });
+    let a = [0, 1, 2].map(|i| BinAttributes { color: Vec4::from_array(t.v[i].color), extra, i });
     let zq = t.v.map(|v| (v.z, v.q));
-    let centres = raster::CentreBox::of(t.x, t.y, rect);
+    let (x, y) = t.xy();
+    let (color, front_facing) = (Vec4::from_array(t.v[0].color), t.front_facing());
+    let centres = raster::CentreBox::of(x, y, rect);
     if stipple.is_none() {
-        if let Some(cover) = raster::Cover::find_in(t.x, t.y, centres) {
+        if let Some(cover) = raster::Cover::find_in(x, y, centres) {
             if cover.is_empty() {
                 return;
             }
-            let setup = planes_of(st, zq, a.each_ref(), t.x, t.y, t.v[0].color, false, t.front_facing);
+            let setup = planes_of(st, zq, a.each_ref(), x, y, color, false, front_facing);
             match st.stamp(&setup) {
                 Some(sk) => shade(Shading::Stamp(sk, &setup, &cover)),
                 None => {
@@ -681,18 +802,18 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
         }
     }
     let mut runs = raster::Runs::new();
-    let found = runs.find_in(t.x, t.y, centres, rect, stipple);
+    let found = runs.find_in(x, y, centres, rect, stipple);
     if found && runs.is_empty() {
         return;
     }
-    let setup = planes_of(st, zq, a.each_ref(), t.x, t.y, t.v[0].color, false, t.front_facing);
+    let setup = planes_of(st, zq, a.each_ref(), x, y, color, false, front_facing);
     let k = st.kernel(&setup);
     if found {
         for (py, lo, hi) in runs.iter() {
             shade(Shading::Span(k, &setup, py, lo, hi));
         }
     } else {
-        raster::spans(t.x, t.y, rect, stipple, |py, lo, hi| shade(Shading::Span(k, &setup, py, lo, hi)));
+        raster::spans(x, y, rect, stipple, |py, lo, hi| shade(Shading::Span(k, &setup, py, lo, hi)));
     }
 }
 
@@ -908,7 +1029,7 @@ impl Flight {
                 // Safety: only this thread writes the lists (the state
                 // was UNBINNED), and no thread reads them before BINNED.
                 let (bins, order, weight) = unsafe { (&mut *self.bins.get(), &mut *self.order.get(), &mut *self.weight.get()) };
-                list_bands(&self.batch.tris, self.surface, self.rows, bins, weight);
+                list_bands(&self.batch.boxes, self.surface, self.rows, bins, weight);
                 order.clear();
                 order.extend(0..bins.len() as u32);
                 // Stable: equal bands keep top-to-bottom order.
@@ -932,6 +1053,7 @@ impl Flight {
     fn clear(&mut self) {
         let b = &mut self.batch;
         b.tris.clear();
+        b.boxes.clear();
         b.extras.clear();
         b.lines.clear();
         b.points.clear();
@@ -950,11 +1072,11 @@ impl Flight {
 /// within `surface` (`bins`, one list per band, emptied before), in
 /// submission order, and estimates each band's work into `weight`: the
 /// pixels of the boxes within the band plus [`SETUP_PIXELS`] a record.
-fn list_bands(tris: &[Binned], surface: Rect, rows: usize, bins: &mut [Vec<u32>], weight: &mut Vec<u64>) {
+fn list_bands(boxes: &[BinBox], surface: Rect, rows: usize, bins: &mut [Vec<u32>], weight: &mut Vec<u64>) {
     weight.clear();
     weight.resize(bins.len(), 0);
-    for (i, t) in tris.iter().enumerate() {
-        let b = t.bbox.intersect(surface);
+    for (i, &t) in boxes.iter().enumerate() {
+        let b = rect_of(t).intersect(surface);
         if b.is_empty() {
             continue;
         }
@@ -970,7 +1092,7 @@ fn list_bands(tris: &[Binned], surface: Rect, rows: usize, bins: &mut [Vec<u32>]
 impl pool::Work for Flight {
     fn work(&self) {
         let b = &self.batch;
-        let of = |t: &Binned| (&*b.states[t.state as usize], b.extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
+        let of = |t: &Binned| (&*b.states[t.state as usize], b.extras.get(t.extra()).unwrap_or(&NO_EXTRA));
         let raw = &self.raw;
         let stamp_target = StampTarget { color: raw.color, depth: raw.depth, width: raw.width };
         let mut local = 0u64;
@@ -1003,13 +1125,13 @@ impl pool::Work for Flight {
                 while let Some((_, op)) = ops.next_if(|(at, _)| *at <= i as usize) {
                     band_op(&**op);
                 }
-                let t = &b.tris[i as usize];
-                let r = t.bbox.intersect(tile);
+                let r = rect_of(b.boxes[i as usize]).intersect(tile);
                 if r.is_empty() {
                     continue;
                 }
+                let t = &b.tris[i as usize];
                 let (st, extra) = of(t);
-                if t.prim != TRIANGLE {
+                if !t.is_triangle() {
                     // Safety: the band's rows, which no other thread holds.
                     let px = unsafe { raw.span(y, 0, (tile.y1 as usize - y) * raw.width) };
                     let mut band = runs::Band { px, base: y * raw.width };
@@ -1171,16 +1293,16 @@ fn shade_here(b: &Batch, fb: &mut Framebuffer) {
     let surface = Rect::new(0, 0, fb.width as i32, fb.height as i32);
     let width = fb.width;
     let mut ops = b.ops.iter().peekable();
-    for (i, t) in b.tris.iter().enumerate() {
+    for (i, (t, &bbox)) in b.tris.iter().zip(&b.boxes).enumerate() {
         while let Some((_, op)) = ops.next_if(|(at, _)| *at <= i) {
             op.band(0, fb.height, width, &mut fb.color[..], &mut fb.accum[..]);
         }
-        let (st, extra) = (&*b.states[t.state as usize], b.extras.get(t.extra as usize).unwrap_or(&NO_EXTRA));
-        if t.prim != TRIANGLE {
-            draw_prim(b, t, st, fb, width, t.bbox.intersect(surface));
+        let (st, extra) = (&*b.states[t.state as usize], b.extras.get(t.extra()).unwrap_or(&NO_EXTRA));
+        if !t.is_triangle() {
+            draw_prim(b, t, st, fb, width, rect_of(bbox).intersect(surface));
             continue;
         }
-        shade_binned(t, st, extra, t.bbox.intersect(surface), |how| {
+        shade_binned(t, st, extra, rect_of(bbox).intersect(surface), |how| {
             let passed = match how {
                 Shading::Span(k, setup, py, lo, hi) => {
                     let mut px = SpanPixels::of(fb, py, lo, hi);
@@ -1236,16 +1358,17 @@ mod tests {
     fn reserved_batches_take_the_filled_size() {
         let mut filled = Batch::default();
         for i in 0..5000 {
-            filled.tris.push(prim_record(Rect::new(0, 0, 1, 1), 0, i));
+            push_prim(&mut filled, Rect::new(0, 0, 1, 1), 0, i);
         }
         filled.extras.push(NO_EXTRA);
         let mut spare = Batch::default();
         spare.reserve_like(&filled);
         assert!(spare.tris.is_empty() && spare.tris.capacity() >= filled.tris.capacity());
+        assert!(spare.boxes.is_empty() && spare.boxes.capacity() >= spare.tris.capacity(), "room for a box per record");
         assert!(spare.extras.capacity() >= filled.extras.capacity());
         let at = spare.tris.as_ptr();
         let mut small = Batch::default();
-        small.tris.push(prim_record(Rect::new(0, 0, 1, 1), 0, 0));
+        push_prim(&mut small, Rect::new(0, 0, 1, 1), 0, 0);
         spare.reserve_like(&small);
         assert_eq!(spare.tris.as_ptr(), at, "a large enough batch is not reallocated");
     }
@@ -1279,9 +1402,7 @@ mod tests {
                     2 => Rect { x0: next(w + 4) - 2, y0: -5, x1: w + 5, y1: h + next(9) },
                     _ => Rect { x0: next(w), y0, x1: next(w + 1), y1: y0 + next(100) - 10 },
                 };
-                let mut t = prim_record(bbox, 0, TRIANGLE);
-                t.prim = TRIANGLE;
-                flight.batch.tris.push(t);
+                push_prim(&mut flight.batch, bbox, 0, TRIANGLE | NO_EXTRA_INDEX);
             }
             let bands = (h as usize).div_ceil(rows);
             flight.bins.get_mut().resize_with(bands, Vec::new);
@@ -1292,7 +1413,7 @@ mod tests {
             let expected: Vec<Vec<u32>> = (0..bands)
                 .map(|k| {
                     let band = Rect { x0: 0, y0: (k * rows) as i32, x1: w, y1: ((k + 1) * rows) as i32 }.intersect(surface);
-                    (0..n as u32).filter(|&i| !flight.batch.tris[i as usize].bbox.intersect(surface).intersect(band).is_empty()).collect()
+                    (0..n as u32).filter(|&i| !rect_of(flight.batch.boxes[i as usize]).intersect(surface).intersect(band).is_empty()).collect()
                 })
                 .collect();
             let f = &*flight;
@@ -1309,7 +1430,7 @@ mod tests {
                 .map(|k| {
                     let band = Rect { x0: 0, y0: (k * rows) as i32, x1: w, y1: ((k + 1) * rows) as i32 }.intersect(surface);
                     let cost = |i: u32| {
-                        let b = flight.batch.tris[i as usize].bbox.intersect(surface).intersect(band);
+                        let b = rect_of(flight.batch.boxes[i as usize]).intersect(surface).intersect(band);
                         (b.x1 - b.x0) as u64 * (b.y1 - b.y0) as u64 + SETUP_PIXELS
                     };
                     expected[k].iter().map(|&i| cost(i)).sum()
