@@ -277,7 +277,8 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
     // common states, shaded as one (`fragment::stamp`).
     let centres = raster::CentreBox::of(ex, ey, rs.draw_rect);
     if rs.polygon_stipple.is_none() && !rs.reference && !fb.draw_both {
-        if let Some(cover) = raster::Cover::find_in(ex, ey, centres) {
+        let mut cover = raster::Cover::EMPTY;
+        if cover.find_in(ex, ey, centres) {
             if !cover.is_empty() {
                 shade_cover(rs, fb, zq, v, ex, ey, flat_color[back as usize], back, front_facing, &cover);
             }
@@ -316,7 +317,7 @@ fn shade_cover<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Fra
         }
         None => {
             let k = raster::kernel(rs, fb, &setup);
-            raster::Runs::of_cover(cover).shade(rs, fb, &setup, k)
+            raster::shade_runs(cover.rows(), rs, fb, &setup, k)
         }
     }
 }

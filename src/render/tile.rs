@@ -663,7 +663,8 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
     let zq = t.v.map(|v| (v.z, v.q));
     let centres = raster::CentreBox::of(t.x, t.y, rect);
     if stipple.is_none() {
-        if let Some(cover) = raster::Cover::find_in(t.x, t.y, centres) {
+        let mut cover = raster::Cover::EMPTY;
+        if cover.find_in(t.x, t.y, centres) {
             if cover.is_empty() {
                 return;
             }

@@ -151,6 +151,44 @@ mod x86 {
         _mm256_cvtpd_ps(if CS == CS_PERSPECTIVE { _mm256_mul_pd(v, w) } else { v })
     }
 
+    /// Four pixels of a row, columns `at .. at + 4` of the target, the
+    /// covered ones (`nibble`) only: depth (row term `zr`, per pixel
+    /// `zr + zdx * cx`), then colour (row terms `cr`, one channel a lane,
+    /// and `qr`), or the block's `src`. Returns the passing lanes' bits.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn group<const D: u8, const CS: u8, const CO: u8>(px: &Target, at: usize, nibble: u32, zr: __m256d, cr: __m256d, qr: __m256d, cx: __m256d, zdx: __m256d, qdx: __m256d, cdx: &[__m256d; 4], src: __m128i, afix: __m128i) -> i32 {
+        let bit = _mm_setr_epi32(1, 2, 4, 8);
+        let one = _mm256_set1_pd(1.0);
+        let mut lanes = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(nibble as i32), bit), bit);
+        if D != D_OFF {
+            let z = _mm256_add_pd(zr, _mm256_mul_pd(zdx, cx));
+            let z = _mm256_min_pd(_mm256_max_pd(z, _mm256_setzero_pd()), one);
+            let z = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(z, _mm256_set1_pd(DEPTH_MAX as f64)), _mm256_set1_pd(0.5)));
+            let dp = px.depth.add(at).cast::<i32>();
+            let stored = _mm_maskload_epi32(dp, lanes);
+            let sign = _mm_set1_epi32(i32::MIN);
+            let (zs, ss) = (_mm_xor_si128(z, sign), _mm_xor_si128(stored, sign));
+            let pass = if D == D_LESS { _mm_cmplt_epi32(zs, ss) } else { _mm_xor_si128(_mm_cmpgt_epi32(zs, ss), _mm_set1_epi32(-1)) };
+            lanes = _mm_and_si128(lanes, pass);
+            _mm_maskstore_epi32(dp, lanes, z);
+        }
+        let m = _mm_movemask_ps(_mm_castsi128_ps(lanes));
+        if CO != CO_NONE && m != 0 {
+            let mut src = src;
+            if CS == CS_AFFINE || CS == CS_PERSPECTIVE {
+                let w = if CS == CS_PERSPECTIVE { _mm256_div_pd(one, _mm256_add_pd(qr, _mm256_mul_pd(qdx, cx))) } else { one };
+                let r = channel::<CS>(_mm256_permute4x64_pd::<0x00>(cr), cdx[0], cx, w);
+                let g = channel::<CS>(_mm256_permute4x64_pd::<0x55>(cr), cdx[1], cx, w);
+                let b = channel::<CS>(_mm256_permute4x64_pd::<0xAA>(cr), cdx[2], cx, w);
+                let a = channel::<CS>(_mm256_permute4x64_pd::<0xFF>(cr), cdx[3], cx, w);
+                src = _mm_or_si128(pixels(r, g, b, a), afix);
+            }
+            _mm_maskstore_epi32(px.color.add(at).cast::<i32>(), lanes, src);
+        }
+        m
+    }
+
     /// The block kernel: the cover's rows bottom to top, four pixels
     /// (columns col0 .. col0 + 3) in the lanes of each row, only the
     /// covered ones read or written.
@@ -161,10 +199,7 @@ mod x86 {
         let cx = _mm256_add_pd(_mm256_set1_pd(cx0), _mm256_setr_pd(0.0, 1.0, 2.0, 3.0));
         let zdx = _mm256_set1_pd(t.z.dx);
         let qdx = _mm256_set1_pd(t.q.dx);
-        let one = _mm256_set1_pd(1.0);
-        let (zero, scale, half) = (_mm256_setzero_pd(), _mm256_set1_pd(DEPTH_MAX as f64), _mm256_set1_pd(0.5));
-        let sign = _mm_set1_epi32(i32::MIN);
-        let bit = _mm_setr_epi32(1, 2, 4, 8);
+        let zero = _mm256_setzero_pd();
         let afix = _mm_set1_epi32(((fs.alpha_fix as u32) << 24) as i32);
         // Colour planes: channels side by side for the row terms, each
         // channel's dx in every lane for the pixels.
@@ -182,48 +217,33 @@ mod x86 {
         }
         src = _mm_or_si128(src, afix);
         let mut passed = 0u64;
-        let mut mask = c.mask;
         let mut at = c.row0 * px.width + c.col0;
-        let mut row = c.row0;
-        while mask != 0 {
-            let bits = mask & 15;
-            mask >>= 4;
+        for j in 0..c.height() {
+            let bits = c.row(j);
             if bits != 0 {
-                let cy = row as i64 as f64 + 0.5 - t.y0;
-                let mut lanes = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(bits as i32), bit), bit);
-                if D != D_OFF {
-                    let zr = t.z.a0 + t.z.dy * cy;
-                    let z = _mm256_add_pd(_mm256_set1_pd(zr), _mm256_mul_pd(zdx, cx));
-                    let z = _mm256_min_pd(_mm256_max_pd(z, zero), one);
-                    let z = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(z, scale), half));
-                    let dp = px.depth.add(at).cast::<i32>();
-                    let stored = _mm_maskload_epi32(dp, lanes);
-                    let (zs, ss) = (_mm_xor_si128(z, sign), _mm_xor_si128(stored, sign));
-                    let pass = if D == D_LESS { _mm_cmplt_epi32(zs, ss) } else { _mm_xor_si128(_mm_cmpgt_epi32(zs, ss), _mm_set1_epi32(-1)) };
-                    lanes = _mm_and_si128(lanes, pass);
-                    _mm_maskstore_epi32(dp, lanes, z);
-                }
-                let m = _mm_movemask_ps(_mm_castsi128_ps(lanes));
-                passed += m.count_ones() as u64;
-                if CO != CO_NONE && m != 0 {
-                    if CS == CS_AFFINE || CS == CS_PERSPECTIVE {
-                        let cr = _mm256_add_pd(ca0, _mm256_mul_pd(cdy, _mm256_set1_pd(cy)));
-                        let w = if CS == CS_PERSPECTIVE {
-                            let qr = t.q.a0 + t.q.dy * cy;
-                            _mm256_div_pd(one, _mm256_add_pd(_mm256_set1_pd(qr), _mm256_mul_pd(qdx, cx)))
-                        } else {
-                            one
-                        };
-                        let r = channel::<CS>(_mm256_permute4x64_pd::<0x00>(cr), cdx[0], cx, w);
-                        let g = channel::<CS>(_mm256_permute4x64_pd::<0x55>(cr), cdx[1], cx, w);
-                        let b = channel::<CS>(_mm256_permute4x64_pd::<0xAA>(cr), cdx[2], cx, w);
-                        let a = channel::<CS>(_mm256_permute4x64_pd::<0xFF>(cr), cdx[3], cx, w);
-                        src = _mm_or_si128(pixels(r, g, b, a), afix);
+                let cy = (c.row0 + j) as i64 as f64 + 0.5 - t.y0;
+                // The row terms, as the span kernel computes them once a
+                // row (`a0 + dy * cy`).
+                let zr = _mm256_set1_pd(t.z.a0 + t.z.dy * cy);
+                let (mut cr, mut qr) = (zero, zero);
+                if CO != CO_NONE && (CS == CS_AFFINE || CS == CS_PERSPECTIVE) {
+                    cr = _mm256_add_pd(ca0, _mm256_mul_pd(cdy, _mm256_set1_pd(cy)));
+                    if CS == CS_PERSPECTIVE {
+                        qr = _mm256_set1_pd(t.q.a0 + t.q.dy * cy);
                     }
-                    _mm_maskstore_epi32(px.color.add(at).cast::<i32>(), lanes, src);
+                }
+                // The groups of four columns with a covered pixel (the
+                // centres `cx + 4 g` are exact: multiples of 1/256).
+                let mut bits = bits;
+                while bits != 0 {
+                    let g = bits.trailing_zeros() & !3;
+                    let nibble = (bits >> g) & 15;
+                    bits &= !(15 << g);
+                    let cxg = _mm256_add_pd(cx, _mm256_set1_pd(g as f64));
+                    let m = group::<D, CS, CO>(px, at + g as usize, nibble, zr, cr, qr, cxg, zdx, qdx, &cdx, src, afix);
+                    passed += m.count_ones() as u64;
                 }
             }
-            row += 1;
             at += px.width;
         }
         passed
@@ -235,7 +255,7 @@ mod tests {
     use super::super::{fast, reference, ColorOp, CompareFunc, SpanPixels};
     use super::*;
     use crate::framebuffer::{Rect, DEPTH_MAX};
-    use crate::render::raster::{Cover, Runs};
+    use crate::render::raster::Cover;
     use crate::render::setup::{Plane, ONE};
 
     /// A random plane whose values over the block lie in about
@@ -266,15 +286,16 @@ mod tests {
             eprintln!("no AVX2: no block kernels");
             return;
         }
-        const W: usize = 24;
-        const H: usize = 24;
+        const W: usize = 48;
+        const H: usize = 44;
         let mut rnd = crate::render::test_rng::below(1313, 19);
-        let (mut shaded, mut written, mut ties, mut kinds) = (0usize, 0u64, 0usize, [0usize; 4]);
+        let (mut shaded, mut written, mut ties, mut kinds, mut wide, mut tall_covers) = (0usize, 0u64, 0usize, [0usize; 4], 0usize, 0usize);
         for n in 0..120_000 {
-            let size = [ONE, 2 * ONE, 4 * ONE, 7 * ONE][n % 4];
-            let (bx, by) = (rnd(16 * ONE) + 2 * ONE, rnd(14 * ONE) + 2 * ONE);
+            // Round 14: also boxes up to 32 columns and 32 rows.
+            let (size, tall) = [(ONE, ONE), (2 * ONE, 2 * ONE), (4 * ONE, 4 * ONE), (7 * ONE, 7 * ONE), (8 * ONE, 14 * ONE), (15 * ONE, 30 * ONE), (31 * ONE, 31 * ONE)][n % 7];
+            let (bx, by) = (rnd(12 * ONE) + 2 * ONE, rnd(10 * ONE) + 2 * ONE);
             let mut x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
-            let mut y = [by + rnd(size), by + rnd(size), by + rnd(size)];
+            let mut y = [by + rnd(tall), by + rnd(tall), by + rnd(tall)];
             if n % 4 == 1 {
                 x = x.map(|c| c & !(ONE / 2 - 1));
                 y = y.map(|c| c & !(ONE / 2 - 1));
@@ -360,7 +381,7 @@ mod tests {
             for k in [fast::select(&fs, &t, false), reference::shade_span as fast::Kernel] {
                 let (mut c2, mut d2, mut s2) = (color.clone(), depth.clone(), stencil.clone());
                 let mut expect = 0;
-                for (py, lo, hi) in Runs::of_cover(&cover).iter() {
+                for (py, lo, hi) in cover.rows() {
                     let (a, b) = (py * W + lo, py * W + hi);
                     let mut px = SpanPixels { color: &mut c2[a..b], depth: &mut d2[a..b], stencil: &mut s2[a..b], other: None, passed: 0 };
                     k(&fs, &t, &mut px, py, lo, hi);
@@ -373,7 +394,9 @@ mod tests {
             }
             shaded += 1;
             written += passed;
+            wide += ((0..cover.height()).any(|j| cover.row(j) >= 1 << 16)) as usize;
+            tall_covers += (cover.height() > 8) as usize;
         }
-        assert!(shaded > 30_000 && written > 40_000 && ties > 20_000 && kinds.iter().all(|&k| k > 1000), "{shaded} {written} {ties} {kinds:?}");
+        assert!(shaded > 30_000 && written > 40_000 && ties > 20_000 && wide > 3_000 && tall_covers > 10_000 && kinds.iter().all(|&k| k > 1000), "{shaded} {written} {ties} {kinds:?} {wide} {tall_covers}");
     }
 }
