@@ -532,6 +532,13 @@ impl Cover {
         unsafe { self.mask[..self.rows][j].assume_init() }
     }
 
+    /// The rows' bits, bottom to top.
+    #[inline(always)]
+    pub fn row_bits(&self) -> impl Iterator<Item = Row> + '_ {
+        // SAFETY: the first `rows` rows were written (`of_box`).
+        self.mask[..self.rows].iter().map(|m| unsafe { m.assume_init() })
+    }
+
     /// The covered runs (y, x0, x1), bottom to top.
     pub fn rows(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
         (0..self.rows).filter_map(move |j| {

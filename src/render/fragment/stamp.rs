@@ -151,13 +151,14 @@ mod x86 {
         _mm256_cvtpd_ps(if CS == CS_PERSPECTIVE { _mm256_mul_pd(v, w) } else { v })
     }
 
-    /// Four pixels of a row, columns `at .. at + 4` of the target, the
+    /// Four pixels of row `cy`, columns `at .. at + 4` of the target, the
     /// covered ones (`nibble`) only: depth (row term `zr`, per pixel
-    /// `zr + zdx * cx`), then colour (row terms `cr`, one channel a lane,
-    /// and `qr`), or the block's `src`. Returns the passing lanes' bits.
+    /// `zr + zdx * cx`), then colour (the planes' row terms and per pixel
+    /// values, perspective divided), or the block's `src`. Returns the
+    /// passing lanes' bits.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    unsafe fn group<const D: u8, const CS: u8, const CO: u8>(px: &Target, at: usize, nibble: u32, zr: __m256d, cr: __m256d, qr: __m256d, cx: __m256d, zdx: __m256d, qdx: __m256d, cdx: &[__m256d; 4], src: __m128i, afix: __m128i) -> i32 {
+    unsafe fn group<const D: u8, const CS: u8, const CO: u8>(px: &Target, t: &TriangleSetup, at: usize, nibble: u32, cy: f64, zr: __m256d, cx: __m256d, zdx: __m256d, qdx: __m256d, ca0: __m256d, cdy: __m256d, cdx: &[__m256d; 4], src: __m128i, afix: __m128i) -> i32 {
         let bit = _mm_setr_epi32(1, 2, 4, 8);
         let one = _mm256_set1_pd(1.0);
         let mut lanes = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(nibble as i32), bit), bit);
@@ -177,7 +178,16 @@ mod x86 {
         if CO != CO_NONE && m != 0 {
             let mut src = src;
             if CS == CS_AFFINE || CS == CS_PERSPECTIVE {
-                let w = if CS == CS_PERSPECTIVE { _mm256_div_pd(one, _mm256_add_pd(qr, _mm256_mul_pd(qdx, cx))) } else { one };
+                // The colour row terms (`a0 + dy * cy`, the channels side
+                // by side), only for groups that store: the same values
+                // in each group of a row.
+                let cr = _mm256_add_pd(ca0, _mm256_mul_pd(cdy, _mm256_set1_pd(cy)));
+                let w = if CS == CS_PERSPECTIVE {
+                    let qr = _mm256_set1_pd(t.q.a0 + t.q.dy * cy);
+                    _mm256_div_pd(one, _mm256_add_pd(qr, _mm256_mul_pd(qdx, cx)))
+                } else {
+                    one
+                };
                 let r = channel::<CS>(_mm256_permute4x64_pd::<0x00>(cr), cdx[0], cx, w);
                 let g = channel::<CS>(_mm256_permute4x64_pd::<0x55>(cr), cdx[1], cx, w);
                 let b = channel::<CS>(_mm256_permute4x64_pd::<0xAA>(cr), cdx[2], cx, w);
@@ -199,7 +209,6 @@ mod x86 {
         let cx = _mm256_add_pd(_mm256_set1_pd(cx0), _mm256_setr_pd(0.0, 1.0, 2.0, 3.0));
         let zdx = _mm256_set1_pd(t.z.dx);
         let qdx = _mm256_set1_pd(t.q.dx);
-        let zero = _mm256_setzero_pd();
         let afix = _mm_set1_epi32(((fs.alpha_fix as u32) << 24) as i32);
         // Colour planes: channels side by side for the row terms, each
         // channel's dx in every lane for the pixels.
@@ -218,32 +227,30 @@ mod x86 {
         src = _mm_or_si128(src, afix);
         let mut passed = 0u64;
         let mut at = c.row0 * px.width + c.col0;
-        for j in 0..c.height() {
-            let bits = c.row(j);
+        let mut row = c.row0;
+        for bits in c.row_bits() {
             if bits != 0 {
-                let cy = (c.row0 + j) as i64 as f64 + 0.5 - t.y0;
-                // The row terms, as the span kernel computes them once a
-                // row (`a0 + dy * cy`).
+                let cy = row as i64 as f64 + 0.5 - t.y0;
+                // The depth row term, as the span kernel computes it once
+                // a row (`a0 + dy * cy`).
                 let zr = _mm256_set1_pd(t.z.a0 + t.z.dy * cy);
-                let (mut cr, mut qr) = (zero, zero);
-                if CO != CO_NONE && (CS == CS_AFFINE || CS == CS_PERSPECTIVE) {
-                    cr = _mm256_add_pd(ca0, _mm256_mul_pd(cdy, _mm256_set1_pd(cy)));
-                    if CS == CS_PERSPECTIVE {
-                        qr = _mm256_set1_pd(t.q.a0 + t.q.dy * cy);
+                if bits < 16 {
+                    // One group (the tiny triangles of spheres_l).
+                    passed += group::<D, CS, CO>(px, t, at, bits, cy, zr, cx, zdx, qdx, ca0, cdy, &cdx, src, afix).count_ones() as u64;
+                } else {
+                    // The groups of four columns with a covered pixel
+                    // (the centres `cx + 4 g` are exact: multiples of 1/256).
+                    let mut bits = bits;
+                    while bits != 0 {
+                        let g = bits.trailing_zeros() & !3;
+                        let nibble = (bits >> g) & 15;
+                        bits &= !(15 << g);
+                        let cxg = _mm256_add_pd(cx, _mm256_set1_pd(g as f64));
+                        passed += group::<D, CS, CO>(px, t, at + g as usize, nibble, cy, zr, cxg, zdx, qdx, ca0, cdy, &cdx, src, afix).count_ones() as u64;
                     }
                 }
-                // The groups of four columns with a covered pixel (the
-                // centres `cx + 4 g` are exact: multiples of 1/256).
-                let mut bits = bits;
-                while bits != 0 {
-                    let g = bits.trailing_zeros() & !3;
-                    let nibble = (bits >> g) & 15;
-                    bits &= !(15 << g);
-                    let cxg = _mm256_add_pd(cx, _mm256_set1_pd(g as f64));
-                    let m = group::<D, CS, CO>(px, at + g as usize, nibble, zr, cr, qr, cxg, zdx, qdx, &cdx, src, afix);
-                    passed += m.count_ones() as u64;
-                }
             }
+            row += 1;
             at += px.width;
         }
         passed
