@@ -189,6 +189,13 @@ impl CentreBox {
         let col1 = (floor_div(xmax - half, ONE) + 1).min(rect.x1 as i64);
         CentreBox(row0, row1, col0, col1)
     }
+
+    /// How many pixel centres the box holds (0 when it is empty).
+    #[inline(always)]
+    pub fn count(&self) -> i64 {
+        let (rows, cols) = (self.1 - self.0, self.3 - self.2);
+        if rows > 0 && cols > 0 { rows * cols } else { 0 }
+    }
 }
 
 /// The covered pixels [lo, hi) of row `py` (empty when lo >= hi): by the
@@ -481,8 +488,13 @@ impl Cover {
     /// 13), though not by instructions.
     #[inline(always)]
     pub fn find_in(&mut self, x: [i64; 3], y: [i64; 3], b: CentreBox) -> bool {
-        self.of_box(x, y, b, 4)
+        self.of_box(x, y, b, Cover::SMALLEST)
     }
+
+    /// Boxes of at most this many centres are left to [`Runs::find_in`]
+    /// (callers may test `CentreBox::count` first, to keep the cover out
+    /// of the tiny triangles' path).
+    pub const SMALLEST: i64 = 4;
 
     /// The cover of box `b` into `self` when it has more than `smallest`
     /// centres (or none: no rows) and fits the block and the lanes, on a

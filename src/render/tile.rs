@@ -662,24 +662,8 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
     let a = [0, 1, 2].map(|i| BinAttributes { color: t.v[i].color, extra, i });
     let zq = t.v.map(|v| (v.z, v.q));
     let centres = raster::CentreBox::of(t.x, t.y, rect);
-    if stipple.is_none() {
-        let mut cover = raster::Cover::EMPTY;
-        if cover.find_in(t.x, t.y, centres) {
-            if cover.is_empty() {
-                return;
-            }
-            let setup = planes_of(st, zq, a.each_ref(), t.x, t.y, t.v[0].color, false, t.front_facing);
-            match st.stamp(&setup) {
-                Some(sk) => shade(Shading::Stamp(sk, &setup, &cover)),
-                None => {
-                    let k = st.kernel(&setup);
-                    for (py, lo, hi) in cover.rows() {
-                        shade(Shading::Span(k, &setup, py, lo, hi));
-                    }
-                }
-            }
-            return;
-        }
+    if centres.count() > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extra, centres, &mut shade) {
+        return;
     }
     let mut runs = raster::Runs::new();
     let found = runs.find_in(t.x, t.y, centres, rect, stipple);
@@ -695,6 +679,34 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
     } else {
         raster::spans(t.x, t.y, rect, stipple, |py, lo, hi| shade(Shading::Span(k, &setup, py, lo, hi)));
     }
+}
+
+/// [`shade_binned`] for a triangle whose box has more than
+/// `Cover::SMALLEST` centres: its cover and its block kernel, or the
+/// cover's runs; false when it does not fit the block. Not inlined
+/// (round 14): the cover stays off the tiny triangles' path.
+#[inline(never)]
+fn shade_binned_block(t: &Binned, st: &ShadeState, extra: &BinExtra, centres: raster::CentreBox, shade: &mut impl FnMut(Shading<'_>)) -> bool {
+    let mut cover = raster::Cover::EMPTY;
+    if !cover.find_in(t.x, t.y, centres) {
+        return false;
+    }
+    if cover.is_empty() {
+        return true;
+    }
+    let a = [0, 1, 2].map(|i| BinAttributes { color: t.v[i].color, extra, i });
+    let zq = t.v.map(|v| (v.z, v.q));
+    let setup = planes_of(st, zq, a.each_ref(), t.x, t.y, t.v[0].color, false, t.front_facing);
+    match st.stamp(&setup) {
+        Some(sk) => shade(Shading::Stamp(sk, &setup, &cover)),
+        None => {
+            let k = st.kernel(&setup);
+            for (py, lo, hi) in cover.rows() {
+                shade(Shading::Span(k, &setup, py, lo, hi));
+            }
+        }
+    }
+    true
 }
 
 /// Records glClear's writes `c` for the workers instead of writing them
