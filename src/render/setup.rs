@@ -276,8 +276,14 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
     // A tiny triangle (round 13) is covered as one block and, under the
     // common states, shaded as one (`fragment::stamp`).
     let centres = raster::CentreBox::of(ex, ey, rs.draw_rect);
-    if centres.count() > raster::Cover::SMALLEST && rs.polygon_stipple.is_none() && !rs.reference && !fb.draw_both && shade_block(rs, fb, zq, v, ex, ey, centres, flat_color[back as usize], back, front_facing) {
-        return;
+    if centres.count() > raster::Cover::SMALLEST && rs.polygon_stipple.is_none() && !rs.reference && !fb.draw_both {
+        let mut cover = raster::Cover::EMPTY;
+        if cover.find_in(ex, ey, centres) {
+            if !cover.is_empty() {
+                shade_cover(rs, fb, zq, v, ex, ey, flat_color[back as usize], back, front_facing, &cover);
+            }
+            return;
+        }
     }
     // A short triangle's runs are found first: covering no pixel (most
     // often through the stipple or between pixel centres), it needs no
@@ -293,24 +299,6 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
         Some(r) => r.shade(rs, fb, &setup, k),
         None => raster::triangle(rs, fb, ex, ey, &setup, k),
     }
-}
-
-/// Covers a triangle whose box has more than `Cover::SMALLEST` centres
-/// and shades it now (`shade_cover`); false when it does not fit the
-/// block. Not inlined (round 14): the cover (about 200 bytes) stays off
-/// the frame of the tiny triangles' path (immediate_1m was about 1.5 %
-/// slower by the clock with it inlined).
-#[allow(clippy::too_many_arguments)]
-#[inline(never)]
-fn shade_block<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], centres: raster::CentreBox, flat_color: Vec4, back: bool, front_facing: bool) -> bool {
-    let mut cover = raster::Cover::EMPTY;
-    if !cover.find_in(ex, ey, centres) {
-        return false;
-    }
-    if !cover.is_empty() {
-        shade_cover(rs, fb, zq, v, ex, ey, flat_color, back, front_facing, &cover);
-    }
-    true
 }
 
 /// Sets up and shades a small triangle's cover now: by its block kernel,

@@ -683,9 +683,8 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
 
 /// [`shade_binned`] for a triangle whose box has more than
 /// `Cover::SMALLEST` centres: its cover and its block kernel, or the
-/// cover's runs; false when it does not fit the block. Not inlined
-/// (round 14): the cover stays off the tiny triangles' path.
-#[inline(never)]
+/// cover's runs; false when it does not fit the block.
+#[inline(always)]
 fn shade_binned_block(t: &Binned, st: &ShadeState, extra: &BinExtra, centres: raster::CentreBox, shade: &mut impl FnMut(Shading<'_>)) -> bool {
     let mut cover = raster::Cover::EMPTY;
     if !cover.find_in(t.x, t.y, centres) {
