@@ -1,13 +1,13 @@
-//! Tiny triangles shaded as one block (GL 1.5 section 4.1, the per-fragment
-//! operations of [`super::fast`]'s kernels; round 13).
+//! Small triangles shaded as one block (GL 1.5 section 4.1, the per-fragment
+//! operations of [`super::fast`]'s kernels; round 13, widened in round 14).
 //!
-//! A triangle whose pixel centres fit a block of four columns and up to
-//! eight rows (`raster::Cover`: nearly every triangle of the sphere and
-//! million-vertex scenes at 1920x1080, one to six pixels each) is covered
-//! all at once and shaded here, a row of four pixels per set of lanes,
-//! instead of as a run per row through a span kernel (whose fixed cost per
-//! span, and `Runs::find`'s row solving, were most of the work on spans of
-//! one to four pixels).
+//! A triangle whose pixel centres fit a block of up to 32 columns and 48
+//! rows (`raster::Cover`: the sphere scenes' triangles at 1920x1080, and
+//! spheres_l's and the million-vertex scenes' tiny ones above 2x2 centres)
+//! is covered all at once and shaded here, per row each group of four
+//! columns holding a covered pixel in one set of lanes, instead of as a
+//! run per row through a span kernel (whose fixed cost per span, and
+//! `Runs::find`'s row solving, were most of the work on short spans).
 //!
 //! Covered: no stencil or alpha test; depth off, or LESS / LEQUAL with
 //! depth writes; colour flat, constant, affine or perspective (not stepped,
@@ -199,9 +199,9 @@ mod x86 {
         m
     }
 
-    /// The block kernel: the cover's rows bottom to top, four pixels
-    /// (columns col0 .. col0 + 3) in the lanes of each row, only the
-    /// covered ones read or written.
+    /// The block kernel: the cover's rows bottom to top, each row's groups
+    /// of four columns that hold a covered pixel in the lanes, only the
+    /// covered pixels read or written.
     #[target_feature(enable = "avx2")]
     pub(super) unsafe fn stamp_avx2<const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &Target, c: &Cover) -> u64 {
         // (Through i64: one conversion instruction, not usize's several.)
