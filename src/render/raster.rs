@@ -189,6 +189,13 @@ impl CentreBox {
         let col1 = (floor_div(xmax - half, ONE) + 1).min(rect.x1 as i64);
         CentreBox(row0, row1, col0, col1)
     }
+
+    /// How many pixel centres the box holds (0 when it is empty).
+    #[inline(always)]
+    pub fn count(&self) -> i64 {
+        let (rows, cols) = (self.1 - self.0, self.3 - self.2);
+        if rows > 0 && cols > 0 { rows * cols } else { 0 }
+    }
 }
 
 /// The covered pixels [lo, hi) of row `py` (empty when lo >= hi): by the
@@ -394,17 +401,6 @@ impl Runs {
         self.len == 0
     }
 
-    /// The runs of a [`Cover`]: each row's covered centres, which are
-    /// contiguous (the triangle is convex), as `find` would give them.
-    pub fn of_cover(c: &Cover) -> Runs {
-        let mut r = Runs::new();
-        for (py, lo, hi) in c.rows() {
-            r.runs[r.len].write((py as u32, lo as u32, hi as u32));
-            r.len += 1;
-        }
-        r
-    }
-
     /// The runs (y, x0, x1), bottom to top.
     pub fn iter(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
         // SAFETY: the first `len` runs were written by `find`.
@@ -413,37 +409,64 @@ impl Runs {
 
     /// Shades the runs now, on this thread, with kernel `k`.
     pub fn shade(&self, rs: &RenderState, fb: &mut Framebuffer, setup: &TriangleSetup, k: Kernel) {
-        for (py, lo, hi) in self.iter() {
-            let mut px = SpanPixels::of(fb, py, lo, hi);
-            k(&rs.fragment, setup, &mut px, py, lo, hi);
-            let passed = px.passed;
-            fb.samples_passed = fb.samples_passed.wrapping_add(passed);
-        }
+        shade_runs(self.iter(), rs, fb, setup, k)
     }
 }
 
-/// The covered pixel centres of a tiny triangle, found all at once
-/// (round 13): a block of up to [`Cover::COLS`] columns and
-/// [`Cover::ROWS`] rows from (col0, row0), bit `4 j + i` for pixel
-/// (col0 + i, row0 + j). The same exact edge tests as [`Runs::find`]
-/// (top-left rule included), so the same pixels; shaded as a block by
-/// `fragment::stamp` or, for states it does not cover, as the runs of
-/// [`Runs::of_cover`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Shades runs (y, x0, x1) now, on this thread, with span kernel `k`
+/// (a [`Runs`], or a [`Cover`]'s rows when its state has no block kernel).
+#[inline(always)]
+pub fn shade_runs(runs: impl Iterator<Item = (usize, usize, usize)>, rs: &RenderState, fb: &mut Framebuffer, setup: &TriangleSetup, k: Kernel) {
+    for (py, lo, hi) in runs {
+        let mut px = SpanPixels::of(fb, py, lo, hi);
+        k(&rs.fragment, setup, &mut px, py, lo, hi);
+        let passed = px.passed;
+        fb.samples_passed = fb.samples_passed.wrapping_add(passed);
+    }
+}
+
+/// The covered pixel centres of a small triangle, found all at once
+/// (round 13's 4x8 block, widened in round 14 for the sphere scenes'
+/// triangles): a block of up to [`Cover::COLS`] columns and
+/// [`Cover::ROWS`] rows from (col0, row0), bit `i` of row `j`
+/// ([`Cover::row`]) for pixel (col0 + i, row0 + j). The same exact edge
+/// tests as [`Runs::find`] (top-left rule included), so the same pixels;
+/// shaded as a block by `fragment::stamp` or, for states it does not
+/// cover, row by row ([`Cover::rows`]) by the span kernel.
+///
+/// Filled in place ([`Cover::find_in`]) and only its first `rows` rows
+/// written: it is 200 bytes, and moving or zeroing it per triangle cost
+/// spheres_m 9 M instructions of `memcpy` (3 frames).
+#[derive(Clone, Copy)]
 pub struct Cover {
     pub row0: usize,
     pub col0: usize,
-    pub mask: u32,
+    /// Rows of `mask` written (0: no pixel covered).
+    rows: usize,
+    mask: [std::mem::MaybeUninit<Row>; Cover::ROWS as usize],
+}
+
+/// One row of a [`Cover`]: bit i for column col0 + i.
+pub type Row = u32;
+
+impl std::fmt::Debug for Cover {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let rows: Vec<_> = (0..self.rows).map(|j| format!("{:b}", self.row(j))).collect();
+        write!(f, "Cover {{ row0: {}, col0: {}, rows: {rows:?} }}", self.row0, self.col0)
+    }
 }
 
 impl Cover {
-    /// The block's width: one row of pixels is one set of four lanes.
-    pub const COLS: i64 = 4;
-    /// The block's height (four bits a row in `mask`).
-    pub const ROWS: i64 = 8;
+    /// The block's width: a row is up to eight sets of four f64 lanes in
+    /// the block kernel, four sets of eight i32 lanes in the cover
+    /// (spheres_s's triangles at 1920x1080 are up to about 30 wide).
+    pub const COLS: i64 = 32;
+    /// The block's height: spheres_s's triangles at 1920x1080 are up to
+    /// about 35 rows tall; the rows are stepped in a loop.
+    pub const ROWS: i64 = 48;
 
     /// No pixel.
-    pub const EMPTY: Cover = Cover { row0: 0, col0: 0, mask: 0 };
+    pub const EMPTY: Cover = Cover { row0: 0, col0: 0, rows: 0, mask: [std::mem::MaybeUninit::uninit(); Cover::ROWS as usize] };
 
     /// The cover of triangle (x, y) (positively oriented) within `rect`
     /// when its box of pixel centres there fits the block, the extents
@@ -451,62 +474,93 @@ impl Cover {
     /// the block's (the tests' entry: the renderer asks [`Cover::find_in`],
     /// which leaves the smallest boxes to [`Runs`]); None otherwise. No
     /// stipple: callers with one do not ask.
-    #[inline(always)]
     pub fn find(x: [i64; 3], y: [i64; 3], rect: Rect) -> Option<Cover> {
-        Cover::of_box(x, y, CentreBox::of(x, y, rect), 0)
+        let mut c = Cover::EMPTY;
+        c.of_box(x, y, CentreBox::of(x, y, rect), 0).then_some(c)
     }
 
     /// [`Cover::find`] with the centre box already taken, for the
-    /// renderer. Boxes of at most 2x2 centres are left to
+    /// renderer, into `self`: false (and `self` not a cover) when it does
+    /// not fit. Boxes of at most 2x2 centres are left to
     /// [`Runs::find_in`]: its SSE2 lanes were faster by the clock for them
     /// (immediate_1m, whose triangles all cover one pixel of a 2x2 box:
     /// 39.5 ms a frame against 41.9 through the block, 1 thread, round
     /// 13), though not by instructions.
     #[inline(always)]
-    pub fn find_in(x: [i64; 3], y: [i64; 3], b: CentreBox) -> Option<Cover> {
-        Cover::of_box(x, y, b, 4)
+    pub fn find_in(&mut self, x: [i64; 3], y: [i64; 3], b: CentreBox) -> bool {
+        self.of_box(x, y, b, Cover::SMALLEST)
     }
 
-    /// The cover of box `b` when it has more than `smallest` centres
-    /// (or none: [`Cover::EMPTY`]) and fits the block and the lanes, on a
+    /// Boxes of at most this many centres are left to [`Runs::find_in`]
+    /// (callers may test `CentreBox::count` first, to keep the cover out
+    /// of the tiny triangles' path).
+    pub const SMALLEST: i64 = 4;
+
+    /// The cover of box `b` into `self` when it has more than `smallest`
+    /// centres (or none: no rows) and fits the block and the lanes, on a
     /// CPU with AVX2.
     #[inline(always)]
-    fn of_box(x: [i64; 3], y: [i64; 3], b: CentreBox, smallest: i64) -> Option<Cover> {
+    fn of_box(&mut self, x: [i64; 3], y: [i64; 3], b: CentreBox, smallest: i64) -> bool {
         let CentreBox(row0, row1, col0, col1) = b;
         let (rows, cols) = (row1 - row0, col1 - col0);
         // No pixel centre in the box (most triangles smaller than a
         // pixel): nothing to test.
         if rows <= 0 || cols <= 0 {
-            return Some(Cover::EMPTY);
+            self.rows = 0;
+            return true;
         }
         if rows * cols <= smallest || rows > Cover::ROWS || cols > Cover::COLS || !stamp_level() || !lanes_fit(x, y) {
-            return None;
+            return false;
         }
         #[cfg(target_arch = "x86_64")]
         {
+            (self.row0, self.col0) = (row0 as usize, col0 as usize);
             // SAFETY: `stamp_level` saw AVX2; the values fit in i32
-            // (`lanes_fit`, and `cover_avx2`'s bound).
-            let mask = unsafe { cover_avx2(x, y, row0, rows, col0, cols) };
-            Some(Cover { row0: row0 as usize, col0: col0 as usize, mask })
+            // (`lanes_fit`, and `cover_avx2`'s bound). It writes the
+            // first `rows` rows.
+            let any = unsafe { cover_avx2(x, y, row0, rows, col0, cols, &mut self.mask) };
+            self.rows = if any == 0 { 0 } else { rows as usize };
+            true
         }
         #[cfg(not(target_arch = "x86_64"))]
-        None
+        false
     }
 
     pub fn is_empty(&self) -> bool {
-        self.mask == 0
+        self.rows == 0
+    }
+
+    /// Rows of the cover (0 when no pixel is covered).
+    #[inline(always)]
+    pub fn height(&self) -> usize {
+        self.rows
+    }
+
+    /// Row `j` (< `height()`) of the cover.
+    #[inline(always)]
+    pub fn row(&self, j: usize) -> Row {
+        // SAFETY: the first `rows` rows were written (`of_box`); the
+        // slice's bounds check keeps j there.
+        unsafe { self.mask[..self.rows][j].assume_init() }
+    }
+
+    /// The rows' bits, bottom to top.
+    #[inline(always)]
+    pub fn row_bits(&self) -> impl Iterator<Item = Row> + '_ {
+        // SAFETY: the first `rows` rows were written (`of_box`).
+        self.mask[..self.rows].iter().map(|m| unsafe { m.assume_init() })
     }
 
     /// The covered runs (y, x0, x1), bottom to top.
     pub fn rows(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
-        (0..Cover::ROWS as usize).filter_map(move |j| {
-            let bits = (self.mask >> (4 * j)) & 15;
-            (bits != 0).then(|| (self.row0 + j, self.col0 + bits.trailing_zeros() as usize, self.col0 + (32 - bits.leading_zeros()) as usize))
+        (0..self.rows).filter_map(move |j| {
+            let bits = self.row(j);
+            (bits != 0).then(|| (self.row0 + j, self.col0 + bits.trailing_zeros() as usize, self.col0 + (Row::BITS - bits.leading_zeros()) as usize))
         })
     }
 }
 
-/// Are tiny triangles covered and shaded as blocks on this thread
+/// Are small triangles covered and shaded as blocks on this thread
 /// (AVX2, not lowered by `SOFTGL_SIMD` or a test)?
 #[inline(always)]
 fn stamp_level() -> bool {
@@ -514,20 +568,24 @@ fn stamp_level() -> bool {
 }
 
 /// The cover of the box [row0, row0 + rows) x [col0, col0 + cols) (at
-/// most `Cover::ROWS` by `Cover::COLS`, not empty): each edge function at
-/// two rows of four centres in eight i32 lanes, stepped two rows at a
-/// time; a centre is outside when the union of its three values has the
-/// sign bit. The three edges are set up side by side in four lanes.
+/// most `Cover::ROWS` by `Cover::COLS`, not empty) into `mask` (one `Row`
+/// a row), returning the union of the rows' bits: each edge function at
+/// the centres in i32 lanes, a centre outside when the union of its three
+/// values has the sign bit. Boxes up to four columns wide take two rows
+/// of four centres per eight lanes, stepped two rows at a time; wider ones
+/// a row at a time in one, two or four sets of eight lanes
+/// (`cover_rows`). The three edges are set up side by side in four lanes.
 ///
 /// Exact: each lane holds `Edge::new`'s E = dx (Py - ya) - dy (Px - xa) -
 /// bias at its centre P. With both extents at most 2^14 (`lanes_fit`)
 /// and the box's first centre within them, the vertices relative to that
 /// centre are within 2^14, the edge vectors within 2^14, every centre of
-/// the block (up to 3 columns and 7 rows further) within 2^14 + 2^11 of
-/// every vertex, so |E| < 2^29.3 and no lane wraps.
+/// the lanes (up to 31 columns past the first, and the box's rows, which
+/// lie within the y extent) within 2^14 + 2^13 of every vertex, so
+/// |E| < 2^14 (2^14 + 2^8) + 2^14 (2^14 + 2^13) < 2^29.6 and no lane wraps.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn cover_avx2(x: [i64; 3], y: [i64; 3], row0: i64, rows: i64, col0: i64, cols: i64) -> u32 {
+unsafe fn cover_avx2(x: [i64; 3], y: [i64; 3], row0: i64, rows: i64, col0: i64, cols: i64, mask: &mut [std::mem::MaybeUninit<Row>; Cover::ROWS as usize]) -> u32 {
     use std::arch::x86_64::*;
     let half = ONE / 2;
     let (px, py) = (col0 * ONE + half, row0 * ONE + half);
@@ -546,28 +604,78 @@ unsafe fn cover_avx2(x: [i64; 3], y: [i64; 3], row0: i64, rows: i64, col0: i64, 
     // Steps: a column is -256 dy, a row 256 dx.
     let a = _mm_slli_epi32::<8>(_mm_sub_epi32(zero, dy));
     let b = _mm_slli_epi32::<8>(dx);
-    let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
-    let lane_j = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
-    let mut v = [_mm256_setzero_si256(); 3];
-    let mut step = [_mm256_setzero_si256(); 3];
-    for e in 0..3 {
-        let (be, ae) = (lane_of(b, e as i32), lane_of(a, e as i32));
-        v[e] = _mm256_add_epi32(lane_of(first, e as i32), _mm256_add_epi32(_mm256_mullo_epi32(ae, lane_i), _mm256_mullo_epi32(be, lane_j)));
-        step[e] = _mm256_add_epi32(be, be);
-    }
-    let mut outside = 0u32;
-    let mut j = 0;
-    while j < rows {
-        let any = _mm256_or_si256(_mm256_or_si256(v[0], v[1]), v[2]);
-        outside |= (_mm256_movemask_ps(_mm256_castsi256_ps(any)) as u32) << (4 * j);
+    let columns = ((1u64 << cols) - 1) as Row;
+    let mut any = 0u32;
+    if cols <= 4 {
+        // Two rows of four centres in the eight lanes.
+        let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
+        let lane_j = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
+        let (mut v, mut step) = ([_mm256_setzero_si256(); 3], [_mm256_setzero_si256(); 3]);
         for e in 0..3 {
-            v[e] = _mm256_add_epi32(v[e], step[e]);
+            let (be, ae) = (lane_of(b, e as i32), lane_of(a, e as i32));
+            v[e] = _mm256_add_epi32(lane_of(first, e as i32), _mm256_add_epi32(_mm256_mullo_epi32(ae, lane_i), _mm256_mullo_epi32(be, lane_j)));
+            step[e] = _mm256_add_epi32(be, be);
         }
-        j += 2;
+        let mut j = 0;
+        while j < rows {
+            let out = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(v[0], v[1]), v[2]))) as u32;
+            let (m0, m1) = (!out as Row & columns, !(out >> 4) as Row & columns);
+            mask[j as usize].write(m0);
+            any |= m0 as u32;
+            if j + 1 < rows {
+                mask[j as usize + 1].write(m1);
+                any |= m1 as u32;
+            }
+            for e in 0..3 {
+                v[e] = _mm256_add_epi32(v[e], step[e]);
+            }
+            j += 2;
+        }
+    } else if cols <= 8 {
+        any = cover_rows::<1>(first, a, b, rows, columns, mask);
+    } else if cols <= 16 {
+        any = cover_rows::<2>(first, a, b, rows, columns, mask);
+    } else {
+        any = cover_rows::<4>(first, a, b, rows, columns, mask);
     }
-    // The box's columns in each of its rows.
-    let row_bits = (0x1111_1111u64 & ((1u64 << (4 * rows)) - 1)) as u32;
-    !outside & (row_bits * ((1u32 << cols) - 1))
+    any
+}
+
+/// `cover_avx2`'s rows for boxes of more than four columns: a row's
+/// centres in `SETS` sets of eight i32 lanes (columns 8 k .. 8 k + 7 in
+/// set k), one row a step. `first`, `a`, `b`: the three edges' values at
+/// the box's first centre and their column and row steps, in lanes 0-2.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn cover_rows<const SETS: usize>(first: std::arch::x86_64::__m128i, a: std::arch::x86_64::__m128i, b: std::arch::x86_64::__m128i, rows: i64, columns: Row, mask: &mut [std::mem::MaybeUninit<Row>; Cover::ROWS as usize]) -> u32 {
+    use std::arch::x86_64::*;
+    let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    let (mut v, mut step) = ([[_mm256_setzero_si256(); SETS]; 3], [_mm256_setzero_si256(); 3]);
+    for e in 0..3 {
+        let ae = lane_of(a, e as i32);
+        v[e][0] = _mm256_add_epi32(lane_of(first, e as i32), _mm256_mullo_epi32(ae, lane_i));
+        for k in 1..SETS {
+            v[e][k] = _mm256_add_epi32(v[e][k - 1], _mm256_slli_epi32::<3>(ae));
+        }
+        step[e] = lane_of(b, e as i32);
+    }
+    let mut any = 0;
+    for m in mask.iter_mut().take(rows as usize) {
+        let mut out = 0u32;
+        for k in 0..SETS {
+            let union = _mm256_or_si256(_mm256_or_si256(v[0][k], v[1][k]), v[2][k]);
+            out |= (_mm256_movemask_ps(_mm256_castsi256_ps(union)) as u32) << (8 * k);
+        }
+        let bits = !out as Row & columns;
+        m.write(bits);
+        any |= bits;
+        for e in 0..3 {
+            for k in 0..SETS {
+                v[e][k] = _mm256_add_epi32(v[e][k], step[e]);
+            }
+        }
+    }
+    any as u32
 }
 
 /// Lane `e` of `v` in all eight lanes (a function, not a closure: a
@@ -767,9 +875,10 @@ mod tests {
         assert!(compared > 100_000 && covered > 50_000 && at_extent > 10_000 && ties > 5_000, "{compared} {covered} {at_extent} {ties}");
     }
 
-    /// A tiny triangle's block cover (round 13) has exactly `Runs::find`'s
-    /// runs: random triangles of every orientation whose centre boxes
-    /// are up to 5 columns and 9 rows (so some do not fit the block), on
+    /// A small triangle's block cover (round 13, widened in round 14) has
+    /// exactly `Runs::find`'s runs where it finds them, and `spans`' runs:
+    /// random triangles of every orientation whose centre boxes are up to
+    /// 35 columns and 36 rows (so some do not fit the block), on
     /// the half-pixel grid in a fifth of them (centres on edges: the
     /// top-left rule decides), horizontal and vertical edges, slivers and
     /// degenerate ones, large ones cut to a small box by a random
@@ -782,18 +891,23 @@ mod tests {
             return;
         }
         let mut rnd = crate::render::test_rng::below(2026, 21);
-        let (mut compared, mut covered, mut ties, mut cut, mut flat) = (0, 0, 0, 0, 0);
+        let (mut compared, mut covered, mut ties, mut cut, mut flat, mut wide, mut tall_ones) = (0, 0, 0, 0, 0, 0, 0);
         for n in 0..400_000 {
-            let size = match n % 5 {
-                0 => 2 * ONE,
-                1 => 4 * ONE,
-                2 => 6 * ONE,
-                3 => 64 * ONE,
-                _ => ONE / 2,
+            // Round 14: also boxes up to 35 columns and 36 rows (the
+            // sphere strips' narrow triangles), some too large.
+            let (size, tall) = match n % 8 {
+                0 => (2 * ONE, 2 * ONE),
+                1 => (4 * ONE, 4 * ONE),
+                2 => (6 * ONE, 6 * ONE),
+                3 => (64 * ONE, 64 * ONE),
+                4 => (9 * ONE + rnd(26 * ONE), 9 * ONE + rnd(27 * ONE)),
+                5 => (4 * ONE + rnd(6 * ONE), 12 * ONE + rnd(24 * ONE)),
+                6 => (8 * ONE, 12 * ONE),
+                _ => (ONE / 2, ONE / 2),
             };
             let (bx, by) = (rnd(40 * ONE) - 20 * ONE, rnd(40 * ONE) - 20 * ONE);
             let mut x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
-            let mut y = [by + rnd(size), by + rnd(size), by + rnd(size)];
+            let mut y = [by + rnd(tall), by + rnd(tall), by + rnd(tall)];
             if n % 5 == 1 || n % 11 == 0 {
                 x = x.map(|c| c & !(ONE / 2 - 1));
                 y = y.map(|c| c & !(ONE / 2 - 1));
@@ -812,7 +926,7 @@ mod tests {
                 y.swap(1, 2);
             }
             flat += (area == 0) as usize;
-            let rect = if size > 8 * ONE || n % 3 == 0 {
+            let rect = if size > 32 * ONE || n % 3 == 0 {
                 // A band or a scissor box somewhere over the triangle.
                 let (cx, cy) = (x[rnd(3) as usize] / ONE, y[rnd(3) as usize] / ONE);
                 let (w, h) = (1 + rnd(6), 1 + rnd(10));
@@ -823,14 +937,22 @@ mod tests {
                 Rect { x0: -64, y0: -64, x1: 64, y1: 64 }
             };
             let Some(cover) = Cover::find(x, y, rect) else { continue };
-            let mut runs = Runs::new();
-            assert!(runs.find(x, y, rect, None), "a short triangle");
             // (Runs hold u32: compare negative coordinates as they wrap.)
             let narrow = |(py, lo, hi): (usize, usize, usize)| (py as u32, lo as u32, hi as u32);
-            let (c, r): (Vec<_>, Vec<_>) = (cover.rows().map(narrow).collect(), runs.iter().map(narrow).collect());
-            assert_eq!(c, r, "{x:?} {y:?} {rect:?} {cover:?}");
-            let of: Vec<_> = Runs::of_cover(&cover).iter().map(narrow).collect();
-            assert_eq!(of, r, "{x:?} {y:?} {rect:?}");
+            let c: Vec<_> = cover.rows().map(narrow).collect();
+            let mut runs = Runs::new();
+            if runs.find(x, y, rect, None) {
+                let r: Vec<_> = runs.iter().map(narrow).collect();
+                assert_eq!(c, r, "{x:?} {y:?} {rect:?} {cover:?}");
+            } else {
+                tall_ones += 1;
+            }
+            let mut r = Vec::new();
+            spans(x, y, rect, None, |py, lo, hi| r.push(narrow((py, lo, hi))));
+            assert_eq!(c, r, "spans: {x:?} {y:?} {rect:?} {cover:?}");
+            assert_eq!(cover.is_empty(), c.is_empty());
+            let CentreBox(_, _, col0, col1) = CentreBox::of(x, y, rect);
+            wide += (col1 - col0 > 16) as usize;
             compared += 1;
             covered += !c.is_empty() as usize;
             cut += (rect.x1 - rect.x0 < 8) as usize;
@@ -840,7 +962,7 @@ mod tests {
                 ties += (row0..row1).any(|py| (col0..col1).any(|px| edges.iter().any(|e| matches!(e.a * px + e.b * py + e.c, 0 | -1)))) as usize;
             }
         }
-        assert!(compared > 200_000 && covered > 80_000 && ties > 20_000 && cut > 30_000 && flat > 10_000, "{compared} {covered} {ties} {cut} {flat}");
+        assert!(compared > 200_000 && covered > 80_000 && ties > 20_000 && cut > 30_000 && flat > 10_000 && wide > 3_000 && tall_ones > 20_000, "{compared} {covered} {ties} {cut} {flat} {wide} {tall_ones}");
     }
 
     /// Stepping the span solution row by row gives `span`'s answer for

@@ -295,8 +295,9 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
     // A tiny triangle (round 13) is covered as one block and, under the
     // common states, shaded as one (`fragment::stamp`).
     let centres = raster::CentreBox::of(ex, ey, rs.draw_rect);
-    if rs.polygon_stipple.is_none() && !rs.reference && !fb.draw_both {
-        if let Some(cover) = raster::Cover::find_in(ex, ey, centres) {
+    if centres.count() > raster::Cover::SMALLEST && rs.polygon_stipple.is_none() && !rs.reference && !fb.draw_both {
+        let mut cover = raster::Cover::EMPTY;
+        if cover.find_in(ex, ey, centres) {
             if !cover.is_empty() {
                 shade_cover(rs, fb, zq, v, ex, ey, flat_color[back as usize], back, front_facing, &cover);
             }
@@ -319,7 +320,7 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
     }
 }
 
-/// Sets up and shades a tiny triangle's cover now: by its block kernel,
+/// Sets up and shades a small triangle's cover now: by its block kernel,
 /// or its runs by its span kernel when the state has no block kernel.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
@@ -335,7 +336,7 @@ fn shade_cover<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Fra
         }
         None => {
             let k = raster::kernel(rs, fb, &setup);
-            raster::Runs::of_cover(cover).shade(rs, fb, &setup, k)
+            raster::shade_runs(cover.rows(), rs, fb, &setup, k)
         }
     }
 }

@@ -778,29 +778,14 @@ enum Shading<'a> {
 #[inline]
 fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut shade: impl FnMut(Shading<'_>)) {
     let stipple = st.polygon_stipple.as_deref();
+    let (x, y) = t.xy();
+    let centres = raster::CentreBox::of(x, y, rect);
+    if centres.count() > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extra, (x, y), centres, &mut shade) {
+        return;
+    }
     let a = [0, 1, 2].map(|i| BinAttributes { color: Vec4::from_array(t.v[i].color), extra, i });
     let zq = t.v.map(|v| (v.z, v.q));
-    let (x, y) = t.xy();
     let (color, front_facing) = (Vec4::from_array(t.v[0].color), t.front_facing());
-    let centres = raster::CentreBox::of(x, y, rect);
-    if stipple.is_none() {
-        if let Some(cover) = raster::Cover::find_in(x, y, centres) {
-            if cover.is_empty() {
-                return;
-            }
-            let setup = planes_of(st, zq, a.each_ref(), x, y, color, false, front_facing);
-            match st.stamp(&setup) {
-                Some(sk) => shade(Shading::Stamp(sk, &setup, &cover)),
-                None => {
-                    let k = st.kernel(&setup);
-                    for (py, lo, hi) in cover.rows() {
-                        shade(Shading::Span(k, &setup, py, lo, hi));
-                    }
-                }
-            }
-            return;
-        }
-    }
     let mut runs = raster::Runs::new();
     let found = runs.find_in(x, y, centres, rect, stipple);
     if found && runs.is_empty() {
@@ -815,6 +800,33 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
     } else {
         raster::spans(x, y, rect, stipple, |py, lo, hi| shade(Shading::Span(k, &setup, py, lo, hi)));
     }
+}
+
+/// [`shade_binned`] for a triangle whose box has more than
+/// `Cover::SMALLEST` centres: its cover and its block kernel, or the
+/// cover's runs; false when it does not fit the block.
+#[inline(always)]
+fn shade_binned_block(t: &Binned, st: &ShadeState, extra: &BinExtra, (x, y): ([i64; 3], [i64; 3]), centres: raster::CentreBox, shade: &mut impl FnMut(Shading<'_>)) -> bool {
+    let mut cover = raster::Cover::EMPTY;
+    if !cover.find_in(x, y, centres) {
+        return false;
+    }
+    if cover.is_empty() {
+        return true;
+    }
+    let a = [0, 1, 2].map(|i| BinAttributes { color: Vec4::from_array(t.v[i].color), extra, i });
+    let zq = t.v.map(|v| (v.z, v.q));
+    let setup = planes_of(st, zq, a.each_ref(), x, y, Vec4::from_array(t.v[0].color), false, t.front_facing());
+    match st.stamp(&setup) {
+        Some(sk) => shade(Shading::Stamp(sk, &setup, &cover)),
+        None => {
+            let k = st.kernel(&setup);
+            for (py, lo, hi) in cover.rows() {
+                shade(Shading::Span(k, &setup, py, lo, hi));
+            }
+        }
+    }
+    true
 }
 
 /// Records glClear's writes `c` for the workers instead of writing them

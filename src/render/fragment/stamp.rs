@@ -1,13 +1,13 @@
-//! Tiny triangles shaded as one block (GL 1.5 section 4.1, the per-fragment
-//! operations of [`super::fast`]'s kernels; round 13).
+//! Small triangles shaded as one block (GL 1.5 section 4.1, the per-fragment
+//! operations of [`super::fast`]'s kernels; round 13, widened in round 14).
 //!
-//! A triangle whose pixel centres fit a block of four columns and up to
-//! eight rows (`raster::Cover`: nearly every triangle of the sphere and
-//! million-vertex scenes at 1920x1080, one to six pixels each) is covered
-//! all at once and shaded here, a row of four pixels per set of lanes,
-//! instead of as a run per row through a span kernel (whose fixed cost per
-//! span, and `Runs::find`'s row solving, were most of the work on spans of
-//! one to four pixels).
+//! A triangle whose pixel centres fit a block of up to 32 columns and 48
+//! rows (`raster::Cover`: the sphere scenes' triangles at 1920x1080, and
+//! spheres_l's and the million-vertex scenes' tiny ones above 2x2 centres)
+//! is covered all at once and shaded here, per row each group of four
+//! columns holding a covered pixel in one set of lanes, instead of as a
+//! run per row through a span kernel (whose fixed cost per span, and
+//! `Runs::find`'s row solving, were most of the work on short spans).
 //!
 //! Covered: no stencil or alpha test; depth off, or LESS / LEQUAL with
 //! depth writes; colour flat, constant, affine or perspective (not stepped,
@@ -151,9 +151,57 @@ mod x86 {
         _mm256_cvtpd_ps(if CS == CS_PERSPECTIVE { _mm256_mul_pd(v, w) } else { v })
     }
 
-    /// The block kernel: the cover's rows bottom to top, four pixels
-    /// (columns col0 .. col0 + 3) in the lanes of each row, only the
-    /// covered ones read or written.
+    /// Four pixels of row `cy`, columns `at .. at + 4` of the target, the
+    /// covered ones (`nibble`) only: depth (row term `zr`, per pixel
+    /// `zr + zdx * cx`), then colour (the planes' row terms and per pixel
+    /// values, perspective divided), or the block's `src`. Returns the
+    /// passing lanes' bits.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn group<const D: u8, const CS: u8, const CO: u8>(px: &Target, t: &TriangleSetup, at: usize, nibble: u32, cy: f64, zr: __m256d, cx: __m256d, zdx: __m256d, qdx: __m256d, ca0: __m256d, cdy: __m256d, cdx: &[__m256d; 4], src: __m128i, afix: __m128i) -> i32 {
+        let bit = _mm_setr_epi32(1, 2, 4, 8);
+        let one = _mm256_set1_pd(1.0);
+        let mut lanes = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(nibble as i32), bit), bit);
+        if D != D_OFF {
+            let z = _mm256_add_pd(zr, _mm256_mul_pd(zdx, cx));
+            let z = _mm256_min_pd(_mm256_max_pd(z, _mm256_setzero_pd()), one);
+            let z = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(z, _mm256_set1_pd(DEPTH_MAX as f64)), _mm256_set1_pd(0.5)));
+            let dp = px.depth.add(at).cast::<i32>();
+            let stored = _mm_maskload_epi32(dp, lanes);
+            let sign = _mm_set1_epi32(i32::MIN);
+            let (zs, ss) = (_mm_xor_si128(z, sign), _mm_xor_si128(stored, sign));
+            let pass = if D == D_LESS { _mm_cmplt_epi32(zs, ss) } else { _mm_xor_si128(_mm_cmpgt_epi32(zs, ss), _mm_set1_epi32(-1)) };
+            lanes = _mm_and_si128(lanes, pass);
+            _mm_maskstore_epi32(dp, lanes, z);
+        }
+        let m = _mm_movemask_ps(_mm_castsi128_ps(lanes));
+        if CO != CO_NONE && m != 0 {
+            let mut src = src;
+            if CS == CS_AFFINE || CS == CS_PERSPECTIVE {
+                // The colour row terms (`a0 + dy * cy`, the channels side
+                // by side), only for groups that store: the same values
+                // in each group of a row.
+                let cr = _mm256_add_pd(ca0, _mm256_mul_pd(cdy, _mm256_set1_pd(cy)));
+                let w = if CS == CS_PERSPECTIVE {
+                    let qr = _mm256_set1_pd(t.q.a0 + t.q.dy * cy);
+                    _mm256_div_pd(one, _mm256_add_pd(qr, _mm256_mul_pd(qdx, cx)))
+                } else {
+                    one
+                };
+                let r = channel::<CS>(_mm256_permute4x64_pd::<0x00>(cr), cdx[0], cx, w);
+                let g = channel::<CS>(_mm256_permute4x64_pd::<0x55>(cr), cdx[1], cx, w);
+                let b = channel::<CS>(_mm256_permute4x64_pd::<0xAA>(cr), cdx[2], cx, w);
+                let a = channel::<CS>(_mm256_permute4x64_pd::<0xFF>(cr), cdx[3], cx, w);
+                src = _mm_or_si128(pixels(r, g, b, a), afix);
+            }
+            _mm_maskstore_epi32(px.color.add(at).cast::<i32>(), lanes, src);
+        }
+        m
+    }
+
+    /// The block kernel: the cover's rows bottom to top, each row's groups
+    /// of four columns that hold a covered pixel in the lanes, only the
+    /// covered pixels read or written.
     #[target_feature(enable = "avx2")]
     pub(super) unsafe fn stamp_avx2<const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &Target, c: &Cover) -> u64 {
         // (Through i64: one conversion instruction, not usize's several.)
@@ -161,10 +209,6 @@ mod x86 {
         let cx = _mm256_add_pd(_mm256_set1_pd(cx0), _mm256_setr_pd(0.0, 1.0, 2.0, 3.0));
         let zdx = _mm256_set1_pd(t.z.dx);
         let qdx = _mm256_set1_pd(t.q.dx);
-        let one = _mm256_set1_pd(1.0);
-        let (zero, scale, half) = (_mm256_setzero_pd(), _mm256_set1_pd(DEPTH_MAX as f64), _mm256_set1_pd(0.5));
-        let sign = _mm_set1_epi32(i32::MIN);
-        let bit = _mm_setr_epi32(1, 2, 4, 8);
         let afix = _mm_set1_epi32(((fs.alpha_fix as u32) << 24) as i32);
         // Colour planes: channels side by side for the row terms, each
         // channel's dx in every lane for the pixels.
@@ -182,45 +226,28 @@ mod x86 {
         }
         src = _mm_or_si128(src, afix);
         let mut passed = 0u64;
-        let mut mask = c.mask;
         let mut at = c.row0 * px.width + c.col0;
         let mut row = c.row0;
-        while mask != 0 {
-            let bits = mask & 15;
-            mask >>= 4;
+        for bits in c.row_bits() {
             if bits != 0 {
                 let cy = row as i64 as f64 + 0.5 - t.y0;
-                let mut lanes = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(bits as i32), bit), bit);
-                if D != D_OFF {
-                    let zr = t.z.a0 + t.z.dy * cy;
-                    let z = _mm256_add_pd(_mm256_set1_pd(zr), _mm256_mul_pd(zdx, cx));
-                    let z = _mm256_min_pd(_mm256_max_pd(z, zero), one);
-                    let z = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(z, scale), half));
-                    let dp = px.depth.add(at).cast::<i32>();
-                    let stored = _mm_maskload_epi32(dp, lanes);
-                    let (zs, ss) = (_mm_xor_si128(z, sign), _mm_xor_si128(stored, sign));
-                    let pass = if D == D_LESS { _mm_cmplt_epi32(zs, ss) } else { _mm_xor_si128(_mm_cmpgt_epi32(zs, ss), _mm_set1_epi32(-1)) };
-                    lanes = _mm_and_si128(lanes, pass);
-                    _mm_maskstore_epi32(dp, lanes, z);
-                }
-                let m = _mm_movemask_ps(_mm_castsi128_ps(lanes));
-                passed += m.count_ones() as u64;
-                if CO != CO_NONE && m != 0 {
-                    if CS == CS_AFFINE || CS == CS_PERSPECTIVE {
-                        let cr = _mm256_add_pd(ca0, _mm256_mul_pd(cdy, _mm256_set1_pd(cy)));
-                        let w = if CS == CS_PERSPECTIVE {
-                            let qr = t.q.a0 + t.q.dy * cy;
-                            _mm256_div_pd(one, _mm256_add_pd(_mm256_set1_pd(qr), _mm256_mul_pd(qdx, cx)))
-                        } else {
-                            one
-                        };
-                        let r = channel::<CS>(_mm256_permute4x64_pd::<0x00>(cr), cdx[0], cx, w);
-                        let g = channel::<CS>(_mm256_permute4x64_pd::<0x55>(cr), cdx[1], cx, w);
-                        let b = channel::<CS>(_mm256_permute4x64_pd::<0xAA>(cr), cdx[2], cx, w);
-                        let a = channel::<CS>(_mm256_permute4x64_pd::<0xFF>(cr), cdx[3], cx, w);
-                        src = _mm_or_si128(pixels(r, g, b, a), afix);
+                // The depth row term, as the span kernel computes it once
+                // a row (`a0 + dy * cy`).
+                let zr = _mm256_set1_pd(t.z.a0 + t.z.dy * cy);
+                if bits < 16 {
+                    // One group (the tiny triangles of spheres_l).
+                    passed += group::<D, CS, CO>(px, t, at, bits, cy, zr, cx, zdx, qdx, ca0, cdy, &cdx, src, afix).count_ones() as u64;
+                } else {
+                    // The groups of four columns with a covered pixel
+                    // (the centres `cx + 4 g` are exact: multiples of 1/256).
+                    let mut bits = bits;
+                    while bits != 0 {
+                        let g = bits.trailing_zeros() & !3;
+                        let nibble = (bits >> g) & 15;
+                        bits &= !(15 << g);
+                        let cxg = _mm256_add_pd(cx, _mm256_set1_pd(g as f64));
+                        passed += group::<D, CS, CO>(px, t, at + g as usize, nibble, cy, zr, cxg, zdx, qdx, ca0, cdy, &cdx, src, afix).count_ones() as u64;
                     }
-                    _mm_maskstore_epi32(px.color.add(at).cast::<i32>(), lanes, src);
                 }
             }
             row += 1;
@@ -235,7 +262,7 @@ mod tests {
     use super::super::{fast, reference, ColorOp, CompareFunc, SpanPixels};
     use super::*;
     use crate::framebuffer::{Rect, DEPTH_MAX};
-    use crate::render::raster::{Cover, Runs};
+    use crate::render::raster::Cover;
     use crate::render::setup::{Plane, ONE};
 
     /// A random plane whose values over the block lie in about
@@ -266,15 +293,16 @@ mod tests {
             eprintln!("no AVX2: no block kernels");
             return;
         }
-        const W: usize = 24;
-        const H: usize = 24;
+        const W: usize = 48;
+        const H: usize = 44;
         let mut rnd = crate::render::test_rng::below(1313, 19);
-        let (mut shaded, mut written, mut ties, mut kinds) = (0usize, 0u64, 0usize, [0usize; 4]);
+        let (mut shaded, mut written, mut ties, mut kinds, mut wide, mut tall_covers) = (0usize, 0u64, 0usize, [0usize; 4], 0usize, 0usize);
         for n in 0..120_000 {
-            let size = [ONE, 2 * ONE, 4 * ONE, 7 * ONE][n % 4];
-            let (bx, by) = (rnd(16 * ONE) + 2 * ONE, rnd(14 * ONE) + 2 * ONE);
+            // Round 14: also boxes up to 32 columns and 32 rows.
+            let (size, tall) = [(ONE, ONE), (2 * ONE, 2 * ONE), (4 * ONE, 4 * ONE), (7 * ONE, 7 * ONE), (8 * ONE, 14 * ONE), (15 * ONE, 30 * ONE), (31 * ONE, 31 * ONE)][n % 7];
+            let (bx, by) = (rnd(12 * ONE) + 2 * ONE, rnd(10 * ONE) + 2 * ONE);
             let mut x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
-            let mut y = [by + rnd(size), by + rnd(size), by + rnd(size)];
+            let mut y = [by + rnd(tall), by + rnd(tall), by + rnd(tall)];
             if n % 4 == 1 {
                 x = x.map(|c| c & !(ONE / 2 - 1));
                 y = y.map(|c| c & !(ONE / 2 - 1));
@@ -360,7 +388,7 @@ mod tests {
             for k in [fast::select(&fs, &t, false), reference::shade_span as fast::Kernel] {
                 let (mut c2, mut d2, mut s2) = (color.clone(), depth.clone(), stencil.clone());
                 let mut expect = 0;
-                for (py, lo, hi) in Runs::of_cover(&cover).iter() {
+                for (py, lo, hi) in cover.rows() {
                     let (a, b) = (py * W + lo, py * W + hi);
                     let mut px = SpanPixels { color: &mut c2[a..b], depth: &mut d2[a..b], stencil: &mut s2[a..b], other: None, passed: 0 };
                     k(&fs, &t, &mut px, py, lo, hi);
@@ -373,7 +401,9 @@ mod tests {
             }
             shaded += 1;
             written += passed;
+            wide += ((0..cover.height()).any(|j| cover.row(j) >= 1 << 16)) as usize;
+            tall_covers += (cover.height() > 8) as usize;
         }
-        assert!(shaded > 30_000 && written > 40_000 && ties > 20_000 && kinds.iter().all(|&k| k > 1000), "{shaded} {written} {ties} {kinds:?}");
+        assert!(shaded > 30_000 && written > 40_000 && ties > 20_000 && wide > 3_000 && tall_covers > 10_000 && kinds.iter().all(|&k| k > 1000), "{shaded} {written} {ties} {kinds:?} {wide} {tall_covers}");
     }
 }
