@@ -185,6 +185,16 @@ unsafe fn scene(threads: usize) -> Vec<Vec<u8>> {
     out
 }
 
+/// Asserts that two runs of a scene read back the same bytes; `what`
+/// names the case (seed, limits, thread counts) in the message.
+fn assert_same_read_backs(one: &[Vec<u8>], other: &[Vec<u8>], what: &str) {
+    assert_eq!(one.len(), other.len(), "{what}: read-back counts differ");
+    for (k, (a, b)) in one.iter().zip(other).enumerate() {
+        let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
+        assert_eq!(diff, 0, "{what}: read-back {k} differs in {diff} bytes");
+    }
+}
+
 #[test]
 fn sync_points_do_not_depend_on_thread_count() {
     let before = softgl::render::tile::flights_started();
@@ -197,10 +207,7 @@ fn sync_points_do_not_depend_on_thread_count() {
     for round in 0..4 {
         for threads in [2, 3] {
             let many = unsafe { scene(threads) };
-            for (k, (a, b)) in one.iter().zip(&many).enumerate() {
-                let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
-                assert_eq!(diff, 0, "round {round}, read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
-            }
+            assert_same_read_backs(&one, &many, &format!("round {round}, 1 thread / {threads} threads"));
         }
     }
     assert!(softgl::render::tile::flights_started() - before > 100, "batches went to the workers");
@@ -321,10 +328,7 @@ fn lines_points_and_accum_do_not_depend_on_thread_count() {
     }
     for threads in [2, 3] {
         let many = unsafe { lines_scene(threads) };
-        for (k, (a, b)) in one.iter().zip(&many).enumerate() {
-            let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
-            assert_eq!(diff, 0, "read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
-        }
+        assert_same_read_backs(&one, &many, &format!("1 thread / {threads} threads"));
     }
     assert!(softgl::render::tile::flights_started() - before > 50, "primitives went to the workers");
 }
@@ -425,10 +429,7 @@ fn whole_frame_ops_do_not_depend_on_thread_count() {
     }
     for threads in [2, 3] {
         let many = unsafe { frame_ops_scene(threads) };
-        for (k, (a, b)) in one.iter().zip(&many).enumerate() {
-            let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
-            assert_eq!(diff, 0, "read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
-        }
+        assert_same_read_backs(&one, &many, &format!("1 thread / {threads} threads"));
     }
 }
 
@@ -511,10 +512,7 @@ fn pixel_rectangles_do_not_depend_on_thread_count() {
     }
     let reference = unsafe { pixel_rects_scene(1, true) };
     for (name, other) in [("reference", reference), ("2 threads", unsafe { pixel_rects_scene(2, false) }), ("3 threads", unsafe { pixel_rects_scene(3, false) })] {
-        for (k, (a, b)) in one.iter().zip(&other).enumerate() {
-            let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
-            assert_eq!(diff, 0, "read-back {k}: 1 thread / {name} differ in {diff} bytes");
-        }
+        assert_same_read_backs(&one, &other, &format!("1 thread / {name}"));
     }
 }
 
@@ -643,10 +641,7 @@ fn deferred_clears_do_not_depend_on_thread_count() {
         }
         for threads in [2, 3] {
             let many = unsafe { deferred_clear_scene(threads, limits) };
-            for (k, (a, b)) in one.iter().zip(&many).enumerate() {
-                let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
-                assert_eq!(diff, 0, "limits {limits:?} read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
-            }
+            assert_same_read_backs(&one, &many, &format!("limits {limits:?} 1 thread / {threads} threads"));
         }
     }
 }
@@ -750,10 +745,7 @@ fn state_changes_within_a_batch_do_not_depend_on_thread_count() {
         }
         for threads in [2, 3] {
             let many = unsafe { state_changes_scene(threads, limits) };
-            for (k, (a, b)) in one.iter().zip(&many).enumerate() {
-                let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
-                assert_eq!(diff, 0, "limits {limits:?} read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
-            }
+            assert_same_read_backs(&one, &many, &format!("limits {limits:?} 1 thread / {threads} threads"));
         }
     }
 }
@@ -940,18 +932,12 @@ fn recorded_accum_does_not_depend_on_thread_count() {
         for limits in [(7, 0, 0), (32 * 1024, 1 << 40, 1 << 40)] {
             for threads in [2, 3] {
                 let many = unsafe { accum_mix_scene(threads, limits, seed, false, false) };
-                for (k, (a, b)) in one.iter().zip(&many).enumerate() {
-                    let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
-                    assert_eq!(diff, 0, "seed {seed} limits {limits:?} read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
-                }
+                assert_same_read_backs(&one, &many, &format!("seed {seed} limits {limits:?} 1 thread / {threads} threads"));
             }
         }
         let flat_one = unsafe { accum_mix_scene(1, (7, 0, 0), seed, true, false) };
         for (name, other) in [("reference", unsafe { accum_mix_scene(1, (7, 0, 0), seed, true, true) }), ("2 threads", unsafe { accum_mix_scene(2, (7, 0, 0), seed, true, false) })] {
-            for (k, (a, b)) in flat_one.iter().zip(&other).enumerate() {
-                let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
-                assert_eq!(diff, 0, "seed {seed} flat read-back {k}: 1 thread / {name} differ in {diff} bytes");
-            }
+            assert_same_read_backs(&flat_one, &other, &format!("seed {seed} flat 1 thread / {name}"));
         }
     }
 }
@@ -969,10 +955,7 @@ fn helped_flights_do_not_depend_on_thread_count() {
         }
         for threads in [2, 3] {
             let many = unsafe { helped_flights_scene(threads, limits) };
-            for (k, (a, b)) in one.iter().zip(&many).enumerate() {
-                let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
-                assert_eq!(diff, 0, "limits {limits:?} read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
-            }
+            assert_same_read_backs(&one, &many, &format!("limits {limits:?} 1 thread / {threads} threads"));
         }
     }
     assert!(softgl::render::tile::helps_started() > helps, "the calling thread helped a flight before its batch was full");
@@ -1075,10 +1058,7 @@ fn far_and_wide_records_do_not_depend_on_thread_count() {
         }
         for threads in [2, 3] {
             let many = unsafe { far_records_scene(threads, limits) };
-            for (k, (a, b)) in one.iter().zip(&many).enumerate() {
-                let diff = a.iter().zip(b).filter(|(x, y)| x != y).count();
-                assert_eq!(diff, 0, "limits {limits:?} read-back {k}: 1 thread / {threads} threads differ in {diff} bytes");
-            }
+            assert_same_read_backs(&one, &many, &format!("limits {limits:?} 1 thread / {threads} threads"));
         }
     }
 }
