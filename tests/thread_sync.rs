@@ -665,6 +665,48 @@ fn the_pool_has_the_workers_these_tests_use() {
     }
 }
 
+/// The state [`state_changes_scene`] and [`far_records_scene`] switch
+/// between: a texture, fog's density, a directional light and
+/// GL_COLOR_MATERIAL (lighting itself is switched per primitive). Returns
+/// the texture.
+unsafe fn state_mix_setup(r: &mut Rng) -> u32 {
+    let mut tex = 0u32;
+    glGenTextures(1, &mut tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    texture_image(r, false);
+    glFogf(softgl::gl::fog::GL_FOG_DENSITY, 0.7);
+    let light = [0.2f32, 0.4, 1.0, 0.0];
+    glLightfv(GL_LIGHT0, GL_POSITION, light.as_ptr());
+    glEnable(GL_LIGHT0);
+    glEnable(GL_COLOR_MATERIAL);
+    tex
+}
+
+/// Changes the state between two primitives, by `pick` (0 to 4: shading,
+/// texturing, fog, culling, lighting with two-sided or not; anything
+/// else: nothing).
+unsafe fn change_state(r: &mut Rng, pick: u32) {
+    let toggle = |cap: u32, on: bool| if on { glEnable(cap) } else { glDisable(cap) };
+    match pick {
+        0 => glShadeModel(if r.next() % 2 == 0 { GL_FLAT } else { GL_SMOOTH }),
+        1 => toggle(GL_TEXTURE_2D, r.next() % 2 == 0),
+        2 => toggle(GL_FOG, r.next() % 2 == 0),
+        3 => toggle(GL_CULL_FACE, r.next() % 3 == 0),
+        4 => {
+            toggle(GL_LIGHTING, r.next() % 3 == 0);
+            glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, (r.next() % 2) as i32);
+        }
+        _ => {}
+    }
+}
+
+/// A random colour, normal and texture coordinate for the next vertex.
+unsafe fn vertex_attributes(r: &mut Rng) {
+    glColor4ub(r.next() as u8, r.next() as u8, r.next() as u8, 255);
+    glNormal3f(r.unit() - 0.5, r.unit() - 0.5, 1.0);
+    glTexCoord2f(r.unit() * 2.0, r.unit() * 2.0);
+}
+
 /// Random strips, fans, triangles, quads, quad strips and polygons, some
 /// vertices outside the window (clipped) and some triangles culled, with
 /// the state changed between primitives (flat and smooth shading,
@@ -681,38 +723,18 @@ unsafe fn state_changes_scene(threads: usize, limits: (usize, u64, u64)) -> Vec<
     glClearColor(0.1, 0.1, 0.2, 1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
-    let mut tex = 0u32;
-    glGenTextures(1, &mut tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    texture_image(&mut r, false);
-    glFogf(softgl::gl::fog::GL_FOG_DENSITY, 0.7);
-    let light = [0.2f32, 0.4, 1.0, 0.0];
-    glLightfv(GL_LIGHT0, GL_POSITION, light.as_ptr());
-    glEnable(GL_LIGHT0);
-    glEnable(GL_COLOR_MATERIAL);
+    let tex = state_mix_setup(&mut r);
     let modes = [GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON];
     for step in 0..400 {
-        let toggle = |cap: u32, on: bool| if on { glEnable(cap) } else { glDisable(cap) };
-        match r.next() % 6 {
-            0 => glShadeModel(if r.next() % 2 == 0 { GL_FLAT } else { GL_SMOOTH }),
-            1 => toggle(GL_TEXTURE_2D, r.next() % 2 == 0),
-            2 => toggle(GL_FOG, r.next() % 2 == 0),
-            3 => toggle(GL_CULL_FACE, r.next() % 3 == 0),
-            4 => {
-                toggle(GL_LIGHTING, r.next() % 3 == 0);
-                glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, (r.next() % 2) as i32);
-            }
-            _ => {}
-        }
+        let pick = r.next() % 6;
+        change_state(&mut r, pick);
         let mode = modes[r.next() as usize % modes.len()];
         let n = 3 + r.next() as usize % 14;
         let (cx, cy) = (r.unit() * 2.2 - 1.1, r.unit() * 2.2 - 1.1);
         let size = if r.next() % 10 == 0 { 2.5 } else { 0.35 };
         glBegin(mode);
         for i in 0..n {
-            glColor4ub(r.next() as u8, r.next() as u8, r.next() as u8, 255);
-            glNormal3f(r.unit() - 0.5, r.unit() - 0.5, 1.0);
-            glTexCoord2f(r.unit() * 2.0, r.unit() * 2.0);
+            vertex_attributes(&mut r);
             // Strips and fans walk on; the others scatter about the centre.
             let t = i as f32 * 0.7;
             let (x, y) = match mode {
@@ -981,38 +1003,21 @@ unsafe fn far_records_scene(threads: usize, limits: (usize, u64, u64)) -> Vec<Ve
     glClearColor(0.1, 0.2, 0.1, 1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
-    let mut tex = 0u32;
-    glGenTextures(1, &mut tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    texture_image(&mut r, false);
-    glFogf(softgl::gl::fog::GL_FOG_DENSITY, 0.7);
-    let light = [0.2f32, 0.4, 1.0, 0.0];
-    glLightfv(GL_LIGHT0, GL_POSITION, light.as_ptr());
-    glEnable(GL_LIGHT0);
-    glEnable(GL_COLOR_MATERIAL);
+    let tex = state_mix_setup(&mut r);
     glMatrixMode(GL_PROJECTION);
     glOrtho(0.0, W5 as f64, 0.0, H5 as f64, -1.0, 1.0);
     glMatrixMode(GL_MODELVIEW);
     let modes = [GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON];
     let mut off = 0i32;
     for step in 0..300 {
-        let toggle = |cap: u32, on: bool| if on { glEnable(cap) } else { glDisable(cap) };
-        match r.next() % 7 {
-            0 => glShadeModel(if r.next() % 2 == 0 { GL_FLAT } else { GL_SMOOTH }),
-            1 => toggle(GL_TEXTURE_2D, r.next() % 2 == 0),
-            2 => toggle(GL_FOG, r.next() % 2 == 0),
-            3 => toggle(GL_CULL_FACE, r.next() % 3 == 0),
-            4 => {
-                toggle(GL_LIGHTING, r.next() % 3 == 0);
-                glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, (r.next() % 2) as i32);
-            }
-            5 => {
-                // The viewport's origin far off the window: the visible
-                // part of the guard band is far from the viewport.
-                off = [0, -200_000, 150_000, -1000][r.next() as usize % 4];
-                glViewport(off, 0, W5, H5);
-            }
-            _ => {}
+        let pick = r.next() % 7;
+        if pick == 5 {
+            // The viewport's origin far off the window: the visible part
+            // of the guard band is far from the viewport.
+            off = [0, -200_000, 150_000, -1000][r.next() as usize % 4];
+            glViewport(off, 0, W5, H5);
+        } else {
+            change_state(&mut r, pick);
         }
         let mode = modes[r.next() as usize % modes.len()];
         let n = 3 + r.next() as usize % 10;
@@ -1026,9 +1031,7 @@ unsafe fn far_records_scene(threads: usize, limits: (usize, u64, u64)) -> Vec<Ve
         };
         glBegin(mode);
         for i in 0..n {
-            glColor4ub(r.next() as u8, r.next() as u8, r.next() as u8, 255);
-            glNormal3f(r.unit() - 0.5, r.unit() - 0.5, 1.0);
-            glTexCoord2f(r.unit() * 2.0, r.unit() * 2.0);
+            vertex_attributes(&mut r);
             let t = i as f32 * 0.7;
             let (x, y) = match mode {
                 GL_TRIANGLE_STRIP | GL_QUAD_STRIP => (cx + t * 0.1 * size, cy + if i % 2 == 0 { -3.0 } else { 9.0 }),
