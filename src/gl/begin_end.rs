@@ -58,6 +58,12 @@ pub struct Assembly {
     /// are transformed and placed four at a time (`flush_vertices`).
     queue: Positions,
     pending: usize,
+    /// With `fast`: the ring slot the next vertex takes (`ring_slot` of
+    /// `count`, stepped per vertex rather than divided out), and the
+    /// slots of the queued vertices, lane by lane (round 15: `vertex_fast`
+    /// and `flush_vertices` each divided by RING).
+    slot: usize,
+    slots: [usize; LANES],
     /// With `fast`: lit, so a vertex's colours depend only on its
     /// position, its normal, the materials and (GL_COLOR_MATERIAL) its
     /// current colour; they are lit four at a time in `flush_vertices`
@@ -141,6 +147,8 @@ impl Context {
             fp_trusted,
             queue: Positions::ORIGIN,
             pending: 0,
+            slot: ring_slot(mode, 0),
+            slots: [0; LANES],
             lit,
             normals: Normals::ZERO,
             tracked,
@@ -319,9 +327,12 @@ impl Context {
         let edge = self.current.edge_flag;
         let (normal, current) = (self.current.normal, self.current.color);
         let Some(a) = self.prim.as_mut() else { return };
-        let n = a.count;
+        let s = a.slot;
+        debug_assert_eq!(s, ring_slot(a.mode, a.count));
         a.count += 1;
-        let v = &mut a.verts[ring_slot(a.mode, n)];
+        // After a fan's centre (slot RING) comes slot 0, as after RING - 1.
+        a.slot = if s + 1 >= RING { 0 } else { s + 1 };
+        let v = &mut a.verts[s];
         v.color = color;
         v.back_color = back_color;
         v.edge = edge;
@@ -338,6 +349,7 @@ impl Context {
         // a vertex's position feeds (assembly, setup) can be observed
         // before glEnd except through it.
         a.queue.set(a.pending, p);
+        a.slots[a.pending] = s;
         if lit {
             a.normals.set(a.pending, normal);
             if let Some(t) = &mut a.tracked {
@@ -364,15 +376,8 @@ impl Context {
         }
         a.pending = 0;
         let n0 = a.count - k;
-        // The queued vertices' slots follow each other around the ring
-        // (after a fan's centre, slot RING, its next vertex is in slot 0).
-        let s0 = ring_slot(a.mode, n0);
-        let slots: [usize; LANES] = std::array::from_fn(|i| match s0 {
-            RING if i == 0 => RING,
-            RING => i - 1,
-            _ if s0 + i >= RING => s0 + i - RING,
-            _ => s0 + i,
-        });
+        // Lanes from k on hold stale slots: nothing below reads past k.
+        let slots = a.slots;
         let rs = &self.derived.render;
         if a.lit {
             if let Some(ls) = &self.derived.lighting {
@@ -390,14 +395,17 @@ impl Context {
             }
         }
         vertex4::transform_place(&self.derived.mvp, rs, &a.queue, k, &mut a.verts, slots);
-        // One loop per mode: the assembly's choices fold away.
+        // One loop per mode: the assembly's choices fold away. Whether
+        // setup bins is the same for every triangle of the flush (binning
+        // changes neither the state nor the framebuffer's draw buffers).
         let fb = &mut self.fb;
+        let to = Direct { on: a.direct, bin: render::setup::binned_here(rs, fb) };
         match a.mode {
-            GL_TRIANGLES => assemble_batch::<GL_TRIANGLES>(rs, fb, a, n0, k, slots),
-            GL_TRIANGLE_STRIP => assemble_batch::<GL_TRIANGLE_STRIP>(rs, fb, a, n0, k, slots),
-            GL_TRIANGLE_FAN => assemble_batch::<GL_TRIANGLE_FAN>(rs, fb, a, n0, k, slots),
-            GL_QUADS => assemble_batch::<GL_QUADS>(rs, fb, a, n0, k, slots),
-            _ => assemble_batch::<GL_QUAD_STRIP>(rs, fb, a, n0, k, slots),
+            GL_TRIANGLES => assemble_batch::<GL_TRIANGLES>(rs, fb, a, to, n0, k, slots),
+            GL_TRIANGLE_STRIP => assemble_batch::<GL_TRIANGLE_STRIP>(rs, fb, a, to, n0, k, slots),
+            GL_TRIANGLE_FAN => assemble_batch::<GL_TRIANGLE_FAN>(rs, fb, a, to, n0, k, slots),
+            GL_QUADS => assemble_batch::<GL_QUADS>(rs, fb, a, to, n0, k, slots),
+            _ => assemble_batch::<GL_QUAD_STRIP>(rs, fb, a, to, n0, k, slots),
         }
     }
 
@@ -610,19 +618,29 @@ fn ring_back(slot: usize, d: usize) -> usize {
 /// `assemble_placed` for the `k` vertices from `n0`, in `slots`, of a
 /// primitive of mode MODE.
 #[inline(always)]
-fn assemble_batch<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, a: &Assembly, n0: usize, k: usize, slots: [usize; LANES]) {
+fn assemble_batch<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, a: &Assembly, to: Direct, n0: usize, k: usize, slots: [usize; LANES]) {
     for (i, &slot) in slots.iter().enumerate().take(k) {
-        assemble_placed::<MODE>(rs, fb, a, n0 + i, slot);
+        assemble_placed::<MODE>(rs, fb, a, to, n0 + i, slot);
     }
+}
+
+/// How the batched path's triangles whose vertices are all inside the
+/// guard band enter setup, decided once per flush: straight to setup
+/// (`on`, `Assembly::direct`), and there to the binning path (`bin`,
+/// `setup::binned_here`: round 15, the test `setup::triangle_placed`
+/// makes per triangle).
+#[derive(Clone, Copy)]
+struct Direct {
+    on: bool,
+    bin: bool,
 }
 
 /// The triangles the batched path's vertex `n` (placed, in `slot`)
 /// completes, as `assemble_into` forms them: the same vertices, order,
 /// provoking vertex and edge flags.
 #[inline(always)]
-fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, a: &Assembly, n: usize, slot: usize) {
+fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, a: &Assembly, direct: Direct, n: usize, slot: usize) {
     let t = &a.verts;
-    let direct = a.direct;
     // Vertex m <= n (m >= 1 in a fan): its slot counted back along the
     // ring (a fan's vertices after its centre are consecutive too).
     let ring = |m: usize| ring_back(slot, n - m);
@@ -673,7 +691,7 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
 /// One filled triangle of the batched path, `v[provoking]` giving the flat
 /// colour; see [`fill_flat`].
 #[inline(always)]
-fn fill(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: bool, v: [&ClipVertex; 3], provoking: usize, edges: [bool; 3]) {
+fn fill(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: usize, edges: [bool; 3]) {
     fill_flat(rs, fb, direct, v, v[provoking], edges)
 }
 
@@ -681,10 +699,14 @@ fn fill(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, dire
 /// copy (`Assembly::fast` leaves those out), entering setup at once when `direct` and every vertex
 /// is inside the guard band: the decision `draw_triangle` would take.
 #[inline(always)]
-fn fill_flat(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: bool, v: [&ClipVertex; 3], provoking: &ClipVertex, edges: [bool; 3]) {
+fn fill_flat(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: &ClipVertex, edges: [bool; 3]) {
     let flat = [provoking.color, provoking.back_color];
-    if direct && v[0].inside & v[1].inside & v[2].inside {
-        render::setup::triangle_placed(rs, fb, v, flat)
+    if direct.on && v[0].inside & v[1].inside & v[2].inside {
+        if direct.bin {
+            render::setup::bin_placed(rs, fb, v, flat)
+        } else {
+            render::setup::triangle_placed(rs, fb, v, flat)
+        }
     } else {
         render::draw_triangle(rs, fb, v, flat, edges)
     }

@@ -193,9 +193,10 @@ pub fn triangle_placed(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffe
     shade_snapped(rs, fb, pos, fx, fy, v, flat_color, o)
 }
 
-/// [`triangle_placed`] while binning.
+/// [`triangle_placed`] while binning ([`binned_here`]; the batched
+/// vertex path calls it directly, having tested that once per flush).
 #[inline(never)]
-fn bin_placed(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, v: [&ClipVertex; 3], flat_color: [Vec4; 2]) {
+pub(crate) fn bin_placed(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, v: [&ClipVertex; 3], flat_color: [Vec4; 2]) {
     let pos = v.map(|cv| cv.win);
     let fx = v.map(|cv| cv.snapped[0]);
     let fy = v.map(|cv| cv.snapped[1]);
@@ -233,7 +234,7 @@ pub fn triangle_at<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer:
 /// Is a filled triangle binned (set up later, in the tile workers)
 /// rather than shaded now?
 #[inline(always)]
-fn binned_here(rs: &RenderState, fb: &crate::framebuffer::Framebuffer) -> bool {
+pub(crate) fn binned_here(rs: &RenderState, fb: &crate::framebuffer::Framebuffer) -> bool {
     super::tile::binning(rs) && !fb.draw_both && rs.polygon_mode == [crate::gl::enums::GL_FILL; 2]
 }
 
