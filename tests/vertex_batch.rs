@@ -380,3 +380,84 @@ fn batched_vertices_match_the_general_path() {
     assert!(batchable > 1500 && lit > 400 && drawn > 1000, "batchable {batchable}, lit {lit}, drawn {drawn}");
     assert!(feedback > 300 && mid_drawn > 100, "feedback {feedback}, mid-primitive frames drawn {mid_drawn}");
 }
+
+/// The batched path's flushes (round 15) test once whether setup bins
+/// (`setup::binned_here`) and then send every triangle whose vertices are
+/// inside the guard band to `setup::bin_placed` directly, and step the
+/// ring slot per vertex: 2D triangles (glVertex2f, as the bench's tiny
+/// triangles; sometimes strips and fans, whose slots differ) drawn
+/// batched with 2 and 3 threads (batches of 7 triangles, every batch to
+/// the workers) give the 1-thread general path's colour (both buffers),
+/// depth and stencil, under the states that must leave the binning path:
+/// drawing to GL_FRONT_AND_BACK (never binned), polygon modes (not
+/// direct), and cases partly outside the guard band (clipped).
+#[test]
+fn batched_flushes_bin_as_the_general_path() {
+    let size = (61, 53);
+    let mk = |batching: bool, threads: usize| {
+        let mut c = Context::new(Config { alpha_bits: 8, depth_bits: 24, stencil_bits: 8, accum_bits: 0 });
+        c.fb.resize(size.0, size.1).unwrap();
+        c.surface_resized(size.0 as i32, size.1 as i32);
+        c.fb.set_double_buffered(true).unwrap();
+        c.execute(&Command::DrawBuffer(GL_BACK));
+        c.derived.render.reference = false;
+        c.derived.render.threads = threads;
+        c.vertex_batching = batching;
+        softgl::render::tile::set_batch_limits(&c.derived.render, 7, 0, 0);
+        c
+    };
+    let mut ctx = [mk(false, 1), mk(true, 2), mk(true, 3)];
+    let mut r = Rng(0x5eed_0015);
+    let before = softgl::render::tile::flights_started();
+    let (mut both, mut drawn) = (0, 0);
+    for case in 0..400 {
+        let mut cmds = vec![Command::ClearColor([r.unit(), r.unit(), r.unit(), 1.0]), Command::Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)];
+        let two = r.chance(25);
+        both += two as u32;
+        cmds.push(Command::DrawBuffer(if two { GL_FRONT_AND_BACK } else { GL_BACK }));
+        cmds.push(Command::ShadeModel(if r.chance(30) { GL_FLAT } else { GL_SMOOTH }));
+        cmds.push(if r.chance(30) { Command::Enable(GL_CULL_FACE) } else { Command::Disable(GL_CULL_FACE) });
+        cmds.push(Command::CullFace(r.pick(&[GL_FRONT, GL_BACK])));
+        cmds.push(Command::FrontFace(r.pick(&[GL_CCW, GL_CW])));
+        let line = r.chance(15);
+        cmds.push(Command::PolygonMode(GL_FRONT_AND_BACK, if line { GL_LINE } else { GL_FILL }));
+        cmds.push(if r.chance(50) { Command::Enable(GL_DEPTH_TEST) } else { Command::Disable(GL_DEPTH_TEST) });
+        // Mostly 1-3 pixel triangles; sometimes large ones, and ones
+        // reaching past the guard band.
+        let scale = match r.below(8) {
+            0 => 60.0,
+            1 => 0.8,
+            _ => 0.06,
+        };
+        for _ in 0..1 + r.below(3) {
+            let mode = r.pick(&[GL_TRIANGLES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN]);
+            cmds.push(Command::Begin(mode));
+            for _ in 0..r.below(60) {
+                let (x, y) = (r.range(-1.1, 1.1), r.range(-1.1, 1.1));
+                cmds.push(Command::Color([r.unit(), r.unit(), r.unit(), 1.0]));
+                cmds.push(Command::Vertex([x + r.range(-scale, scale), y + r.range(-scale, scale), 0.0, 1.0]));
+            }
+            cmds.push(Command::End);
+        }
+        for c in ctx.iter_mut() {
+            for cmd in &cmds {
+                c.submit(cmd.clone());
+            }
+            c.sync_render();
+            c.submit(Command::DrawBuffer(GL_BACK));
+        }
+        let (one, rest) = ctx.split_first().unwrap();
+        if one.fb.color.iter().any(|p| *p != one.fb.color[0]) {
+            drawn += 1;
+        }
+        for (k, c) in rest.iter().enumerate() {
+            for i in 0..size.0 * size.1 {
+                let (a, b) = ((one.fb.color[i], one.fb.other_color[i], one.fb.depth[i]), (c.fb.color[i], c.fb.other_color[i], c.fb.depth[i]));
+                assert_eq!(a, b, "case {case} pixel ({}, {}): general 1 thread / batched {} threads\ncommands: {cmds:?}", i % size.0, i / size.0, k + 2);
+            }
+        }
+    }
+    assert!(both > 60 && drawn > 350, "cases to both buffers {both}, drawn {drawn}");
+    let flights = softgl::render::tile::flights_started() - before;
+    assert!(flights > 300, "triangles went to the workers ({flights} batches)");
+}

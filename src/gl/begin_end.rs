@@ -84,6 +84,8 @@ pub struct Assembly {
 const RING: usize = 12;
 const SLOTS: usize = RING + 1;
 const _: () = assert!(RING % 12 == 0 && RING >= LANES + 3);
+// `vertex_fast` masks its lane index by LANES - 1.
+const _: () = assert!(LANES.is_power_of_two());
 
 /// The slot of vertex `n` of a batched primitive of mode `mode`.
 #[inline(always)]
@@ -348,16 +350,20 @@ impl Context {
         // The position waits for three more (`flush_vertices`); nothing
         // a vertex's position feeds (assembly, setup) can be observed
         // before glEnd except through it.
-        a.queue.set(a.pending, p);
-        a.slots[a.pending] = s;
+        // `pending` is below LANES here (the queue is flushed when full):
+        // the mask only lets the lane indices go unchecked.
+        debug_assert!(a.pending < LANES);
+        let lane = a.pending & (LANES - 1);
+        a.queue.set(lane, p);
+        a.slots[lane] = s;
         if lit {
-            a.normals.set(a.pending, normal);
+            a.normals.set(lane, normal);
             if let Some(t) = &mut a.tracked {
-                t.set(a.pending, current);
+                t.set(lane, current);
             }
         }
-        a.pending += 1;
-        if a.pending == LANES {
+        a.pending = lane + 1;
+        if lane + 1 == LANES {
             self.flush_vertices();
         }
     }
