@@ -3,7 +3,7 @@
 //!
 //! A triangle whose pixel centres fit a block of up to 32 columns and 48
 //! rows (`raster::Cover`: the sphere scenes' triangles at 1920x1080, and
-//! spheres_l's and the million-vertex scenes' tiny ones above 2x2 centres)
+//! spheres_l's and the million-vertex scenes' tiny ones, round 15)
 //! is covered all at once and shaded here, per row each group of four
 //! columns holding a covered pixel in one set of lanes, instead of as a
 //! run per row through a span kernel (whose fixed cost per span, and
