@@ -85,6 +85,11 @@ def run_one(impl, scene, w, h, frames, pam):
         return {"error": (p.stderr or p.stdout).strip()[-300:]}
     r = json.loads(p.stdout.strip().splitlines()[-1])
     r["first_frame_s"] = r["first_frame_wall"] - start
+    # The first frame's parts: process start to main() (exec, dynamic
+    # loading, library constructors) and to a current context.
+    if "main_wall" in r:
+        r["main_s"] = r["main_wall"] - start
+        r["context_s"] = r["context_wall"] - start
     # bench_scene is linked against Mesa's libOSMesa: if softgl's library is
     # missing from build/lib, the run silently measures Mesa instead. The
     # renderer string says which library drew.
@@ -197,6 +202,8 @@ def main():
             ms = [m for r in ok for m in r["ms"]]
             row.update(median_ms=statistics.median(ms), p90_ms=pct(ms, 0.9),
                        first_frame_ms=1000 * statistics.median(r["first_frame_s"] for r in ok),
+                       main_ms=1000 * statistics.median(r.get("main_s", 0) for r in ok),
+                       context_ms=1000 * statistics.median(r.get("context_s", 0) for r in ok),
                        peak_mb=max(r["maxrss_kb"] for r in ok) / 1024, gl_error=ok[-1]["gl_error"],
                        renderer=ok[-1]["renderer"])
             ref = os.path.join(OUT, "img", f"{scene}_{size}_softpipe.pam")
@@ -211,6 +218,26 @@ def main():
         json.dump(results, f, indent=1)
     write_markdown(results, sizes, scenes, impls)
     plot(results, sizes, scenes, impls)
+
+
+def startup_table(by, sizes, scenes):
+    """The first frame split at the largest size: process start to main()
+    (exec and dynamic loading: llvmpipe loads LLVM), to a current context
+    (OSMesaCreateContextExt + MakeCurrent), and to the first finished frame
+    (the scene's first drawing, with the first touch of the buffers)."""
+    w, h = sizes[-1]
+    size = f"{w}x{h}"
+    rows = ["## Time to first frame, split (" + size + ", medians, ms from process start)", "",
+            "| scene | softgl: main / context / first frame | llvmpipe: main / context / first frame | softgl's first frame less context / its median frame |",
+            "| --- | --- | --- | --- |"]
+    for scene in scenes:
+        s, l = by.get((scene, size, "softgl"), {}), by.get((scene, size, "llvmpipe"), {})
+        if "first_frame_ms" not in s or "first_frame_ms" not in l:
+            continue
+        part = lambda r: f"{r.get('main_ms', 0):.1f} / {r.get('context_ms', 0):.1f} / {r['first_frame_ms']:.1f}"
+        own = f"{s['first_frame_ms'] - s.get('context_ms', 0):.1f} / {s['median_ms']:.1f}"
+        rows.append(f"| {scene} | {part(s)} | {part(l)} | {own} |")
+    return rows + [""]
 
 
 def write_markdown(results, sizes, scenes, impls):
@@ -237,7 +264,8 @@ def write_markdown(results, sizes, scenes, impls):
             "Image error is against softpipe's image of the same frame, and against softgl's reference path (`softgl-ref`, SOFTGL_REFERENCE=1).",
             "`softgl` uses every core (SOFTGL_THREADS unset), `softgl-1t` one thread.", "",
             "Scenes:", ""] + [f"- `{k}`: {v[0]}" for k, v in SCENES.items() if k in scenes] + \
-           ([""] + ["Not runnable yet (softgl lacks the features): " + "; ".join(f"{k} ({v})" for k, v in NOT_YET.items())] if NOT_YET else []) + ["", *lines, ""]
+           ([""] + ["Not runnable yet (softgl lacks the features): " + "; ".join(f"{k} ({v})" for k, v in NOT_YET.items())] if NOT_YET else []) + ["", *lines, ""] + \
+           startup_table(by, sizes, scenes)
     for (w, h) in sizes:
         size = f"{w}x{h}"
         by_size = {(s, i): r for (s, sz, i), r in by.items() if sz == size}

@@ -295,7 +295,7 @@ int main(int argc, char **argv)
     const char *scene, *out;
     int frames, f, y;
     unsigned char *buf;
-    double *ms, t, first_wall = 0;
+    double *ms, t, first_wall = 0, main_wall = wall(), ctx_wall = 0;
     OSMesaContext ctx;
     struct rusage ru;
     FILE *fp;
@@ -318,6 +318,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "no OSMesa context\n");
         return 1;
     }
+    ctx_wall = wall();
     glViewport(0, 0, W, H);
     for (f = 0; f <= frames; f++) {
         t = mono();
@@ -339,8 +340,8 @@ int main(int argc, char **argv)
         fclose(fp);
     }
     getrusage(RUSAGE_SELF, &ru);
-    printf("{\"renderer\": \"%s\", \"first_frame_wall\": %.6f, \"maxrss_kb\": %ld, \"gl_error\": %u, \"ms\": [",
-           (const char *)glGetString(GL_RENDERER), first_wall, ru.ru_maxrss, glGetError());
+    printf("{\"renderer\": \"%s\", \"first_frame_wall\": %.6f, \"main_wall\": %.6f, \"context_wall\": %.6f, \"maxrss_kb\": %ld, \"gl_error\": %u, \"ms\": [",
+           (const char *)glGetString(GL_RENDERER), first_wall, main_wall, ctx_wall, ru.ru_maxrss, glGetError());
     for (f = 0; f < frames; f++)
         printf("%s%.4f", f ? ", " : "", ms[f]);
     printf("]}\n");

@@ -481,20 +481,24 @@ impl Cover {
 
     /// [`Cover::find`] with the centre box already taken, for the
     /// renderer, into `self`: false (and `self` not a cover) when it does
-    /// not fit. Boxes of at most 2x2 centres are left to
-    /// [`Runs::find_in`]: its SSE2 lanes were faster by the clock for them
-    /// (immediate_1m, whose triangles all cover one pixel of a 2x2 box:
-    /// 39.5 ms a frame against 41.9 through the block, 1 thread, round
-    /// 13), though not by instructions.
+    /// not fit. Boxes of at most [`Cover::SMALLEST`] centres are left to
+    /// [`Runs::find_in`].
     #[inline(always)]
     pub fn find_in(&mut self, x: [i64; 3], y: [i64; 3], b: CentreBox) -> bool {
         self.of_box(x, y, b, Cover::SMALLEST)
     }
 
     /// Boxes of at most this many centres are left to [`Runs::find_in`]
-    /// (callers may test `CentreBox::count` first, to keep the cover out
-    /// of the tiny triangles' path).
-    pub const SMALLEST: i64 = 4;
+    /// (callers test `CentreBox::count` first, so that a box with no
+    /// centre skips the cover). Rounds 13 and 14 left boxes of up to 2x2
+    /// centres there: by instructions the block was cheaper for them, but
+    /// by the clock dearer (immediate_1m, whose triangles all cover one
+    /// pixel of a 2x2 box: 39.5 ms a frame against 41.9, 1 thread), for
+    /// its masked loads and stores. Round 15: the block kernel stores
+    /// plainly inside the rows, and every box with a centre takes the
+    /// block (immediate_1m, 1 thread: 1,691 -> 1,544 M instructions for 3
+    /// frames, CPU time -8 %).
+    pub const SMALLEST: i64 = 0;
 
     /// The cover of box `b` into `self` when it has more than `smallest`
     /// centres (or none: no rows) and fits the block and the lanes, on a
