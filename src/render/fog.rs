@@ -67,13 +67,50 @@ impl Fog {
         }
     }
 
-    /// Fogs a colour given the interpolated vertex value. The SIMD span
-    /// kernel (`fragment::simd`, `fog_blend`) repeats the blend's f32
-    /// operations lane by lane: keep the two in step.
+    /// Fogs a colour given the interpolated vertex value. The SIMD kernels
+    /// repeat the blend's f32 operations lane by lane ([`lanes::mix`]):
+    /// keep the two in step.
     #[inline]
     pub fn apply(&self, color: Vec4, value: f32) -> Vec4 {
         let f = self.fragment_factor(value);
         let rgb = color.truncate() * f + self.color.truncate() * (1.0 - f);
         rgb.extend(color.w)
+    }
+}
+
+/// Fog in four SIMD lanes, shared by the span kernels (`fragment::simd`,
+/// a pixel's channels in the lanes) and the block kernels
+/// (`fragment::stamp`, one channel of four pixels in the lanes): the same
+/// f32 operations as [`Fog::fragment_factor`] and [`Fog::apply`], so the
+/// same bits.
+#[cfg(target_arch = "x86_64")]
+pub mod lanes {
+    use super::Fog;
+    use std::arch::x86_64::*;
+
+    /// f of four fragments' fog values `v` ([`Fog::fragment_factor`] lane
+    /// by lane), computed only for the lanes set in `bits` (the fragments
+    /// that are written); the others are 0.
+    ///
+    /// Safety: SSE2 (x86_64's baseline).
+    #[inline(always)]
+    pub unsafe fn factors(fog: &Fog, v: __m128, bits: i32) -> __m128 {
+        let mut v4 = [0.0f32; 4];
+        _mm_storeu_ps(v4.as_mut_ptr(), v);
+        let mut f = [0.0f32; 4];
+        for k in 0..4 {
+            if bits & (1 << k) != 0 {
+                f[k] = fog.fragment_factor(v4[k]);
+            }
+        }
+        _mm_loadu_ps(f.as_ptr())
+    }
+
+    /// [`Fog::apply`]'s blend of colour lanes `c` towards fog colour lanes
+    /// `fc` by factor lanes `f`: `c * f + fc * (1 - f)`, separate f32
+    /// products and sum as glam's Vec3 does them (no FMA).
+    #[inline(always)]
+    pub unsafe fn mix(c: __m128, f: __m128, fc: __m128) -> __m128 {
+        _mm_add_ps(_mm_mul_ps(c, f), _mm_mul_ps(fc, _mm_sub_ps(_mm_set1_ps(1.0), f)))
     }
 }
