@@ -21,9 +21,11 @@
 //!   to nearest) mode, then the f32 clamp / ×255 / +½ / truncate of
 //!   `color_to_u8`;
 //! - fog (`CS_FOG`): the fog value `(r + dx * cx) * w` per lane in f64 and
-//!   to f32, f from it by `Fog::fragment_factor` lane by lane (libm's
-//!   `expf` itself: no vector exponential reproduces its bits), then
-//!   `Fog::apply`'s f32 products and sum in lanes, alpha kept;
+//!   to f32, f from it by `fog::lanes::factors` (`Fog::fragment_factor`'s
+//!   f32 operations in lanes; under AVX2 its exponential gives libm's
+//!   `expf` bits, handing libm the lanes it cannot vouch for), then
+//!   `Fog::apply`'s f32 products and sum in lanes (`fog::lanes::mix`),
+//!   alpha kept;
 //! - stepped colours use 32-bit lanes when the span's values stay in i32
 //!   (the scalar kernel's i64 values are then the same integers); the clamp
 //!   to [0, 255 << 16] followed by >> 16 equals >> 16 followed by the
@@ -530,10 +532,10 @@ mod x86 {
                         // per lane, the blend.
                         let w = if c.perspective { recip4::<AVX>(c.qr, c.qdx, cx) } else { [1.0; 4] };
                         let v = fog_values::<AVX>(fog.r, fog.dx, cx, &w);
-                        // Only lanes that are written pay for f (libm's
-                        // exp per fragment); the others' colours are dropped.
+                        // f for the written lanes (the others' colours
+                        // are dropped).
                         let mut f = [0.0f32; 4];
-                        _mm_storeu_ps(f.as_mut_ptr(), fog_lanes::factors(&fog.fog, _mm_loadu_ps(v.as_ptr()), bits));
+                        _mm_storeu_ps(f.as_mut_ptr(), fog_lanes::factors::<AVX>(&fog.fog, _mm_loadu_ps(v.as_ptr()), bits));
                         let flat = fog.flat.map(|c| _mm_loadu_ps(c.as_ref().as_ptr()));
                         let p = |k: usize| {
                             let col = match flat {

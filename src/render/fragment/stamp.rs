@@ -191,7 +191,7 @@ mod x86 {
     #[allow(clippy::too_many_arguments)]
     unsafe fn fog_pixels(fg: &Fogged, cy: f64, cx: __m256d, w: __m256d, cr: __m256d, cdx: &[__m256d; 4], bits: i32) -> __m128i {
         let v = channel::<CS_PERSPECTIVE>(_mm256_set1_pd(fg.a0 + fg.dy * cy), fg.dx, cx, w);
-        let f = fog_lanes::factors(&fg.fog, v, bits);
+        let f = fog_lanes::factors::<true>(&fg.fog, v, bits);
         let [r, g, b, a] = match fg.flat {
             Some(c) => c,
             None => {
