@@ -250,8 +250,9 @@ mod x86 {
                 let a = channel::<CS>(_mm256_permute4x64_pd::<0xFF>(cr), cdx[3], cx, w);
                 src = _mm_or_si128(pixels(r, g, b, a), afix);
             } else if let (CS_FOG, Some(fg)) = (CS, fogged) {
-                // As CS_PERSPECTIVE's, but the row terms and 1/w only
-                // when perspective (`fast::fog_color`'s w is 1 otherwise).
+                // As CS_PERSPECTIVE's, but the colour row terms only for
+                // smooth colour and 1/w only under perspective
+                // (`fast::fog_color`'s w is 1 otherwise).
                 let cr = if fg.flat.is_none() { _mm256_add_pd(ca0, _mm256_mul_pd(cdy, _mm256_set1_pd(cy))) } else { ca0 };
                 let w = if fg.perspective {
                     let qr = _mm256_set1_pd(t.q.a0 + t.q.dy * cy);
