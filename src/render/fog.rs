@@ -177,12 +177,20 @@ pub mod lanes {
         let xd = _mm256_cvtps_pd(x);
         let k = _mm256_round_pd::<{ _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC }>(_mm256_mul_pd(xd, _mm256_set1_pd(std::f64::consts::LOG2_E)));
         let r = _mm256_sub_pd(xd, _mm256_mul_pd(k, _mm256_set1_pd(std::f64::consts::LN_2)));
-        // 1 + r + r^2/2! + ... + r^10/10!, Horner's rule.
-        const INV_FACT: [f64; 11] = [1.0, 1.0, 1.0 / 2.0, 1.0 / 6.0, 1.0 / 24.0, 1.0 / 120.0, 1.0 / 720.0, 1.0 / 5040.0, 1.0 / 40320.0, 1.0 / 362880.0, 1.0 / 3628800.0];
-        let mut p = _mm256_set1_pd(INV_FACT[10]);
-        for c in INV_FACT[..10].iter().rev() {
-            p = _mm256_add_pd(_mm256_mul_pd(p, r), _mm256_set1_pd(*c));
-        }
+        // 1 + r + r^2/2! + ... + r^10/10!, by Estrin's scheme: pairs
+        // c + c' r, then by r^2, r^4, r^8 (Horner's rule is one chain of
+        // 20 dependent operations: slower by the clock than libm's four
+        // independent calls, for fewer instructions).
+        const C: [f64; 11] = [1.0, 1.0, 1.0 / 2.0, 1.0 / 6.0, 1.0 / 24.0, 1.0 / 120.0, 1.0 / 720.0, 1.0 / 5040.0, 1.0 / 40320.0, 1.0 / 362880.0, 1.0 / 3628800.0];
+        let c = |i: usize| _mm256_set1_pd(C[i]);
+        let pair = |i: usize| _mm256_add_pd(c(i), _mm256_mul_pd(c(i + 1), r));
+        let r2 = _mm256_mul_pd(r, r);
+        let r4 = _mm256_mul_pd(r2, r2);
+        let r8 = _mm256_mul_pd(r4, r4);
+        let s0 = _mm256_add_pd(pair(0), _mm256_mul_pd(pair(2), r2));
+        let s1 = _mm256_add_pd(pair(4), _mm256_mul_pd(pair(6), r2));
+        let s2 = _mm256_add_pd(pair(8), _mm256_mul_pd(c(10), r2));
+        let p = _mm256_add_pd(_mm256_add_pd(s0, _mm256_mul_pd(s1, r4)), _mm256_mul_pd(s2, r8));
         // 2^k from its exponent bits (|k| <= 128 for x in range; lanes out
         // of range are flagged, whatever they hold).
         let ki = _mm256_cvtepi32_epi64(_mm256_cvtpd_epi32(k));
