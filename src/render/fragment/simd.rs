@@ -21,9 +21,11 @@
 //!   to nearest) mode, then the f32 clamp / ×255 / +½ / truncate of
 //!   `color_to_u8`;
 //! - fog (`CS_FOG`): the fog value `(r + dx * cx) * w` per lane in f64 and
-//!   to f32, f from it by `Fog::fragment_factor` lane by lane (libm's
-//!   `expf` itself: no vector exponential reproduces its bits), then
-//!   `Fog::apply`'s f32 products and sum in lanes, alpha kept;
+//!   to f32, f from it by `fog::lanes::factors` (`Fog::fragment_factor`'s
+//!   f32 operations in lanes; under AVX2 its exponential gives libm's
+//!   `expf` bits, handing libm the lanes it cannot vouch for), then
+//!   `Fog::apply`'s f32 products and sum in lanes (`fog::lanes::mix`),
+//!   alpha kept;
 //! - stepped colours use 32-bit lanes when the span's values stay in i32
 //!   (the scalar kernel's i64 values are then the same integers); the clamp
 //!   to [0, 255 << 16] followed by >> 16 equals >> 16 followed by the
@@ -193,6 +195,7 @@ mod x86 {
     use super::super::fast::{self, FogRow, CO_ADD, CO_NONE, CO_OVER, CS_AFFINE, CS_CONSTANT, CS_FOG, CS_PERSPECTIVE, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
     use super::super::{color_to_u8, CompareFunc, FragmentState, SpanPixels, StencilOp, StencilTest};
     use crate::framebuffer::DEPTH_MAX;
+    use crate::render::fog::lanes as fog_lanes;
     use crate::render::setup::TriangleSetup;
     use std::arch::x86_64::*;
 
@@ -371,11 +374,10 @@ mod x86 {
     }
 
     /// `Fog::apply(color, ..)` for fog factor f and fog colour `fc`:
-    /// `rgb * f + fc * (1 - f)` (separate f32 products and sum, as glam's
-    /// Vec3 does them), alpha from `color`.
+    /// `fog::lanes::mix` of the channels, alpha from `color`.
     #[inline(always)]
     unsafe fn fog_blend(color: __m128, f: f32, fc: __m128) -> __m128 {
-        let rgb = _mm_add_ps(_mm_mul_ps(color, _mm_set1_ps(f)), _mm_mul_ps(fc, _mm_set1_ps(1.0 - f)));
+        let rgb = fog_lanes::mix(color, _mm_set1_ps(f), fc);
         let alpha = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
         _mm_or_ps(_mm_and_ps(alpha, color), _mm_andnot_ps(alpha, rgb))
     }
@@ -530,14 +532,10 @@ mod x86 {
                         // per lane, the blend.
                         let w = if c.perspective { recip4::<AVX>(c.qr, c.qdx, cx) } else { [1.0; 4] };
                         let v = fog_values::<AVX>(fog.r, fog.dx, cx, &w);
-                        // Only lanes that are written pay for f (libm's
-                        // exp per fragment); the others' colours are dropped.
+                        // f for the written lanes (the others' colours
+                        // are dropped).
                         let mut f = [0.0f32; 4];
-                        for k in 0..4 {
-                            if bits & (1 << k) != 0 {
-                                f[k] = fog.fog.fragment_factor(v[k]);
-                            }
-                        }
+                        _mm_storeu_ps(f.as_mut_ptr(), fog_lanes::factors::<AVX>(&fog.fog, _mm_loadu_ps(v.as_ptr()), bits));
                         let flat = fog.flat.map(|c| _mm_loadu_ps(c.as_ref().as_ptr()));
                         let p = |k: usize| {
                             let col = match flat {

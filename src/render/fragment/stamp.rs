@@ -10,8 +10,9 @@
 //! `Runs::find`'s row solving, were most of the work on short spans).
 //!
 //! Covered: no stencil or alpha test; depth off, or LESS / LEQUAL with
-//! depth writes; colour flat, constant, affine or perspective (not stepped,
-//! fogged or textured); colour stored unmasked, or not written. Other
+//! depth writes; colour flat, constant, affine or perspective, or fogged
+//! (untextured: flat or smooth colour, affine or perspective; round 15),
+//! not stepped or textured; colour stored unmasked, or not written. Other
 //! states shade the cover's runs with their span kernel.
 //!
 //! Exactness: each lane computes, operation for operation, what the scalar
@@ -27,7 +28,12 @@
 //!   compared unsigned (sign bits flipped);
 //! - colour channels to f32 (round to nearest), then `color_to_u8`'s f32
 //!   clamp, x255, +1/2, truncation; a constant colour's row term is
-//!   `a0 + (+-0)`, the same for every row, so it is converted once.
+//!   `a0 + (+-0)`, the same for every row, so it is converted once;
+//! - fog (`CS_FOG`, `fast::fog_color`'s operations): one 1/w for colour
+//!   and fog value, the value `(r + dx * cx) * w` to f32, f by
+//!   `fog::lanes::factors` (`Fog::fragment_factor` per lane), a smooth
+//!   colour clamped to [0, 1] (max then min, as glam's) or the flat colour
+//!   as bytes / 255, then `fog::lanes::mix` per channel, alpha kept.
 //!
 //! Only covered pixels change. A block whose 32 columns lie inside the
 //! rows reads each group's four pixels and writes back, in the lanes it
@@ -84,9 +90,9 @@ pub fn select(fs: &FragmentState, t: &TriangleSetup, approximate: bool) -> Optio
     match super::fast::color_op(fs) {
         CO_NONE => pick_d(d, CS_FLAT, CO_NONE),
         CO_STORE => match super::fast::color_source(t, approximate, CO_STORE) {
-            // Textures and fog have no block kernel; a stepped colour is
-            // the span kernels' 16.16 approximation.
-            CS_GENERAL | CS_FOG | CS_STEPPED => None,
+            // Textures have no block kernel; a stepped colour is the span
+            // kernels' 16.16 approximation.
+            CS_GENERAL | CS_STEPPED => None,
             cs => pick_d(d, cs, CO_STORE),
         },
         _ => None,
@@ -109,6 +115,7 @@ fn pick_cs<const D: u8>(cs: u8, co: u8) -> Option<StampKernel> {
         (CS_FLAT, _) => stamp_avx2::<D, CS_FLAT, CO_STORE>,
         (CS_CONSTANT, _) => stamp_avx2::<D, CS_CONSTANT, CO_STORE>,
         (CS_AFFINE, _) => stamp_avx2::<D, CS_AFFINE, CO_STORE>,
+        (CS_FOG, _) => stamp_avx2::<D, CS_FOG, CO_STORE>,
         _ => stamp_avx2::<D, CS_PERSPECTIVE, CO_STORE>,
     })
 }
@@ -120,10 +127,11 @@ fn pick_cs<const D: u8>(_: u8, _: u8) -> Option<StampKernel> {
 
 #[cfg(target_arch = "x86_64")]
 mod x86 {
-    use super::super::fast::{CO_NONE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_PERSPECTIVE, D_LESS, D_OFF};
+    use super::super::fast::{CO_NONE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_FOG, CS_PERSPECTIVE, D_LESS, D_OFF};
     use super::super::{color_to_u8, FragmentState};
     use super::Target;
     use crate::framebuffer::DEPTH_MAX;
+    use crate::render::fog::{lanes as fog_lanes, Fog};
     use crate::render::raster::Cover;
     use crate::render::setup::TriangleSetup;
     use std::arch::x86_64::*;
@@ -157,15 +165,63 @@ mod x86 {
         _mm256_cvtpd_ps(if CS == CS_PERSPECTIVE { _mm256_mul_pd(v, w) } else { v })
     }
 
-    /// Four pixels of row `cy`, columns `at .. at + 4` of the target, the
-    /// covered ones (`nibble`) only (FULL: all four read, the others
-    /// written back as read; else masked loads and stores): depth (row term `zr`, per pixel
-    /// `zr + zdx * cx`), then colour (the planes' row terms and per pixel
-    /// values, perspective divided), or the block's `src`. Returns the
-    /// passing lanes' bits.
+    /// A fogged triangle's fog for the block: its fog value plane, the
+    /// fog parameters, and the colours in lanes (each channel in all four).
+    struct Fogged {
+        fog: Fog,
+        a0: f64,
+        dy: f64,
+        dx: __m256d,
+        /// The fog colour's r, g, b.
+        color: [__m128; 3],
+        /// Flat shading: the provoking colour as bytes / 255 (as
+        /// `fast::FogRow`), unclamped.
+        flat: Option<[__m128; 4]>,
+        perspective: bool,
+    }
+
+    impl Fogged {
+        #[inline(always)]
+        unsafe fn of(t: &TriangleSetup) -> Option<Fogged> {
+            let (p, fog) = t.fog.as_ref()?;
+            let flat = t.flat.map(|c| c.map(|v| _mm_set1_ps(v as f32 / 255.0)));
+            let color = [0, 1, 2].map(|ch| _mm_set1_ps(fog.color[ch]));
+            Some(Fogged { fog: *fog, a0: p.a0, dy: p.dy, dx: _mm256_set1_pd(p.dx), color, flat, perspective: t.perspective })
+        }
+    }
+
+    /// Four fogged pixels' colour bytes, `fast::fog_color` lane by lane:
+    /// `w` their 1/w (1 when affine), `cr` the colour row terms, `bits`
+    /// the lanes written (the others' f is not computed).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    unsafe fn group<const D: u8, const CS: u8, const CO: u8, const FULL: bool>(px: &Target, t: &TriangleSetup, at: usize, nibble: u32, cy: f64, zr: __m256d, cx: __m256d, zdx: __m256d, qdx: __m256d, ca0: __m256d, cdy: __m256d, cdx: &[__m256d; 4], src: __m128i, afix: __m128i) -> i32 {
+    unsafe fn fog_pixels(fg: &Fogged, cy: f64, cx: __m256d, w: __m256d, cr: __m256d, cdx: &[__m256d; 4], bits: i32) -> __m128i {
+        let v = channel::<CS_PERSPECTIVE>(_mm256_set1_pd(fg.a0 + fg.dy * cy), fg.dx, cx, w);
+        let f = fog_lanes::factors::<true>(&fg.fog, v, bits);
+        let [r, g, b, a] = match fg.flat {
+            Some(c) => c,
+            None => {
+                let clamp = |c: __m128| _mm_min_ps(_mm_max_ps(c, _mm_setzero_ps()), _mm_set1_ps(1.0));
+                [
+                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0x00>(cr), cdx[0], cx, w)),
+                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0x55>(cr), cdx[1], cx, w)),
+                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0xAA>(cr), cdx[2], cx, w)),
+                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0xFF>(cr), cdx[3], cx, w)),
+                ]
+            }
+        };
+        pixels(fog_lanes::mix(r, f, fg.color[0]), fog_lanes::mix(g, f, fg.color[1]), fog_lanes::mix(b, f, fg.color[2]), a)
+    }
+
+    /// Four pixels of row `cy`, columns `at .. at + 4` of the target, the
+    /// covered ones (`nibble`) only (FULL: all four read, the others
+    /// written back as read; else masked loads and stores): depth (row
+    /// term `zr`, per pixel `zr + zdx * cx`), then colour (the planes' row
+    /// terms and per pixel values, perspective divided, fogged), or the
+    /// block's `src`. Returns the passing lanes' bits.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn group<const D: u8, const CS: u8, const CO: u8, const FULL: bool>(px: &Target, t: &TriangleSetup, at: usize, nibble: u32, cy: f64, zr: __m256d, cx: __m256d, zdx: __m256d, qdx: __m256d, ca0: __m256d, cdy: __m256d, cdx: &[__m256d; 4], src: __m128i, afix: __m128i, fogged: Option<&Fogged>) -> i32 {
         let bit = _mm_setr_epi32(1, 2, 4, 8);
         let one = _mm256_set1_pd(1.0);
         let mut lanes = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(nibble as i32), bit), bit);
@@ -205,6 +261,18 @@ mod x86 {
                 let b = channel::<CS>(_mm256_permute4x64_pd::<0xAA>(cr), cdx[2], cx, w);
                 let a = channel::<CS>(_mm256_permute4x64_pd::<0xFF>(cr), cdx[3], cx, w);
                 src = _mm_or_si128(pixels(r, g, b, a), afix);
+            } else if let (CS_FOG, Some(fg)) = (CS, fogged) {
+                // As CS_PERSPECTIVE's, but the colour row terms only for
+                // smooth colour and 1/w only under perspective
+                // (`fast::fog_color`'s w is 1 otherwise).
+                let cr = if fg.flat.is_none() { _mm256_add_pd(ca0, _mm256_mul_pd(cdy, _mm256_set1_pd(cy))) } else { ca0 };
+                let w = if fg.perspective {
+                    let qr = _mm256_set1_pd(t.q.a0 + t.q.dy * cy);
+                    _mm256_div_pd(one, _mm256_add_pd(qr, _mm256_mul_pd(qdx, cx)))
+                } else {
+                    one
+                };
+                src = _mm_or_si128(fog_pixels(fg, cy, cx, w, cr, cdx, m), afix);
             }
             let cp = px.color.add(at).cast::<i32>();
             if FULL {
@@ -218,7 +286,7 @@ mod x86 {
 
     /// The block kernel: the cover's rows bottom to top, each row's groups
     /// of four columns that hold a covered pixel in the lanes, only the
-    /// covered pixels read or written.
+    /// covered pixels changed (module comment).
     #[target_feature(enable = "avx2")]
     pub(super) unsafe fn stamp_avx2<const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &Target, c: &Cover) -> u64 {
         // (Through i64: one conversion instruction, not usize's several.)
@@ -232,6 +300,8 @@ mod x86 {
         let ca0 = _mm256_setr_pd(t.color[0].a0, t.color[1].a0, t.color[2].a0, t.color[3].a0);
         let cdy = _mm256_setr_pd(t.color[0].dy, t.color[1].dy, t.color[2].dy, t.color[3].dy);
         let cdx = [_mm256_set1_pd(t.color[0].dx), _mm256_set1_pd(t.color[1].dx), _mm256_set1_pd(t.color[2].dx), _mm256_set1_pd(t.color[3].dx)];
+        let fogged = if CS == CS_FOG { Fogged::of(t) } else { None };
+        let fogged = fogged.as_ref();
         let mut src = _mm_setzero_si128();
         if CS == CS_FLAT {
             src = _mm_set1_epi32(u32::from_ne_bytes(t.flat.unwrap_or_default()) as i32);
@@ -263,7 +333,7 @@ mod x86 {
                 let zr = _mm256_set1_pd(t.z.a0 + t.z.dy * cy);
                 if bits < 16 {
                     // One group (the tiny triangles of spheres_l).
-                    let m = if full { group::<D, CS, CO, true>(px, t, at, bits, cy, zr, cx, zdx, qdx, ca0, cdy, &cdx, src, afix) } else { group::<D, CS, CO, false>(px, t, at, bits, cy, zr, cx, zdx, qdx, ca0, cdy, &cdx, src, afix) };
+                    let m = if full { group::<D, CS, CO, true>(px, t, at, bits, cy, zr, cx, zdx, qdx, ca0, cdy, &cdx, src, afix, fogged) } else { group::<D, CS, CO, false>(px, t, at, bits, cy, zr, cx, zdx, qdx, ca0, cdy, &cdx, src, afix, fogged) };
                     passed += m.count_ones() as u64;
                 } else {
                     // The groups of four columns with a covered pixel
@@ -275,7 +345,7 @@ mod x86 {
                         bits &= !(15 << g);
                         let cxg = _mm256_add_pd(cx, _mm256_set1_pd(g as f64));
                         let at = at + g as usize;
-                        let m = if full { group::<D, CS, CO, true>(px, t, at, nibble, cy, zr, cxg, zdx, qdx, ca0, cdy, &cdx, src, afix) } else { group::<D, CS, CO, false>(px, t, at, nibble, cy, zr, cxg, zdx, qdx, ca0, cdy, &cdx, src, afix) };
+                        let m = if full { group::<D, CS, CO, true>(px, t, at, nibble, cy, zr, cxg, zdx, qdx, ca0, cdy, &cdx, src, afix, fogged) } else { group::<D, CS, CO, false>(px, t, at, nibble, cy, zr, cxg, zdx, qdx, ca0, cdy, &cdx, src, afix, fogged) };
                         passed += m.count_ones() as u64;
                     }
                 }
@@ -292,6 +362,7 @@ mod tests {
     use super::super::{fast, reference, ColorOp, CompareFunc, SpanPixels};
     use super::*;
     use crate::framebuffer::{Rect, DEPTH_MAX};
+    use crate::render::fog::{Fog, GL_EXP, GL_EXP2, GL_LINEAR};
     use crate::render::raster::Cover;
     use crate::render::setup::{Plane, ONE};
 
@@ -317,6 +388,10 @@ mod tests {
     /// the fragment's (ties), perspective and affine, flat and constant
     /// colours (zero slopes of either sign), colours outside [0, 1];
     /// depth off / LESS / LEQUAL, colour stored or not, alpha_fix on and off.
+    /// Round 15: a third of the triangles fogged (LINEAR, with start = end
+    /// at times, EXP, EXP2; f per fragment or interpolated and clamped;
+    /// flat and smooth, perspective and affine), fog values also outside
+    /// the fog's range.
     #[test]
     fn stamp_matches_span_kernels() {
         if super::super::simd::level_here() != super::super::simd::Level::Avx2 {
@@ -328,6 +403,9 @@ mod tests {
         let mut rnd = crate::render::test_rng::below(1313, 19);
         let (mut shaded, mut written, mut ties, mut kinds, mut wide, mut tall_covers) = (0usize, 0u64, 0usize, [0usize; 4], 0usize, 0usize);
         let mut inside = [0usize; 2];
+        // Fogged covers shaded: by mode (LINEAR, EXP, EXP2, per vertex),
+        // and by flat * 2 + perspective.
+        let (mut fog_modes, mut fog_kinds) = ([0usize; 4], [0usize; 4]);
         for n in 0..120_000 {
             // Round 14: also boxes up to 32 columns and 32 rows.
             let (size, tall) = [(ONE, ONE), (2 * ONE, 2 * ONE), (4 * ONE, 4 * ONE), (7 * ONE, 7 * ONE), (8 * ONE, 14 * ONE), (15 * ONE, 30 * ONE), (31 * ONE, 31 * ONE)][n % 7];
@@ -377,6 +455,27 @@ mod tests {
             if flat {
                 t.flat = Some([0; 4].map(|_| rnd(256) as u8));
                 t.color = [Plane::default(); 4];
+            }
+            let mode = rnd(12);
+            if mode < 4 {
+                let u = |rnd: &mut dyn FnMut(i64) -> i64| rnd(1 << 20) as f32 / (1 << 20) as f32;
+                let per_fragment = mode != 3;
+                let (start, end) = (u(&mut rnd) * 4.0 - 1.0, u(&mut rnd) * 12.0);
+                let fog = Fog {
+                    mode: [GL_LINEAR, GL_EXP, GL_EXP2, [GL_LINEAR, GL_EXP, GL_EXP2][rnd(3) as usize]][mode as usize],
+                    density: u(&mut rnd) * 0.5 - 0.05,
+                    start,
+                    end: if rnd(8) == 0 { start } else { end },
+                    color: glam::Vec4::from_array([0; 4].map(|_| u(&mut rnd) * 1.2 - 0.1)),
+                    per_fragment,
+                };
+                // Fog coordinates (eye distances) or per-vertex factors,
+                // a little outside their range.
+                let (lo, hi) = if per_fragment { (-1.0, 14.0) } else { (-0.2, 1.2) };
+                let constant = rnd(10) == 0;
+                t.fog = Some((plane(&mut rnd, lo, hi, constant), fog));
+                fog_modes[if per_fragment { mode as usize } else { 3 }] += 1;
+                fog_kinds[flat as usize * 2 + perspective as usize] += 1;
             }
             let mut fs = FragmentState::default();
             match rnd(3) {
@@ -440,5 +539,6 @@ mod tests {
         }
         assert!(shaded > 30_000 && written > 40_000 && ties > 20_000 && wide > 3_000 && tall_covers > 10_000 && kinds.iter().all(|&k| k > 1000), "{shaded} {written} {ties} {kinds:?} {wide} {tall_covers}");
         assert!(inside.iter().all(|&k| k > 5_000), "edge / inside: {inside:?}");
+        assert!(fog_modes.iter().all(|&k| k > 1500) && fog_kinds.iter().all(|&k| k > 400), "{fog_modes:?} {fog_kinds:?}");
     }
 }
