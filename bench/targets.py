@@ -24,14 +24,15 @@ TARGETS = [
 _VERTEX = ("vertex-bound: per-vertex transform and per-triangle set-up for triangles of a few pixels "
            "(spheres_l, 1 thread, before round 13: span shading 29 %, span finding 19 %, set-up planes 12 % "
            "of instructions; round 13 covers and shades boxes of up to 4x8 centres as one block, -16 %; "
-           "round 14 widens the block to 32x48 centres: spheres_m -34 % instructions, spheres_l +1 %); "
-           "what is left per triangle is set-up (planes_of, about 240 instructions), the block's rows, "
-           "and with 2 threads the calling thread's transform and binning")
-_MILLION = ("vertex-bound: per vertex about 140 instructions of transform and assembly (plus about 76 in "
-            "the glVertex entry point in immediate mode), per 1-pixel triangle about 1,000 of set-up and "
-            "shading; with 2 threads the calling thread's serial front end (886-1,103 M instructions over 3 "
-            "frames against 920 M of band work, round 12; round 14's 136-byte records, 176 before, add 22 "
-            "instructions a triangle for less memory traffic) bounds the frame")
+           "round 14 widens the block to 32x48 centres: spheres_m -34 % instructions, spheres_l +1 %; "
+           "round 15 takes every box to the block, with plain stores: spheres_l -3.6 %); what is left per "
+           "triangle is set-up (planes_of, about 235 instructions), the cover (about 140), the block's "
+           "rows, and with 2 threads the calling thread's transform and binning (about 620 instructions "
+           "a triangle)")
+_MILLION = ("vertex-bound: on the calling thread about 1,000 instructions a 1-pixel triangle (round 15: "
+            "transform and assembly about 410, the three glVertex2f entry points about 220, binning its "
+            "128 + 8-byte record about 225), against about 900 of set-up and shading in the bands; with 2 "
+            "threads that serial front end bounds the frame")
 _SCALE_VERTEX = ("the calling thread bins every triangle (spheres_l: about 770 M of 2,060 M instructions over 3 "
                  "frames); the clock's 2-thread speed-up is below the instruction model's 1.7x")
 _ROUNDING = ("1/255 rounding of halves: both compute c x 255 in single precision, softgl rounds a half up "
@@ -46,23 +47,25 @@ LIMITS = {
         "spheres_m": _VERTEX, "spheres_l": _VERTEX,
         "lit_spheres": _VERTEX + "; plus per-vertex lighting (about 280 instructions a vertex, four vertices at a time since round 14)",
         "immediate_1m": _MILLION, "display_list_1m": _MILLION, "arrays_1m": _MILLION,
-        "fog_spheres": ("the per-fragment EXP2 fog factor (libm exp, about 16 % of the frame; an f32 exponential "
-                        "in lanes took fewer instructions but more time, round 12) and f64 plane interpolation "
-                        "with a per-pixel 1/w; its triangles take round 14's block cover but the span kernel "
-                        "(no block kernel with fog yet)"),
-        "fog_spheres_fast": ("the GL_NICEST fog kernel minus the exponential: f64 plane interpolation with a "
-                             "per-pixel 1/w (no stepped GL_FASTEST fog kernel yet)"),
+        "fog_spheres": ("since round 15 its covers take the block kernel with fog (the EXP2 factor four lanes at a "
+                        "time, libm's expf bits); what is left is spheres_m's per-triangle set-up and binning and "
+                        "f64 plane interpolation with a per-pixel 1/w"),
+        "fog_spheres_fast": ("as fog_spheres without the exponential: f64 plane interpolation with a per-pixel "
+                             "1/w (no stepped GL_FASTEST fog kernel)"),
         "accum_blur": ("glAccum is memory-bound: about a third of the frame's instructions, each of the five "
                        "passes a frame reads and writes the 8-byte accumulation pixel and reads the colour buffer"),
     },
     "ahead 2t": {
         "arrays_1m": _MILLION, "immediate_1m": _MILLION, "display_list_1m": _MILLION,
-        "textured": ("at the line: llvmpipe's spread from run to run (softgl's textured is unchanged by round 14: "
-                     "alternating A/B 13.2 against 13.7 ms; a rerun of 4 repetitions minutes after the 18:52 run "
-                     "gave softgl 14.7 against llvmpipe's 21.0 ms)"),
+        "textured": ("the per-pixel trilinear filter, near the line: in the 23:14 run of 2026-11-27 the host was "
+                     "in a slow phase (softpipe's spheres_l 442 ms against 147 idle) that slowed softgl's textured "
+                     "more than llvmpipe's; round 15 did not change it (alternating A/B, 1 thread: round 14's "
+                     "library 42.6 ms, round 15's 38.6)"),
     },
     "ahead 1t": {
-        "arrays_1m": _MILLION, "immediate_1m": _MILLION, "textured": "the per-pixel trilinear filter",
+        "arrays_1m": _MILLION, "immediate_1m": _MILLION,
+        "textured": ("the per-pixel trilinear filter; in the slow phase of the 23:14 run 1.16x and 1.21x in a rerun "
+                     "(both libraries: round 14's was behind llvmpipe there too, A/B 42.6 against round 15's 38.6 ms)"),
         "overdraw": ("a near tie on one thread: 16 window-sized opaque layers, each a colour and depth write "
                      "per pixel (memory traffic of 16 MB a layer); the rerun after the 18:52 run gave 60.5 "
                      "against llvmpipe's 61.7 ms"),
