@@ -567,10 +567,10 @@ super::entry_points! {
     list["GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE/ONE are stored and queryable but change nothing: no multisample buffers"] glEnable(cap: GLenum) { |_c| Command::Enable(cap) }
     list["see glEnable"] glDisable(cap: GLenum) { |_c| Command::Disable(cap) }
     exec["as glEnable"] glIsEnabled(cap: GLenum) -> GLboolean { |c| match c.is_enabled(cap) { Some(b) => gl_bool(b), None => { c.set_error(GL_INVALID_ENUM); 0 } } }
-    exec["as glGetIntegerv"] glGetBooleanv(pname: GLenum, params: *mut GLboolean) { |c| c.get_into(pname, params, |v| v.as_bool().into_iter().map(gl_bool).collect()) }
-    exec["answers the state implemented so far; other names give GL_INVALID_ENUM"] glGetIntegerv(pname: GLenum, params: *mut GLint) { |c| c.get_into(pname, params, get::Value::as_i32) }
-    exec["as glGetIntegerv"] glGetFloatv(pname: GLenum, params: *mut GLfloat) { |c| c.get_into(pname, params, |v| v.as_f64().into_iter().map(|x| x as f32).collect()) }
-    exec["as glGetIntegerv"] glGetDoublev(pname: GLenum, params: *mut GLdouble) { |c| c.get_into(pname, params, get::Value::as_f64) }
+    exec glGetBooleanv(pname: GLenum, params: *mut GLboolean) { |c| c.get_into(pname, params, |v| v.as_bool().into_iter().map(gl_bool).collect()) }
+    exec glGetIntegerv(pname: GLenum, params: *mut GLint) { |c| c.get_into(pname, params, get::Value::as_i32) }
+    exec glGetFloatv(pname: GLenum, params: *mut GLfloat) { |c| c.get_into(pname, params, |v| v.as_f64().into_iter().map(|x| x as f32).collect()) }
+    exec glGetDoublev(pname: GLenum, params: *mut GLdouble) { |c| c.get_into(pname, params, get::Value::as_f64) }
     client glGetPointerv(pname: GLenum, params: *mut *mut c_void) { |c| if let Some(p) = c.get_pointer(pname) { write_out(params, &[p as *mut c_void]) } }
     exec glGetClipPlane(plane: GLenum, equation: *mut GLdouble) { |c| match c.get_clip_plane(plane) { Some(p) => write_out(equation, &p), None => c.set_error(GL_INVALID_ENUM) } }
     exec glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat) { |c| match c.get_light(light, pname) { Some(v) => write_out(params, &v), None => c.set_error(GL_INVALID_ENUM) } }

@@ -36,8 +36,10 @@ impl Value {
                 .iter()
                 .map(|&f| {
                     let f = f.clamp(-1.0, 1.0);
-                    // Map -1 -> MIN, 1 -> MAX: ((2^32 - 1) f - 1) / 2.
-                    ((4294967295.0 * f - 1.0) / 2.0).round().clamp(i32::MIN as f64, i32::MAX as f64) as i32
+                    // Map -1 -> MIN, 1 -> MAX: ((2^32 - 1) f - 1) / 2. The
+                    // spec leaves ties open; to even, so 0 gives 0 (-0.5),
+                    // not -1, as applications expect of a zero colour.
+                    ((4294967295.0 * f - 1.0) / 2.0).round_ties_even().clamp(i32::MIN as f64, i32::MAX as f64) as i32
                 })
                 .collect(),
         }

@@ -400,11 +400,13 @@ fn put_normalized(out: &mut [u8], ty: u32, v: f64) {
     let v = v.clamp(if matches!(ty, GL_BYTE | GL_SHORT | GL_INT) { -1.0 } else { 0.0 }, 1.0);
     match ty {
         GL_UNSIGNED_BYTE => out[0] = (v * 255.0).round() as u8,
-        GL_BYTE => out[0] = ((v * 255.0 - 1.0) / 2.0).round() as i8 as u8,
+        // Signed types: (2^b - 1) c - 1) / 2 (table 2.9 inverted); its ties
+        // go to even, so a zero component reads back as 0, not -1.
+        GL_BYTE => out[0] = ((v * 255.0 - 1.0) / 2.0).round_ties_even() as i8 as u8,
         GL_UNSIGNED_SHORT => out[..2].copy_from_slice(&((v * 65535.0).round() as u16).to_ne_bytes()),
-        GL_SHORT => out[..2].copy_from_slice(&(((v * 65535.0 - 1.0) / 2.0).round() as i16).to_ne_bytes()),
+        GL_SHORT => out[..2].copy_from_slice(&(((v * 65535.0 - 1.0) / 2.0).round_ties_even() as i16).to_ne_bytes()),
         GL_UNSIGNED_INT => out[..4].copy_from_slice(&((v * 4294967295.0).round() as u32).to_ne_bytes()),
-        GL_INT => out[..4].copy_from_slice(&(((v * 4294967295.0 - 1.0) / 2.0).round() as i32).to_ne_bytes()),
+        GL_INT => out[..4].copy_from_slice(&(((v * 4294967295.0 - 1.0) / 2.0).round_ties_even() as i32).to_ne_bytes()),
         _ => out[..4].copy_from_slice(&(v as f32).to_ne_bytes()),
     }
 }
