@@ -461,3 +461,149 @@ fn batched_flushes_bin_as_the_general_path() {
     let flights = softgl::render::tile::flights_started() - before;
     assert!(flights > 300, "triangles went to the workers ({flights} batches)");
 }
+
+/// MXCSR, for the case of a caller that unmasks exceptions (never
+/// trusted: `api::fpenv`).
+#[cfg(target_arch = "x86_64")]
+fn mxcsr() -> u32 {
+    let mut v: u32 = 0;
+    // SAFETY: stmxcsr stores 4 bytes to a valid, aligned local.
+    unsafe { std::arch::asm!("stmxcsr [{}]", in(reg) &mut v as *mut u32, options(nostack, preserves_flags)) };
+    v
+}
+
+#[cfg(target_arch = "x86_64")]
+fn set_mxcsr(v: u32) {
+    // SAFETY: loads 4 bytes from a valid local holding a valid MXCSR.
+    unsafe { std::arch::asm!("ldmxcsr [{}]", in(reg) &v as *const u32, options(nostack, preserves_flags)) };
+}
+
+/// One case through the C entry points: random state, then primitives of
+/// every kind by glColor and the float glVertex forms, sometimes compiled
+/// (GL_COMPILE then glCallList, or GL_COMPILE_AND_EXECUTE) or begun by a
+/// caller that unmasks floating-point exceptions. Pushes, per primitive,
+/// whether `plain_vertex` was set inside it, and whether it should have
+/// been; asserts it is clear after each glEnd.
+#[cfg(target_arch = "x86_64")]
+unsafe fn entry_case(r: &mut Rng, gl: *const Context, seen: &mut Vec<(bool, bool)>) {
+    use softgl::api::table::*;
+    let masked = mxcsr();
+    let batching = (*gl).vertex_batching;
+    glClearColor(r.unit(), r.unit(), r.unit(), 1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glShadeModel(if r.chance(30) { GL_FLAT } else { GL_SMOOTH });
+    let lit = r.chance(25);
+    if lit {
+        glEnable(GL_LIGHTING);
+        glEnable(GL_LIGHT0);
+        let pos = [r.range(-1.0, 1.0), r.range(-1.0, 1.0), 1.0, 0.0];
+        glLightfv(GL_LIGHT0, GL_POSITION, pos.as_ptr());
+    } else {
+        glDisable(GL_LIGHTING);
+    }
+    let fog = r.chance(15);
+    if fog {
+        glEnable(GL_FOG);
+    } else {
+        glDisable(GL_FOG);
+    }
+    if r.chance(50) {
+        glEnable(GL_DEPTH_TEST);
+    } else {
+        glDisable(GL_DEPTH_TEST);
+    }
+    for _ in 0..1 + r.below(4) {
+        let mode = r.pick(&[GL_TRIANGLES, GL_TRIANGLES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON, GL_LINES, GL_POINTS]);
+        // 0: immediate, 1: GL_COMPILE then glCallList, 2: compile and execute.
+        let list = if r.chance(25) { 1 + r.below(2) as u32 } else { 0 };
+        let unmasked = r.chance(20);
+        if list > 0 {
+            glNewList(1, if list == 1 { GL_COMPILE } else { GL_COMPILE_AND_EXECUTE });
+        }
+        if unmasked {
+            // Invalid, divide-by-zero and overflow unmasked (Delphi's).
+            set_mxcsr(0x1900);
+        }
+        glBegin(mode);
+        // GL_POLYGON is assembled at glEnd, never batched.
+        let filled = !matches!(mode, GL_LINES | GL_POINTS | GL_POLYGON);
+        let expect = batching && filled && !lit && !fog && !unmasked && list == 0;
+        let mut on = (*gl).plain_vertex;
+        let n = if r.chance(20) { r.below(40) } else { r.below(13) };
+        for _ in 0..n {
+            let (x, y, z) = (r.range(-1.2, 1.2), r.range(-1.2, 1.2), r.range(-0.9, 0.9));
+            match r.below(4) {
+                0 => glColor3f(r.unit(), r.unit(), r.unit()),
+                1 => glColor4f(r.unit(), r.unit(), r.unit(), r.unit()),
+                2 => glNormal3f(r.range(-1.0, 1.0), r.range(-1.0, 1.0), 1.0),
+                _ => {}
+            }
+            match r.below(5) {
+                0 => glVertex2f(x, y),
+                1 => glVertex3f(x, y, z),
+                2 => glVertex2fv([x, y].as_ptr()),
+                3 => glVertex3fv([x, y, z].as_ptr()),
+                _ => glVertex4f(x, y, z, 1.0),
+            }
+            on |= (*gl).plain_vertex;
+        }
+        glEnd();
+        if unmasked {
+            set_mxcsr(masked);
+        }
+        assert!(!(*gl).plain_vertex, "plain_vertex is cleared at glEnd");
+        if list > 0 {
+            glEndList();
+            if list == 1 {
+                glCallList(1);
+            }
+        }
+        seen.push((on, expect));
+    }
+}
+
+/// Round 16: the `list` entry points' way in while `plain_vertex` holds
+/// (`api::dispatch::with_current_list`: one flag set at glBegin instead
+/// of the guard's, the list's and the batch's tests per vertex). The same
+/// random commands through the C entry points into two contexts, one
+/// with the batched path off (the flag never set: the general path), give
+/// the same pixels; the flag is set exactly in the filled, unlit,
+/// fog-free primitives begun by a masked caller outside list compilation,
+/// and clear after glEnd (a list compiled after a plain primitive records
+/// its vertices).
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn plain_vertex_entries_match_the_general_path() {
+    use softgl::api::table::*;
+    let (w, h) = (45, 37);
+    unsafe {
+        let mut bufs = [vec![0u8; w * h * 4], vec![0u8; w * h * 4]];
+        let ctxs = [0, 1].map(|_| OSMesaCreateContextExt(GL_RGBA, 24, 8, 0, std::ptr::null_mut()));
+        let mut r = Rng(0x5eed_0016);
+        let (mut on, mut off) = (0, 0);
+        for case in 0..800 {
+            let seed = r.next();
+            let mut seen = [Vec::new(), Vec::new()];
+            for k in 0..2 {
+                assert_eq!(OSMesaMakeCurrent(ctxs[k], bufs[k].as_mut_ptr() as *mut std::ffi::c_void, GL_UNSIGNED_BYTE, w as i32, h as i32), 1);
+                (*ctxs[k]).gl.vertex_batching = k == 0;
+                entry_case(&mut Rng(seed), &(*ctxs[k]).gl, &mut seen[k]);
+                glFinish();
+            }
+            for (i, &(got, expect)) in seen[0].iter().enumerate() {
+                assert_eq!(got, expect, "case {case} primitive {i}: plain_vertex");
+                on += got as u32;
+                off += (!got) as u32;
+            }
+            assert!(seen[1].iter().all(|&(got, _)| !got), "case {case}: never set without batching");
+            if let Some(i) = (0..w * h * 4).find(|&i| bufs[0][i] != bufs[1][i]) {
+                panic!("case {case}: byte {i} (pixel ({}, {})) differs: entry fast path {} / general {}", i / 4 % w, i / 4 / w, bufs[0][i], bufs[1][i]);
+            }
+        }
+        assert!(on > 400 && off > 400, "primitives on the plain entry path {on}, off it {off}");
+        OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0);
+        for c in ctxs {
+            OSMesaDestroyContext(c);
+        }
+    }
+}

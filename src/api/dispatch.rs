@@ -41,6 +41,37 @@ pub fn with_current<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
     swapped_in(p, f)
 }
 
+/// The `list` entry points' way in: [`with_current`] building the
+/// command with `build` and submitting it (`Context::submit_direct`).
+/// Round 16: inside a primitive on the batched path's plain case whose
+/// caller masked every floating-point exception, while no list is being
+/// compiled (`Context::plain_vertex`, one flag set at glBegin), the
+/// guard's test, the list's and the batch's are all known: a context
+/// with no bound drawable or share group goes straight to
+/// `Context::submit_plain` (about 12 instructions a vertex fewer).
+#[inline(always)]
+pub fn with_current_list(build: impl FnOnce(&mut Context) -> Option<crate::gl::Command>) {
+    let p = current();
+    if p.is_null() {
+        return;
+    }
+    // SAFETY: as in with_current.
+    let ctx = unsafe { &mut *p };
+    if ctx.plain_vertex && ctx.bound.is_none() && ctx.share.is_none() {
+        // The guard would be skipped (`fp_trusted`); the panic guard stays.
+        return caught(p, move |ctx| {
+            if let Some(cmd) = build(ctx) {
+                ctx.submit_plain(cmd);
+            }
+        });
+    }
+    with_current(move |ctx| {
+        if let Some(cmd) = build(ctx) {
+            ctx.submit_direct(cmd);
+        }
+    })
+}
+
 /// [`with_current`] for contexts with a bound drawable or a share group:
 /// objects shared with other contexts, and the bound drawables'
 /// framebuffers, are put in place for the call. Out of line: rare.

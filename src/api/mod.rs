@@ -141,15 +141,11 @@ macro_rules! entry_point {
             // argument is Copy), not their addresses, so they can stay in
             // registers (by reference glColor3f spilled its three floats
             // and stored their addresses: about 10 instructions a call).
-            $crate::api::dispatch::with_current(move |ctx: &mut $crate::gl::Context| {
-                // The body may bail out with `?` (a NULL array) or `return None`
-                // (an error it has set): then nothing is recorded or run.
-                #[allow(unused_variables)]
-                let build = |$c: &mut $crate::gl::Context| -> Option<$crate::gl::Command> { Some($body) };
-                if let Some(cmd) = build(ctx) {
-                    ctx.submit_direct(cmd);
-                }
-            })
+            // The body may bail out with `?` (a NULL array) or `return None`
+            // (an error it has set): then nothing is recorded or run.
+            #[allow(unused_variables)]
+            let build = move |$c: &mut $crate::gl::Context| -> Option<$crate::gl::Command> { Some($body) };
+            $crate::api::dispatch::with_current_list(build)
         }
     };
     (exec $name:ident ( $($arg:ident : $ty:ty),* ) -> $ret:ty { |$c:ident| $body:expr }) => {

@@ -132,6 +132,7 @@ impl Context {
         }
         let plain = self.derived.lighting.is_none() && self.texture.vertex.units.is_empty() && rs.texture.is_none() && rs.fog.is_none();
         let fp_trusted = self.fp_caller_masked;
+        self.plain_vertex = fast && plain && fp_trusted && self.lists.compile_mode().is_none();
         let lit = fast && self.derived.lighting.is_some();
         let tracked = (lit && self.lighting.color_material).then(|| {
             let face = self.lighting.color_material_face;
@@ -158,6 +159,7 @@ impl Context {
     }
 
     pub fn end(&mut self) {
+        self.plain_vertex = false;
         self.flush_vertices();
         let Some(mut asm) = self.prim.take() else {
             return self.set_error(GL_INVALID_OPERATION);

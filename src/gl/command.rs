@@ -232,6 +232,21 @@ impl Context {
         }
     }
 
+    /// [`Context::submit_direct`] while `plain_vertex` holds (no list is
+    /// being compiled): a vertex goes straight to the batched path's
+    /// plain case, as `vertex` would send it (round 16).
+    #[inline(always)]
+    pub(crate) fn submit_plain(&mut self, cmd: Command) {
+        debug_assert!(self.plain_vertex && self.plain_batch() && self.lists.compile_mode().is_none());
+        // As in `submit_direct`: a vertex owns nothing, and held in
+        // ManuallyDrop skips the out-of-line drop of a generic Command.
+        let cmd = std::mem::ManuallyDrop::new(cmd);
+        match &*cmd {
+            Command::Vertex(v) => self.vertex_fast::<true>(*v),
+            _ => self.submit_direct(std::mem::ManuallyDrop::into_inner(cmd)),
+        }
+    }
+
     /// Executes one command against the context.
     pub fn execute(&mut self, cmd: &Command) {
         // The per-vertex commands first: legal anywhere, so no Begin/End

@@ -51,6 +51,14 @@ pub struct Context {
     /// exception (set by `api::dispatch::with_current`); glBegin keeps it
     /// for the primitive (`Context::fp_trusted`).
     pub fp_caller_masked: bool,
+    /// Round 16: the open primitive is on the batched path's plain case
+    /// (`Context::plain_batch`), was begun by a caller that masked every
+    /// floating-point exception (`fp_trusted`), and no list is being
+    /// compiled: set at glBegin, cleared at glEnd, none of which can
+    /// change in between. The `list` entry points test this one flag
+    /// (`api::dispatch::with_current_list`) instead of the guard's, the
+    /// list's and the batch's tests per vertex.
+    pub plain_vertex: bool,
     pub lists: lists::Lists,
     pub pixel_store: pixels::PixelStore,
     /// Vertex arrays (client state, GL_CLIENT_VERTEX_ARRAY_BIT).
@@ -138,6 +146,7 @@ impl Context {
             prim: None,
             vertex_batching: true,
             fp_caller_masked: false,
+            plain_vertex: false,
             lists: Default::default(),
             pixel_store: Default::default(),
             arrays: Default::default(),
