@@ -14,6 +14,8 @@ use super::vertex::ClipVertex;
 use super::shade_state::SetupParams;
 use super::RenderState;
 use glam::Vec4;
+use std::mem::MaybeUninit;
+use std::ptr::addr_of_mut;
 
 pub const SUBPIXEL_BITS: u32 = 8;
 pub const ONE: i64 = 1 << SUBPIXEL_BITS;
@@ -296,14 +298,20 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
     // A tiny triangle (round 13) is covered as one block and, under the
     // common states, shaded as one (`fragment::stamp`).
     let centres = raster::CentreBox::of(ex, ey, rs.draw_rect);
-    if centres.count() > raster::Cover::SMALLEST && rs.polygon_stipple.is_none() && !rs.reference && !fb.draw_both {
-        let mut cover = raster::Cover::EMPTY;
-        if cover.find_in(ex, ey, centres) {
+    let count = centres.count();
+    if count > raster::Cover::SMALLEST && rs.polygon_stipple.is_none() && !rs.reference && !fb.draw_both {
+        let mut slot = MaybeUninit::uninit();
+        if let Some(cover) = raster::Cover::find_into(&mut slot, ex, ey, centres) {
             if !cover.is_empty() {
-                shade_cover(rs, fb, zq, v, ex, ey, flat_color[back as usize], back, front_facing, &cover);
+                shade_cover(rs, fb, zq, v, ex, ey, flat_color[back as usize], back, front_facing, cover);
             }
             return;
         }
+    }
+    // No pixel centre in the box (most often a triangle smaller than a
+    // pixel): no pixel (round 16: before the runs' array is made).
+    if count == 0 {
+        return;
     }
     // A short triangle's runs are found first: covering no pixel (most
     // often through the stipple or between pixel centres), it needs no
@@ -313,12 +321,15 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
     if runs.is_some_and(|r| r.is_empty()) {
         return;
     }
-    let setup = planes_of(rs, zq, v, ex, ey, flat_color[back as usize], back, front_facing);
-    let k = raster::kernel(rs, fb, &setup);
+    let mut slot = MaybeUninit::uninit();
+    let setup = solve(&mut slot, rs, zq, v, ex, ey, flat_color[back as usize], back, front_facing);
+    let k = raster::kernel(rs, fb, setup);
     match runs {
-        Some(r) => r.shade(rs, fb, &setup, k),
-        None => raster::triangle(rs, fb, ex, ey, &setup, k),
+        Some(r) => r.shade(rs, fb, setup, k),
+        None => raster::triangle(rs, fb, ex, ey, setup, k),
     }
+    // SAFETY: solved above.
+    unsafe { release(&mut slot) }
 }
 
 /// Sets up and shades a small triangle's cover now: by its block kernel,
@@ -326,20 +337,23 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn shade_cover<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool, cover: &raster::Cover) {
-    let setup = planes_of(rs, zq, v, ex, ey, flat_color, back, front_facing);
-    match rs.shade.stamp(rs, &setup) {
+    let mut slot = MaybeUninit::uninit();
+    let setup = solve(&mut slot, rs, zq, v, ex, ey, flat_color, back, front_facing);
+    match rs.shade.stamp(rs, setup) {
         Some(sk) => {
             // SAFETY: the cover lies within the draw rectangle, inside the
             // framebuffer; the state tests depth only with a depth buffer;
             // nothing else runs on the framebuffer (1 thread, or synced).
-            let passed = unsafe { sk(&rs.fragment, &setup, &super::fragment::stamp::Target::of(fb), cover) };
+            let passed = unsafe { sk(&rs.fragment, setup, &super::fragment::stamp::Target::of(fb), cover) };
             fb.samples_passed = fb.samples_passed.wrapping_add(passed);
         }
         None => {
-            let k = raster::kernel(rs, fb, &setup);
-            raster::shade_runs(cover.rows(), rs, fb, &setup, k)
+            let k = raster::kernel(rs, fb, setup);
+            raster::shade_runs(cover.rows(), rs, fb, setup, k)
         }
     }
+    // SAFETY: solved above.
+    unsafe { release(&mut slot) }
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -544,19 +558,56 @@ fn signed_zero(zero: f64, d_sign: u64) -> f64 {
 #[allow(clippy::too_many_arguments)]
 #[inline]
 pub(crate) fn planes_of<P: SetupParams, A: Attributes>(rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
-    // Decided once per triangle, not per plane.
-    if planes_lanes() {
-        planes_by::<P, A, true>(rs, zq, v, ex, ey, flat_color, back, front_facing)
-    } else {
-        planes_by::<P, A, false>(rs, zq, v, ex, ey, flat_color, back, front_facing)
+    let mut t = MaybeUninit::uninit();
+    planes_into(&mut t, rs, zq, v, ex, ey, flat_color, back, front_facing);
+    // SAFETY: `planes_into` writes every field.
+    unsafe { t.assume_init() }
+}
+
+/// [`planes_of`]'s set-up for the shading paths, solved in place into
+/// `slot` (the caller's frame) and lent out; the caller passes the slot to
+/// [`release`] when done. Round 16: returned by value, the 336-byte
+/// set-up was built on `planes_of`'s stack and copied to the caller's
+/// (about 47 instructions a triangle), and dropped by an out-of-line call
+/// (9 more); here each field is stored once, and only a set-up holding
+/// texture planes has anything to drop. (A slot type with `Drop` was
+/// zeroed with `memset` at each construction: 35 instructions.)
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+pub(crate) fn solve<'a, P: SetupParams, A: Attributes>(slot: &'a mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> &'a TriangleSetup {
+    planes_into(slot, rs, zq, v, ex, ey, flat_color, back, front_facing);
+    // SAFETY: `planes_into` writes every field.
+    unsafe { slot.assume_init_ref() }
+}
+
+/// Drops a set-up [`solve`] wrote into `slot` (only texture planes own
+/// anything; a slot never released leaks them, nothing worse).
+///
+/// Safety: `slot` was written by [`solve`] and not released since.
+#[inline(always)]
+pub(crate) unsafe fn release(slot: &mut MaybeUninit<TriangleSetup>) {
+    if slot.assume_init_ref().tex.is_some() {
+        slot.assume_init_drop()
     }
 }
 
-/// [`planes_of`] with every plane solved in lanes (LANES) or by the
+/// Writes the planes of [`planes_of`] into `out`, every field.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn planes_into<P: SetupParams, A: Attributes>(out: &mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) {
+    // Decided once per triangle, not per plane.
+    if planes_lanes() {
+        planes_by::<P, A, true>(out, rs, zq, v, ex, ey, flat_color, back, front_facing)
+    } else {
+        planes_by::<P, A, false>(out, rs, zq, v, ex, ey, flat_color, back, front_facing)
+    }
+}
+
+/// [`planes_into`] with every plane solved in lanes (LANES) or by the
 /// scalar form: the same bits either way.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn planes_by<P: SetupParams, A: Attributes, const LANES: bool>(rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
+fn planes_by<P: SetupParams, A: Attributes, const LANES: bool>(out: &mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) {
     let inv = 1.0 / ONE as f64;
     let x = ex.map(|c| c as f64 * inv);
     let y = ey.map(|c| c as f64 * inv);
@@ -582,26 +633,48 @@ fn planes_by<P: SetupParams, A: Attributes, const LANES: bool>(rs: &P, zq: [(f64
         let m = z.dx.abs().max(z.dy.abs());
         z.a0 += m * factor as f64 + units as f64 * OFFSET_UNIT;
     }
-    let mut t = TriangleSetup { tex: None, fog: None, secondary: None, x0: x[0], y0: y[0], z, q: q_plane, color, perspective, flat, front_facing };
-    // The optional planes are filled in place when present: built in
-    // temporaries and moved in, their payloads were copied from the stack
-    // even when absent (about 20 instructions a triangle).
-    if let Some(stage) = rs.texture() {
-        let mut planes = [[Plane::default(); 4]; super::texture::MAX_UNITS];
-        for &u in &stage.active {
-            for (c, p) in planes[u].iter_mut().enumerate() {
-                *p = plane([0, 1, 2].map(|i| v[i].tex(u)[c] as f64 * q[i]));
+    let t = out.as_mut_ptr();
+    // SAFETY: `t` points to `out`'s (uninitialized) set-up; each field is
+    // written once through a raw pointer (no reference to an unwritten
+    // field, nothing read or dropped). The optional planes are written in
+    // their own branches, so an absent one stores its tag only (moved in
+    // as a whole `Option`, its payload was copied from the stack even when
+    // absent).
+    unsafe {
+        addr_of_mut!((*t).x0).write(x[0]);
+        addr_of_mut!((*t).y0).write(y[0]);
+        addr_of_mut!((*t).z).write(z);
+        addr_of_mut!((*t).q).write(q_plane);
+        addr_of_mut!((*t).color).write(color);
+        addr_of_mut!((*t).perspective).write(perspective);
+        addr_of_mut!((*t).flat).write(flat);
+        addr_of_mut!((*t).front_facing).write(front_facing);
+        let textured = match rs.texture() {
+            Some(stage) => {
+                let mut planes = [[Plane::default(); 4]; super::texture::MAX_UNITS];
+                for &u in &stage.active {
+                    for (c, p) in planes[u].iter_mut().enumerate() {
+                        *p = plane([0, 1, 2].map(|i| v[i].tex(u)[c] as f64 * q[i]));
+                    }
+                }
+                addr_of_mut!((*t).tex).write(Some(Box::new(TexPlanes { stage: stage.clone(), planes })));
+                true
             }
+            None => {
+                addr_of_mut!((*t).tex).write(None);
+                false
+            }
+        };
+        match rs.fog() {
+            Some(f) => addr_of_mut!((*t).fog).write(Some((plane([0, 1, 2].map(|i| v[i].fog() as f64 * if perspective { q[i] } else { 1.0 })), f))),
+            None => addr_of_mut!((*t).fog).write(None),
         }
-        t.tex = Some(Box::new(TexPlanes { stage: stage.clone(), planes }));
+        if rs.color_sum() && textured {
+            addr_of_mut!((*t).secondary).write(Some([0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| if back { v[i].back_secondary() } else { v[i].secondary() }[ch] as f64 * if perspective { q[i] } else { 1.0 })))));
+        } else {
+            addr_of_mut!((*t).secondary).write(None);
+        }
     }
-    if let Some(f) = rs.fog() {
-        t.fog = Some((plane([0, 1, 2].map(|i| v[i].fog() as f64 * if perspective { q[i] } else { 1.0 })), f));
-    }
-    if rs.color_sum() && t.tex.is_some() {
-        t.secondary = Some([0, 1, 2].map(|ch| plane([0, 1, 2].map(|i| if back { v[i].back_secondary() } else { v[i].secondary() }[ch] as f64 * if perspective { q[i] } else { 1.0 }))));
-    }
-    t
 }
 
 #[cfg(test)]
@@ -814,9 +887,33 @@ mod tests {
             let params = Params { flat: n % 11 == 5, offset: (n % 13 == 1).then_some((1.5, 2.0)), fog: (n % 3 == 0).then_some(fog) };
             let zq = [0, 1, 2].map(|i| (z[i], q[i]));
             let t = planes_of(&params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+            // Round 16: every field written in place, through `solve`
+            // (the shading paths' form) as through `planes_of`.
+            let mut slot = MaybeUninit::uninit();
+            let solved = solve(&mut slot, &params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+            let fields = |t: &TriangleSetup| {
+                let planes = [t.z, t.q, t.color[0], t.color[1], t.color[2], t.color[3], t.fog.map_or(Plane::default(), |f| f.0)].map(|p| bits(&p));
+                (planes, [t.x0, t.y0].map(f64::to_bits), t.perspective, t.flat, t.front_facing, t.tex.is_some(), t.fog.map(|f| f.1.mode), t.secondary.is_some())
+            };
+            assert_eq!(fields(solved), fields(&t), "{ex:?} {ey:?}");
+            // SAFETY: solved above.
+            unsafe { release(&mut slot) };
+            assert_eq!([t.x0, t.y0], [ex[0] as f64 / ONE as f64, ey[0] as f64 / ONE as f64]);
+            assert_eq!(t.front_facing, !back);
+            assert!(t.tex.is_none() && t.secondary.is_none());
+            assert_eq!(t.fog.map(|f| f.1.mode), params.fog.map(|f| f.mode));
             // The lanes' and the scalar form's planes, bit for bit.
-            let scalar = planes_by::<_, _, false>(&params, zq, w.each_ref(), ex, ey, front[2], back, !back);
-            let lanes = planes_by::<_, _, true>(&params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+            let by = |lanes: bool| {
+                let mut t = MaybeUninit::uninit();
+                if lanes {
+                    planes_by::<_, _, true>(&mut t, &params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+                } else {
+                    planes_by::<_, _, false>(&mut t, &params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+                }
+                // SAFETY: `planes_by` writes every field.
+                unsafe { t.assume_init() }
+            };
+            let (scalar, lanes) = (by(false), by(true));
             for u in [&scalar, &lanes] {
                 let all = |t: &TriangleSetup| [t.z, t.q, t.color[0], t.color[1], t.color[2], t.color[3], t.fog.map_or(Plane::default(), |f| f.0)].map(|p| bits(&p));
                 assert_eq!(all(u), all(&t), "{ex:?} {ey:?}");
@@ -832,8 +929,9 @@ mod tests {
             }
             assert_eq!(bits(&t.z), bits(&zp), "z of {ex:?} {ey:?}");
             if params.flat {
-                assert!(t.flat.is_some());
+                assert_eq!(t.flat, Some(crate::render::fragment::color_to_u8(front[2])));
             } else {
+                assert!(t.flat.is_none());
                 let c = if back { backc } else { front };
                 for ch in 0..4 {
                     let want = plane_by_division(ex, ey, [0, 1, 2].map(|i| c[i][ch] as f64 * s[i]));

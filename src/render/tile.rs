@@ -89,7 +89,7 @@ use super::point::PointRun;
 use super::pool;
 use super::runs;
 use super::raster;
-use super::setup::{planes_of, Attributes, TriangleSetup};
+use super::setup::{release, solve, Attributes, TriangleSetup};
 use super::shade_state::ShadeState;
 use super::texture::MAX_UNITS;
 use super::RenderState;
@@ -780,7 +780,13 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
     let stipple = st.polygon_stipple.as_deref();
     let (x, y) = t.xy();
     let centres = raster::CentreBox::of(x, y, rect);
-    if centres.count() > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extra, (x, y), centres, &mut shade) {
+    let count = centres.count();
+    if count > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extra, (x, y), centres, &mut shade) {
+        return;
+    }
+    // No pixel centre in the box: no pixel (round 16: before the runs'
+    // array is made).
+    if count == 0 {
         return;
     }
     let a = [0, 1, 2].map(|i| BinAttributes { color: Vec4::from_array(t.v[i].color), extra, i });
@@ -791,15 +797,18 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
     if found && runs.is_empty() {
         return;
     }
-    let setup = planes_of(st, zq, a.each_ref(), x, y, color, false, front_facing);
-    let k = st.kernel(&setup);
+    let mut slot = std::mem::MaybeUninit::uninit();
+    let setup = solve(&mut slot, st, zq, a.each_ref(), x, y, color, false, front_facing);
+    let k = st.kernel(setup);
     if found {
         for (py, lo, hi) in runs.iter() {
-            shade(Shading::Span(k, &setup, py, lo, hi));
+            shade(Shading::Span(k, setup, py, lo, hi));
         }
     } else {
-        raster::spans(x, y, rect, stipple, |py, lo, hi| shade(Shading::Span(k, &setup, py, lo, hi)));
+        raster::spans(x, y, rect, stipple, |py, lo, hi| shade(Shading::Span(k, setup, py, lo, hi)));
     }
+    // SAFETY: solved above.
+    unsafe { release(&mut slot) }
 }
 
 /// [`shade_binned`] for a triangle whose box has more than
@@ -807,25 +816,28 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
 /// cover's runs; false when it does not fit the block.
 #[inline(always)]
 fn shade_binned_block(t: &Binned, st: &ShadeState, extra: &BinExtra, (x, y): ([i64; 3], [i64; 3]), centres: raster::CentreBox, shade: &mut impl FnMut(Shading<'_>)) -> bool {
-    let mut cover = raster::Cover::EMPTY;
-    if !cover.find_in(x, y, centres) {
+    let mut slot = std::mem::MaybeUninit::uninit();
+    let Some(cover) = raster::Cover::find_into(&mut slot, x, y, centres) else {
         return false;
-    }
+    };
     if cover.is_empty() {
         return true;
     }
     let a = [0, 1, 2].map(|i| BinAttributes { color: Vec4::from_array(t.v[i].color), extra, i });
     let zq = t.v.map(|v| (v.z, v.q));
-    let setup = planes_of(st, zq, a.each_ref(), x, y, Vec4::from_array(t.v[0].color), false, t.front_facing());
-    match st.stamp(&setup) {
-        Some(sk) => shade(Shading::Stamp(sk, &setup, &cover)),
+    let mut slot = std::mem::MaybeUninit::uninit();
+    let setup = solve(&mut slot, st, zq, a.each_ref(), x, y, Vec4::from_array(t.v[0].color), false, t.front_facing());
+    match st.stamp(setup) {
+        Some(sk) => shade(Shading::Stamp(sk, setup, cover)),
         None => {
-            let k = st.kernel(&setup);
+            let k = st.kernel(setup);
             for (py, lo, hi) in cover.rows() {
-                shade(Shading::Span(k, &setup, py, lo, hi));
+                shade(Shading::Span(k, setup, py, lo, hi));
             }
         }
     }
+    // SAFETY: solved above.
+    unsafe { release(&mut slot) };
     true
 }
 
