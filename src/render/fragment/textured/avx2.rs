@@ -1218,6 +1218,10 @@ struct Ctx<'a> {
     /// Colour and fog take 1/w from q (same plane) / from their own plane / none.
     w_mode: u8,
     colors: [(f64, f64); 4],
+    /// For each colour channel the first channel with the same row (the
+    /// same bits of its value and slope), itself if none: white or grey
+    /// vertices compute one channel for several (`same_rows`).
+    color_src: [u8; 4],
     flat: Option<Rgba>,
     fog: Option<((f64, f64), Fog)>,
     /// GL_FASTEST: λ at a pixel centre (cx, λ), computed for the previous
@@ -1230,6 +1234,13 @@ struct Ctx<'a> {
     x_end: usize,
     /// Tests: λ per group, not ahead (`lambda_ahead_on_this_thread`).
     no_ahead: bool,
+}
+
+/// `Ctx::color_src` of four rows: the first index whose row has the
+/// same bits (equal bits give equal results lane by lane).
+fn same_rows(rows: [(f64, f64); 4]) -> [u8; 4] {
+    let bits = rows.map(|(a, d)| (a.to_bits(), d.to_bits()));
+    std::array::from_fn(|c| bits.iter().position(|b| *b == bits[c]).unwrap_or(c) as u8)
 }
 
 const W_NONE: u8 = 0;
@@ -1377,6 +1388,12 @@ unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
         None => {
             let mut p = [_mm256_setzero_ps(); 4];
             for ch in 0..4 {
+                // A channel whose row is an earlier one's has its bits.
+                let from = k.color_src[ch] as usize;
+                if from < ch {
+                    p[ch] = p[from];
+                    continue;
+                }
                 let v = L::at(k.colors[ch].0, k.colors[ch].1, &c);
                 let v = if k.w_mode == W_NONE { v } else { v.mul(&w) };
                 p[ch] = clamp01(v.to_f32());
@@ -1509,6 +1526,7 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
             W_OWN
         },
         colors: std::array::from_fn(|c| row(&t.color[c])),
+        color_src: same_rows(std::array::from_fn(|c| row(&t.color[c]))),
         flat: t.flat.map(|c| c.map(|v| _mm256_set1_ps(v as f32 / 255.0))),
         fog: t.fog.as_ref().map(|(plane, f)| (row(plane), *f)),
         lambda_kept: std::cell::Cell::new((f64::NAN, 0.0)),
@@ -1591,6 +1609,18 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `same_rows` maps a channel to the first with the same value and
+    /// slope bits, and only then: a row equal in value but not in slope
+    /// (or 0.0 against -0.0) keeps its own.
+    #[test]
+    fn same_rows_match_bits() {
+        let (a, b) = ((0.5, 0.25), (0.5, 0.125));
+        assert_eq!(same_rows([a, b, a, b]), [0, 1, 0, 1]);
+        assert_eq!(same_rows([a, a, a, a]), [0, 0, 0, 0]);
+        assert_eq!(same_rows([a, b, (0.0, 0.25), (-0.0, 0.25)]), [0, 1, 2, 3]);
+        assert_eq!(same_rows([(0.5, 0.25), (0.75, 0.25), (1.0, 0.5), (1.0, 0.5)]), [0, 1, 2, 2]);
+    }
 
     /// GL_FASTEST's log2 is within 4e-5 of f64's on normal values from
     /// 2^-126 to 2^127 (mantissas sampled densely, every exponent).
