@@ -25,14 +25,18 @@ _VERTEX = ("vertex-bound: per-vertex transform and per-triangle set-up for trian
            "(spheres_l, 1 thread, before round 13: span shading 29 %, span finding 19 %, set-up planes 12 % "
            "of instructions; round 13 covers and shades boxes of up to 4x8 centres as one block, -16 %; "
            "round 14 widens the block to 32x48 centres: spheres_m -34 % instructions, spheres_l +1 %; "
-           "round 15 takes every box to the block, with plain stores: spheres_l -3.6 %); what is left per "
-           "triangle is set-up (planes_of, about 235 instructions), the cover (about 140), the block's "
-           "rows, and with 2 threads the calling thread's transform and binning (about 620 instructions "
-           "a triangle)")
-_MILLION = ("vertex-bound: on the calling thread about 1,000 instructions a 1-pixel triangle (round 15: "
-            "transform and assembly about 410, the three glVertex2f entry points about 220, binning its "
-            "128 + 8-byte record about 225), against about 900 of set-up and shading in the bands; with 2 "
-            "threads that serial front end bounds the frame")
+           "round 15 takes every box to the block, with plain stores: spheres_l -3.6 %; round 16 writes the "
+           "set-up in place, 237 -> 196 instructions, spheres_l -2.8 %); what is left per triangle is "
+           "set-up (about 196 instructions), the cover (about 134), the block's rows (about 271 a call, 85 "
+           "of them its prologue; a fifth of its time is framebuffer cache misses), and with 2 threads the "
+           "calling thread's transform and binning (about 600 instructions a triangle). softpipe's own "
+           "time moves most between runs (spheres_m 102 ms in the 01:46 run of 2026-11-28, 160-173 in the "
+           "runs before it)")
+_MILLION = ("vertex-bound: on the calling thread about 950 instructions a 1-pixel triangle (round 16: "
+            "transform and assembly about 410, the three glVertex2f entry points about 180 since one flag "
+            "set at glBegin replaced their separate checks, binning its 128 + 8-byte record about 225; a "
+            "list's replay or an array's loop about 210 instead of the entry points), against about 900 of "
+            "set-up and shading in the bands; with 2 threads that serial front end bounds the frame")
 _SCALE_VERTEX = ("the calling thread bins every triangle (spheres_l: about 770 M of 2,060 M instructions over 3 "
                  "frames); the clock's 2-thread speed-up is below the instruction model's 1.7x")
 _ROUNDING = ("1/255 rounding of halves: both compute c x 255 in single precision, softgl rounds a half up "
@@ -64,8 +68,11 @@ LIMITS = {
     },
     "ahead 1t": {
         "arrays_1m": _MILLION, "immediate_1m": _MILLION,
-        "textured": ("the per-pixel trilinear filter; in the slow phase of the 23:14 run 1.16x and 1.21x in a rerun "
-                     "(both libraries: round 14's was behind llvmpipe there too, A/B 42.6 against round 15's 38.6 ms)"),
+        "textured": ("the exact per-pixel trilinear filter (round 16: about 970 instructions a group of 8 pixels, "
+                     "each lane the reference path's IEEE operations; a fifth of its time texel cache misses, 18 % "
+                     "of its samples on stack spills; prefetching measured slower); level with llvmpipe with 2 "
+                     "threads, behind with 1 (1.16x to 1.34x in the runs of 2026-11-27/28, level at 18:52 on "
+                     "2026-11-27)"),
         "overdraw": ("a near tie on one thread: 16 window-sized opaque layers, each a colour and depth write "
                      "per pixel (memory traffic of 16 MB a layer); the rerun after the 18:52 run gave 60.5 "
                      "against llvmpipe's 61.7 ms"),
