@@ -581,7 +581,8 @@ pub(crate) fn solve<'a, P: SetupParams, A: Attributes>(slot: &'a mut MaybeUninit
 }
 
 /// Drops a set-up [`solve`] wrote into `slot` (only texture planes own
-/// anything; a slot never released leaks them, nothing worse).
+/// anything, as `only_texture_planes_need_dropping` checks; a slot never
+/// released leaks them, nothing worse).
 ///
 /// Safety: `slot` was written by [`solve`] and not released since.
 #[inline(always)]
@@ -837,6 +838,34 @@ mod tests {
     /// random small and large triangles with and without perspective,
     /// constant and varying colours, channels of exactly 1 and 0, depth
     /// constant or not, fog, polygon offset and both facings' colours.
+    /// [`release`] drops a solved set-up only when it holds texture
+    /// planes: `tex` must stay the only field that owns anything. The
+    /// pattern names every field, so a new one does not compile until it
+    /// is listed here and checked.
+    #[test]
+    fn only_texture_planes_need_dropping() {
+        fn owns<T>(_: &T) -> bool {
+            std::mem::needs_drop::<T>()
+        }
+        let t = TriangleSetup {
+            x0: 0.0,
+            y0: 0.0,
+            z: Plane::default(),
+            q: Plane::default(),
+            color: [Plane::default(); 4],
+            perspective: false,
+            flat: None,
+            front_facing: true,
+            tex: None,
+            fog: None,
+            secondary: None,
+        };
+        let TriangleSetup { x0, y0, z, q, color, perspective, flat, front_facing, tex, fog, secondary } = &t;
+        assert!(owns(tex));
+        let others = [owns(x0), owns(y0), owns(z), owns(q), owns(color), owns(perspective), owns(flat), owns(front_facing), owns(fog), owns(secondary)];
+        assert_eq!(others, [false; 10], "a field besides tex owns memory: release() would leak it");
+    }
+
     #[test]
     fn planes_match_dividing_every_plane() {
         let mut seed = 17u64;
