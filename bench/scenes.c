@@ -63,21 +63,64 @@ void perspective(void)
     glLoadIdentity();
 }
 
-/* A sphere of smooth-coloured triangle strips. */
-void sphere(int stacks, int slices)
+/* A sphere of smooth-coloured triangle strips.
+ *
+ * The strips' colours and vertices are computed once per (stacks, slices)
+ * and kept: recomputing ~1.2 million sin/cos calls a frame (spheres_l)
+ * timed the C library's libm, not the GL under test (about a tenth of
+ * spheres_l's 1-thread frame with softgl, 2026-11-28). The values are the
+ * same expressions in double as before, so the GL calls and images are
+ * unchanged; every frame still makes each glColor3d / glVertex3d call. */
+struct sphere_table {
+    int stacks, slices;
+    double *v; /* per stack, per slice, two (colour, vertex) pairs: 12 doubles */
+};
+
+static const double *sphere_values(int stacks, int slices)
 {
-    int i, j;
+    static struct sphere_table tables[4];
+    int i, j, k;
+    double *v;
+    for (k = 0; k < 4 && tables[k].v; k++)
+        if (tables[k].stacks == stacks && tables[k].slices == slices)
+            return tables[k].v;
+    v = malloc(sizeof(double) * 12 * stacks * (slices + 1));
+    if (!v) {
+        fprintf(stderr, "bench: out of memory\n");
+        exit(1);
+    }
     for (i = 0; i < stacks; i++) {
         double t0 = M_PI * i / stacks, t1 = M_PI * (i + 1) / stacks;
-        glBegin(GL_TRIANGLE_STRIP);
         for (j = 0; j <= slices; j++) {
             double p = 2 * M_PI * j / slices;
             double x0 = sin(t0) * cos(p), y0 = cos(t0), z0 = sin(t0) * sin(p);
             double x1 = sin(t1) * cos(p), y1 = cos(t1), z1 = sin(t1) * sin(p);
-            glColor3d(0.5 + 0.5 * x0, 0.5 + 0.5 * y0, 0.5 + 0.5 * z0);
-            glVertex3d(x0, y0, z0);
-            glColor3d(0.5 + 0.5 * x1, 0.5 + 0.5 * y1, 0.5 + 0.5 * z1);
-            glVertex3d(x1, y1, z1);
+            double *e = v + 12 * (i * (slices + 1) + j);
+            e[0] = 0.5 + 0.5 * x0; e[1] = 0.5 + 0.5 * y0; e[2] = 0.5 + 0.5 * z0;
+            e[3] = x0; e[4] = y0; e[5] = z0;
+            e[6] = 0.5 + 0.5 * x1; e[7] = 0.5 + 0.5 * y1; e[8] = 0.5 + 0.5 * z1;
+            e[9] = x1; e[10] = y1; e[11] = z1;
+        }
+    }
+    if (k < 4) {
+        tables[k].stacks = stacks;
+        tables[k].slices = slices;
+        tables[k].v = v;
+    }
+    return v;
+}
+
+void sphere(int stacks, int slices)
+{
+    const double *e = sphere_values(stacks, slices);
+    int i, j;
+    for (i = 0; i < stacks; i++) {
+        glBegin(GL_TRIANGLE_STRIP);
+        for (j = 0; j <= slices; j++, e += 12) {
+            glColor3d(e[0], e[1], e[2]);
+            glVertex3d(e[3], e[4], e[5]);
+            glColor3d(e[6], e[7], e[8]);
+            glVertex3d(e[9], e[10], e[11]);
         }
         glEnd();
     }
