@@ -122,6 +122,15 @@ fn every_plain_type_averages_its_values() {
     assert_eq!(o, vec![255, 0, 128]);
     let (_, o) = scale::<i8, u8>(&mut gl, GL_LUMINANCE, 2, 1, GL_BYTE, &[127, -128], 2, 1, GL_UNSIGNED_BYTE, 2);
     assert_eq!(o, vec![255, 0]);
+    // Into signed types 0.0 is the tie -1/2, packed to even as glReadPixels
+    // does: 0, not -1.
+    let f = [0.0f32, -1.0, 1.0, -2.0, 0.5];
+    let (_, o) = scale::<f32, i8>(&mut gl, GL_LUMINANCE, 5, 1, GL_FLOAT, &f, 5, 1, GL_BYTE, 5);
+    assert_eq!(o, vec![0, -128, 127, -128, 63]);
+    let (_, o) = scale::<f32, i16>(&mut gl, GL_LUMINANCE, 5, 1, GL_FLOAT, &f, 5, 1, GL_SHORT, 5);
+    assert_eq!(o, vec![0, -32768, 32767, -32768, 16383]);
+    let (_, o) = scale::<f32, i32>(&mut gl, GL_LUMINANCE, 5, 1, GL_FLOAT, &f, 5, 1, GL_INT, 5);
+    assert_eq!(o, vec![0, i32::MIN, i32::MAX, i32::MIN, 1_073_741_823]);
 }
 
 #[test]

@@ -8,7 +8,8 @@
 //! - colour and depth formats are normalized as GL converts integers
 //!   (GL 1.5 table 2.9): unsigned `c / (2^b - 1)`, signed
 //!   `(2c + 1) / (2^b - 1)`, packed fields `c / (2^b - 1)`, floats as is;
-//!   packing inverts the same formula and rounds to nearest, after clamping
+//!   packing inverts the same formula and rounds to nearest (a signed tie
+//!   to even, so 0.0 packs as 0, as glReadPixels does), after clamping
 //!   to [0, 1] (unsigned) or [-1, 1] (signed); floats are stored unclamped.
 //!   So a same-type scale averages the raw integers and rounds.
 //! - GL_COLOR_INDEX and GL_STENCIL_INDEX keep the raw integer values;
@@ -430,7 +431,9 @@ fn encode_plain(v: f64, size: usize, signed: bool, float: bool, index: bool) -> 
         r & mask_bits(bits) as i64
     } else if signed {
         let v = if v.is_nan() { 0.0 } else { v.clamp(-1.0, 1.0) };
-        ((m * v - 1.0) / 2.0).round().clamp(-(m + 1.0) / 2.0, (m - 1.0) / 2.0) as i64
+        // Ties to even, as glReadPixels packs (gl/pixel_data.rs): 0.0's
+        // exact value is -1/2, which must give 0, not -1.
+        ((m * v - 1.0) / 2.0).round_ties_even().clamp(-(m + 1.0) / 2.0, (m - 1.0) / 2.0) as i64
     } else {
         let v = if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
         (v * m).round() as i64
