@@ -31,6 +31,14 @@ pub struct PaddedLevel {
     pub texels: Vec<u32>,
     /// w + 2.
     pub stride: i32,
+    /// Bit k set: channel k (R, G, B, A) has one value in every texel of
+    /// the level, `flat_value[k]` (as c / 255). Every bilinear footprint
+    /// then filters to that value exactly (a + (a - a) w = a for the
+    /// weights in [0, 1)), so the kernel skips the channel's conversions
+    /// and lerps: opaque RGBA and RGB textures (alpha 255 throughout),
+    /// 1x1 levels.
+    pub flat: u8,
+    pub flat_value: [f32; 4],
 }
 
 /// The padded copies of a sampler's levels (base first).
@@ -122,9 +130,22 @@ pub fn build(levels: &[Arc<Image>], repeat: [bool; 2]) -> Option<Padded> {
             texels.extend(row.iter().map(|&t| u32::from_le_bytes(t)));
             texels.push(u32::from_le_bytes(row[right]));
         }
-        out.push(PaddedLevel { texels, stride });
+        let (flat, flat_value) = flat_channels(&tex[..(w * h) as usize]);
+        out.push(PaddedLevel { texels, stride, flat, flat_value });
     }
     Some(Padded { levels: out })
+}
+
+/// `PaddedLevel::flat` and `flat_value` of a level's texels (the padding
+/// only repeats them).
+fn flat_channels(tex: &[[u8; 4]]) -> (u8, [f32; 4]) {
+    let Some(first) = tex.first() else { return (0, [0.0; 4]) };
+    // The bits where any texel differs from the first.
+    let f = u32::from_le_bytes(*first);
+    let diff = tex.iter().fold(0, |d, t| d | (u32::from_le_bytes(*t) ^ f)).to_le_bytes();
+    let flat = (0..4).filter(|&k| diff[k] == 0).fold(0, |m, k| m | 1 << k);
+    let value = std::array::from_fn(|k| if flat & (1 << k) != 0 { first[k] as f32 / 255.0 } else { 0.0 });
+    (flat, value)
 }
 
 #[cfg(test)]
@@ -161,6 +182,22 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// `flat_channels`: a channel is flat when every texel has its first
+    /// texel's byte there (one differing bit breaks it), with that value
+    /// as c / 255; a single texel is flat in all four.
+    #[test]
+    fn flat_channels_of_levels() {
+        let (flat, v) = flat_channels(&[[1, 2, 3, 255], [4, 2, 3, 255], [1, 2, 131, 255]]);
+        assert_eq!(flat, 0b1010);
+        assert_eq!(v.map(f32::to_bits), [0.0, 2.0 / 255.0, 0.0, 1.0].map(f32::to_bits));
+        assert_eq!(flat_channels(&[[9, 0, 7, 5]]), (0b1111, [9.0 / 255.0, 0.0, 7.0 / 255.0, 5.0 / 255.0]));
+        assert_eq!(flat_channels(&[]).0, 0);
+        assert_eq!(flat_channels(&[[0, 0, 0, 0x80], [0, 0, 0, 0]]).0, 0b0111);
+        // Through `build`: only the level's own texels count.
+        let img = image(5, 3, 3);
+        assert_eq!(build(&[img], [true; 2]).unwrap().levels[0].flat, 0);
     }
 
     /// The shared table hands out the same copy for the same images and

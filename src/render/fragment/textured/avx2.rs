@@ -230,8 +230,9 @@ trait Isa: Copy {
     const WIDE: bool;
     /// `lod::log2_8`.
     unsafe fn log2(x: __m256) -> __m256;
-    /// `filter_pairs`.
-    unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba;
+    /// `filter_pairs`; the channels in `skip` (the level's flat ones and
+    /// those the environment does not read) may be `p.flat_value`'s.
+    unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2], skip: u8) -> Rgba;
     /// GL_FASTEST: `filter_fixed`.
     unsafe fn filter_fixed(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) -> __m256i;
     /// GL_FASTEST: packed RGBA8 lanes a + (b - a) w / 256 rounded (`lerp16`),
@@ -270,8 +271,8 @@ impl Isa for D8 {
     }
 
     #[inline(always)]
-    unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
-        filter_pairs(p, l, s, t, rep)
+    unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2], skip: u8) -> Rgba {
+        filter_pairs(p, l, s, t, rep, skip)
     }
 
     #[inline(always)]
@@ -376,7 +377,8 @@ impl Isa for __m512d {
     }
 
     #[inline(always)]
-    unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
+    unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2], _skip: u8) -> Rgba {
+        // All channels: a flat one filters to its value here too.
         filter_pairs_wide(p, l, s, t, rep)
     }
 
@@ -596,15 +598,16 @@ unsafe fn filter(l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) 
 /// the same texels `filter` reads through its four wraps.
 #[inline(always)]
 unsafe fn pairs(p: &PaddedLevel, l: &Level, i0: __m256i, j0: __m256i, rep: [bool; 2]) -> [__m256i; 4] {
-    let (r0, r1) = rows(p, l, i0, j0, rep);
+    let (r0, r1) = rows::<true>(p, l, i0, j0, rep);
     let ((c00, c01), (c10, c11)) = (split(r0), split(r1));
     [c00, c01, c10, c11]
 }
 
 /// The footprint's rows j0 and j0 + 1 as 64-bit elements (the texel pair
-/// of each lane, lanes 0-3 then 4-7), for `pairs`.
+/// of each lane): lanes 0-3 then 4-7, or with `SPLIT` lanes 0, 1, 4, 5
+/// then 2, 3, 6, 7 (`split`'s order).
 #[inline(always)]
-unsafe fn rows(p: &PaddedLevel, l: &Level, i0: __m256i, j0: __m256i, rep: [bool; 2]) -> ([__m256i; 2], [__m256i; 2]) {
+unsafe fn rows<const SPLIT: bool>(p: &PaddedLevel, l: &Level, i0: __m256i, j0: __m256i, rep: [bool; 2]) -> ([__m256i; 2], [__m256i; 2]) {
     let m1 = _mm256_set1_epi32(-1);
     // REPEAT: i0 mod w; CLAMP_TO_EDGE: clamp(i0, -1, w - 1) (the padding
     // holds the edge texel at -1 and w).
@@ -621,12 +624,19 @@ unsafe fn rows(p: &PaddedLevel, l: &Level, i0: __m256i, j0: __m256i, rep: [bool;
         _mm256_storeu_si256(o.as_mut_ptr().cast(), off);
         let s0 = p.stride as isize;
         let ld = |k: usize, d: isize| (base.offset(o[k] as isize + d) as *const i64).read_unaligned();
+        let [a, b, c, d, e, f, g, h] = if SPLIT { [0, 1, 4, 5, 2, 3, 6, 7] } else { [0, 1, 2, 3, 4, 5, 6, 7] };
         (
-            [_mm256_setr_epi64x(ld(0, 0), ld(1, 0), ld(2, 0), ld(3, 0)), _mm256_setr_epi64x(ld(4, 0), ld(5, 0), ld(6, 0), ld(7, 0))],
-            [_mm256_setr_epi64x(ld(0, s0), ld(1, s0), ld(2, s0), ld(3, s0)), _mm256_setr_epi64x(ld(4, s0), ld(5, s0), ld(6, s0), ld(7, s0))],
+            [_mm256_setr_epi64x(ld(a, 0), ld(b, 0), ld(c, 0), ld(d, 0)), _mm256_setr_epi64x(ld(e, 0), ld(f, 0), ld(g, 0), ld(h, 0))],
+            [_mm256_setr_epi64x(ld(a, s0), ld(b, s0), ld(c, s0), ld(d, s0)), _mm256_setr_epi64x(ld(e, s0), ld(f, s0), ld(g, s0), ld(h, s0))],
         )
     } else {
         let base = base as *const i64;
+        let (off, off1) = if SPLIT {
+            let order = _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+            (_mm256_permutevar8x32_epi32(off, order), _mm256_permutevar8x32_epi32(off1, order))
+        } else {
+            (off, off1)
+        };
         (
             [_mm256_i32gather_epi64::<4>(base, _mm256_castsi256_si128(off)), _mm256_i32gather_epi64::<4>(base, _mm256_extracti128_si256::<1>(off))],
             [_mm256_i32gather_epi64::<4>(base, _mm256_castsi256_si128(off1)), _mm256_i32gather_epi64::<4>(base, _mm256_extracti128_si256::<1>(off1))],
@@ -635,20 +645,53 @@ unsafe fn rows(p: &PaddedLevel, l: &Level, i0: __m256i, j0: __m256i, rep: [bool;
     (r0, r1)
 }
 
-/// [a0 b0 a1 b1 | a2 b2 a3 b3], [a4 b4 ..] -> [a0 .. a7], [b0 .. b7].
+/// [a0 b0 a1 b1 | a4 b4 a5 b5], [a2 b2 a3 b3 | a6 b6 a7 b7] (`rows`
+/// with `SPLIT`) -> [a0 .. a7], [b0 .. b7]: one in-lane shuffle each.
 #[inline(always)]
 unsafe fn split(r: [__m256i; 2]) -> (__m256i, __m256i) {
     let (lo, hi) = (_mm256_castsi256_ps(r[0]), _mm256_castsi256_ps(r[1]));
     let even = _mm256_castps_si256(_mm256_shuffle_ps::<0x88>(lo, hi));
     let odd = _mm256_castps_si256(_mm256_shuffle_ps::<0xDD>(lo, hi));
-    (_mm256_permute4x64_epi64::<0xD8>(even), _mm256_permute4x64_epi64::<0xD8>(odd))
+    (even, odd)
 }
 
-/// `filter` for LINEAR with the padded copy: the same weights and lerps.
+/// `filter` for LINEAR with the padded copy: the same weights and lerps
+/// (`blend`'s, channel by channel), except for the channels in `skip`,
+/// which may be `p.flat_value`'s: a flat channel's value is what the
+/// lerps would give (`PaddedLevel::flat`), the others there are not read.
+/// Two cases are worth their own code: every channel skipped (a 1x1
+/// level; no texel loaded) and alpha skipped (opaque RGBA and RGB
+/// textures). The choice is made once per call, so the filter itself has
+/// no branches (a branch per channel made the compiler spill around each).
 #[inline(always)]
-unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
+unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2], skip: u8) -> Rgba {
+    if skip == 0xF {
+        let v = &p.flat_value;
+        return [_mm256_set1_ps(v[0]), _mm256_set1_ps(v[1]), _mm256_set1_ps(v[2]), _mm256_set1_ps(v[3])];
+    }
+    if skip & 0b1000 != 0 {
+        filter_channels::<3>(p, l, s, t, rep)
+    } else {
+        filter_channels::<4>(p, l, s, t, rep)
+    }
+}
+
+/// `filter_pairs` of channels 0..N; the others `p.flat_value`'s.
+#[inline(always)]
+unsafe fn filter_channels<const N: usize>(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
     let (i0, j0, wa, wb) = footprint(l, s, t);
-    blend(pairs(p, l, i0, j0, rep), wa, wb)
+    let [t00, t01, t10, t11] = pairs(p, l, i0, j0, rep);
+    let mut out = [_mm256_setzero_ps(); 4];
+    for c in 0..4 {
+        out[c] = if c < N {
+            let top = lerp(unorm(spread8(t00, c)), unorm(spread8(t01, c)), wa);
+            let bottom = lerp(unorm(spread8(t10, c)), unorm(spread8(t11, c)), wa);
+            lerp(top, bottom, wb)
+        } else {
+            _mm256_set1_ps(p.flat_value[c])
+        };
+    }
+    out
 }
 
 /// `filter_pairs` in 16 lanes (AVX-512 F, BW, DQ): the left texels of both
@@ -659,7 +702,7 @@ unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [b
 #[inline(always)]
 unsafe fn filter_pairs_wide(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
     let (i0, j0, wa, wb) = footprint(l, s, t);
-    let (r0, r1) = rows(p, l, i0, j0, rep);
+    let (r0, r1) = rows::<false>(p, l, i0, j0, rep);
     let (r0, r1) = (_mm512_inserti64x4::<1>(_mm512_castsi256_si512(r0[0]), r0[1]), _mm512_inserti64x4::<1>(_mm512_castsi256_si512(r1[0]), r1[1]));
     // Each 64-bit element is (texel i0, texel i0 + 1): the even 32-bit
     // halves of both rows are the left texels, the odd ones the right.
@@ -847,7 +890,10 @@ unsafe fn to_byte(v: __m256) -> __m256i {
 #[inline(always)]
 unsafe fn level_filter<L: Isa>(k: &Ctx, l: usize, s: __m256, t: __m256) -> Rgba {
     match k.pad {
-        Some(p) if k.linear => L::filter_pairs(&p.levels[l], &k.smp.levels[l], s, t, k.smp.repeat),
+        Some(p) if k.linear => {
+            let p = &p.levels[l];
+            L::filter_pairs(p, &k.smp.levels[l], s, t, k.smp.repeat, (p.flat | !k.reads) & 0xF)
+        }
         _ => filter(&k.smp.levels[l], s, t, k.linear, k.smp.repeat),
     }
 }
@@ -1207,6 +1253,8 @@ struct Ctx<'a> {
     lod_mode: Lod,
     linear: bool,
     env: EnvFn,
+    /// The texture channels `env` reads (bit k: channel k).
+    reads: u8,
     x0: f64,
     s: (f64, f64),
     t: (f64, f64),
@@ -1238,9 +1286,26 @@ struct Ctx<'a> {
 
 /// `Ctx::color_src` of four rows: the first index whose row has the
 /// same bits (equal bits give equal results lane by lane).
-fn same_rows(rows: [(f64, f64); 4]) -> [u8; 4] {
+fn same_rows(rows: &[(f64, f64); 4]) -> [u8; 4] {
     let bits = rows.map(|(a, d)| (a.to_bits(), d.to_bits()));
-    std::array::from_fn(|c| bits.iter().position(|b| *b == bits[c]).unwrap_or(c) as u8)
+    std::array::from_fn(|c| {
+        // Stops at c itself at the latest.
+        let mut e = 0;
+        while bits[e] != bits[c] {
+            e += 1;
+        }
+        e as u8
+    })
+}
+
+/// `Ctx::reads`: the texture channels an environment reads.
+fn reads(env: EnvFn) -> u8 {
+    match env {
+        EnvFn::Replace { color, alpha } | EnvFn::Modulate { color, alpha } => (if color { 0b0111 } else { 0 }) | (if alpha { 0b1000 } else { 0 }),
+        EnvFn::DecalRgb => 0b0111,
+        EnvFn::DecalRgba => 0b1111,
+        EnvFn::Pass => 0,
+    }
 }
 
 const W_NONE: u8 = 0;
@@ -1504,13 +1569,16 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
     let row = |p: &crate::render::setup::Plane| (p.a0 + p.dy * cy, p.dx);
     let p = &tp.planes[u];
     let pad = if linear || FX { sampler.padded() } else { None };
+    let env = EnvFn::new(tp.stage.envs[u].mode, sampler.base);
+    let colors = std::array::from_fn(|c| row(&t.color[c]));
     let k = Ctx {
         fs,
         smp: &smp,
         pad,
         lod_mode,
         linear,
-        env: EnvFn::new(tp.stage.envs[u].mode, sampler.base),
+        env,
+        reads: reads(env),
         x0: t.x0,
         s: row(&p[0]),
         t: row(&p[1]),
@@ -1525,8 +1593,8 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
         } else {
             W_OWN
         },
-        colors: std::array::from_fn(|c| row(&t.color[c])),
-        color_src: same_rows(std::array::from_fn(|c| row(&t.color[c]))),
+        color_src: same_rows(&colors),
+        colors,
         flat: t.flat.map(|c| c.map(|v| _mm256_set1_ps(v as f32 / 255.0))),
         fog: t.fog.as_ref().map(|(plane, f)| (row(plane), *f)),
         lambda_kept: std::cell::Cell::new((f64::NAN, 0.0)),
@@ -1616,10 +1684,70 @@ mod tests {
     #[test]
     fn same_rows_match_bits() {
         let (a, b) = ((0.5, 0.25), (0.5, 0.125));
-        assert_eq!(same_rows([a, b, a, b]), [0, 1, 0, 1]);
-        assert_eq!(same_rows([a, a, a, a]), [0, 0, 0, 0]);
-        assert_eq!(same_rows([a, b, (0.0, 0.25), (-0.0, 0.25)]), [0, 1, 2, 3]);
-        assert_eq!(same_rows([(0.5, 0.25), (0.75, 0.25), (1.0, 0.5), (1.0, 0.5)]), [0, 1, 2, 2]);
+        assert_eq!(same_rows(&[a, b, a, b]), [0, 1, 0, 1]);
+        assert_eq!(same_rows(&[a, a, a, a]), [0, 0, 0, 0]);
+        assert_eq!(same_rows(&[a, b, (0.0, 0.25), (-0.0, 0.25)]), [0, 1, 2, 3]);
+        assert_eq!(same_rows(&[(0.5, 0.25), (0.75, 0.25), (1.0, 0.5), (1.0, 0.5)]), [0, 1, 2, 2]);
+    }
+
+    /// `filter_pairs` (texels from `rows` in `split`'s order, the
+    /// channels in `skip` as the level's flat values) gives `filter`'s
+    /// bits (four wraps and gathers from the plain level) in every channel
+    /// it computes or that is flat, whatever the wrap modes, at levels
+    /// with no, some and all channels flat; `PaddedLevel::flat` finds them.
+    #[test]
+    fn filter_pairs_matches_filter() {
+        if !(std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")) {
+            return;
+        }
+        use crate::render::texture::{pairs, Base, Image, Texels};
+        use std::sync::Arc;
+        let mut seed = 0x9E37_79B9u32;
+        let mut rnd = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed >> 8
+        };
+        for (w, h) in [(8, 8), (16, 4), (4, 1), (1, 1)] {
+            for flat in [0u8, 0b1000, 0b0101, 0b1111] {
+                let consts = [255u8, 0, 77, 255];
+                let tex: Vec<[u8; 4]> = (0..w * h).map(|_| std::array::from_fn(|k| if flat & (1 << k) != 0 { consts[k] } else { rnd() as u8 })).collect();
+                let img = Arc::new(Image { width: w, height: h, depth: 1, border: 0, internal_format: 0x8058, base: Base::Rgba, texels: Texels::Rgba8(Arc::new(tex.clone())) });
+                let l = Level { tex: &tex, w, h, wf: w as f32, hf: h as f32 };
+                for rep in [[true, true], [false, false], [true, false]] {
+                    let pad = pairs::build(&[img.clone()], rep).unwrap();
+                    let p = &pad.levels[0];
+                    assert_eq!(p.flat, if w * h == 1 { 0xF } else { flat }, "{w}x{h} flat");
+                    for _ in 0..200 {
+                        let coord = |r: u32| (r % 8192) as f32 / 1024.0 - 3.0;
+                        let s: [f32; 8] = std::array::from_fn(|_| coord(rnd()));
+                        let t: [f32; 8] = std::array::from_fn(|_| coord(rnd()));
+                        for skip in [0, p.flat, p.flat | 0b1000, 0b0110] {
+                            let (got, want) = unsafe { filter_both(p, &l, &s, &t, rep, skip) };
+                            for c in 0..4 {
+                                if skip & !p.flat & (1 << c) != 0 {
+                                    continue;
+                                }
+                                for lane in 0..8 {
+                                    assert_eq!(got[c][lane].to_bits(), want[c][lane].to_bits(), "{w}x{h} {rep:?} skip {skip:#b} channel {c} at ({}, {})", s[lane], t[lane]);
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn filter_both(p: &PaddedLevel, l: &Level, s: &[f32; 8], t: &[f32; 8], rep: [bool; 2], skip: u8) -> ([[f32; 8]; 4], [[f32; 8]; 4]) {
+        let (s, t) = (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr()));
+        let (a, b) = (filter_pairs(p, l, s, t, rep, skip), filter(l, s, t, true, rep));
+        let mut out = ([[0f32; 8]; 4], [[0f32; 8]; 4]);
+        for c in 0..4 {
+            _mm256_storeu_ps(out.0[c].as_mut_ptr(), a[c]);
+            _mm256_storeu_ps(out.1[c].as_mut_ptr(), b[c]);
+        }
+        out
     }
 
     /// GL_FASTEST's log2 is within 4e-5 of f64's on normal values from
