@@ -624,8 +624,12 @@ unsafe fn cover_avx2(x: &[i64; 3], y: &[i64; 3], row0: i64, rows: i64, col0: i64
     let half = ONE / 2;
     let (px, py) = (col0 * ONE + half, row0 * ONE + half);
     // Lanes 0, 1, 2: edge e from vertex e to vertex e + 1 (mod 3).
-    let vx = _mm_setr_epi32((x[0] - px) as i32, (x[1] - px) as i32, (x[2] - px) as i32, 0);
-    let vy = _mm_setr_epi32((y[0] - py) as i32, (y[1] - py) as i32, (y[2] - py) as i32, 0);
+    // (Round 17: the coordinates' low halves gathered from two loads,
+    // then one subtraction: i32 arithmetic wraps as the truncation of the
+    // i64 difference does. Lane 3 holds vertex 2 again: its edge's
+    // vector is zero, and lane 3 is never used.)
+    let vx = _mm_sub_epi32(low_halves(x), _mm_set1_epi32(px as i32));
+    let vy = _mm_sub_epi32(low_halves(y), _mm_set1_epi32(py as i32));
     let dx = _mm_sub_epi32(_mm_shuffle_epi32::<0b11_00_10_01>(vx), vx);
     let dy = _mm_sub_epi32(_mm_shuffle_epi32::<0b11_00_10_01>(vy), vy);
     // E at the first centre: dx (0 - Y) - dy (0 - X) = dy X - dx Y.
@@ -719,6 +723,17 @@ unsafe fn cover_rows<const SETS: usize>(first: std::arch::x86_64::__m128i, a: st
         }
     }
     any as u32
+}
+
+/// The low 32 bits of c[0], c[1], c[2], c[2] (a function, as `lane_of`).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn low_halves(c: &[i64; 3]) -> std::arch::x86_64::__m128i {
+    use std::arch::x86_64::*;
+    let p = c.as_ptr();
+    // c[0], c[1] and c[2]: 24 bytes, within the array.
+    let (a, b) = (_mm_castsi128_ps(_mm_loadu_si128(p.cast())), _mm_castsi128_ps(_mm_loadl_epi64(p.add(2).cast())));
+    _mm_castps_si128(_mm_shuffle_ps::<0b00_00_10_00>(a, b))
 }
 
 /// `c` in the low half, `c + b` in the high (a function, as `lane_of`).

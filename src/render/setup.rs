@@ -938,9 +938,9 @@ mod tests {
             let by = |lanes: bool| {
                 let mut t = MaybeUninit::uninit();
                 if lanes {
-                    planes_by::<_, _, true>(&mut t, &params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+                    planes_by::<_, _, true>(&mut t, &params, zq, w.each_ref(), &ex, &ey, front[2], back, !back);
                 } else {
-                    planes_by::<_, _, false>(&mut t, &params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+                    planes_by::<_, _, false>(&mut t, &params, zq, w.each_ref(), &ex, &ey, front[2], back, !back);
                 }
                 // SAFETY: `planes_by` writes every field.
                 unsafe { t.assume_init() }
