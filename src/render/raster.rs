@@ -443,6 +443,9 @@ pub struct Cover {
     pub col0: usize,
     /// Rows of `mask` written (0: no pixel covered).
     rows: usize,
+    /// At most four columns (every row's bits below 16): the block
+    /// kernel's one-group-a-row form (round 17).
+    narrow: bool,
     mask: [std::mem::MaybeUninit<Row>; Cover::ROWS as usize],
 }
 
@@ -466,7 +469,7 @@ impl Cover {
     pub const ROWS: i64 = 48;
 
     /// No pixel.
-    pub const EMPTY: Cover = Cover { row0: 0, col0: 0, rows: 0, mask: [std::mem::MaybeUninit::uninit(); Cover::ROWS as usize] };
+    pub const EMPTY: Cover = Cover { row0: 0, col0: 0, rows: 0, narrow: true, mask: [std::mem::MaybeUninit::uninit(); Cover::ROWS as usize] };
 
     /// The cover of triangle (x, y) (positively oriented) within `rect`
     /// when its box of pixel centres there fits the block, the extents
@@ -476,7 +479,7 @@ impl Cover {
     /// stipple: callers with one do not ask.
     pub fn find(x: [i64; 3], y: [i64; 3], rect: Rect) -> Option<Cover> {
         let mut c = Cover::EMPTY;
-        c.of_box(x, y, CentreBox::of(x, y, rect), 0).then_some(c)
+        c.of_box(&x, &y, CentreBox::of(x, y, rect), 0).then_some(c)
     }
 
     /// [`Cover::find`] with the centre box already taken, for the
@@ -487,7 +490,7 @@ impl Cover {
     /// counts zero and its rows uninitialized, was stored as 216 bytes of
     /// zeros: 14 instructions a triangle).
     #[inline(always)]
-    pub fn find_into(slot: &mut std::mem::MaybeUninit<Cover>, x: [i64; 3], y: [i64; 3], b: CentreBox) -> Option<&Cover> {
+    pub fn find_into<'a>(slot: &'a mut std::mem::MaybeUninit<Cover>, x: &[i64; 3], y: &[i64; 3], b: CentreBox) -> Option<&'a Cover> {
         // SAFETY: `fill` writes every field when it returns true.
         unsafe { Cover::fill(slot.as_mut_ptr(), x, y, b, Cover::SMALLEST).then(|| slot.assume_init_ref()) }
     }
@@ -508,7 +511,7 @@ impl Cover {
     /// centres (or none: no rows) and fits the block and the lanes, on a
     /// CPU with AVX2.
     #[inline(always)]
-    fn of_box(&mut self, x: [i64; 3], y: [i64; 3], b: CentreBox, smallest: i64) -> bool {
+    fn of_box(&mut self, x: &[i64; 3], y: &[i64; 3], b: CentreBox, smallest: i64) -> bool {
         // SAFETY: `self` is a cover, valid to overwrite (nothing to drop).
         unsafe { Cover::fill(self, x, y, b, smallest) }
     }
@@ -518,7 +521,7 @@ impl Cover {
     ///
     /// Safety: `c` is valid for writes of a `Cover`.
     #[inline(always)]
-    unsafe fn fill(c: *mut Cover, x: [i64; 3], y: [i64; 3], b: CentreBox, smallest: i64) -> bool {
+    unsafe fn fill(c: *mut Cover, x: &[i64; 3], y: &[i64; 3], b: CentreBox, smallest: i64) -> bool {
         use std::ptr::addr_of_mut;
         let CentreBox(row0, row1, col0, col1) = b;
         let (rows, cols) = (row1 - row0, col1 - col0);
@@ -528,15 +531,17 @@ impl Cover {
             addr_of_mut!((*c).row0).write(0);
             addr_of_mut!((*c).col0).write(0);
             addr_of_mut!((*c).rows).write(0);
+            addr_of_mut!((*c).narrow).write(true);
             return true;
         }
-        if rows * cols <= smallest || rows > Cover::ROWS || cols > Cover::COLS || !stamp_level() || !lanes_fit(x, y) {
+        if rows * cols <= smallest || rows > Cover::ROWS || cols > Cover::COLS || !stamp_level() || !lanes_fit(*x, *y) {
             return false;
         }
         #[cfg(target_arch = "x86_64")]
         {
             addr_of_mut!((*c).row0).write(row0 as usize);
             addr_of_mut!((*c).col0).write(col0 as usize);
+            addr_of_mut!((*c).narrow).write(cols <= 4);
             // SAFETY: `stamp_level` saw AVX2; the values fit in i32
             // (`lanes_fit`, and `cover_avx2`'s bound). It writes the
             // first `rows` rows (`MaybeUninit`s: the reference is to
@@ -551,6 +556,12 @@ impl Cover {
 
     pub fn is_empty(&self) -> bool {
         self.rows == 0
+    }
+
+    /// At most four columns wide: each row's bits below 16.
+    #[inline(always)]
+    pub fn narrow(&self) -> bool {
+        self.narrow
     }
 
     /// Rows of the cover (0 when no pixel is covered).
@@ -608,13 +619,17 @@ fn stamp_level() -> bool {
 /// |E| < 2^14 (2^14 + 2^8) + 2^14 (2^14 + 2^13) < 2^29.6 and no lane wraps.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn cover_avx2(x: [i64; 3], y: [i64; 3], row0: i64, rows: i64, col0: i64, cols: i64, mask: &mut [std::mem::MaybeUninit<Row>; Cover::ROWS as usize]) -> u32 {
+unsafe fn cover_avx2(x: &[i64; 3], y: &[i64; 3], row0: i64, rows: i64, col0: i64, cols: i64, mask: &mut [std::mem::MaybeUninit<Row>; Cover::ROWS as usize]) -> u32 {
     use std::arch::x86_64::*;
     let half = ONE / 2;
     let (px, py) = (col0 * ONE + half, row0 * ONE + half);
     // Lanes 0, 1, 2: edge e from vertex e to vertex e + 1 (mod 3).
-    let vx = _mm_setr_epi32((x[0] - px) as i32, (x[1] - px) as i32, (x[2] - px) as i32, 0);
-    let vy = _mm_setr_epi32((y[0] - py) as i32, (y[1] - py) as i32, (y[2] - py) as i32, 0);
+    // (Round 17: the coordinates' low halves gathered from two loads,
+    // then one subtraction: i32 arithmetic wraps as the truncation of the
+    // i64 difference does. Lane 3 holds vertex 2 again: its edge's
+    // vector is zero, and lane 3 is never used.)
+    let vx = _mm_sub_epi32(low_halves(x), _mm_set1_epi32(px as i32));
+    let vy = _mm_sub_epi32(low_halves(y), _mm_set1_epi32(py as i32));
     let dx = _mm_sub_epi32(_mm_shuffle_epi32::<0b11_00_10_01>(vx), vx);
     let dy = _mm_sub_epi32(_mm_shuffle_epi32::<0b11_00_10_01>(vy), vy);
     // E at the first centre: dx (0 - Y) - dy (0 - X) = dy X - dx Y.
@@ -630,15 +645,24 @@ unsafe fn cover_avx2(x: [i64; 3], y: [i64; 3], row0: i64, rows: i64, col0: i64, 
     let columns = ((1u64 << cols) - 1) as Row;
     let mut any = 0u32;
     if cols <= 4 {
-        // Two rows of four centres in the eight lanes.
-        let lane_i = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
-        let lane_j = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
-        let (mut v, mut step) = ([_mm256_setzero_si256(); 3], [_mm256_setzero_si256(); 3]);
-        for e in 0..3 {
-            let (be, ae) = (lane_of(b, e as i32), lane_of(a, e as i32));
-            v[e] = _mm256_add_epi32(lane_of(first, e as i32), _mm256_add_epi32(_mm256_mullo_epi32(ae, lane_i), _mm256_mullo_epi32(be, lane_j)));
-            step[e] = _mm256_add_epi32(be, be);
-        }
+        // Two rows of four centres in the eight lanes. Round 17: the
+        // lanes are built by a transposition, not by broadcasting each
+        // edge and multiplying by the lane indices (about 85 of this
+        // function's 134 instructions a call on spheres_l): column i of
+        // the first row is `first + i a` and of the second that plus b,
+        // the three edges side by side (lanes 0-2); the 4x4 transposes
+        // within each 128-bit half put each edge's eight values in one
+        // register (lane 3, the unused fourth edge, drops out).
+        let c1 = _mm_add_epi32(first, a);
+        let c2 = _mm_add_epi32(c1, a);
+        let c3 = _mm_add_epi32(c2, a);
+        let (y0, y1, y2, y3) = (two_rows(first, b), two_rows(c1, b), two_rows(c2, b), two_rows(c3, b));
+        // Edges 0, 1 of columns 0, 1 (lo) and edge 2, 3 (hi); then 2, 3.
+        let (lo01, hi01) = (_mm256_unpacklo_epi32(y0, y1), _mm256_unpackhi_epi32(y0, y1));
+        let (lo23, hi23) = (_mm256_unpacklo_epi32(y2, y3), _mm256_unpackhi_epi32(y2, y3));
+        let mut v = [_mm256_unpacklo_epi64(lo01, lo23), _mm256_unpackhi_epi64(lo01, lo23), _mm256_unpacklo_epi64(hi01, hi23)];
+        let b2 = _mm_add_epi32(b, b);
+        let step = [lane_of(b2, 0), lane_of(b2, 1), lane_of(b2, 2)];
         let mut j = 0;
         while j < rows {
             let out = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(v[0], v[1]), v[2]))) as u32;
@@ -699,6 +723,25 @@ unsafe fn cover_rows<const SETS: usize>(first: std::arch::x86_64::__m128i, a: st
         }
     }
     any as u32
+}
+
+/// The low 32 bits of c[0], c[1], c[2], c[2] (a function, as `lane_of`).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn low_halves(c: &[i64; 3]) -> std::arch::x86_64::__m128i {
+    use std::arch::x86_64::*;
+    let p = c.as_ptr();
+    // c[0], c[1] and c[2]: 24 bytes, within the array.
+    let (a, b) = (_mm_castsi128_ps(_mm_loadu_si128(p.cast())), _mm_castsi128_ps(_mm_loadl_epi64(p.add(2).cast())));
+    _mm_castps_si128(_mm_shuffle_ps::<0b00_00_10_00>(a, b))
+}
+
+/// `c` in the low half, `c + b` in the high (a function, as `lane_of`).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn two_rows(c: std::arch::x86_64::__m128i, b: std::arch::x86_64::__m128i) -> std::arch::x86_64::__m256i {
+    use std::arch::x86_64::*;
+    _mm256_inserti128_si256::<1>(_mm256_castsi128_si256(c), _mm_add_epi32(c, b))
 }
 
 /// Lane `e` of `v` in all eight lanes (a function, not a closure: a

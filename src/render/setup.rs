@@ -301,7 +301,7 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
     let count = centres.count();
     if count > raster::Cover::SMALLEST && rs.polygon_stipple.is_none() && !rs.reference && !fb.draw_both {
         let mut slot = MaybeUninit::uninit();
-        if let Some(cover) = raster::Cover::find_into(&mut slot, ex, ey, centres) {
+        if let Some(cover) = raster::Cover::find_into(&mut slot, &ex, &ey, centres) {
             if !cover.is_empty() {
                 shade_cover(rs, fb, zq, v, ex, ey, flat_color[back as usize], back, front_facing, cover);
             }
@@ -322,7 +322,7 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
         return;
     }
     let mut slot = MaybeUninit::uninit();
-    let setup = solve(&mut slot, rs, zq, v, ex, ey, flat_color[back as usize], back, front_facing);
+    let setup = solve(&mut slot, rs, zq, v, &ex, &ey, flat_color[back as usize], back, front_facing);
     let k = raster::kernel(rs, fb, setup);
     match runs {
         Some(r) => r.shade(rs, fb, setup, k),
@@ -338,7 +338,7 @@ fn shade_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::F
 #[inline(always)]
 fn shade_cover<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool, cover: &raster::Cover) {
     let mut slot = MaybeUninit::uninit();
-    let setup = solve(&mut slot, rs, zq, v, ex, ey, flat_color, back, front_facing);
+    let setup = solve(&mut slot, rs, zq, v, &ex, &ey, flat_color, back, front_facing);
     match rs.shade.stamp(rs, setup) {
         Some(sk) => {
             // SAFETY: the cover lies within the draw rectangle, inside the
@@ -559,7 +559,7 @@ fn signed_zero(zero: f64, d_sign: u64) -> f64 {
 #[inline]
 pub(crate) fn planes_of<P: SetupParams, A: Attributes>(rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> TriangleSetup {
     let mut t = MaybeUninit::uninit();
-    planes_into(&mut t, rs, zq, v, ex, ey, flat_color, back, front_facing);
+    planes_into(&mut t, rs, zq, v, &ex, &ey, flat_color, back, front_facing);
     // SAFETY: `planes_into` writes every field.
     unsafe { t.assume_init() }
 }
@@ -572,9 +572,12 @@ pub(crate) fn planes_of<P: SetupParams, A: Attributes>(rs: &P, zq: [(f64, f64); 
 /// (9 more); here each field is stored once, and only a set-up holding
 /// texture planes has anything to drop. (A slot type with `Drop` was
 /// zeroed with `memset` at each construction: 35 instructions.)
+/// Round 17: the snapped vertices by reference: by value, each
+/// out-of-line callee (this and the cover) took its own copy of the two
+/// arrays (about 22 stack moves a triangle in the band loop).
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-pub(crate) fn solve<'a, P: SetupParams, A: Attributes>(slot: &'a mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> &'a TriangleSetup {
+pub(crate) fn solve<'a, P: SetupParams, A: Attributes>(slot: &'a mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: &[i64; 3], ey: &[i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> &'a TriangleSetup {
     planes_into(slot, rs, zq, v, ex, ey, flat_color, back, front_facing);
     // SAFETY: `planes_into` writes every field.
     unsafe { slot.assume_init_ref() }
@@ -595,7 +598,7 @@ pub(crate) unsafe fn release(slot: &mut MaybeUninit<TriangleSetup>) {
 /// Writes the planes of [`planes_of`] into `out`, every field.
 #[allow(clippy::too_many_arguments)]
 #[inline]
-fn planes_into<P: SetupParams, A: Attributes>(out: &mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) {
+fn planes_into<P: SetupParams, A: Attributes>(out: &mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: &[i64; 3], ey: &[i64; 3], flat_color: Vec4, back: bool, front_facing: bool) {
     // Decided once per triangle, not per plane.
     if planes_lanes() {
         planes_by::<P, A, true>(out, rs, zq, v, ex, ey, flat_color, back, front_facing)
@@ -608,7 +611,7 @@ fn planes_into<P: SetupParams, A: Attributes>(out: &mut MaybeUninit<TriangleSetu
 /// scalar form: the same bits either way.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn planes_by<P: SetupParams, A: Attributes, const LANES: bool>(out: &mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: [i64; 3], ey: [i64; 3], flat_color: Vec4, back: bool, front_facing: bool) {
+fn planes_by<P: SetupParams, A: Attributes, const LANES: bool>(out: &mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: &[i64; 3], ey: &[i64; 3], flat_color: Vec4, back: bool, front_facing: bool) {
     let inv = 1.0 / ONE as f64;
     let x = ex.map(|c| c as f64 * inv);
     let y = ey.map(|c| c as f64 * inv);
@@ -919,7 +922,7 @@ mod tests {
             // Round 16: every field written in place, through `solve`
             // (the shading paths' form) as through `planes_of`.
             let mut slot = MaybeUninit::uninit();
-            let solved = solve(&mut slot, &params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+            let solved = solve(&mut slot, &params, zq, w.each_ref(), &ex, &ey, front[2], back, !back);
             let fields = |t: &TriangleSetup| {
                 let planes = [t.z, t.q, t.color[0], t.color[1], t.color[2], t.color[3], t.fog.map_or(Plane::default(), |f| f.0)].map(|p| bits(&p));
                 (planes, [t.x0, t.y0].map(f64::to_bits), t.perspective, t.flat, t.front_facing, t.tex.is_some(), t.fog.map(|f| f.1.mode), t.secondary.is_some())
@@ -935,9 +938,9 @@ mod tests {
             let by = |lanes: bool| {
                 let mut t = MaybeUninit::uninit();
                 if lanes {
-                    planes_by::<_, _, true>(&mut t, &params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+                    planes_by::<_, _, true>(&mut t, &params, zq, w.each_ref(), &ex, &ey, front[2], back, !back);
                 } else {
-                    planes_by::<_, _, false>(&mut t, &params, zq, w.each_ref(), ex, ey, front[2], back, !back);
+                    planes_by::<_, _, false>(&mut t, &params, zq, w.each_ref(), &ex, &ey, front[2], back, !back);
                 }
                 // SAFETY: `planes_by` writes every field.
                 unsafe { t.assume_init() }

@@ -781,7 +781,7 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
     let (x, y) = t.xy();
     let centres = raster::CentreBox::of(x, y, rect);
     let count = centres.count();
-    if count > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extra, (x, y), centres, &mut shade) {
+    if count > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extra, (&x, &y), centres, &mut shade) {
         return;
     }
     // No pixel centre in the box: no pixel (round 16: before the runs'
@@ -798,7 +798,7 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
         return;
     }
     let mut slot = std::mem::MaybeUninit::uninit();
-    let setup = solve(&mut slot, st, zq, a.each_ref(), x, y, color, false, front_facing);
+    let setup = solve(&mut slot, st, zq, a.each_ref(), &x, &y, color, false, front_facing);
     let k = st.kernel(setup);
     if found {
         for (py, lo, hi) in runs.iter() {
@@ -814,8 +814,10 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
 /// [`shade_binned`] for a triangle whose box has more than
 /// `Cover::SMALLEST` centres: its cover and its block kernel, or the
 /// cover's runs; false when it does not fit the block.
+/// Round 17: the snapped vertices by reference (by value, the band
+/// loop kept two more copies of them on its stack).
 #[inline(always)]
-fn shade_binned_block(t: &Binned, st: &ShadeState, extra: &BinExtra, (x, y): ([i64; 3], [i64; 3]), centres: raster::CentreBox, shade: &mut impl FnMut(Shading<'_>)) -> bool {
+fn shade_binned_block(t: &Binned, st: &ShadeState, extra: &BinExtra, (x, y): (&[i64; 3], &[i64; 3]), centres: raster::CentreBox, shade: &mut impl FnMut(Shading<'_>)) -> bool {
     let mut slot = std::mem::MaybeUninit::uninit();
     let Some(cover) = raster::Cover::find_into(&mut slot, x, y, centres) else {
         return false;
@@ -1099,13 +1101,22 @@ impl Flight {
 fn list_bands(boxes: &[BinBox], surface: Rect, rows: usize, bins: &mut [Vec<u32>], weight: &mut Vec<u64>) {
     weight.clear();
     weight.resize(bins.len(), 0);
+    // Round 17: `band_rows` makes `rows` a power of two: a shift, not two
+    // divisions a record (spheres_l, 2 threads: about 1.1 M records a
+    // frame, listed by one thread while the others wait for it). Any
+    // other height (the tests') divides.
+    let shift = rows.is_power_of_two().then(|| rows.trailing_zeros());
+    let band = |y: usize| match shift {
+        Some(s) => y >> s,
+        None => y / rows,
+    };
     for (i, &t) in boxes.iter().enumerate() {
         let b = rect_of(t).intersect(surface);
         if b.is_empty() {
             continue;
         }
         let (y0, y1, w) = (b.y0 as usize, b.y1 as usize, (b.x1 - b.x0) as u64);
-        for k in y0 / rows..=(y1 - 1) / rows {
+        for k in band(y0)..=band(y1 - 1) {
             bins[k].push(i as u32);
             let h = y1.min((k + 1) * rows) - y0.max(k * rows);
             weight[k] += w * h as u64 + SETUP_PIXELS;

@@ -158,11 +158,45 @@ mod x86 {
     }
 
     /// One channel of four pixels: `(r + dx * cx) * w` (w only under
-    /// perspective), to f32.
+    /// perspective), to f32; `d` is the channel's `dx * cx` ([`Steps`]).
     #[inline(always)]
-    unsafe fn channel<const CS: u8>(r: __m256d, dx: __m256d, cx: __m256d, w: __m256d) -> __m128 {
-        let v = _mm256_add_pd(r, _mm256_mul_pd(dx, cx));
+    unsafe fn channel<const CS: u8>(r: __m256d, d: __m256d, w: __m256d) -> __m128 {
+        let v = _mm256_add_pd(r, d);
         _mm256_cvtpd_ps(if CS == CS_PERSPECTIVE { _mm256_mul_pd(v, w) } else { v })
+    }
+
+    /// `dx * cx`: a plane's slope times the lanes' centre offsets.
+    #[inline(always)]
+    unsafe fn step(dx: f64, cx: __m256d) -> __m256d {
+        _mm256_mul_pd(_mm256_set1_pd(dx), cx)
+    }
+
+    /// The per-pixel terms `dx * cx` of a group of four columns (centre
+    /// offsets `cx`): depth, 1/w, the four colour channels, the fog value
+    /// (fogged only). Round 17: computed once a block for the groups at
+    /// the block's first column (every group of a narrow block), and per
+    /// group for the others.
+    struct Steps {
+        z: __m256d,
+        q: __m256d,
+        c: [__m256d; 4],
+        f: __m256d,
+    }
+
+    impl Steps {
+        #[inline(always)]
+        unsafe fn at<const CS: u8>(t: &TriangleSetup, fogged: Option<&Fogged>, cx: __m256d) -> Steps {
+            let z = step(t.z.dx, cx);
+            let (mut q, mut c, mut f) = (z, [z; 4], z);
+            if CS == CS_AFFINE || CS == CS_PERSPECTIVE || CS == CS_FOG {
+                q = step(t.q.dx, cx);
+                c = [step(t.color[0].dx, cx), step(t.color[1].dx, cx), step(t.color[2].dx, cx), step(t.color[3].dx, cx)];
+            }
+            if let Some(fg) = fogged {
+                f = step(fg.dx, cx);
+            }
+            Steps { z, q, c, f }
+        }
     }
 
     /// A fogged triangle's fog for the block: its fog value plane, the
@@ -171,7 +205,7 @@ mod x86 {
         fog: Fog,
         a0: f64,
         dy: f64,
-        dx: __m256d,
+        dx: f64,
         /// The fog colour's r, g, b.
         color: [__m128; 3],
         /// Flat shading: the provoking colour as bytes / 255 (as
@@ -186,7 +220,7 @@ mod x86 {
             let (p, fog) = t.fog.as_ref()?;
             let flat = t.flat.map(|c| c.map(|v| _mm_set1_ps(v as f32 / 255.0)));
             let color = [0, 1, 2].map(|ch| _mm_set1_ps(fog.color[ch]));
-            Some(Fogged { fog: *fog, a0: p.a0, dy: p.dy, dx: _mm256_set1_pd(p.dx), color, flat, perspective: t.perspective })
+            Some(Fogged { fog: *fog, a0: p.a0, dy: p.dy, dx: p.dx, color, flat, perspective: t.perspective })
         }
     }
 
@@ -194,39 +228,77 @@ mod x86 {
     /// `w` their 1/w (1 when affine), `cr` the colour row terms, `bits`
     /// the lanes written (the others' f is not computed).
     #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    unsafe fn fog_pixels(fg: &Fogged, cy: f64, cx: __m256d, w: __m256d, cr: __m256d, cdx: &[__m256d; 4], bits: i32) -> __m128i {
-        let v = channel::<CS_PERSPECTIVE>(_mm256_set1_pd(fg.a0 + fg.dy * cy), fg.dx, cx, w);
+    unsafe fn fog_pixels(fg: &Fogged, cy: f64, s: &Steps, w: __m256d, cr: __m256d, bits: i32) -> __m128i {
+        let v = channel::<CS_PERSPECTIVE>(_mm256_set1_pd(fg.a0 + fg.dy * cy), s.f, w);
         let f = fog_lanes::factors::<true>(&fg.fog, v, bits);
         let [r, g, b, a] = match fg.flat {
             Some(c) => c,
             None => {
                 let clamp = |c: __m128| _mm_min_ps(_mm_max_ps(c, _mm_setzero_ps()), _mm_set1_ps(1.0));
                 [
-                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0x00>(cr), cdx[0], cx, w)),
-                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0x55>(cr), cdx[1], cx, w)),
-                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0xAA>(cr), cdx[2], cx, w)),
-                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0xFF>(cr), cdx[3], cx, w)),
+                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0x00>(cr), s.c[0], w)),
+                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0x55>(cr), s.c[1], w)),
+                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0xAA>(cr), s.c[2], w)),
+                    clamp(channel::<CS_PERSPECTIVE>(_mm256_permute4x64_pd::<0xFF>(cr), s.c[3], w)),
                 ]
             }
         };
         pixels(fog_lanes::mix(r, f, fg.color[0]), fog_lanes::mix(g, f, fg.color[1]), fog_lanes::mix(b, f, fg.color[2]), a)
     }
 
+    /// What every group of a block shares: the colour planes' row-term
+    /// inputs (channels side by side), the block's colour (flat or
+    /// constant) with the fixed alpha, the fixed alpha alone, the fog.
+    struct Block {
+        ca0: __m256d,
+        cdy: __m256d,
+        src: __m128i,
+        afix: __m128i,
+        fogged: Option<Fogged>,
+    }
+
+    impl Block {
+        #[inline(always)]
+        unsafe fn of<const CS: u8>(fs: &FragmentState, t: &TriangleSetup, c: &Cover) -> Block {
+            let afix = _mm_set1_epi32(((fs.alpha_fix as u32) << 24) as i32);
+            let ca0 = _mm256_setr_pd(t.color[0].a0, t.color[1].a0, t.color[2].a0, t.color[3].a0);
+            let cdy = _mm256_setr_pd(t.color[0].dy, t.color[1].dy, t.color[2].dy, t.color[3].dy);
+            let fogged = if CS == CS_FOG { Fogged::of(t) } else { None };
+            let mut src = _mm_setzero_si128();
+            if CS == CS_FLAT {
+                src = _mm_set1_epi32(u32::from_ne_bytes(t.flat.unwrap_or_default()) as i32);
+            } else if CS == CS_CONSTANT {
+                // a0 + (+-0) * cy: the same value in every row (module comment).
+                let cy = c.row0 as i64 as f64 + 0.5 - t.y0;
+                let cr = [0, 1, 2, 3].map(|ch| (t.color[ch].a0 + t.color[ch].dy * cy) as f32);
+                src = _mm_set1_epi32(u32::from_ne_bytes(color_to_u8(glam::Vec4::from_array(cr))) as i32);
+            }
+            Block { ca0, cdy, src: _mm_or_si128(src, afix), afix, fogged }
+        }
+    }
+
+    /// The centre offsets `x + 1/2 - x0` of the block's first four columns.
+    #[inline(always)]
+    unsafe fn first_columns(t: &TriangleSetup, c: &Cover) -> __m256d {
+        // (Through i64: one conversion instruction, not usize's several.)
+        let cx0 = c.col0 as i64 as f64 + 0.5 - t.x0;
+        _mm256_add_pd(_mm256_set1_pd(cx0), _mm256_setr_pd(0.0, 1.0, 2.0, 3.0))
+    }
+
     /// Four pixels of row `cy`, columns `at .. at + 4` of the target, the
     /// covered ones (`nibble`) only (FULL: all four read, the others
     /// written back as read; else masked loads and stores): depth (row
-    /// term `zr`, per pixel `zr + zdx * cx`), then colour (the planes' row
+    /// term `zr`, per pixel `zr + dx * cx`), then colour (the planes' row
     /// terms and per pixel values, perspective divided, fogged), or the
-    /// block's `src`. Returns the passing lanes' bits.
+    /// block's `src`. Returns the passing lanes (all ones).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    unsafe fn group<const D: u8, const CS: u8, const CO: u8, const FULL: bool>(px: &Target, t: &TriangleSetup, at: usize, nibble: u32, cy: f64, zr: __m256d, cx: __m256d, zdx: __m256d, qdx: __m256d, ca0: __m256d, cdy: __m256d, cdx: &[__m256d; 4], src: __m128i, afix: __m128i, fogged: Option<&Fogged>) -> i32 {
+    unsafe fn group<const D: u8, const CS: u8, const CO: u8, const FULL: bool>(px: &Target, t: &TriangleSetup, at: usize, nibble: u32, cy: f64, zr: __m256d, s: &Steps, b: &Block) -> __m128i {
         let bit = _mm_setr_epi32(1, 2, 4, 8);
         let one = _mm256_set1_pd(1.0);
         let mut lanes = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(nibble as i32), bit), bit);
         if D != D_OFF {
-            let z = _mm256_add_pd(zr, _mm256_mul_pd(zdx, cx));
+            let z = _mm256_add_pd(zr, s.z);
             let z = _mm256_min_pd(_mm256_max_pd(z, _mm256_setzero_pd()), one);
             let z = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(z, _mm256_set1_pd(DEPTH_MAX as f64)), _mm256_set1_pd(0.5)));
             let dp = px.depth.add(at).cast::<i32>();
@@ -244,35 +316,35 @@ mod x86 {
         }
         let m = _mm_movemask_ps(_mm_castsi128_ps(lanes));
         if CO != CO_NONE && m != 0 {
-            let mut src = src;
+            let mut src = b.src;
             if CS == CS_AFFINE || CS == CS_PERSPECTIVE {
                 // The colour row terms (`a0 + dy * cy`, the channels side
                 // by side), only for groups that store: the same values
                 // in each group of a row.
-                let cr = _mm256_add_pd(ca0, _mm256_mul_pd(cdy, _mm256_set1_pd(cy)));
+                let cr = _mm256_add_pd(b.ca0, _mm256_mul_pd(b.cdy, _mm256_set1_pd(cy)));
                 let w = if CS == CS_PERSPECTIVE {
                     let qr = _mm256_set1_pd(t.q.a0 + t.q.dy * cy);
-                    _mm256_div_pd(one, _mm256_add_pd(qr, _mm256_mul_pd(qdx, cx)))
+                    _mm256_div_pd(one, _mm256_add_pd(qr, s.q))
                 } else {
                     one
                 };
-                let r = channel::<CS>(_mm256_permute4x64_pd::<0x00>(cr), cdx[0], cx, w);
-                let g = channel::<CS>(_mm256_permute4x64_pd::<0x55>(cr), cdx[1], cx, w);
-                let b = channel::<CS>(_mm256_permute4x64_pd::<0xAA>(cr), cdx[2], cx, w);
-                let a = channel::<CS>(_mm256_permute4x64_pd::<0xFF>(cr), cdx[3], cx, w);
-                src = _mm_or_si128(pixels(r, g, b, a), afix);
-            } else if let (CS_FOG, Some(fg)) = (CS, fogged) {
+                let r = channel::<CS>(_mm256_permute4x64_pd::<0x00>(cr), s.c[0], w);
+                let g = channel::<CS>(_mm256_permute4x64_pd::<0x55>(cr), s.c[1], w);
+                let bl = channel::<CS>(_mm256_permute4x64_pd::<0xAA>(cr), s.c[2], w);
+                let a = channel::<CS>(_mm256_permute4x64_pd::<0xFF>(cr), s.c[3], w);
+                src = _mm_or_si128(pixels(r, g, bl, a), b.afix);
+            } else if let (CS_FOG, Some(fg)) = (CS, b.fogged.as_ref()) {
                 // As CS_PERSPECTIVE's, but the colour row terms only for
                 // smooth colour and 1/w only under perspective
                 // (`fast::fog_color`'s w is 1 otherwise).
-                let cr = if fg.flat.is_none() { _mm256_add_pd(ca0, _mm256_mul_pd(cdy, _mm256_set1_pd(cy))) } else { ca0 };
+                let cr = if fg.flat.is_none() { _mm256_add_pd(b.ca0, _mm256_mul_pd(b.cdy, _mm256_set1_pd(cy))) } else { b.ca0 };
                 let w = if fg.perspective {
                     let qr = _mm256_set1_pd(t.q.a0 + t.q.dy * cy);
-                    _mm256_div_pd(one, _mm256_add_pd(qr, _mm256_mul_pd(qdx, cx)))
+                    _mm256_div_pd(one, _mm256_add_pd(qr, s.q))
                 } else {
                     one
                 };
-                src = _mm_or_si128(fog_pixels(fg, cy, cx, w, cr, cdx, m), afix);
+                src = _mm_or_si128(fog_pixels(fg, cy, s, w, cr, m), b.afix);
             }
             let cp = px.color.add(at).cast::<i32>();
             if FULL {
@@ -281,37 +353,65 @@ mod x86 {
                 _mm_maskstore_epi32(cp, lanes, src);
             }
         }
-        m
+        lanes
     }
 
     /// The block kernel: the cover's rows bottom to top, each row's groups
     /// of four columns that hold a covered pixel in the lanes, only the
-    /// covered pixels changed (module comment).
+    /// covered pixels changed (module comment). Round 17: a narrow cover
+    /// (at most four columns: spheres_l's tiny triangles, 2.9 rows and 1.5
+    /// storing groups a call) is shaded here, one group a row, its
+    /// per-pixel terms computed once and few values live across the rows;
+    /// wider ones by [`wide`], out of line, so that its set-up (the
+    /// slopes in lanes for groups further right, hoisted and spilled: a
+    /// 512-byte frame, about 85 instructions a call) is not paid here.
     #[target_feature(enable = "avx2")]
     pub(super) unsafe fn stamp_avx2<const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &Target, c: &Cover) -> u64 {
-        // (Through i64: one conversion instruction, not usize's several.)
-        let cx0 = c.col0 as i64 as f64 + 0.5 - t.x0;
-        let cx = _mm256_add_pd(_mm256_set1_pd(cx0), _mm256_setr_pd(0.0, 1.0, 2.0, 3.0));
-        let zdx = _mm256_set1_pd(t.z.dx);
-        let qdx = _mm256_set1_pd(t.q.dx);
-        let afix = _mm_set1_epi32(((fs.alpha_fix as u32) << 24) as i32);
-        // Colour planes: channels side by side for the row terms, each
-        // channel's dx in every lane for the pixels.
-        let ca0 = _mm256_setr_pd(t.color[0].a0, t.color[1].a0, t.color[2].a0, t.color[3].a0);
-        let cdy = _mm256_setr_pd(t.color[0].dy, t.color[1].dy, t.color[2].dy, t.color[3].dy);
-        let cdx = [_mm256_set1_pd(t.color[0].dx), _mm256_set1_pd(t.color[1].dx), _mm256_set1_pd(t.color[2].dx), _mm256_set1_pd(t.color[3].dx)];
-        let fogged = if CS == CS_FOG { Fogged::of(t) } else { None };
-        let fogged = fogged.as_ref();
-        let mut src = _mm_setzero_si128();
-        if CS == CS_FLAT {
-            src = _mm_set1_epi32(u32::from_ne_bytes(t.flat.unwrap_or_default()) as i32);
-        } else if CS == CS_CONSTANT {
-            // a0 + (+-0) * cy: the same value in every row (module comment).
-            let cy = c.row0 as i64 as f64 + 0.5 - t.y0;
-            let cr = [0, 1, 2, 3].map(|ch| (t.color[ch].a0 + t.color[ch].dy * cy) as f32);
-            src = _mm_set1_epi32(u32::from_ne_bytes(color_to_u8(glam::Vec4::from_array(cr))) as i32);
+        if !c.narrow() {
+            return wide::<D, CS, CO>(fs, t, px, c);
         }
-        src = _mm_or_si128(src, afix);
+        let b = Block::of::<CS>(fs, t, c);
+        let s = Steps::at::<CS>(t, b.fogged.as_ref(), first_columns(t, c));
+        // The group's four pixels lie within the row (the rows are the
+        // band's): plain loads and stores (as `wide`'s FULL), else masked.
+        if c.col0 + 4 <= px.width {
+            narrow::<D, CS, CO, true>(px, t, c, &s, &b)
+        } else {
+            narrow::<D, CS, CO, false>(px, t, c, &s, &b)
+        }
+    }
+
+    /// [`stamp_avx2`]'s rows for a narrow cover: one group a row, the
+    /// passing lanes counted in lanes; `cy` stepped by one a row (exact:
+    /// multiples of 1/256 far below 2^44, module comment).
+    #[inline(always)]
+    unsafe fn narrow<const D: u8, const CS: u8, const CO: u8, const FULL: bool>(px: &Target, t: &TriangleSetup, c: &Cover, s: &Steps, b: &Block) -> u64 {
+        let mut count = _mm_setzero_si128();
+        let mut cy = c.row0 as i64 as f64 + 0.5 - t.y0;
+        let mut at = c.row0 * px.width + c.col0;
+        for bits in c.row_bits() {
+            if bits != 0 {
+                // The depth row term, as the span kernel computes it once
+                // a row (`a0 + dy * cy`).
+                let zr = _mm256_set1_pd(t.z.a0 + t.z.dy * cy);
+                // Passing lanes are -1: subtracting counts them.
+                count = _mm_sub_epi32(count, group::<D, CS, CO, FULL>(px, t, at, bits, cy, zr, s, b));
+            }
+            cy += 1.0;
+            at += px.width;
+        }
+        let count = _mm_add_epi32(count, _mm_shuffle_epi32::<0b01_00_11_10>(count));
+        let count = _mm_add_epi32(count, _mm_shuffle_epi32::<0b10_11_00_01>(count));
+        _mm_cvtsi128_si32(count) as u32 as u64
+    }
+
+    /// [`stamp_avx2`] for covers wider than four columns.
+    #[target_feature(enable = "avx2")]
+    #[inline(never)]
+    unsafe fn wide<const D: u8, const CS: u8, const CO: u8>(fs: &FragmentState, t: &TriangleSetup, px: &Target, c: &Cover) -> u64 {
+        let b = Block::of::<CS>(fs, t, c);
+        let cx = first_columns(t, c);
+        let s0 = Steps::at::<CS>(t, b.fogged.as_ref(), cx);
         // Round 15: masked loads and stores (`vpmaskmovd`) are slow on
         // some CPUs (AMD Zen 3 here: about 9.5 ns a group of four against
         // 3 ns with plain loads, blends and stores), so a cover whose
@@ -332,9 +432,9 @@ mod x86 {
                 // a row (`a0 + dy * cy`).
                 let zr = _mm256_set1_pd(t.z.a0 + t.z.dy * cy);
                 if bits < 16 {
-                    // One group (the tiny triangles of spheres_l).
-                    let m = if full { group::<D, CS, CO, true>(px, t, at, bits, cy, zr, cx, zdx, qdx, ca0, cdy, &cdx, src, afix, fogged) } else { group::<D, CS, CO, false>(px, t, at, bits, cy, zr, cx, zdx, qdx, ca0, cdy, &cdx, src, afix, fogged) };
-                    passed += m.count_ones() as u64;
+                    // One group.
+                    let lanes = if full { group::<D, CS, CO, true>(px, t, at, bits, cy, zr, &s0, &b) } else { group::<D, CS, CO, false>(px, t, at, bits, cy, zr, &s0, &b) };
+                    passed += _mm_movemask_ps(_mm_castsi128_ps(lanes)).count_ones() as u64;
                 } else {
                     // The groups of four columns with a covered pixel
                     // (the centres `cx + 4 g` are exact: multiples of 1/256).
@@ -343,10 +443,10 @@ mod x86 {
                         let g = bits.trailing_zeros() & !3;
                         let nibble = (bits >> g) & 15;
                         bits &= !(15 << g);
-                        let cxg = _mm256_add_pd(cx, _mm256_set1_pd(g as f64));
+                        let s = Steps::at::<CS>(t, b.fogged.as_ref(), _mm256_add_pd(cx, _mm256_set1_pd(g as f64)));
                         let at = at + g as usize;
-                        let m = if full { group::<D, CS, CO, true>(px, t, at, nibble, cy, zr, cxg, zdx, qdx, ca0, cdy, &cdx, src, afix, fogged) } else { group::<D, CS, CO, false>(px, t, at, nibble, cy, zr, cxg, zdx, qdx, ca0, cdy, &cdx, src, afix, fogged) };
-                        passed += m.count_ones() as u64;
+                        let lanes = if full { group::<D, CS, CO, true>(px, t, at, nibble, cy, zr, &s, &b) } else { group::<D, CS, CO, false>(px, t, at, nibble, cy, zr, &s, &b) };
+                        passed += _mm_movemask_ps(_mm_castsi128_ps(lanes)).count_ones() as u64;
                     }
                 }
             }
@@ -402,14 +502,19 @@ mod tests {
         const H: usize = 44;
         let mut rnd = crate::render::test_rng::below(1313, 19);
         let (mut shaded, mut written, mut ties, mut kinds, mut wide, mut tall_covers) = (0usize, 0u64, 0usize, [0usize; 4], 0usize, 0usize);
-        let mut inside = [0usize; 2];
+        let (mut inside, mut narrow) = ([0usize; 2], [0usize; 2]);
         // Fogged covers shaded: by mode (LINEAR, EXP, EXP2, per vertex),
         // and by flat * 2 + perspective.
         let (mut fog_modes, mut fog_kinds) = ([0usize; 4], [0usize; 4]);
         for n in 0..120_000 {
             // Round 14: also boxes up to 32 columns and 32 rows.
             let (size, tall) = [(ONE, ONE), (2 * ONE, 2 * ONE), (4 * ONE, 4 * ONE), (7 * ONE, 7 * ONE), (8 * ONE, 14 * ONE), (15 * ONE, 30 * ONE), (31 * ONE, 31 * ONE)][n % 7];
-            let (bx, by) = (rnd(12 * ONE) + 2 * ONE, rnd(10 * ONE) + 2 * ONE);
+            let (mut bx, by) = (rnd(12 * ONE) + 2 * ONE, rnd(10 * ONE) + 2 * ONE);
+            if n % 5 == 2 {
+                // Round 17: narrow covers at the buffer's right edge
+                // (masked loads and stores), the others further left.
+                bx = if n % 10 == 2 { (W as i64 - 4) * ONE + rnd(3 * ONE) } else { rnd(40 * ONE) };
+            }
             let mut x = [bx + rnd(size), bx + rnd(size), bx + rnd(size)];
             let mut y = [by + rnd(tall), by + rnd(tall), by + rnd(tall)];
             if n % 4 == 1 {
@@ -536,9 +641,16 @@ mod tests {
             // Round 15: blocks inside the rows (plain loads and stores,
             // the other lanes written back) and at the right edge (masked).
             inside[(cover.col0 + Cover::COLS as usize <= W) as usize] += 1;
+            // Round 17: narrow covers (one group a row), plain and masked.
+            if cover.narrow() {
+                assert!((0..cover.height()).all(|j| cover.row(j) < 16), "narrow: {cover:?}");
+                narrow[(cover.col0 + 4 <= W) as usize] += 1;
+            }
         }
         assert!(shaded > 30_000 && written > 40_000 && ties > 20_000 && wide > 3_000 && tall_covers > 10_000 && kinds.iter().all(|&k| k > 1000), "{shaded} {written} {ties} {kinds:?} {wide} {tall_covers}");
         assert!(inside.iter().all(|&k| k > 5_000), "edge / inside: {inside:?}");
+        eprintln!("narrow covers at the edge / inside: {narrow:?}");
+        assert!(narrow[0] > 1_000 && narrow[1] > 10_000, "narrow covers at the edge / inside: {narrow:?}");
         assert!(fog_modes.iter().all(|&k| k > 1500) && fog_kinds.iter().all(|&k| k > 400), "{fog_modes:?} {fog_kinds:?}");
     }
 }
