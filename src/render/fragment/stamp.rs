@@ -218,8 +218,11 @@ mod x86 {
         #[inline(always)]
         unsafe fn of(t: &TriangleSetup) -> Option<Fogged> {
             let (p, fog) = t.fog.as_ref()?;
-            let flat = t.flat.map(|c| c.map(|v| _mm_set1_ps(v as f32 / 255.0)));
-            let color = [0, 1, 2].map(|ch| _mm_set1_ps(fog.color[ch]));
+            // (Written out, not `map`: round 17's `Block::of`, inlined in
+            // two kernels, left `map` an out-of-line call.)
+            let byte = |v: u8| _mm_set1_ps(v as f32 / 255.0);
+            let flat = t.flat.map(|c| [byte(c[0]), byte(c[1]), byte(c[2]), byte(c[3])]);
+            let color = [_mm_set1_ps(fog.color[0]), _mm_set1_ps(fog.color[1]), _mm_set1_ps(fog.color[2])];
             Some(Fogged { fog: *fog, a0: p.a0, dy: p.dy, dx: p.dx, color, flat, perspective: t.perspective })
         }
     }
@@ -270,7 +273,10 @@ mod x86 {
             } else if CS == CS_CONSTANT {
                 // a0 + (+-0) * cy: the same value in every row (module comment).
                 let cy = c.row0 as i64 as f64 + 0.5 - t.y0;
-                let cr = [0, 1, 2, 3].map(|ch| (t.color[ch].a0 + t.color[ch].dy * cy) as f32);
+                // (Written out, not `map`: see `Fogged::of`; 41 instructions
+                // a call on immediate_1m.)
+                let row = |ch: usize| (t.color[ch].a0 + t.color[ch].dy * cy) as f32;
+                let cr = [row(0), row(1), row(2), row(3)];
                 src = _mm_set1_epi32(u32::from_ne_bytes(color_to_u8(glam::Vec4::from_array(cr))) as i32);
             }
             Block { ca0, cdy, src: _mm_or_si128(src, afix), afix, fogged }
