@@ -42,6 +42,39 @@ impl Positions {
         self.z[lane] = p[2];
         self.w[lane] = p[3];
     }
+
+    /// The lanes of a [`Queue`], one array per coordinate (the lit
+    /// path's `light4::light_lanes` reads them so).
+    #[inline(always)]
+    pub fn of(q: &Queue) -> Positions {
+        let l = &q.0;
+        Positions {
+            x: std::array::from_fn(|i| l[i].x),
+            y: std::array::from_fn(|i| l[i].y),
+            z: std::array::from_fn(|i| l[i].z),
+            w: std::array::from_fn(|i| l[i].w),
+        }
+    }
+}
+
+/// Object coordinates of up to [`LANES`] queued vertices, one vector per
+/// vertex (round 17): a vertex is queued with one 16-byte store, which
+/// the flush's 16-byte load of the lane takes straight from the store
+/// buffer. One array per coordinate ([`Positions`]) took four 4-byte
+/// stores per vertex, and each 16-byte load of a coordinate's lanes then
+/// waited for them to reach the cache (a store-forwarding stall per
+/// flush: about a tenth of `flush_vertices`' cycles in immediate_1m).
+#[derive(Clone, Copy, Debug)]
+pub struct Queue(pub [Vec4; LANES]);
+
+impl Queue {
+    /// All lanes (0, 0, 0, 1), as [`Positions::ORIGIN`].
+    pub const ORIGIN: Queue = Queue([Vec4::W; LANES]);
+
+    #[inline(always)]
+    pub fn set(&mut self, lane: usize, p: Vec4) {
+        self.0[lane] = p;
+    }
 }
 
 /// Transforms the first `k` (1 to [`LANES`]) queued positions by `mvp` and
@@ -49,7 +82,7 @@ impl Positions {
 /// `snapped`, of `verts[slots[i]]` for lane i. The same bits as
 /// `v.pos = mvp * obj; v.place(rs)` per vertex.
 #[inline]
-pub fn transform_place(mvp: &Mat4, rs: &RenderState, obj: &Positions, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
+pub fn transform_place(mvp: &Mat4, rs: &RenderState, obj: &Queue, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
     debug_assert!(k >= 1 && k <= LANES);
     #[cfg(all(any(target_arch = "x86_64", target_arch = "x86"), target_feature = "sse2"))]
     {
@@ -64,10 +97,10 @@ pub fn transform_place(mvp: &Mat4, rs: &RenderState, obj: &Positions, k: usize, 
 
 /// The one-vertex-at-a-time definition the lanes reproduce.
 #[inline]
-pub fn scalar(mvp: &Mat4, rs: &RenderState, obj: &Positions, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
+pub fn scalar(mvp: &Mat4, rs: &RenderState, obj: &Queue, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
     for i in 0..k {
         let v = &mut verts[slots[i]];
-        v.pos = *mvp * Vec4::new(obj.x[i], obj.y[i], obj.z[i], obj.w[i]);
+        v.pos = *mvp * obj.0[i];
         v.place(rs);
     }
 }
@@ -120,9 +153,14 @@ mod sse2 {
     }
 
     #[inline(always)]
-    pub unsafe fn transform_place(mvp: &Mat4, rs: &RenderState, obj: &Positions, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
+    pub unsafe fn transform_place(mvp: &Mat4, rs: &RenderState, obj: &Queue, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
         let m = mvp.to_cols_array();
-        let (x, y, z, w) = (_mm_loadu_ps(obj.x.as_ptr()), _mm_loadu_ps(obj.y.as_ptr()), _mm_loadu_ps(obj.z.as_ptr()), _mm_loadu_ps(obj.w.as_ptr()));
+        // The lanes' vectors to one vector per coordinate (a transpose).
+        let l = obj.0.map(__m128::from);
+        let (a0, a1) = (_mm_unpacklo_ps(l[0], l[1]), _mm_unpackhi_ps(l[0], l[1])); // x0 x1 y0 y1, z0 z1 w0 w1
+        let (b0, b1) = (_mm_unpacklo_ps(l[2], l[3]), _mm_unpackhi_ps(l[2], l[3])); // x2 x3 y2 y3, z2 z3 w2 w3
+        let (x, y) = (_mm_movelh_ps(a0, b0), _mm_movehl_ps(b0, a0));
+        let (z, w) = (_mm_movelh_ps(a1, b1), _mm_movehl_ps(b1, a1));
         let cx = row(&m, 0, x, y, z, w);
         let cy = row(&m, 1, x, y, z, w);
         let cz = row(&m, 2, x, y, z, w);
@@ -247,7 +285,7 @@ mod tests {
             };
             rs.viewport_scale = [w / 2.0, h / 2.0, 0.5 * unit() as f64];
             rs.viewport_offset = [w / 2.0 + if exact { 0.0 } else { (unit() * 100.0) as f64 }, h / 2.0 - if exact { 0.0 } else { (unit() * 100.0) as f64 }, 0.5];
-            let mut obj = Positions::ORIGIN;
+            let mut obj = Queue::ORIGIN;
             for lane in 0..LANES {
                 let mut p = [0.0f32; 4];
                 for c in p.iter_mut() {
@@ -268,7 +306,7 @@ mod tests {
                     p[3] = [1e-20, 1e-21, 2e-20, 1e-20f32.next_up(), 1e-20f32.next_down(), 0.0, -1e-20][(unit() * 7.0) as usize % 7];
                     p[0] = [16.0 * p[3], -16.0 * p[3], (16.0 * p[3]).next_up(), p[0]][(unit() * 4.0) as usize % 4];
                 }
-                obj.set(lane, p);
+                obj.set(lane, Vec4::from_array(p));
             }
             let k = 1 + case % LANES;
             let slots = [3, 0, 5, 1];
