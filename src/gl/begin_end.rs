@@ -688,7 +688,7 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
             // Triangles start at slots that are multiples of 3.
             if slot % 3 == 2 {
                 let (s0, s1) = (slot - 2, slot - 1);
-                fill(rs, fb, direct, [&t[s0], &t[s1], &t[slot]], 2, [t[s0].edge, t[s1].edge, t[slot].edge]);
+                fill(rs, fb, direct, [&t[s0], &t[s1], &t[slot]], 2, || [t[s0].edge, t[s1].edge, t[slot].edge]);
             }
         }
         GL_TRIANGLE_STRIP => {
@@ -697,12 +697,12 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
                 // Odd triangles swap their first two vertices (as in
                 // `assemble_into`); the newest provokes.
                 let v = if n % 2 == 0 { [&t[old], &t[prev], &t[slot]] } else { [&t[prev], &t[old], &t[slot]] };
-                fill(rs, fb, direct, v, 2, [true; 3]);
+                fill(rs, fb, direct, v, 2, || [true; 3]);
             }
         }
         GL_TRIANGLE_FAN => {
             if n >= 2 {
-                fill(rs, fb, direct, [&t[RING], &t[ring(n - 1)], &t[slot]], 2, [true; 3]);
+                fill(rs, fb, direct, [&t[RING], &t[ring(n - 1)], &t[slot]], 2, || [true; 3]);
             }
         }
         GL_QUADS => {
@@ -711,8 +711,8 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
                 // `quad(q0, q1, q2, q3)` with q3 provoking.
                 let (q0, q1, q2) = (slot - 3, slot - 2, slot - 1);
                 let e = |v: &ClipVertex| v.edge;
-                fill(rs, fb, direct, [&t[q0], &t[q1], &t[slot]], 2, [e(&t[q0]), false, e(&t[slot])]);
-                fill_flat(rs, fb, direct, [&t[q1], &t[q2], &t[slot]], &t[slot], [e(&t[q1]), e(&t[q2]), false]);
+                fill(rs, fb, direct, [&t[q0], &t[q1], &t[slot]], 2, || [e(&t[q0]), false, e(&t[slot])]);
+                fill_flat(rs, fb, direct, [&t[q1], &t[q2], &t[slot]], &t[slot], || [e(&t[q1]), e(&t[q2]), false]);
             }
         }
         _ => {
@@ -720,8 +720,8 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
             // (v[n-1], v[n-3], v[n-2], v[n]) split along v[n-1]-v[n].
             if n >= 3 && n % 2 == 1 {
                 let (a3, b2, c1) = (ring(n - 3), ring(n - 2), ring(n - 1));
-                fill(rs, fb, direct, [&t[c1], &t[a3], &t[slot]], 2, [true, false, true]);
-                fill_flat(rs, fb, direct, [&t[a3], &t[b2], &t[slot]], &t[slot], [true, true, false]);
+                fill(rs, fb, direct, [&t[c1], &t[a3], &t[slot]], 2, || [true, false, true]);
+                fill_flat(rs, fb, direct, [&t[a3], &t[b2], &t[slot]], &t[slot], || [true, true, false]);
             }
         }
     }
@@ -730,15 +730,19 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
 /// One filled triangle of the batched path, `v[provoking]` giving the flat
 /// colour; see [`fill_flat`].
 #[inline(always)]
-fn fill(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: usize, edges: [bool; 3]) {
+fn fill(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: usize, edges: impl Fn() -> [bool; 3]) {
     fill_flat(rs, fb, direct, v, v[provoking], edges)
 }
 
 /// `render::draw_triangle` for a triangle with no flat secondary colour to
 /// copy (`Assembly::fast` leaves those out), entering setup at once when `direct` and every vertex
 /// is inside the guard band: the decision `draw_triangle` would take.
+/// The edge flags are read only on the way to `draw_triangle` (round 17:
+/// read beside `inside`, the newest vertex's two flags were loaded as one
+/// word over two separate byte stores, a store-forwarding stall per
+/// triangle).
 #[inline(always)]
-fn fill_flat(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: &ClipVertex, edges: [bool; 3]) {
+fn fill_flat(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: &ClipVertex, edges: impl Fn() -> [bool; 3]) {
     let flat = [provoking.color, provoking.back_color];
     if direct.on && v[0].inside & v[1].inside & v[2].inside {
         if direct.bin {
@@ -747,7 +751,7 @@ fn fill_flat(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer,
             render::setup::triangle_placed(rs, fb, v, flat)
         }
     } else {
-        render::draw_triangle(rs, fb, v, flat, edges)
+        render::draw_triangle(rs, fb, v, flat, edges())
     }
 }
 
