@@ -917,17 +917,21 @@ impl Context {
         // (nothing in the loop changes the state it depends on): each
         // vertex then enters it directly, as `vertex` would send it.
         let plain = self.plain_batch();
+        // The current colour kept in a register as well: the plain case
+        // takes it from there (`vertex_fast_colored`).
+        let mut color = glam::Vec4::from_array(self.current.color);
         for k in 0..n {
             let i = index(k);
             if let Some(s) = &f.color {
-                self.current.color = s.fetch_as::<C, CN, true>(i);
+                color = glam::Vec4::from_array(s.fetch_as::<C, CN, true>(i));
+                super::begin_end::store4(&mut self.current.color, color);
                 if self.lighting.color_material {
                     self.apply_color_material();
                 }
             }
             let p = v.fetch_as::<f32, VN, false>(i);
             if plain {
-                self.vertex_fast::<true>(p);
+                self.vertex_fast_colored::<true>(p, color);
             } else {
                 self.vertex(p);
             }

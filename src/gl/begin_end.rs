@@ -14,7 +14,7 @@ use super::context::Context;
 use super::enums::*;
 use super::select;
 use crate::render::light4::{self, Normals, Tracked};
-use crate::render::vertex4::{self, Positions, LANES};
+use crate::render::vertex4::{self, Positions, Queue, LANES};
 use crate::render::{self, ClipVertex};
 use glam::Vec4;
 
@@ -56,7 +56,7 @@ pub struct Assembly {
     /// With `fast`: the object positions of the last `pending` vertices,
     /// whose attributes are already in their slots and whose positions
     /// are transformed and placed four at a time (`flush_vertices`).
-    queue: Positions,
+    queue: Queue,
     pending: usize,
     /// With `fast`: the ring slot the next vertex takes (`ring_slot` of
     /// `count`, stepped per vertex rather than divided out), and the
@@ -73,6 +73,25 @@ pub struct Assembly {
     normals: Normals,
     /// With `lit` and GL_COLOR_MATERIAL on: the queued current colours.
     tracked: Option<Tracked>,
+}
+
+/// Stores a current value (a colour) as one 16-byte store (round 17):
+/// the batched vertex path reads it with one 16-byte load, which a store
+/// of the same size forwards; the narrower stores a plain assignment of
+/// three components and a constant compiles to cannot be forwarded, and
+/// the load waited for them to reach the cache (immediate_1m: a fifth of
+/// glVertex2f's cycles, at the vertex after each glColor3f).
+#[inline(always)]
+pub(crate) fn store4(dst: &mut [f32; 4], v: Vec4) {
+    #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+    // SAFETY: `dst` is 16 writable bytes; SSE2 is enabled (cfg above).
+    unsafe {
+        std::arch::x86_64::_mm_storeu_ps(dst.as_mut_ptr(), v.into())
+    }
+    #[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
+    {
+        *dst = v.to_array();
+    }
 }
 
 /// The batched path's ring of slots: vertex n of the primitive lives in
@@ -148,7 +167,7 @@ impl Context {
             plain,
             direct,
             fp_trusted,
-            queue: Positions::ORIGIN,
+            queue: Queue::ORIGIN,
             pending: 0,
             slot: ring_slot(mode, 0),
             slots: [0; LANES],
@@ -307,6 +326,18 @@ impl Context {
     /// setup.
     #[inline(always)]
     pub(crate) fn vertex_fast<const PLAIN: bool>(&mut self, p: [f32; 4]) {
+        self.vertex_fast_colored::<PLAIN>(p, Vec4::from_array(self.current.color))
+    }
+
+    /// [`Context::vertex_fast`] with the current colour given (`current`,
+    /// equal to `self.current.color`): a caller that has just set it
+    /// (an array draw's colour array) passes it in a register, rather
+    /// than the vertex reading it back from memory while its stores are
+    /// still in flight (a store-forwarding stall per vertex, round 17:
+    /// over half of arrays_1m's element loop cycles).
+    #[inline(always)]
+    pub(crate) fn vertex_fast_colored<const PLAIN: bool>(&mut self, p: [f32; 4], current: Vec4) {
+        debug_assert_eq!(current.to_array().map(f32::to_bits), self.current.color.map(f32::to_bits));
         let obj = Vec4::from_array(p);
         // The attributes as `vertex` computes them (the same functions);
         // PLAIN (unlit, untextured, fog-free) skips the tests for what the
@@ -314,7 +345,7 @@ impl Context {
         let lit = !PLAIN && self.prim.as_ref().is_some_and(|a| a.lit);
         let [color, back_color, secondary, back_secondary] = if PLAIN {
             let rs = &self.derived.render;
-            let c = Vec4::from_array(self.current.color);
+            let c = current;
             // `vertex_colors` without lighting or texturing.
             let s = if rs.color_sum { Vec4::from_array(self.current.secondary_color).truncate().extend(0.0) } else { Vec4::ZERO };
             [c + s, c + s, Vec4::ZERO, Vec4::ZERO]
@@ -329,7 +360,7 @@ impl Context {
         let tex = if textured { self.vertex_texcoords(obj) } else { [Vec4::ZERO; render::texture::MAX_UNITS] };
         let fog = if PLAIN { 0.0 } else { self.vertex_fog(obj) };
         let edge = self.current.edge_flag;
-        let (normal, current) = (self.current.normal, self.current.color);
+        let normal = self.current.normal;
         let Some(a) = self.prim.as_mut() else { return };
         let s = a.slot;
         debug_assert_eq!(s, ring_slot(a.mode, a.count));
@@ -356,12 +387,12 @@ impl Context {
         // the mask only lets the lane indices go unchecked.
         debug_assert!(a.pending < LANES);
         let lane = a.pending & (LANES - 1);
-        a.queue.set(lane, p);
+        a.queue.set(lane, obj);
         a.slots[lane] = s;
         if lit {
             a.normals.set(lane, normal);
             if let Some(t) = &mut a.tracked {
-                t.set(lane, current);
+                t.set(lane, current.to_array());
             }
         }
         a.pending = lane + 1;
@@ -389,7 +420,7 @@ impl Context {
         let rs = &self.derived.render;
         if a.lit {
             if let Some(ls) = &self.derived.lighting {
-                let lit = light4::light_lanes(ls, &self.lighting.materials, a.tracked.as_ref(), &a.queue, &a.normals, k);
+                let lit = light4::light_lanes(ls, &self.lighting.materials, a.tracked.as_ref(), &Positions::of(&a.queue), &a.normals, k);
                 // `vertex_colors`' colour sum.
                 let sum = rs.texture.is_none();
                 for (&s, c) in slots.iter().zip(lit).take(k) {
@@ -657,7 +688,7 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
             // Triangles start at slots that are multiples of 3.
             if slot % 3 == 2 {
                 let (s0, s1) = (slot - 2, slot - 1);
-                fill(rs, fb, direct, [&t[s0], &t[s1], &t[slot]], 2, [t[s0].edge, t[s1].edge, t[slot].edge]);
+                fill(rs, fb, direct, [&t[s0], &t[s1], &t[slot]], 2, || [t[s0].edge, t[s1].edge, t[slot].edge]);
             }
         }
         GL_TRIANGLE_STRIP => {
@@ -666,12 +697,12 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
                 // Odd triangles swap their first two vertices (as in
                 // `assemble_into`); the newest provokes.
                 let v = if n % 2 == 0 { [&t[old], &t[prev], &t[slot]] } else { [&t[prev], &t[old], &t[slot]] };
-                fill(rs, fb, direct, v, 2, [true; 3]);
+                fill(rs, fb, direct, v, 2, || [true; 3]);
             }
         }
         GL_TRIANGLE_FAN => {
             if n >= 2 {
-                fill(rs, fb, direct, [&t[RING], &t[ring(n - 1)], &t[slot]], 2, [true; 3]);
+                fill(rs, fb, direct, [&t[RING], &t[ring(n - 1)], &t[slot]], 2, || [true; 3]);
             }
         }
         GL_QUADS => {
@@ -680,8 +711,8 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
                 // `quad(q0, q1, q2, q3)` with q3 provoking.
                 let (q0, q1, q2) = (slot - 3, slot - 2, slot - 1);
                 let e = |v: &ClipVertex| v.edge;
-                fill(rs, fb, direct, [&t[q0], &t[q1], &t[slot]], 2, [e(&t[q0]), false, e(&t[slot])]);
-                fill_flat(rs, fb, direct, [&t[q1], &t[q2], &t[slot]], &t[slot], [e(&t[q1]), e(&t[q2]), false]);
+                fill(rs, fb, direct, [&t[q0], &t[q1], &t[slot]], 2, || [e(&t[q0]), false, e(&t[slot])]);
+                fill_flat(rs, fb, direct, [&t[q1], &t[q2], &t[slot]], &t[slot], || [e(&t[q1]), e(&t[q2]), false]);
             }
         }
         _ => {
@@ -689,8 +720,8 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
             // (v[n-1], v[n-3], v[n-2], v[n]) split along v[n-1]-v[n].
             if n >= 3 && n % 2 == 1 {
                 let (a3, b2, c1) = (ring(n - 3), ring(n - 2), ring(n - 1));
-                fill(rs, fb, direct, [&t[c1], &t[a3], &t[slot]], 2, [true, false, true]);
-                fill_flat(rs, fb, direct, [&t[a3], &t[b2], &t[slot]], &t[slot], [true, true, false]);
+                fill(rs, fb, direct, [&t[c1], &t[a3], &t[slot]], 2, || [true, false, true]);
+                fill_flat(rs, fb, direct, [&t[a3], &t[b2], &t[slot]], &t[slot], || [true, true, false]);
             }
         }
     }
@@ -699,15 +730,19 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
 /// One filled triangle of the batched path, `v[provoking]` giving the flat
 /// colour; see [`fill_flat`].
 #[inline(always)]
-fn fill(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: usize, edges: [bool; 3]) {
+fn fill(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: usize, edges: impl Fn() -> [bool; 3]) {
     fill_flat(rs, fb, direct, v, v[provoking], edges)
 }
 
 /// `render::draw_triangle` for a triangle with no flat secondary colour to
 /// copy (`Assembly::fast` leaves those out), entering setup at once when `direct` and every vertex
 /// is inside the guard band: the decision `draw_triangle` would take.
+/// The edge flags are read only on the way to `draw_triangle` (round 17:
+/// read beside `inside`, the newest vertex's two flags were loaded as one
+/// word over two separate byte stores, a store-forwarding stall per
+/// triangle).
 #[inline(always)]
-fn fill_flat(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: &ClipVertex, edges: [bool; 3]) {
+fn fill_flat(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: &ClipVertex, edges: impl Fn() -> [bool; 3]) {
     let flat = [provoking.color, provoking.back_color];
     if direct.on && v[0].inside & v[1].inside & v[2].inside {
         if direct.bin {
@@ -716,7 +751,7 @@ fn fill_flat(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer,
             render::setup::triangle_placed(rs, fb, v, flat)
         }
     } else {
-        render::draw_triangle(rs, fb, v, flat, edges)
+        render::draw_triangle(rs, fb, v, flat, edges())
     }
 }
 

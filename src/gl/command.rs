@@ -203,7 +203,8 @@ impl Context {
     /// material tracks (2.14.3).
     #[inline]
     pub fn set_color(&mut self, c: [f32; 4]) {
-        self.current.color = c;
+        // One 16-byte store, forwarded to the next vertex's load.
+        super::begin_end::store4(&mut self.current.color, glam::Vec4::new(c[0], c[1], c[2], c[3]));
         if self.lighting.color_material {
             self.apply_color_material();
         }

@@ -42,6 +42,39 @@ impl Positions {
         self.z[lane] = p[2];
         self.w[lane] = p[3];
     }
+
+    /// The lanes of a [`Queue`], one array per coordinate (the lit
+    /// path's `light4::light_lanes` reads them so).
+    #[inline(always)]
+    pub fn of(q: &Queue) -> Positions {
+        let l = &q.0;
+        Positions {
+            x: std::array::from_fn(|i| l[i].x),
+            y: std::array::from_fn(|i| l[i].y),
+            z: std::array::from_fn(|i| l[i].z),
+            w: std::array::from_fn(|i| l[i].w),
+        }
+    }
+}
+
+/// Object coordinates of up to [`LANES`] queued vertices, one vector per
+/// vertex (round 17): a vertex is queued with one 16-byte store, which
+/// the flush's 16-byte load of the lane takes straight from the store
+/// buffer. One array per coordinate ([`Positions`]) took four 4-byte
+/// stores per vertex, and each 16-byte load of a coordinate's lanes then
+/// waited for them to reach the cache (a store-forwarding stall per
+/// flush: about a tenth of `flush_vertices`' cycles in immediate_1m).
+#[derive(Clone, Copy, Debug)]
+pub struct Queue(pub [Vec4; LANES]);
+
+impl Queue {
+    /// All lanes (0, 0, 0, 1), as [`Positions::ORIGIN`].
+    pub const ORIGIN: Queue = Queue([Vec4::W; LANES]);
+
+    #[inline(always)]
+    pub fn set(&mut self, lane: usize, p: Vec4) {
+        self.0[lane] = p;
+    }
 }
 
 /// Transforms the first `k` (1 to [`LANES`]) queued positions by `mvp` and
@@ -49,10 +82,16 @@ impl Positions {
 /// `snapped`, of `verts[slots[i]]` for lane i. The same bits as
 /// `v.pos = mvp * obj; v.place(rs)` per vertex.
 #[inline]
-pub fn transform_place(mvp: &Mat4, rs: &RenderState, obj: &Positions, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
+pub fn transform_place(mvp: &Mat4, rs: &RenderState, obj: &Queue, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
     debug_assert!(k >= 1 && k <= LANES);
     #[cfg(all(any(target_arch = "x86_64", target_arch = "x86"), target_feature = "sse2"))]
     {
+        #[cfg(target_arch = "x86_64")]
+        if super::fragment::simd::level() == super::fragment::simd::Level::Avx2 {
+            // SAFETY: SSE2 is enabled for this target; the CPU has AVX2
+            // (`simd::level` detected it).
+            return unsafe { avx2::transform_place(mvp, rs, obj, k, verts, slots) };
+        }
         // SAFETY: SSE2 is enabled for this target (cfg above).
         unsafe { sse2::transform_place(mvp, rs, obj, k, verts, slots) }
     }
@@ -64,10 +103,10 @@ pub fn transform_place(mvp: &Mat4, rs: &RenderState, obj: &Positions, k: usize, 
 
 /// The one-vertex-at-a-time definition the lanes reproduce.
 #[inline]
-pub fn scalar(mvp: &Mat4, rs: &RenderState, obj: &Positions, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
+pub fn scalar(mvp: &Mat4, rs: &RenderState, obj: &Queue, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
     for i in 0..k {
         let v = &mut verts[slots[i]];
-        v.pos = *mvp * Vec4::new(obj.x[i], obj.y[i], obj.z[i], obj.w[i]);
+        v.pos = *mvp * obj.0[i];
         v.place(rs);
     }
 }
@@ -85,7 +124,7 @@ mod sse2 {
     /// Snapped values whose magnitude stays below this are converted in
     /// 32-bit lanes (`cvttpd2dq`); the rounding may add one, which must
     /// still fit.
-    const SNAP_LIMIT: f64 = (1u64 << 30) as f64;
+    pub(super) const SNAP_LIMIT: f64 = (1u64 << 30) as f64;
 
     #[inline(always)]
     unsafe fn row(m: &[f32; 16], r: usize, x: __m128, y: __m128, z: __m128, w: __m128) -> __m128 {
@@ -119,10 +158,18 @@ mod sse2 {
         _mm_movemask_pd(_mm_cmplt_pd(abs, _mm_set1_pd(SNAP_LIMIT)))
     }
 
+    /// The clip coordinates of the lanes, one vector per coordinate; the
+    /// lanes inside the fixed clip planes (bit i for lane i); the clip
+    /// positions per lane.
     #[inline(always)]
-    pub unsafe fn transform_place(mvp: &Mat4, rs: &RenderState, obj: &Positions, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
+    pub(super) unsafe fn clip_lanes(mvp: &Mat4, obj: &Queue) -> ([__m128; 4], i32, [__m128; LANES]) {
         let m = mvp.to_cols_array();
-        let (x, y, z, w) = (_mm_loadu_ps(obj.x.as_ptr()), _mm_loadu_ps(obj.y.as_ptr()), _mm_loadu_ps(obj.z.as_ptr()), _mm_loadu_ps(obj.w.as_ptr()));
+        // The lanes' vectors to one vector per coordinate (a transpose).
+        let l = obj.0.map(__m128::from);
+        let (a0, a1) = (_mm_unpacklo_ps(l[0], l[1]), _mm_unpackhi_ps(l[0], l[1])); // x0 x1 y0 y1, z0 z1 w0 w1
+        let (b0, b1) = (_mm_unpacklo_ps(l[2], l[3]), _mm_unpackhi_ps(l[2], l[3])); // x2 x3 y2 y3, z2 z3 w2 w3
+        let (x, y) = (_mm_movelh_ps(a0, b0), _mm_movehl_ps(b0, a0));
+        let (z, w) = (_mm_movelh_ps(a1, b1), _mm_movehl_ps(b1, a1));
         let cx = row(&m, 0, x, y, z, w);
         let cy = row(&m, 1, x, y, z, w);
         let cz = row(&m, 2, x, y, z, w);
@@ -149,6 +196,12 @@ mod sse2 {
         let t3 = _mm_unpackhi_ps(cz, cw); // z2 w2 z3 w3
         let pos = [_mm_movelh_ps(t0, t2), _mm_movehl_ps(t2, t0), _mm_movelh_ps(t1, t3), _mm_movehl_ps(t3, t1)];
 
+        ([cx, cy, cz, cw], inside, pos)
+    }
+
+    #[inline(always)]
+    pub unsafe fn transform_place(mvp: &Mat4, rs: &RenderState, obj: &Queue, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
+        let ([cx, cy, cz, cw], inside, pos) = clip_lanes(mvp, obj);
         // `setup::window_pos` in f64 lanes, two at a time: q = 1 / w,
         // o + s * (c * q).
         let [sx, sy, sz] = rs.viewport_scale;
@@ -194,6 +247,100 @@ mod sse2 {
             // never read unless `inside`.
             v.win = win[i];
             v.snapped = snapped[i];
+        }
+    }
+}
+
+/// [`transform_place`] with the window position's f64 lanes four wide
+/// (round 17): one division, one set of products and sums, one snap for
+/// the four vertices, where SSE2 takes two of each. The same operations
+/// per lane as `sse2` (and so as the scalar stage).
+#[cfg(target_arch = "x86_64")]
+mod avx2 {
+    use super::super::setup::ONE;
+    use super::sse2::{clip_lanes, SNAP_LIMIT};
+    use super::*;
+    use core::arch::x86_64::*;
+
+    /// `sse2::snap2` for four lanes.
+    #[inline(always)]
+    unsafe fn snap4(c: __m256d) -> __m128i {
+        let v = _mm256_mul_pd(c, _mm256_set1_pd(ONE as f64));
+        let t = _mm256_cvttpd_epi32(v);
+        let tf = _mm256_cvtepi32_pd(t);
+        let frac = _mm256_sub_pd(v, tf);
+        let one = _mm256_set1_pd(1.0);
+        let up = _mm256_and_pd(_mm256_cmp_pd::<_CMP_GE_OS>(frac, _mm256_set1_pd(0.5)), one);
+        let down = _mm256_and_pd(_mm256_cmp_pd::<_CMP_LE_OS>(frac, _mm256_set1_pd(-0.5)), one);
+        _mm256_cvtpd_epi32(_mm256_sub_pd(_mm256_add_pd(tf, up), down))
+    }
+
+    /// `sse2::snappable` for four lanes (bits 0 to 3).
+    #[inline(always)]
+    unsafe fn snappable4(c: __m256d) -> i32 {
+        let v = _mm256_mul_pd(c, _mm256_set1_pd(ONE as f64));
+        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), v);
+        _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OS>(abs, _mm256_set1_pd(SNAP_LIMIT)))
+    }
+
+    /// The clip coordinates are made by the SSE2 code (`clip_lanes`):
+    /// compiled into an AVX2 function its sums may take their operands
+    /// in the other order, and of two NaNs x86 keeps the first, so a
+    /// clip position could differ from the scalar stage's in a NaN's sign.
+    #[inline(always)]
+    pub unsafe fn transform_place(mvp: &Mat4, rs: &RenderState, obj: &Queue, k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
+        let (c, inside, pos) = clip_lanes(mvp, obj);
+        place(rs, &c, inside, &pos, k, verts, slots)
+    }
+
+    #[target_feature(enable = "avx2")]
+    unsafe fn place(rs: &RenderState, c: &[__m128; 4], inside: i32, pos: &[__m128; LANES], k: usize, verts: &mut [ClipVertex], slots: [usize; LANES]) {
+        let [cx, cy, cz, cw] = *c;
+        // `setup::window_pos`: q = 1 / w, o + s * (c * q).
+        let [sx, sy, sz] = rs.viewport_scale;
+        let [ox, oy, oz] = rs.viewport_offset;
+        let (px, py, pz, pw) = (_mm256_cvtps_pd(cx), _mm256_cvtps_pd(cy), _mm256_cvtps_pd(cz), _mm256_cvtps_pd(cw));
+        let q = _mm256_div_pd(_mm256_set1_pd(1.0), pw);
+        let wx = _mm256_add_pd(_mm256_set1_pd(ox), _mm256_mul_pd(_mm256_set1_pd(sx), _mm256_mul_pd(px, q)));
+        let wy = _mm256_add_pd(_mm256_set1_pd(oy), _mm256_mul_pd(_mm256_set1_pd(sy), _mm256_mul_pd(py, q)));
+        let wz = _mm256_add_pd(_mm256_set1_pd(oz), _mm256_mul_pd(_mm256_set1_pd(sz), _mm256_mul_pd(pz, q)));
+        // Per lane (x, y, z, q): a 4x4 transpose.
+        let t0 = _mm256_unpacklo_pd(wx, wy); // x0 y0 x2 y2
+        let t1 = _mm256_unpackhi_pd(wx, wy); // x1 y1 x3 y3
+        let t2 = _mm256_unpacklo_pd(wz, q); // z0 q0 z2 q2
+        let t3 = _mm256_unpackhi_pd(wz, q); // z1 q1 z3 q3
+        let win = [
+            _mm256_permute2f128_pd::<0x20>(t0, t2),
+            _mm256_permute2f128_pd::<0x20>(t1, t3),
+            _mm256_permute2f128_pd::<0x31>(t0, t2),
+            _mm256_permute2f128_pd::<0x31>(t1, t3),
+        ];
+        // Only inside lanes are snapped; one out of the 32-bit range (a
+        // huge viewport) takes the scalar snap.
+        let mut snapped = [_mm_setzero_si128(); LANES];
+        if inside & !(snappable4(wx) & snappable4(wy)) == 0 {
+            let (ix, iy) = (_mm256_cvtepi32_epi64(snap4(wx)), _mm256_cvtepi32_epi64(snap4(wy)));
+            let lo = _mm256_unpacklo_epi64(ix, iy); // x0 y0 x2 y2
+            let hi = _mm256_unpackhi_epi64(ix, iy); // x1 y1 x3 y3
+            snapped = [_mm256_castsi256_si128(lo), _mm256_castsi256_si128(hi), _mm256_extracti128_si256::<1>(lo), _mm256_extracti128_si256::<1>(hi)];
+        } else {
+            let mut w = [[0.0f64; 4]; LANES];
+            for (l, c) in w.iter_mut().zip(win) {
+                _mm256_storeu_pd(l.as_mut_ptr(), c);
+            }
+            for (s, l) in snapped.iter_mut().zip(w) {
+                let xy = [super::super::vertex::snap(l[0]), super::super::vertex::snap(l[1])];
+                *s = _mm_loadu_si128(xy.as_ptr() as *const __m128i);
+            }
+        }
+        for i in 0..k {
+            let v = &mut verts[slots[i]];
+            _mm_storeu_ps(&mut v.pos as *mut Vec4 as *mut f32, pos[i]);
+            v.inside = (inside >> i) & 1 != 0;
+            // Stored for outside vertices too: `win` and `snapped` are
+            // never read unless `inside`.
+            _mm256_storeu_pd(v.win.as_mut_ptr(), win[i]);
+            _mm_storeu_si128(v.snapped.as_mut_ptr() as *mut __m128i, snapped[i]);
         }
     }
 }
@@ -247,7 +394,7 @@ mod tests {
             };
             rs.viewport_scale = [w / 2.0, h / 2.0, 0.5 * unit() as f64];
             rs.viewport_offset = [w / 2.0 + if exact { 0.0 } else { (unit() * 100.0) as f64 }, h / 2.0 - if exact { 0.0 } else { (unit() * 100.0) as f64 }, 0.5];
-            let mut obj = Positions::ORIGIN;
+            let mut obj = Queue::ORIGIN;
             for lane in 0..LANES {
                 let mut p = [0.0f32; 4];
                 for c in p.iter_mut() {
@@ -268,14 +415,16 @@ mod tests {
                     p[3] = [1e-20, 1e-21, 2e-20, 1e-20f32.next_up(), 1e-20f32.next_down(), 0.0, -1e-20][(unit() * 7.0) as usize % 7];
                     p[0] = [16.0 * p[3], -16.0 * p[3], (16.0 * p[3]).next_up(), p[0]][(unit() * 4.0) as usize % 4];
                 }
-                obj.set(lane, p);
+                obj.set(lane, Vec4::from_array(p));
             }
             let k = 1 + case % LANES;
             let slots = [3, 0, 5, 1];
-            let mut a = vec![ClipVertex::ZERO; 6];
-            let mut b = a.clone();
-            transform_place(&mvp, &rs, &obj, k, &mut a, slots);
+            let mut b = vec![ClipVertex::ZERO; 6];
             scalar(&mvp, &rs, &obj, k, &mut b, slots);
+            for (variant, place) in variants() {
+            let mut a = vec![ClipVertex::ZERO; 6];
+            place(&mvp, &rs, &obj, k, &mut a, slots);
+            let case = format!("{case} ({variant})");
             for i in 0..k {
                 let (va, vb) = (&a[slots[i]], &b[slots[i]]);
                 assert_eq!(va.pos.to_array().map(f32::to_bits), vb.pos.to_array().map(f32::to_bits), "case {case} lane {i}");
@@ -291,6 +440,26 @@ mod tests {
                     assert_eq!(a[s], ClipVertex::ZERO);
                 }
             }
+            }
         }
+    }
+
+    type Place = fn(&Mat4, &RenderState, &Queue, usize, &mut [ClipVertex], [usize; LANES]);
+
+    /// Every lane implementation this CPU runs, besides the dispatching
+    /// `transform_place`.
+    fn variants() -> Vec<(&'static str, Place)> {
+        #[allow(unused_mut)]
+        let mut v: Vec<(&'static str, Place)> = vec![("dispatch", transform_place)];
+        #[cfg(target_arch = "x86_64")]
+        {
+            // SAFETY: SSE2 is part of x86-64.
+            v.push(("sse2", |m, rs, o, k, vs, s| unsafe { sse2::transform_place(m, rs, o, k, vs, s) }));
+            if std::arch::is_x86_feature_detected!("avx2") {
+                // SAFETY: AVX2 detected above.
+                v.push(("avx2", |m, rs, o, k, vs, s| unsafe { avx2::transform_place(m, rs, o, k, vs, s) }));
+            }
+        }
+        v
     }
 }
