@@ -26,17 +26,20 @@ _VERTEX = ("vertex-bound: per-vertex transform and per-triangle set-up for trian
            "of instructions; round 13 covers and shades boxes of up to 4x8 centres as one block, -16 %; "
            "round 14 widens the block to 32x48 centres: spheres_m -34 % instructions, spheres_l +1 %; "
            "round 15 takes every box to the block, with plain stores: spheres_l -3.6 %; round 16 writes the "
-           "set-up in place, 237 -> 196 instructions, spheres_l -2.8 %); what is left per triangle is "
-           "set-up (about 196 instructions), the cover (about 134), the block's rows (about 271 a call, 85 "
-           "of them its prologue; a fifth of its time is framebuffer cache misses), and with 2 threads the "
-           "calling thread's transform and binning (about 600 instructions a triangle). softpipe's own "
-           "time moves most between runs (spheres_m 102 ms in the 01:46 run of 2026-11-28, 160-173 in the "
-           "runs before it)")
+           "set-up in place, 237 -> 196 instructions, spheres_l -2.8 %; round 17 shades covers of at most "
+           "four columns in a narrow block kernel, 271 -> 227 instructions a call, and a cheaper cover, "
+           "134 -> 116: spheres_l -5.9 %); what is left per triangle is set-up (about 196 instructions), the "
+           "cover (about 116), the block (about 227), the band loop's own work (about 370), and with 2 "
+           "threads the calling thread's transform and binning (about 600 instructions a triangle). "
+           "spheres_l was at the line (0.104x) in the 05:49 run of 2026-11-28; softpipe's own time moves "
+           "most between runs (spheres_l 259-384 ms on 2026-11-28)")
 _MILLION = ("vertex-bound: on the calling thread about 950 instructions a 1-pixel triangle (round 16: "
             "transform and assembly about 410, the three glVertex2f entry points about 180 since one flag "
             "set at glBegin replaced their separate checks, binning its 128 + 8-byte record about 225; a "
-            "list's replay or an array's loop about 210 instead of the entry points), against about 900 of "
-            "set-up and shading in the bands; with 2 threads that serial front end bounds the frame")
+            "list's replay or an array's loop about 210 instead of the entry points; round 17 removed "
+            "store-forwarding stalls from the vertex path and the array loop and steps window positions "
+            "four at a time under AVX2: arrays_1m -3.6 %, immediate_1m -2.6 % instructions), against about "
+            "900 of set-up and shading in the bands; with 2 threads that serial front end bounds the frame")
 _SCALE_VERTEX = ("the calling thread bins every triangle (spheres_l: about 770 M of 2,060 M instructions over 3 "
                  "frames); the clock's 2-thread speed-up is below the instruction model's 1.7x")
 _ROUNDING = ("1/255 rounding of halves: both compute c x 255 in single precision, softgl rounds a half up "
@@ -70,9 +73,10 @@ LIMITS = {
         "arrays_1m": _MILLION, "immediate_1m": _MILLION,
         "textured": ("the exact per-pixel trilinear filter (round 16: about 970 instructions a group of 8 pixels, "
                      "each lane the reference path's IEEE operations; a fifth of its time texel cache misses, 18 % "
-                     "of its samples on stack spills; prefetching measured slower); level with llvmpipe with 2 "
-                     "threads, behind with 1 (1.16x to 1.34x in the runs of 2026-11-27/28, level at 18:52 on "
-                     "2026-11-27)"),
+                     "of its samples on stack spills; prefetching measured slower; round 17 skips channels "
+                     "constant over a level or unread by the environment, -4.4 % instructions); level with "
+                     "llvmpipe with 1 thread in the runs after round 17 (0.99x at 05:45 and 1.01x at 05:49 on "
+                     "2026-11-28), behind before (1.16x to 1.34x)"),
         "overdraw": ("a near tie on one thread: 16 window-sized opaque layers, each a colour and depth write "
                      "per pixel (memory traffic of 16 MB a layer); the rerun after the 18:52 run gave 60.5 "
                      "against llvmpipe's 61.7 ms"),
