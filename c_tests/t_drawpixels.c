@@ -391,6 +391,64 @@ int main(void)
                  rs[3]);
     }
 
+    /* RGBA / UNSIGNED_BYTE through the entry point in every mode (softgl
+     * draws such images from the client's memory outside list compilation):
+     * a list keeps the image as it was at glNewList time; GL_COMPILE draws
+     * nothing; GL_COMPILE_AND_EXECUTE draws at once; feedback records a
+     * DRAW_PIXEL_TOKEN and draws nothing; inside glBegin it is an error. */
+    {
+        GLubyte copy[3][4][4];
+        GLfloat fb[8];
+        GLuint lists = glGenLists(2);
+        static const int red[4] = {255, 0, 0, 255}, none[4] = {0, 0, 0, 0}, grey[4] = {7, 7, 7, 7};
+        memcpy(copy, img, sizeof copy);
+        clear();
+        glWindowPos2i(0, 0);
+        glNewList(lists, GL_COMPILE);
+        glDrawPixels(4, 3, GL_RGBA, GL_UNSIGNED_BYTE, copy);
+        glEndList();
+        h_read(px);
+        expect_px(0, 0, none, 0, "glDrawPixels compiled (GL_COMPILE) draws nothing");
+        glWindowPos2i(10, 0);
+        glNewList(lists + 1, GL_COMPILE_AND_EXECUTE);
+        glDrawPixels(4, 3, GL_RGBA, GL_UNSIGNED_BYTE, copy);
+        glEndList();
+        h_read(px);
+        expect_px(10, 0, red, 0, "glDrawPixels under GL_COMPILE_AND_EXECUTE draws at once");
+        memset(copy, 7, sizeof copy);
+        clear();
+        glWindowPos2i(0, 0);
+        glCallList(lists);
+        glWindowPos2i(10, 0);
+        glCallList(lists + 1);
+        h_read(px);
+        expect_px(0, 0, red, 0, "a list's glDrawPixels keeps the image of its compilation");
+        expect_px(10, 0, red, 0, "a list's glDrawPixels (COMPILE_AND_EXECUTE) keeps its image");
+        glWindowPos2i(20, 0);
+        glDrawPixels(4, 3, GL_RGBA, GL_UNSIGNED_BYTE, copy);
+        h_read(px);
+        expect_px(20, 0, grey, 0, "glDrawPixels draws the client's current image");
+        glDeleteLists(lists, 2);
+
+        clear();
+        glFeedbackBuffer(8, GL_2D, fb);
+        glRenderMode(GL_FEEDBACK);
+        glWindowPos2i(3, 2);
+        glDrawPixels(4, 3, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        i = glRenderMode(GL_RENDER);
+        h_expect(i == 3 && fb[0] == GL_DRAW_PIXEL_TOKEN && fb[1] == 3 && fb[2] == 2, "feedback of glDrawPixels: %d values, %g %g %g",
+                 i, fb[0], fb[1], fb[2]);
+        h_read(px);
+        expect_px(3, 2, none, 0, "glDrawPixels in feedback mode draws nothing");
+
+        glBegin(GL_POINTS);
+        glDrawPixels(4, 3, GL_RGBA, GL_UNSIGNED_BYTE, img);
+        glEnd();
+        h_expect_error(GL_INVALID_OPERATION, "glDrawPixels between glBegin and glEnd");
+        h_read(px);
+        expect_px(3, 2, none, 0, "glDrawPixels between glBegin and glEnd draws nothing");
+    }
+
     /* Errors. */
     glDrawPixels(1, 1, GL_RGBA, GL_BITMAP, img);
     h_expect_error(GL_INVALID_ENUM, "RGBA with GL_BITMAP");

@@ -405,18 +405,23 @@ fn cases_draw_pixels() {
 /// wholly off-screen, random depth), zooms (mostly 1), pixel transfer and
 /// unpack modes, and FRONT_AND_BACK. Colour, depth, stencil and the
 /// occlusion count must be identical. Returns how many cases met the span
-/// path's conditions.
+/// path's conditions, and how many draws a third context drew straight
+/// from the client's memory (round 18, `Context::draw_pixels_call`: the
+/// same commands, the draw given as the C entry point gives it, checked
+/// identical too).
 /// With `copy`, the rectangle is a glCopyPixels of colour instead (the
 /// span path of `copy_rgba8_fast`): random source rectangles, partly
 /// outside the window and overlapping the destination, from the back or
 /// the front buffer.
-fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize), copy: bool) -> Result<usize, String> {
+fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize), copy: bool) -> Result<(usize, usize), String> {
     let (W, H) = size;
     let mut r = Rng(seed);
-    let (mut fast, mut reference) = (context(false, size, 1), context(true, size, 1));
+    let (mut fast, mut reference, mut direct) = (context(false, size, 1), context(true, size, 1), context(false, size, 1));
     let tex = texture(&mut fast, &mut Rng(seed));
     texture(&mut reference, &mut Rng(seed));
-    for c in [&mut fast, &mut reference] {
+    texture(&mut direct, &mut Rng(seed));
+    let mut direct_draws = 0;
+    for c in [&mut fast, &mut reference, &mut direct] {
         c.fb.set_double_buffered(true).unwrap();
         c.execute(&Command::DrawBuffer(GL_BACK));
     }
@@ -454,7 +459,7 @@ fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize), copy: bool
         let (skip_px, skip_rows) = (r.below(3) as i32, r.below(3) as i32);
         let stride = (4 * row_length.max(w) as usize).div_ceil(align) * align;
         let data: Vec<u8> = (0..(h + skip_rows + 1) as usize * stride + 4 * (w + skip_px) as usize + 64).map(|_| r.next() as u8).collect();
-        for c in [&mut fast, &mut reference] {
+        for c in [&mut fast, &mut reference, &mut direct] {
             c.pixel_store(GL_UNPACK_ALIGNMENT, align as f64);
             c.pixel_store(GL_UNPACK_ROW_LENGTH, row_length as f64);
             c.pixel_store(GL_UNPACK_SKIP_PIXELS, skip_px as f64);
@@ -488,6 +493,29 @@ fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize), copy: bool
             }
             c.execute(&Command::DrawBuffer(GL_BACK));
         }
+        if !copy {
+            let c = &mut direct;
+            c.fb.color.copy_from_slice(&color);
+            c.fb.other_color.copy_from_slice(&other);
+            c.fb.depth.copy_from_slice(&depth);
+            c.fb.stencil.copy_from_slice(&stencil);
+            c.fb.samples_passed = 0;
+            for cmd in &cmds {
+                if !matches!(cmd, Command::DrawPixels(_)) {
+                    c.execute(cmd);
+                    continue;
+                }
+                match unsafe { c.draw_pixels_call(w, h, GL_RGBA, GL_UNSIGNED_BYTE, data.as_ptr()) } {
+                    None => direct_draws += 1,
+                    Some(built) => c.execute(&built),
+                }
+            }
+            c.execute(&Command::DrawBuffer(GL_BACK));
+            let same = c.fb.color == fast.fb.color && c.fb.other_color == fast.fb.other_color && c.fb.depth == fast.fb.depth && c.fb.stencil == fast.fb.stencil;
+            if !same || c.fb.samples_passed != fast.fb.samples_passed {
+                return Err(format!("draw-pixels case {n}: drawn from client memory differs from the built command\ncommands: {:?}", &cmds[first..]));
+            }
+        }
         for i in 0..W * H {
             let (a, b) = (fast.fb.color[i], reference.fb.color[i]);
             if a != b || fast.fb.other_color[i] != reference.fb.other_color[i] || fast.fb.depth[i] != reference.fb.depth[i] || fast.fb.stencil[i] != reference.fb.stencil[i] {
@@ -508,20 +536,22 @@ fn compare_draw_pixels(seed: u64, cases: usize, size: (usize, usize), copy: bool
             return Err(format!("draw-pixels case {n}: samples passed {} / {}", fast.fb.samples_passed, reference.fb.samples_passed));
         }
     }
-    Ok(plain)
+    Ok((plain, direct_draws))
 }
 
 #[test]
 fn draw_pixels_fast_path_matches_reference() {
-    let mut plain = 0;
+    let (mut plain, mut direct) = (0, 0);
     for seed in 21..=23 {
         match compare_draw_pixels(seed, 300, (67, 45), false) {
-            Ok(p) => plain += p,
+            Ok((p, d)) => (plain, direct) = (plain + p, direct + d),
             Err(e) => panic!("{e}"),
         }
     }
-    // The span path's conditions occur in a good share of the cases.
+    // The span path's conditions occur in a good share of the cases, and
+    // so do draws from client memory.
     assert!(plain > 300, "only {plain} of 900 cases took the span path's state");
+    assert!(direct > 300, "only {direct} draws were drawn from client memory");
 }
 
 #[test]
@@ -529,7 +559,7 @@ fn copy_pixels_fast_path_matches_reference() {
     let mut plain = 0;
     for seed in 31..=33 {
         match compare_draw_pixels(seed, 300, (67, 45), true) {
-            Ok(p) => plain += p,
+            Ok((p, _)) => plain += p,
             Err(e) => panic!("{e}"),
         }
     }

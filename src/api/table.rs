@@ -474,7 +474,7 @@ super::entry_points! {
     list glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) { |c| pixel_map(c, map, mapsize, values, |_, v| v.to_vec())? }
     list glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) { |c| pixel_map(c, map, mapsize, values, |m, v| map_values_from_uint(m, v, 32))? }
     list glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) { |c| pixel_map(c, map, mapsize, values, |m, v| map_values_from_uint(m, &v.iter().map(|&x| x as u32).collect::<Vec<_>>(), 16))? }
-    list glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.build_draw_pixels(width, height, format, type_, pixels as *const u8)? }
+    list glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.draw_pixels_call(width, height, format, type_, pixels as *const u8)? }
     list glPixelZoom(xfactor: GLfloat, yfactor: GLfloat) { |_c| Command::PixelZoom(xfactor, yfactor) }
     list glBitmap(width: GLsizei, height: GLsizei, xorig: GLfloat, yorig: GLfloat, xmove: GLfloat, ymove: GLfloat, bitmap: *const GLubyte) { |c| c.build_bitmap(width, height, [xorig, yorig], [xmove, ymove], bitmap) }
     list glTexImage1D(target: GLenum, level: GLint, internalFormat: GLint, width: GLsizei, border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void) { |c| c.tex_image_command(1, target, level, internalFormat, [width, 1, 1], border, format, type_, pixels as *const u8)? }

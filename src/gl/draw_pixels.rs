@@ -195,6 +195,26 @@ impl Context {
         (texture.is_some() || secondary.is_some() || fog.is_some()).then_some(PixelShading { texture, secondary, fog })
     }
 
+    /// Whether [`Context::pixel_shading`] has a stage (without building it).
+    pub(super) fn pixel_shading_on(&self) -> bool {
+        let rs = &self.derived.render;
+        rs.texture.is_some() || rs.color_sum || rs.fog.is_some()
+    }
+
+    /// glDrawPixels as called: RGBA / UNSIGNED_BYTE client images outside
+    /// list compilation are drawn where they lie
+    /// ([`Context::draw_client_rgba8`]); everything else is built into a
+    /// command (unpacked now) for `submit`.
+    ///
+    /// # Safety
+    /// As [`Context::build_draw_pixels`].
+    pub unsafe fn draw_pixels_call(&mut self, w: i32, h: i32, format: u32, ty: u32, ptr: *const u8) -> Option<Command> {
+        if self.draw_client_rgba8(w, h, format, ty, ptr) {
+            return None;
+        }
+        self.build_draw_pixels(w, h, format, ty, ptr)
+    }
+
     /// The colour of pixel-rectangle and bitmap fragments that take the
     /// raster colour (depth rectangles, bitmaps), textured and fogged.
     fn fragment_color(&self) -> [u8; 4] {

@@ -152,7 +152,63 @@ impl Context {
         if data.len() != w * h {
             return false;
         }
-        self.rgba8_spans(xf, yf, w, h, data);
+        self.rgba8_spans(xf, yf, w, h, w, data);
+        true
+    }
+
+    /// glDrawPixels of RGBA / UNSIGNED_BYTE groups from client memory,
+    /// outside display-list compilation: drawn by spans straight from
+    /// the client's rows when [`Context::draw_rgba8_fast`]'s conditions
+    /// hold, as `execute` would run the built command (round 18: the
+    /// command's copy of the image was a quarter of a window-sized
+    /// draw's time, most of it the fresh copy's page faults). False when
+    /// nothing was done: the caller builds the command as before (a list
+    /// being compiled, feedback or selection, inside glBegin/glEnd, an
+    /// unpack buffer, other formats, zoom, transfer or shading stages).
+    ///
+    /// # Safety
+    /// `ptr` must be NULL or point to the image as the unpack modes lay it
+    /// out, as for [`Context::build_draw_pixels`].
+    pub(crate) unsafe fn draw_client_rgba8(&mut self, w: i32, h: i32, format: u32, ty: u32, ptr: *const u8) -> bool {
+        use super::enums::{GL_RGBA, GL_UNSIGNED_BYTE};
+        if format != GL_RGBA
+            || ty != GL_UNSIGNED_BYTE
+            || w <= 0
+            || h <= 0
+            || ptr.is_null()
+            || self.unpack_buffer_bound()
+            || self.lists.compile_mode().is_some()
+            || self.select.mode != super::select::GL_RENDER
+            || self.in_begin_end()
+        {
+            return false;
+        }
+        // What `execute` does before any command that draws.
+        self.sync_render();
+        if !self.raster.valid {
+            return true;
+        }
+        self.validate();
+        if self.imaging_stages(2).is_some() || self.pixel_shading_on() {
+            return false;
+        }
+        let Some((xf, yf)) = self.rgba8_span_origin() else { return false };
+        let (w, h) = (w as usize, h as usize);
+        let src = Source::new(&self.pixel_store.unpack, w, h, 1, format, ty, ptr);
+        let l = &src.layout;
+        // Groups are 4 bytes, and both the rows' stride and the skips are
+        // whole groups (the alignment rounds a multiple of 4 up to a
+        // multiple of at most 8).
+        if l.row_stride % 4 != 0 || l.start % 4 != 0 {
+            return false;
+        }
+        let (stride, start) = (l.row_stride / 4, l.start / 4);
+        let groups = (h - 1) * stride + w;
+        // SAFETY: the image covers `start` groups then h rows of `stride`
+        // groups (the last one w groups), as `Source::new` measured it;
+        // [u8; 4] has alignment 1.
+        let data = std::slice::from_raw_parts(ptr.add(4 * start) as *const [u8; 4], groups);
+        self.rgba8_spans(xf, yf, w, h, stride, data);
         true
     }
 
@@ -173,8 +229,9 @@ impl Context {
 
     /// Draws a `w` x `h` rectangle of bytes whose group (0, 0) covers the
     /// window pixel (xf, yf), row by row through the per-fragment
-    /// operations at the raster position's depth.
-    fn rgba8_spans(&mut self, xf: i64, yf: i64, w: usize, h: usize, data: &[[u8; 4]]) {
+    /// operations at the raster position's depth; row j starts at group
+    /// `j * stride` of `data`.
+    fn rgba8_spans(&mut self, xf: i64, yf: i64, w: usize, h: usize, stride: usize, data: &[[u8; 4]]) {
         let clip = self.scissored_surface();
         if clip.is_empty() || w == 0 || h == 0 {
             return;
@@ -199,7 +256,7 @@ impl Context {
             let b = &mut b[0];
             let mut sum = 0u64;
             for y in b.y0..b.y1 {
-                let row = (y as i64 - yf) as usize * w + i0;
+                let row = (y as i64 - yf) as usize * stride + i0;
                 let mut px = b.span(y, x0 as usize, x1 as usize);
                 pixel_span::color_span(fs, &mut px, z, &data[row..row + n]);
                 sum = sum.wrapping_add(px.passed);
@@ -232,7 +289,7 @@ impl Context {
             let i = fb.index(sx0 as usize, sy0 as usize + j);
             read[i..i + cw].as_flattened()
         });
-        self.rgba8_spans(xf + (sx0 - x as i64), yf + (sy0 - y as i64), cw, ch, &data);
+        self.rgba8_spans(xf + (sx0 - x as i64), yf + (sy0 - y as i64), cw, ch, cw, &data);
         true
     }
 }
