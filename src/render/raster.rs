@@ -172,8 +172,13 @@ const NARROW: i64 = 8;
 /// The rows [row0, row1) and columns [col0, col1) of the pixel centres in
 /// a triangle's bounding box, cut to a rectangle: taken once and shared
 /// by [`Cover::find_in`] and [`Runs::find_in`].
+///
+/// Round 18: with whether the vertices' extents fit the i32 lanes
+/// ([`lanes_fit`]), from the same minima and maxima: `Cover::fill` and
+/// `Runs::find_narrow` took them again (on the band side, 8 compares and
+/// moves a triangle).
 #[derive(Clone, Copy)]
-pub struct CentreBox(i64, i64, i64, i64);
+pub struct CentreBox(i64, i64, i64, i64, bool);
 
 impl CentreBox {
     #[inline(always)]
@@ -187,7 +192,14 @@ impl CentreBox {
         let row1 = (floor_div(ymax - half, ONE) + 1).min(rect.y1 as i64);
         let col0 = (-floor_div(half - xmin, ONE)).max(rect.x0 as i64);
         let col1 = (floor_div(xmax - half, ONE) + 1).min(rect.x1 as i64);
-        CentreBox(row0, row1, col0, col1)
+        CentreBox(row0, row1, col0, col1, extents_fit(xmax - xmin, ymax - ymin))
+    }
+
+    /// Do the triangle's extents fit the lanes ([`lanes_fit`] of its
+    /// vertices)?
+    #[inline(always)]
+    pub fn lanes_fit(&self) -> bool {
+        self.4
     }
 
     /// How many pixel centres the box holds (0 when it is empty).
@@ -235,11 +247,20 @@ const LANE_EXTENT: i64 = 1 << 14;
 /// (times up to 7 across the lanes) and b = 256 dx are below 2^25. (A
 /// narrow box can belong to a large triangle cut by the rectangle: those
 /// take the i64 loop.)
+/// (Round 18: the renderer takes it from [`CentreBox::lanes_fit`]; this
+/// form is the tests'.)
 #[inline(always)]
-#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
+#[cfg_attr(not(test), allow(dead_code))]
 fn lanes_fit(x: [i64; 3], y: [i64; 3]) -> bool {
     let extent = |c: [i64; 3]| c[0].max(c[1]).max(c[2]) - c[0].min(c[1]).min(c[2]);
-    extent(x) <= LANE_EXTENT && extent(y) <= LANE_EXTENT
+    extents_fit(extent(x), extent(y))
+}
+
+/// [`lanes_fit`] of vertices whose x and y extents (max - min) are `w`
+/// and `h`.
+#[inline(always)]
+fn extents_fit(w: i64, h: i64) -> bool {
+    w <= LANE_EXTENT && h <= LANE_EXTENT
 }
 
 /// The covered runs of a short triangle, found once before setup (which
@@ -271,7 +292,7 @@ impl Runs {
     /// taken (`CentreBox::of(x, y, rect)`).
     #[inline]
     pub fn find_in(&mut self, x: [i64; 3], y: [i64; 3], b: CentreBox, rect: Rect, stipple: Option<&[u32; 32]>) -> bool {
-        let CentreBox(row0, row1, col0, col1) = b;
+        let CentreBox(row0, row1, col0, col1, fit) = b;
         if row1 - row0 > Runs::MAX as i64 {
             return false;
         }
@@ -282,7 +303,7 @@ impl Runs {
             return true;
         }
         if stipple.is_none() && col1 - col0 <= NARROW {
-            self.find_narrow(x, y, row0, row1, col0, col1);
+            self.find_narrow(x, y, fit, row0, row1, col0, col1);
             return true;
         }
         let r = self;
@@ -304,12 +325,13 @@ impl Runs {
     /// by additions (the same integers) and the box computed once. At most
     /// one run per row, so the runs always fit.
     #[inline(always)]
-    fn find_narrow(&mut self, x: [i64; 3], y: [i64; 3], row0: i64, row1: i64, col0: i64, col1: i64) {
+    fn find_narrow(&mut self, x: [i64; 3], y: [i64; 3], fit: bool, row0: i64, row1: i64, col0: i64, col1: i64) {
         if col0 >= col1 {
             return;
         }
+        // `fit`: `lanes_fit(x, y)`, from the centre box.
         #[cfg(target_arch = "x86_64")]
-        if lanes_fit(x, y) && super::fragment::simd::level() != super::fragment::simd::Level::Scalar {
+        if fit && super::fragment::simd::level() != super::fragment::simd::Level::Scalar {
             // SAFETY: SSE2 is part of the x86_64 baseline; the values fit
             // in i32 lanes (`lanes_fit`).
             return unsafe { self.find_narrow_sse2(x, y, row0, row1, col0, col1) };
@@ -491,8 +513,16 @@ impl Cover {
     /// zeros: 14 instructions a triangle).
     #[inline(always)]
     pub fn find_into<'a>(slot: &'a mut std::mem::MaybeUninit<Cover>, x: &[i64; 3], y: &[i64; 3], b: CentreBox) -> Option<&'a Cover> {
+        Cover::find_into_at(slot, x, y, b, blocks_here())
+    }
+
+    /// [`Cover::find_into`] with [`blocks_here`]'s answer taken by the
+    /// caller (round 18: the band loop asks once a band, not once a
+    /// triangle: two loads of globals and four branches).
+    #[inline(always)]
+    pub fn find_into_at<'a>(slot: &'a mut std::mem::MaybeUninit<Cover>, x: &[i64; 3], y: &[i64; 3], b: CentreBox, blocks: bool) -> Option<&'a Cover> {
         // SAFETY: `fill` writes every field when it returns true.
-        unsafe { Cover::fill(slot.as_mut_ptr(), x, y, b, Cover::SMALLEST).then(|| slot.assume_init_ref()) }
+        unsafe { Cover::fill(slot.as_mut_ptr(), x, y, b, Cover::SMALLEST, blocks).then(|| slot.assume_init_ref()) }
     }
 
     /// Boxes of at most this many centres are left to [`Runs::find_in`]
@@ -513,17 +543,18 @@ impl Cover {
     #[inline(always)]
     fn of_box(&mut self, x: &[i64; 3], y: &[i64; 3], b: CentreBox, smallest: i64) -> bool {
         // SAFETY: `self` is a cover, valid to overwrite (nothing to drop).
-        unsafe { Cover::fill(self, x, y, b, smallest) }
+        unsafe { Cover::fill(self, x, y, b, smallest, blocks_here()) }
     }
 
     /// [`Cover::of_box`] into `*c`, which may be uninitialized: true when
-    /// every field is written (of the rows, the first `rows`).
+    /// every field is written (of the rows, the first `rows`). `blocks`:
+    /// [`blocks_here`] on this thread.
     ///
     /// Safety: `c` is valid for writes of a `Cover`.
     #[inline(always)]
-    unsafe fn fill(c: *mut Cover, x: &[i64; 3], y: &[i64; 3], b: CentreBox, smallest: i64) -> bool {
+    unsafe fn fill(c: *mut Cover, x: &[i64; 3], y: &[i64; 3], b: CentreBox, smallest: i64, blocks: bool) -> bool {
         use std::ptr::addr_of_mut;
-        let CentreBox(row0, row1, col0, col1) = b;
+        let CentreBox(row0, row1, col0, col1, fit) = b;
         let (rows, cols) = (row1 - row0, col1 - col0);
         // No pixel centre in the box (most triangles smaller than a
         // pixel): nothing to test.
@@ -534,7 +565,7 @@ impl Cover {
             addr_of_mut!((*c).narrow).write(true);
             return true;
         }
-        if rows * cols <= smallest || rows > Cover::ROWS || cols > Cover::COLS || !stamp_level() || !lanes_fit(*x, *y) {
+        if rows * cols <= smallest || rows > Cover::ROWS || cols > Cover::COLS || !blocks || !fit {
             return false;
         }
         #[cfg(target_arch = "x86_64")]
@@ -542,7 +573,7 @@ impl Cover {
             addr_of_mut!((*c).row0).write(row0 as usize);
             addr_of_mut!((*c).col0).write(col0 as usize);
             addr_of_mut!((*c).narrow).write(cols <= 4);
-            // SAFETY: `stamp_level` saw AVX2; the values fit in i32
+            // SAFETY: `blocks`: `blocks_here` saw AVX2; the values fit in i32
             // (`lanes_fit`, and `cover_avx2`'s bound). It writes the
             // first `rows` rows (`MaybeUninit`s: the reference is to
             // values that need no initialization).
@@ -597,7 +628,7 @@ impl Cover {
 /// Are small triangles covered and shaded as blocks on this thread
 /// (AVX2, not lowered by `SOFTGL_SIMD` or a test)?
 #[inline(always)]
-fn stamp_level() -> bool {
+pub fn blocks_here() -> bool {
     fragment::simd::level_here() == fragment::simd::Level::Avx2
 }
 
@@ -663,20 +694,27 @@ unsafe fn cover_avx2(x: &[i64; 3], y: &[i64; 3], row0: i64, rows: i64, col0: i64
         let mut v = [_mm256_unpacklo_epi64(lo01, lo23), _mm256_unpackhi_epi64(lo01, lo23), _mm256_unpacklo_epi64(hi01, hi23)];
         let b2 = _mm_add_epi32(b, b);
         let step = [lane_of(b2, 0), lane_of(b2, 1), lane_of(b2, 2)];
+        // Round 18: both rows in one 64-bit store, without a bounds
+        // check: j is even and below `rows` <= `Cover::ROWS` (even), so
+        // j + 1 < `Cover::ROWS`; a second row past `rows` is written but
+        // never read (nor counted in `any`). The rows are stepped only
+        // while more follow.
+        debug_assert!(rows >= 1 && rows <= Cover::ROWS && Cover::ROWS % 2 == 0);
+        let rows = rows as usize;
+        let p = mask.as_mut_ptr() as *mut Row;
         let mut j = 0;
-        while j < rows {
+        loop {
             let out = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(v[0], v[1]), v[2]))) as u32;
             let (m0, m1) = (!out as Row & columns, !(out >> 4) as Row & columns);
-            mask[j as usize].write(m0);
-            any |= m0 as u32;
-            if j + 1 < rows {
-                mask[j as usize + 1].write(m1);
-                any |= m1 as u32;
+            (p.add(j) as *mut u64).write_unaligned(m0 as u64 | (m1 as u64) << 32);
+            any |= m0 | if j + 1 < rows { m1 } else { 0 };
+            j += 2;
+            if j >= rows {
+                break;
             }
             for e in 0..3 {
                 v[e] = _mm256_add_epi32(v[e], step[e]);
             }
-            j += 2;
         }
     } else if cols <= 8 {
         any = cover_rows::<1>(first, a, b, rows, columns, mask);
@@ -761,7 +799,7 @@ pub fn spans(x: [i64; 3], y: [i64; 3], rect: Rect, stipple: Option<&[u32; 32]>, 
     let edges = [Edge::new(x[0], y[0], x[1], y[1]), Edge::new(x[1], y[1], x[2], y[2]), Edge::new(x[2], y[2], x[0], y[0])];
     // Rows and columns whose centres lie within the bounding box: a
     // superset is enough, spans are exact.
-    let CentreBox(row0, row1, col0, col1) = CentreBox::of(x, y, rect);
+    let CentreBox(row0, row1, col0, col1, _) = CentreBox::of(x, y, rect);
     if col0 >= col1 {
         return;
     }
@@ -917,7 +955,7 @@ mod tests {
             let (w, h) = (1 + rnd(NARROW), 1 + rnd(Runs::MAX as i64));
             let rect = Rect { x0: (cx - rnd(w)) as i32, y0: (cy - rnd(h)) as i32, x1: 0, y1: 0 };
             let rect = Rect { x1: rect.x0 + w as i32, y1: rect.y0 + h as i32, ..rect };
-            let CentreBox(row0, row1, col0, col1) = CentreBox::of(x, y, rect);
+            let CentreBox(row0, row1, col0, col1, _) = CentreBox::of(x, y, rect);
             if row0 >= row1 || col0 >= col1 {
                 continue;
             }
@@ -941,6 +979,40 @@ mod tests {
         assert!(compared > 100_000 && covered > 50_000 && at_extent > 10_000 && ties > 5_000, "{compared} {covered} {at_extent} {ties}");
     }
 
+    /// Round 18: `CentreBox::of`'s `lanes_fit` (from its own minima and
+    /// maxima) is `lanes_fit` of the vertices, on extents at, around and
+    /// past the limit.
+    #[test]
+    fn centre_box_fit_matches_lanes_fit() {
+        let mut rnd = crate::render::test_rng::below(2026, 18);
+        let (mut fit, mut unfit) = (0, 0);
+        for n in 0..200_000 {
+            // Extents around the limit, exactly at it, one past it.
+            let (ex, ey) = match n % 4 {
+                0 => (LANE_EXTENT, rnd(LANE_EXTENT + 1)),
+                1 => (rnd(LANE_EXTENT + 1), LANE_EXTENT + 1),
+                2 => (LANE_EXTENT - 2 + rnd(5), LANE_EXTENT - 2 + rnd(5)),
+                _ => (rnd(2 * LANE_EXTENT), rnd(2 * LANE_EXTENT)),
+            };
+            let (bx, by) = (rnd(1 << 20) - (1 << 19), rnd(1 << 20) - (1 << 19));
+            // One vertex at each end of each extent, the third between.
+            let mut x = [bx, bx + ex, bx + rnd(ex + 1)];
+            let mut y = [by + rnd(ey + 1), by, by + ey];
+            let k = rnd(3) as usize;
+            x.swap(0, k);
+            y.rotate_left(k);
+            let rect = Rect { x0: -4096, y0: -4096, x1: 4096, y1: 4096 };
+            let b = CentreBox::of(x, y, rect);
+            assert_eq!(b.lanes_fit(), lanes_fit(x, y), "{x:?} {y:?}");
+            if b.lanes_fit() {
+                fit += 1;
+            } else {
+                unfit += 1;
+            }
+        }
+        assert!(fit > 50_000 && unfit > 50_000, "{fit} {unfit}");
+    }
+
     /// A small triangle's block cover (round 13, widened in round 14) has
     /// exactly `Runs::find`'s runs where it finds them, and `spans`' runs:
     /// random triangles of every orientation whose centre boxes are up to
@@ -952,7 +1024,7 @@ mod tests {
     #[cfg(target_arch = "x86_64")]
     #[test]
     fn cover_matches_runs() {
-        if !stamp_level() {
+        if !blocks_here() {
             eprintln!("no AVX2: the block cover is not used");
             return;
         }
@@ -1017,14 +1089,14 @@ mod tests {
             spans(x, y, rect, None, |py, lo, hi| r.push(narrow((py, lo, hi))));
             assert_eq!(c, r, "spans: {x:?} {y:?} {rect:?} {cover:?}");
             assert_eq!(cover.is_empty(), c.is_empty());
-            let CentreBox(_, _, col0, col1) = CentreBox::of(x, y, rect);
+            let CentreBox(_, _, col0, col1, _) = CentreBox::of(x, y, rect);
             wide += (col1 - col0 > 16) as usize;
             compared += 1;
             covered += !c.is_empty() as usize;
             cut += (rect.x1 - rect.x0 < 8) as usize;
             if area != 0 {
                 let (_, _, edges) = ccw_edges(x, y).unwrap();
-                let CentreBox(row0, row1, col0, col1) = CentreBox::of(x, y, rect);
+                let CentreBox(row0, row1, col0, col1, _) = CentreBox::of(x, y, rect);
                 ties += (row0..row1).any(|py| (col0..col1).any(|px| edges.iter().any(|e| matches!(e.a * px + e.b * py + e.c, 0 | -1)))) as usize;
             }
         }

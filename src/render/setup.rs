@@ -599,6 +599,27 @@ pub(crate) unsafe fn release(slot: &mut MaybeUninit<TriangleSetup>) {
 #[allow(clippy::too_many_arguments)]
 #[inline]
 fn planes_into<P: SetupParams, A: Attributes>(out: &mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: &[i64; 3], ey: &[i64; 3], flat_color: Vec4, back: bool, front_facing: bool) {
+    planes_here(out, rs, zq, v, ex, ey, flat_color, back, front_facing)
+}
+
+/// [`solve`] with the planes solved in the caller's code ([`planes_into`]
+/// inlined): for a caller that is itself out of line and reads the
+/// vertices in place (round 18: the band side's `tile::solve_binned`,
+/// whose call to `planes_into` passed the depths, 1/w and colours
+/// through stack copies, about 35 instructions a triangle). The same
+/// code, so the same bits.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+pub(crate) fn solve_here<'a, P: SetupParams, A: Attributes>(slot: &'a mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: &[i64; 3], ey: &[i64; 3], flat_color: Vec4, back: bool, front_facing: bool) -> &'a TriangleSetup {
+    planes_here(slot, rs, zq, v, ex, ey, flat_color, back, front_facing);
+    // SAFETY: `planes_here` writes every field.
+    unsafe { slot.assume_init_ref() }
+}
+
+/// [`planes_into`]'s body.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn planes_here<P: SetupParams, A: Attributes>(out: &mut MaybeUninit<TriangleSetup>, rs: &P, zq: [(f64, f64); 3], v: [&A; 3], ex: &[i64; 3], ey: &[i64; 3], flat_color: Vec4, back: bool, front_facing: bool) {
     // Decided once per triangle, not per plane.
     if planes_lanes() {
         planes_by::<P, A, true>(out, rs, zq, v, ex, ey, flat_color, back, front_facing)

@@ -89,7 +89,8 @@ use super::point::PointRun;
 use super::pool;
 use super::runs;
 use super::raster;
-use super::setup::{release, solve, Attributes, TriangleSetup};
+use super::setup::{release, Attributes, TriangleSetup};
+use super::shade_state::SetupParams;
 use super::shade_state::ShadeState;
 use super::texture::MAX_UNITS;
 use super::RenderState;
@@ -266,9 +267,10 @@ fn rect_of(b: BinBox) -> Rect {
     Rect { x0, y0, x1, y1 }
 }
 
-/// One vertex of a binned triangle as setup reads it.
+/// One vertex of a binned triangle as setup reads it (round 18: its
+/// colour read in place from the record, not copied).
 struct BinAttributes<'a> {
-    color: Vec4,
+    v: &'a BinVertex,
     extra: &'a BinExtra,
     i: usize,
 }
@@ -276,11 +278,11 @@ struct BinAttributes<'a> {
 impl Attributes for BinAttributes<'_> {
     #[inline(always)]
     fn color(&self) -> Vec4 {
-        self.color
+        Vec4::from_array(self.v.color)
     }
     #[inline(always)]
     fn back_color(&self) -> Vec4 {
-        self.color
+        Vec4::from_array(self.v.color)
     }
     #[inline(always)]
     fn tex(&self, unit: usize) -> Vec4 {
@@ -297,6 +299,37 @@ impl Attributes for BinAttributes<'_> {
     #[inline(always)]
     fn back_secondary(&self) -> Vec4 {
         self.extra.secondary[self.i]
+    }
+}
+
+/// A vertex of a binned triangle without extra attributes (round 18):
+/// the colour read in place, and the texture coordinates, fog coordinate
+/// and secondary colour of [`NO_EXTRA`] (its state reads none of them:
+/// `state_of` keeps extras for every state that does).
+impl Attributes for BinVertex {
+    #[inline(always)]
+    fn color(&self) -> Vec4 {
+        Vec4::from_array(self.color)
+    }
+    #[inline(always)]
+    fn back_color(&self) -> Vec4 {
+        Vec4::from_array(self.color)
+    }
+    #[inline(always)]
+    fn tex(&self, _unit: usize) -> Vec4 {
+        Vec4::ZERO
+    }
+    #[inline(always)]
+    fn fog(&self) -> f32 {
+        0.0
+    }
+    #[inline(always)]
+    fn secondary(&self) -> Vec4 {
+        Vec4::ZERO
+    }
+    #[inline(always)]
+    fn back_secondary(&self) -> Vec4 {
+        Vec4::ZERO
     }
 }
 
@@ -776,12 +809,12 @@ enum Shading<'a> {
 /// shading it at once would compute (the same inputs to `planes_of`), so
 /// the pixels are the same.
 #[inline]
-fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut shade: impl FnMut(Shading<'_>)) {
+fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, blocks: bool, mut shade: impl FnMut(Shading<'_>)) {
     let stipple = st.polygon_stipple.as_deref();
     let (x, y) = t.xy();
     let centres = raster::CentreBox::of(x, y, rect);
     let count = centres.count();
-    if count > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extra, (&x, &y), centres, &mut shade) {
+    if count > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extra, (&x, &y), centres, blocks, &mut shade) {
         return;
     }
     // No pixel centre in the box: no pixel (round 16: before the runs'
@@ -789,16 +822,13 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
     if count == 0 {
         return;
     }
-    let a = [0, 1, 2].map(|i| BinAttributes { color: Vec4::from_array(t.v[i].color), extra, i });
-    let zq = t.v.map(|v| (v.z, v.q));
-    let (color, front_facing) = (Vec4::from_array(t.v[0].color), t.front_facing());
     let mut runs = raster::Runs::new();
     let found = runs.find_in(x, y, centres, rect, stipple);
     if found && runs.is_empty() {
         return;
     }
     let mut slot = std::mem::MaybeUninit::uninit();
-    let setup = solve(&mut slot, st, zq, a.each_ref(), &x, &y, color, false, front_facing);
+    let setup = solve_binned(&mut slot, st, t, extra, &x, &y);
     let k = st.kernel(setup);
     if found {
         for (py, lo, hi) in runs.iter() {
@@ -817,18 +847,16 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, mut s
 /// Round 17: the snapped vertices by reference (by value, the band
 /// loop kept two more copies of them on its stack).
 #[inline(always)]
-fn shade_binned_block(t: &Binned, st: &ShadeState, extra: &BinExtra, (x, y): (&[i64; 3], &[i64; 3]), centres: raster::CentreBox, shade: &mut impl FnMut(Shading<'_>)) -> bool {
+fn shade_binned_block(t: &Binned, st: &ShadeState, extra: &BinExtra, (x, y): (&[i64; 3], &[i64; 3]), centres: raster::CentreBox, blocks: bool, shade: &mut impl FnMut(Shading<'_>)) -> bool {
     let mut slot = std::mem::MaybeUninit::uninit();
-    let Some(cover) = raster::Cover::find_into(&mut slot, x, y, centres) else {
+    let Some(cover) = raster::Cover::find_into_at(&mut slot, x, y, centres, blocks) else {
         return false;
     };
     if cover.is_empty() {
         return true;
     }
-    let a = [0, 1, 2].map(|i| BinAttributes { color: Vec4::from_array(t.v[i].color), extra, i });
-    let zq = t.v.map(|v| (v.z, v.q));
     let mut slot = std::mem::MaybeUninit::uninit();
-    let setup = solve(&mut slot, st, zq, a.each_ref(), x, y, Vec4::from_array(t.v[0].color), false, t.front_facing());
+    let setup = solve_binned(&mut slot, st, t, extra, x, y);
     match st.stamp(setup) {
         Some(sk) => shade(Shading::Stamp(sk, setup, cover)),
         None => {
@@ -841,6 +869,41 @@ fn shade_binned_block(t: &Binned, st: &ShadeState, extra: &BinExtra, (x, y): (&[
     // SAFETY: solved above.
     unsafe { release(&mut slot) };
     true
+}
+
+/// A binned triangle's set-up, solved into `slot` (released by the
+/// caller, as `setup::solve`'s): the inputs `setup::planes_of` took when the
+/// triangle was binned (its vertices' depth, 1/w and colours, the
+/// provoking vertex's colour for flat shading, its facing, and `extra`,
+/// the record's extra attributes or [`NO_EXTRA`]), so the same planes.
+/// Round 18: out of line with the plane solution inlined
+/// (`setup::solve_here`), reading the record in place; the shading paths
+/// called `planes_into` with the depths, 1/w and colours copied to the
+/// stack for it (about 35 instructions a triangle). A record without
+/// extras reads its vertices as they are ([`BinVertex`]'s attributes are
+/// [`NO_EXTRA`]'s), with no attribute array on the stack.
+#[inline(always)]
+fn solve_binned<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, extra: &BinExtra, x: &[i64; 3], y: &[i64; 3]) -> &'a TriangleSetup {
+    if t.prim & NO_EXTRA_INDEX == NO_EXTRA_INDEX {
+        solve_plain(slot, st, t, x, y)
+    } else {
+        solve_extra(slot, st, t, extra, x, y)
+    }
+}
+
+/// [`solve_binned`] for a record without extras.
+#[inline(never)]
+fn solve_plain<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, x: &[i64; 3], y: &[i64; 3]) -> &'a TriangleSetup {
+    let zq = t.v.map(|v| (v.z, v.q));
+    super::setup::solve_here(slot, st, zq, [&t.v[0], &t.v[1], &t.v[2]], x, y, Vec4::from_array(t.v[0].color), false, t.front_facing())
+}
+
+/// [`solve_binned`] for a record with extras.
+#[inline(never)]
+fn solve_extra<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, extra: &BinExtra, x: &[i64; 3], y: &[i64; 3]) -> &'a TriangleSetup {
+    let a = [0, 1, 2].map(|i| BinAttributes { v: &t.v[i], extra, i });
+    let zq = t.v.map(|v| (v.z, v.q));
+    super::setup::solve_here(slot, st, zq, a.each_ref(), x, y, Vec4::from_array(t.v[0].color), false, t.front_facing())
 }
 
 /// Records glClear's writes `c` for the workers instead of writing them
@@ -1116,7 +1179,16 @@ fn list_bands(boxes: &[BinBox], surface: Rect, rows: usize, bins: &mut [Vec<u32>
             continue;
         }
         let (y0, y1, w) = (b.y0 as usize, b.y1 as usize, (b.x1 - b.x0) as u64);
-        for k in band(y0)..=band(y1 - 1) {
+        let (k0, k1) = (band(y0), band(y1 - 1));
+        if k0 == k1 {
+            // Round 18: a box within one band (most records: spheres_l's
+            // tiny triangles at 1920x1080, 2 threads, about 93 %) is
+            // within it whole: no cut to the band's rows.
+            bins[k0].push(i as u32);
+            weight[k0] += w * (y1 - y0) as u64 + SETUP_PIXELS;
+            continue;
+        }
+        for k in k0..=k1 {
             bins[k].push(i as u32);
             let h = y1.min((k + 1) * rows) - y0.max(k * rows);
             weight[k] += w * h as u64 + SETUP_PIXELS;
@@ -1130,6 +1202,9 @@ impl pool::Work for Flight {
         let of = |t: &Binned| (&*b.states[t.state as usize], b.extras.get(t.extra()).unwrap_or(&NO_EXTRA));
         let raw = &self.raw;
         let stamp_target = StampTarget { color: raw.color, depth: raw.depth, width: raw.width };
+        // Asked once for the flight on this thread (round 18), not once a
+        // triangle by `Cover::find_into`.
+        let blocks = raster::blocks_here();
         let mut local = 0u64;
         let t0 = super::trace::now();
         let (bins, order) = self.bin_once();
@@ -1174,7 +1249,7 @@ impl pool::Work for Flight {
                     local += band.px.passed;
                     continue;
                 }
-                shade_binned(t, st, extra, r, |how| match how {
+                shade_binned(t, st, extra, r, blocks, |how| match how {
                     Shading::Span(kernel, setup, py, lo, hi) => {
                         // Safety: inside the surface and inside this tile,
                         // which no other thread holds.
@@ -1328,6 +1403,7 @@ fn shade_here(b: &Batch, fb: &mut Framebuffer) {
     let surface = Rect::new(0, 0, fb.width as i32, fb.height as i32);
     let width = fb.width;
     let mut ops = b.ops.iter().peekable();
+    let blocks = raster::blocks_here();
     for (i, (t, &bbox)) in b.tris.iter().zip(&b.boxes).enumerate() {
         while let Some((_, op)) = ops.next_if(|(at, _)| *at <= i) {
             op.band(0, fb.height, width, &mut fb.color[..], &mut fb.accum[..]);
@@ -1337,7 +1413,7 @@ fn shade_here(b: &Batch, fb: &mut Framebuffer) {
             draw_prim(b, t, st, fb, width, rect_of(bbox).intersect(surface));
             continue;
         }
-        shade_binned(t, st, extra, rect_of(bbox).intersect(surface), |how| {
+        shade_binned(t, st, extra, rect_of(bbox).intersect(surface), blocks, |how| {
             let passed = match how {
                 Shading::Span(k, setup, py, lo, hi) => {
                     let mut px = SpanPixels::of(fb, py, lo, hi);
@@ -1482,5 +1558,144 @@ mod tests {
             }
             flight.clear();
         }
+    }
+
+    /// Setup state for `solve_binned` without texturing.
+    struct Params {
+        flat: bool,
+        offset: Option<(f32, f32)>,
+        fog: Option<crate::render::fog::Fog>,
+    }
+
+    impl SetupParams for Params {
+        fn flat(&self) -> bool {
+            self.flat
+        }
+        fn offset_fill(&self) -> Option<(f32, f32)> {
+            self.offset
+        }
+        fn texture(&self) -> Option<&Arc<crate::render::texture::TextureStage>> {
+            None
+        }
+        fn fog(&self) -> Option<crate::render::fog::Fog> {
+            self.fog
+        }
+        fn color_sum(&self) -> bool {
+            false
+        }
+    }
+
+    /// A binned vertex as the band side read it before round 18: its
+    /// colour copied out, the rest from the record's extras (or
+    /// `NO_EXTRA`).
+    struct Copied<'a> {
+        color: Vec4,
+        extra: &'a BinExtra,
+        i: usize,
+    }
+
+    impl Attributes for Copied<'_> {
+        fn color(&self) -> Vec4 {
+            self.color
+        }
+        fn back_color(&self) -> Vec4 {
+            self.color
+        }
+        fn tex(&self, unit: usize) -> Vec4 {
+            self.extra.tex[self.i][unit]
+        }
+        fn fog(&self) -> f32 {
+            self.extra.fog[self.i]
+        }
+        fn secondary(&self) -> Vec4 {
+            self.extra.secondary[self.i]
+        }
+        fn back_secondary(&self) -> Vec4 {
+            self.extra.secondary[self.i]
+        }
+    }
+
+    /// Every field of a set-up as bits.
+    fn setup_bits(t: &TriangleSetup) -> Vec<u64> {
+        let plane = |p: &crate::render::setup::Plane| [p.a0, p.dx, p.dy].map(f64::to_bits);
+        let mut v = vec![t.x0.to_bits(), t.y0.to_bits()];
+        v.extend(plane(&t.z));
+        v.extend(plane(&t.q));
+        t.color.iter().for_each(|p| v.extend(plane(p)));
+        v.extend([t.perspective as u64, t.front_facing as u64, t.tex.is_some() as u64]);
+        v.push(t.flat.map_or(1 << 40, |c| u32::from_le_bytes(c) as u64));
+        match &t.fog {
+            Some((p, f)) => {
+                v.extend(plane(p));
+                v.extend([f.mode as u64, f.start.to_bits() as u64]);
+            }
+            None => v.push(7),
+        }
+        match &t.secondary {
+            Some(s) => s.iter().for_each(|p| v.extend(plane(p))),
+            None => v.push(9),
+        }
+        v
+    }
+
+    /// Round 18: `solve_binned` (the record read in place, by
+    /// `solve_plain` for a record without extras and `solve_extra` for
+    /// one with) gives the bits of `setup::planes_of` on the attributes as
+    /// the band side copied them before (`Copied`, reading `NO_EXTRA` for
+    /// a record without extras), on random records: perspective or not,
+    /// equal and distinct 1/w, flat or smooth, with and without fog and
+    /// polygon offset, both facings, the record's vertices in either
+    /// order.
+    #[test]
+    fn binned_setups_match_planes_of() {
+        let mut seed = 11u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed >> 11
+        };
+        let fog = crate::render::fog::Fog { mode: crate::render::fog::GL_LINEAR, density: 1.0, start: 0.25, end: 3.0, color: Vec4::ONE, per_fragment: true };
+        let (mut plain, mut extras) = (0, 0);
+        for n in 0..40_000 {
+            let mut f = |scale: f64| ((next() >> 13) as f64 / (1u64 << 40) as f64 - 0.5) * scale;
+            let x: [i64; 3] = std::array::from_fn(|_| (f(2.0) * 4096.0) as i64 + 100_000);
+            let y: [i64; 3] = std::array::from_fn(|_| (f(2.0) * 4096.0) as i64 + 50_000);
+            let q0 = 0.5 + f(0.5);
+            let v: [BinVertex; 3] = std::array::from_fn(|_| BinVertex {
+                z: 0.5 + f(1.0),
+                q: if n % 3 == 0 { q0 } else { 0.5 + f(0.5) },
+                color: std::array::from_fn(|c| if n % 5 == 0 && c == 3 { 1.0 } else { (0.5 + f(1.0)) as f32 }),
+            });
+            let with_extra = n % 2 == 1;
+            let extra = BinExtra {
+                tex: std::array::from_fn(|_| std::array::from_fn(|_| Vec4::new(f(4.0) as f32, f(4.0) as f32, 0.0, 1.0))),
+                fog: std::array::from_fn(|_| (2.0 * f(2.0)) as f32),
+                secondary: std::array::from_fn(|_| Vec4::new(f(1.0) as f32, f(1.0) as f32, f(1.0) as f32, 0.0)),
+            };
+            let front = n % 4 < 2;
+            let t = Binned {
+                v,
+                x: x.map(|c| c as i32),
+                y: y.map(|c| c as i32),
+                state: 0,
+                prim: TRIANGLE | if front { FRONT } else { 0 } | if with_extra { 5 } else { NO_EXTRA_INDEX },
+            };
+            let params = Params { flat: n % 7 == 0, offset: (n % 6 == 0).then_some((1.5, 2.0)), fog: (n % 8 < 5).then_some(fog) };
+            let extra_read = if with_extra { &extra } else { &NO_EXTRA };
+            let copied = [0, 1, 2].map(|i| Copied { color: Vec4::from_array(t.v[i].color), extra: extra_read, i });
+            let want = crate::render::setup::planes_of(&params, t.v.map(|v| (v.z, v.q)), copied.each_ref(), x, y, Vec4::from_array(t.v[0].color), false, front);
+            let (xy, yy) = t.xy();
+            assert_eq!((xy, yy), (x, y));
+            let mut slot = std::mem::MaybeUninit::uninit();
+            let got = solve_binned(&mut slot, &params, &t, extra_read, &xy, &yy);
+            assert_eq!(setup_bits(got), setup_bits(&want), "record {n}: {x:?} {y:?} {:?} extra {with_extra}", t.v);
+            // SAFETY: solved above.
+            unsafe { crate::render::setup::release(&mut slot) };
+            if with_extra {
+                extras += 1;
+            } else {
+                plain += 1;
+            }
+        }
+        assert!(plain > 10_000 && extras > 10_000);
     }
 }
