@@ -233,6 +233,10 @@ trait Isa: Copy {
     /// `filter_pairs`; the channels in `skip` (the level's flat ones and
     /// those the environment does not read) may be `p.flat_value`'s.
     unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2], skip: u8) -> Rgba;
+    /// `filter_pairs` of two levels (`a` and `b`: level, padded level,
+    /// skip), the same bits as two calls; the AVX2 form loads both
+    /// levels' texels before it converts either (`filter_pairs2`).
+    unsafe fn filter_pairs2(a: (&PaddedLevel, &Level, u8), b: (&PaddedLevel, &Level, u8), s: __m256, t: __m256, rep: [bool; 2]) -> (Rgba, Rgba);
     /// GL_FASTEST: `filter_fixed`.
     unsafe fn filter_fixed(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, linear: bool, rep: [bool; 2]) -> __m256i;
     /// GL_FASTEST: packed RGBA8 lanes a + (b - a) w / 256 rounded (`lerp16`),
@@ -273,6 +277,11 @@ impl Isa for D8 {
     #[inline(always)]
     unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2], skip: u8) -> Rgba {
         filter_pairs(p, l, s, t, rep, skip)
+    }
+
+    #[inline(always)]
+    unsafe fn filter_pairs2(a: (&PaddedLevel, &Level, u8), b: (&PaddedLevel, &Level, u8), s: __m256, t: __m256, rep: [bool; 2]) -> (Rgba, Rgba) {
+        filter_pairs2(a, b, s, t, rep)
     }
 
     #[inline(always)]
@@ -380,6 +389,11 @@ impl Isa for __m512d {
     unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2], _skip: u8) -> Rgba {
         // All channels: a flat one filters to its value here too.
         filter_pairs_wide(p, l, s, t, rep)
+    }
+
+    #[inline(always)]
+    unsafe fn filter_pairs2(a: (&PaddedLevel, &Level, u8), b: (&PaddedLevel, &Level, u8), s: __m256, t: __m256, rep: [bool; 2]) -> (Rgba, Rgba) {
+        (filter_pairs_wide(a.0, a.1, s, t, rep), filter_pairs_wide(b.0, b.1, s, t, rep))
     }
 
     #[inline(always)]
@@ -680,7 +694,43 @@ unsafe fn filter_pairs(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [b
 #[inline(always)]
 unsafe fn filter_channels<const N: usize>(p: &PaddedLevel, l: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> Rgba {
     let (i0, j0, wa, wb) = footprint(l, s, t);
-    let [t00, t01, t10, t11] = pairs(p, l, i0, j0, rep);
+    convert::<N>(p, pairs(p, l, i0, j0, rep), wa, wb)
+}
+
+/// `filter_pairs` of two levels with the same `skip` choice as one (the
+/// union of what both compute: a flat channel computed anyway gives its
+/// flat value, an unread one is not read), each level's footprint and
+/// loads before either level's conversions and lerps, so the second
+/// level's cache misses overlap the first's arithmetic. A level with
+/// every channel skipped (no texel to load) goes through `filter_pairs`.
+#[inline(always)]
+unsafe fn filter_pairs2(a: (&PaddedLevel, &Level, u8), b: (&PaddedLevel, &Level, u8), s: __m256, t: __m256, rep: [bool; 2]) -> (Rgba, Rgba) {
+    if a.2 == 0xF || b.2 == 0xF {
+        return (filter_pairs(a.0, a.1, s, t, rep, a.2), filter_pairs(b.0, b.1, s, t, rep, b.2));
+    }
+    if a.2 & b.2 & 0b1000 != 0 {
+        filter_channels2::<3>(a.0, a.1, b.0, b.1, s, t, rep)
+    } else {
+        filter_channels2::<4>(a.0, a.1, b.0, b.1, s, t, rep)
+    }
+}
+
+/// `filter_channels` of two levels, both levels' texels loaded first.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+unsafe fn filter_channels2<const N: usize>(pa: &PaddedLevel, la: &Level, pb: &PaddedLevel, lb: &Level, s: __m256, t: __m256, rep: [bool; 2]) -> (Rgba, Rgba) {
+    let (ia, ja, wa_a, wb_a) = footprint(la, s, t);
+    let (ib, jb, wa_b, wb_b) = footprint(lb, s, t);
+    let ta = pairs(pa, la, ia, ja, rep);
+    let tb = pairs(pb, lb, ib, jb, rep);
+    (convert::<N>(pa, ta, wa_a, wb_a), convert::<N>(pb, tb, wa_b, wb_b))
+}
+
+/// A footprint's texels (`pairs`) filtered by its weights: channels 0..N
+/// by `blend`'s lerps, the others `p.flat_value`'s.
+#[inline(always)]
+unsafe fn convert<const N: usize>(p: &PaddedLevel, texels: [__m256i; 4], wa: __m256, wb: __m256) -> Rgba {
+    let [t00, t01, t10, t11] = texels;
     let mut out = [_mm256_setzero_ps(); 4];
     for c in 0..4 {
         out[c] = if c < N {
@@ -895,6 +945,20 @@ unsafe fn level_filter<L: Isa>(k: &Ctx, l: usize, s: __m256, t: __m256) -> Rgba 
             L::filter_pairs(p, &k.smp.levels[l], s, t, k.smp.repeat, (p.flat | !k.reads) & 0xF)
         }
         _ => filter(&k.smp.levels[l], s, t, k.linear, k.smp.repeat),
+    }
+}
+
+/// Levels `l` and `l + 1` filtered at (s, t): `level_filter` of each,
+/// through `Isa::filter_pairs2` when there is a padded copy.
+#[inline(always)]
+unsafe fn level_filter2<L: Isa>(k: &Ctx, l: usize, s: __m256, t: __m256) -> (Rgba, Rgba) {
+    match k.pad {
+        Some(p) if k.linear => {
+            let (pa, pb) = (&p.levels[l], &p.levels[l + 1]);
+            let skip = |p: &PaddedLevel| (p.flat | !k.reads) & 0xF;
+            L::filter_pairs2((pa, &k.smp.levels[l], skip(pa)), (pb, &k.smp.levels[l + 1], skip(pb)), s, t, k.smp.repeat)
+        }
+        _ => (level_filter::<L>(k, l, s, t), level_filter::<L>(k, l + 1, s, t)),
     }
 }
 
@@ -1507,10 +1571,19 @@ unsafe fn back<const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, g: &Front) {
             let same = _mm256_cmpeq_epi32(la, _mm256_set1_epi32(l));
             let lanes = _mm256_movemask_ps(_mm256_castsi256_ps(same)) as u32 & pending;
             pending &= !lanes;
-            let mut v = if l == carried { carry } else { level_filter::<L>(k, l as usize, sf, tf) };
             let weighted = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_and_si256(weighted_lanes, same))) as u32 & lanes;
-            if k.lod_mode == Lod::Linear && weighted != 0 && (l as usize) < smp.q {
-                let v2 = level_filter::<L>(k, l as usize + 1, sf, tf);
+            let two = k.lod_mode == Lod::Linear && weighted != 0 && (l as usize) < smp.q;
+            // Both levels at once (`level_filter2`) unless the first is
+            // carried from the lanes below.
+            let (mut v, v2) = if l == carried {
+                (carry, if two { level_filter::<L>(k, l as usize + 1, sf, tf) } else { carry })
+            } else if two {
+                level_filter2::<L>(k, l as usize, sf, tf)
+            } else {
+                let v = level_filter::<L>(k, l as usize, sf, tf);
+                (v, v)
+            };
+            if two {
                 if pending != 0 {
                     (carried, carry) = (l + 1, v2);
                 }
@@ -1736,6 +1809,73 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// `filter_pairs2` (two levels' texels loaded before either is
+    /// converted, one channel choice for both) gives, level by level, the
+    /// bits of `filter` (plain level, four wraps) in every channel that is
+    /// computed or flat, for pairs of levels with different sizes and flat
+    /// channels (including a 1x1 level, no texel loaded), both wraps, and
+    /// skip masks that differ between the levels.
+    #[test]
+    fn filter_pairs2_matches_filter() {
+        if !(std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")) {
+            return;
+        }
+        use crate::render::texture::{pairs, Base, Image, Texels};
+        use std::sync::Arc;
+        let mut seed = 0x2545_F491u32;
+        let mut rnd = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed >> 8
+        };
+        let sizes = [((8, 8), (4, 4)), ((16, 4), (8, 2)), ((4, 2), (2, 1)), ((2, 2), (1, 1)), ((32, 16), (16, 8))];
+        for ((wa, ha), (wb, hb)) in sizes {
+            for (fa, fb) in [(0u8, 0u8), (0b1000, 0), (0, 0b1000), (0b1000, 0b1000), (0b0101, 0b1010)] {
+                let consts = [255u8, 0, 77, 255];
+                let mut make = |w: i32, h: i32, flat: u8| -> Vec<[u8; 4]> { (0..w * h).map(|_| std::array::from_fn(|k| if flat & (1 << k) != 0 { consts[k] } else { rnd() as u8 })).collect() };
+                let (ta, tb) = (make(wa, ha, fa), make(wb, hb, fb));
+                let img = |w: i32, h: i32, t: &Vec<[u8; 4]>| Arc::new(Image { width: w, height: h, depth: 1, border: 0, internal_format: 0x8058, base: Base::Rgba, texels: Texels::Rgba8(Arc::new(t.clone())) });
+                let (la, lb) = (Level { tex: &ta, w: wa, h: ha, wf: wa as f32, hf: ha as f32 }, Level { tex: &tb, w: wb, h: hb, wf: wb as f32, hf: hb as f32 });
+                for rep in [[true, true], [false, false], [false, true]] {
+                    let pad = pairs::build(&[img(wa, ha, &ta), img(wb, hb, &tb)], rep).unwrap();
+                    let (pa, pb) = (&pad.levels[0], &pad.levels[1]);
+                    for _ in 0..100 {
+                        let coord = |r: u32| (r % 8192) as f32 / 1024.0 - 3.0;
+                        let s: [f32; 8] = std::array::from_fn(|_| coord(rnd()));
+                        let t: [f32; 8] = std::array::from_fn(|_| coord(rnd()));
+                        for (ka, kb) in [(0, 0), (pa.flat, pb.flat), (pa.flat | 0b1000, pb.flat | 0b1000), (pa.flat | 0b1000, pb.flat), (0b0110, 0b0110 | pb.flat)] {
+                            let (got, want) = unsafe { filter2_both((pa, &la, ka), (pb, &lb, kb), &s, &t, rep) };
+                            for (lv, (p, skip)) in [(pa, ka), (pb, kb)].into_iter().enumerate() {
+                                for c in 0..4 {
+                                    if skip & !p.flat & (1 << c) != 0 {
+                                        continue;
+                                    }
+                                    for lane in 0..8 {
+                                        assert_eq!(got[lv][c][lane].to_bits(), want[lv][c][lane].to_bits(), "{wa}x{ha} {rep:?} skips {ka:#b} {kb:#b} level {lv} channel {c} at ({}, {})", s[lane], t[lane]);
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn filter2_both(a: (&PaddedLevel, &Level, u8), b: (&PaddedLevel, &Level, u8), s: &[f32; 8], t: &[f32; 8], rep: [bool; 2]) -> ([[[f32; 8]; 4]; 2], [[[f32; 8]; 4]; 2]) {
+        let (s, t) = (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr()));
+        let (a1, b1) = filter_pairs2(a, b, s, t, rep);
+        let (a2, b2) = (filter(a.1, s, t, true, rep), filter(b.1, s, t, true, rep));
+        let mut out = ([[[0f32; 8]; 4]; 2], [[[0f32; 8]; 4]; 2]);
+        for c in 0..4 {
+            _mm256_storeu_ps(out.0[0][c].as_mut_ptr(), a1[c]);
+            _mm256_storeu_ps(out.0[1][c].as_mut_ptr(), b1[c]);
+            _mm256_storeu_ps(out.1[0][c].as_mut_ptr(), a2[c]);
+            _mm256_storeu_ps(out.1[1][c].as_mut_ptr(), b2[c]);
+        }
+        out
     }
 
     #[target_feature(enable = "avx2,fma")]
