@@ -354,6 +354,8 @@ impl AccumRows {
     fn row(&self, a: &mut [[i16; 4]], color: &mut [[u8; 4]], other: Option<&mut [[u8; 4]]>) {
         let (x0, x1) = (self.r.x0 as usize, self.r.x1 as usize);
         let (op, value, lanes) = (self.op, self.value, self.lanes);
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = lanes;
         match op {
             GL_ACCUM | GL_LOAD => {
                 let (add, load) = (&self.add, &self.load);

@@ -330,6 +330,8 @@ impl Runs {
             return;
         }
         // `fit`: `lanes_fit(x, y)`, from the centre box.
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = fit;
         #[cfg(target_arch = "x86_64")]
         if fit && super::fragment::simd::level() != super::fragment::simd::Level::Scalar {
             // SAFETY: SSE2 is part of the x86_64 baseline; the values fit
@@ -582,7 +584,10 @@ impl Cover {
             true
         }
         #[cfg(not(target_arch = "x86_64"))]
-        false
+        {
+            let _ = (x, y);
+            false
+        }
     }
 
     pub fn is_empty(&self) -> bool {

@@ -45,7 +45,9 @@
 //! so nothing past the edge (the next row, or the buffer's end) is
 //! touched.
 
-use super::fast::{depth_key, CO_NONE, CO_STORE, CS_AFFINE, CS_CONSTANT, CS_FLAT, CS_FOG, CS_GENERAL, CS_PERSPECTIVE, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
+use super::fast::{depth_key, CO_NONE, CO_STORE, CS_FLAT, CS_GENERAL, CS_STEPPED, D_ANY, D_LEQUAL, D_LESS, D_OFF};
+#[cfg(target_arch = "x86_64")]
+use super::fast::{CS_AFFINE, CS_CONSTANT, CS_FOG, CS_PERSPECTIVE};
 use super::FragmentState;
 use crate::render::raster::Cover;
 use crate::render::setup::TriangleSetup;
