@@ -20,7 +20,8 @@
 
 use super::context::Context;
 use super::enums::*;
-use std::collections::{HashMap, HashSet};
+use super::names::Reserved;
+use std::collections::HashMap;
 
 pub const GL_BUFFER_SIZE: u32 = 0x8764;
 pub const GL_BUFFER_USAGE: u32 = 0x8765;
@@ -51,35 +52,6 @@ pub const GL_BUFFER_MAP_LENGTH: u32 = 0x9120;
 pub const GL_BUFFER_MAP_OFFSET: u32 = 0x9121;
 pub const GL_STATIC_DRAW: u32 = 0x88E4;
 pub const GL_DYNAMIC_COPY: u32 = 0x88EA;
-
-/// A set of object names with a generator (glGenBuffers, glGenQueries).
-#[derive(Clone, Debug, Default)]
-pub struct Names {
-    used: HashSet<u32>,
-    next: u32,
-}
-
-impl Names {
-    /// `n` names not in use, marked used.
-    pub fn generate(&mut self, n: usize) -> Vec<u32> {
-        let mut out = Vec::with_capacity(n);
-        while out.len() < n {
-            self.next = self.next.wrapping_add(1).max(1);
-            if self.used.insert(self.next) {
-                out.push(self.next);
-            }
-        }
-        out
-    }
-
-    pub fn insert(&mut self, name: u32) {
-        self.used.insert(name);
-    }
-
-    pub fn remove(&mut self, name: u32) {
-        self.used.remove(&name);
-    }
-}
 
 /// One buffer object (table 2.6 gives its state).
 #[derive(Debug)]
@@ -112,7 +84,7 @@ impl Buffer {
 
 #[derive(Debug, Default)]
 pub struct Buffers {
-    names: Names,
+    names: Reserved,
     objects: HashMap<u32, Buffer>,
     /// ARRAY_BUFFER_BINDING: captured by the array pointer calls.
     pub array: u32,
@@ -192,7 +164,7 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
-        Some(self.buffers.names.generate(n as usize))
+        Some(self.buffers.names.generate(n as usize, |_| false))
     }
 
     pub fn bind_buffer(&mut self, target: u32, name: u32) {

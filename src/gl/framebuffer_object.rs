@@ -37,7 +37,8 @@ use super::texture::MAX_LEVELS;
 use super::validate::DIRTY_ALL;
 use crate::framebuffer::{Config, Framebuffer, DEPTH_MAX, MAX_SIZE};
 use crate::render::texture::{to_unorm8, Base, Image, Texels, UNORM8};
-use std::collections::{HashMap, HashSet};
+use super::names::Reserved;
+use std::collections::HashMap;
 use std::sync::{Arc, Mutex, MutexGuard};
 
 pub const GL_INVALID_FRAMEBUFFER_OPERATION: u32 = 0x0506;
@@ -196,9 +197,9 @@ struct Snapshot {
 pub struct FboState {
     pub framebuffers: HashMap<u32, FramebufferObject>,
     /// Names glGenFramebuffers returned and not yet bound.
-    reserved: HashSet<u32>,
+    reserved: Reserved,
     pub renderbuffers: HashMap<u32, RbObject>,
-    rb_reserved: HashSet<u32>,
+    rb_reserved: Reserved,
     pub renderbuffer_binding: u32,
     pub draw_binding: u32,
     pub read_binding: u32,
@@ -218,7 +219,7 @@ pub struct FboState {
 #[derive(Default)]
 pub struct SharedRenderbuffers {
     renderbuffers: HashMap<u32, RbObject>,
-    reserved: HashSet<u32>,
+    reserved: Reserved,
 }
 
 impl FboState {
@@ -227,19 +228,6 @@ impl FboState {
         std::mem::swap(&mut self.renderbuffers, &mut t.renderbuffers);
         std::mem::swap(&mut self.rb_reserved, &mut t.reserved);
     }
-}
-
-fn gen_names(used: impl Fn(u32) -> bool, reserved: &mut HashSet<u32>, n: usize) -> Vec<u32> {
-    let mut out = Vec::with_capacity(n);
-    let mut next = 1u32;
-    while out.len() < n {
-        if !used(next) && !reserved.contains(&next) {
-            reserved.insert(next);
-            out.push(next);
-        }
-        next += 1;
-    }
-    out
 }
 
 /// Which bindings a framebuffer target names: (draw, read).
@@ -303,7 +291,7 @@ impl Context {
             return None;
         }
         let fbs = &self.fbo.framebuffers;
-        Some(gen_names(|k| fbs.contains_key(&k), &mut self.fbo.reserved, n as usize))
+        Some(self.fbo.reserved.generate(n as usize, |k| fbs.contains_key(&k)))
     }
 
     pub fn gen_renderbuffers(&mut self, n: i32) -> Option<Vec<u32>> {
@@ -312,7 +300,7 @@ impl Context {
             return None;
         }
         let rbs = &self.fbo.renderbuffers;
-        Some(gen_names(|k| rbs.contains_key(&k), &mut self.fbo.rb_reserved, n as usize))
+        Some(self.fbo.rb_reserved.generate(n as usize, |k| rbs.contains_key(&k)))
     }
 
     pub fn is_framebuffer(&self, name: u32) -> bool {
@@ -328,7 +316,7 @@ impl Context {
     pub fn bind_framebuffer(&mut self, target: u32, name: u32) {
         let Some((draw, read)) = fb_target(target) else { return self.set_error(GL_INVALID_ENUM) };
         if name != 0 && !self.fbo.framebuffers.contains_key(&name) {
-            self.fbo.reserved.remove(&name);
+            self.fbo.reserved.remove(name);
             self.fbo.framebuffers.insert(name, FramebufferObject::default());
         }
         if draw && name != self.fbo.draw_binding {
@@ -403,7 +391,7 @@ impl Context {
             if name == 0 {
                 continue;
             }
-            self.fbo.reserved.remove(&name);
+            self.fbo.reserved.remove(name);
             if !self.fbo.framebuffers.contains_key(&name) {
                 continue;
             }
@@ -423,7 +411,7 @@ impl Context {
             if name == 0 {
                 continue;
             }
-            self.fbo.rb_reserved.remove(&name);
+            self.fbo.rb_reserved.remove(name);
             let Some(obj) = self.fbo.renderbuffers.get(&name).cloned() else { continue };
             if self.fbo.renderbuffer_binding == name {
                 self.fbo.renderbuffer_binding = 0;
@@ -475,7 +463,7 @@ impl Context {
             return self.set_error(GL_INVALID_ENUM);
         }
         if name != 0 && !self.fbo.renderbuffers.contains_key(&name) {
-            self.fbo.rb_reserved.remove(&name);
+            self.fbo.rb_reserved.remove(name);
             self.fbo.renderbuffers.insert(name, Arc::new(Mutex::new(Renderbuffer::default())));
         }
         self.fbo.renderbuffer_binding = name;

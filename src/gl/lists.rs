@@ -111,6 +111,8 @@ pub struct ListStore {
     /// Defined lists (possibly empty). Rc: a list keeps running even if it
     /// deletes or redefines itself.
     lists: HashMap<u32, Rc<List>>,
+    /// Where glGenLists' search starts (`names`).
+    cursor: u32,
 }
 
 impl ListStore {
@@ -129,6 +131,17 @@ impl ListStore {
 
     pub fn remove(&mut self, n: u32) {
         self.lists.remove(&n);
+    }
+
+    /// glGenLists: the first of `range` (> 0) consecutive unused names,
+    /// each defined as an empty list.
+    pub fn generate(&mut self, range: u32) -> Option<u32> {
+        let lists = &self.lists;
+        let start = super::names::free_run(&mut self.cursor, range, |n| !lists.contains_key(&n))?;
+        for n in start..=start + (range - 1) {
+            self.define(n, List::default());
+        }
+        Some(start)
     }
 }
 
@@ -247,25 +260,12 @@ impl Context {
         if range == 0 {
             return 0;
         }
-        let range = range as u32;
-        // First run of `range` free names after the highest used one is the
-        // simple answer, falling back to a scan when names run out.
-        let mut start = 1u32;
-        'search: loop {
-            let Some(end) = start.checked_add(range - 1) else {
+        match self.lists.store.generate(range as u32) {
+            Some(start) => start,
+            None => {
                 self.set_error(GL_OUT_OF_MEMORY);
-                return 0;
-            };
-            for n in start..=end {
-                if self.lists.store.contains(n) {
-                    start = n + 1;
-                    continue 'search;
-                }
+                0
             }
-            for n in start..=end {
-                self.lists.store.define(n, List::default());
-            }
-            return start;
         }
     }
 

@@ -27,6 +27,7 @@ pub mod imaging;
 pub mod lighting;
 pub mod lists;
 pub mod matrix;
+pub mod names;
 pub mod pixel_buffer;
 pub mod pixel_data;
 pub mod pixel_transfer;

@@ -17,9 +17,9 @@
 //!
 //! [`Framebuffer::samples_passed`]: crate::framebuffer::Framebuffer::samples_passed
 
-use super::buffers::Names;
 use super::context::Context;
 use super::enums::*;
+use super::names::Reserved;
 use std::collections::HashMap;
 
 pub const GL_QUERY_COUNTER_BITS: u32 = 0x8864;
@@ -34,7 +34,7 @@ pub const COUNTER_BITS: i64 = 32;
 
 #[derive(Debug, Default)]
 pub struct Queries {
-    names: Names,
+    names: Reserved,
     /// Query objects and their last results.
     objects: HashMap<u32, u64>,
     /// The active SAMPLES_PASSED query: its name and the fragment stage's
@@ -48,7 +48,7 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
-        Some(self.queries.names.generate(n as usize))
+        Some(self.queries.names.generate(n as usize, |_| false))
     }
 
     pub fn delete_queries(&mut self, names: &[u32]) {

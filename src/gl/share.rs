@@ -34,7 +34,7 @@ use super::context::Context;
 use super::texture::TexObject;
 use super::validate::DIRTY_TEXTURE;
 use std::cell::Cell;
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
 /// The objects a share group has in common.
@@ -42,7 +42,7 @@ use std::sync::{Arc, Mutex};
 pub struct Tables {
     lists: ListStore,
     textures: HashMap<u32, TexObject>,
-    texture_names: HashSet<u32>,
+    texture_names: super::names::Reserved,
     buffers: Buffers,
     fbo: super::framebuffer_object::SharedRenderbuffers,
     samplers: super::texture::sampler::SharedSamplers,

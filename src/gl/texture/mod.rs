@@ -27,7 +27,8 @@ use super::enums::{GL_INVALID_ENUM, GL_INVALID_OPERATION, GL_INVALID_VALUE, GL_O
 use super::pixel_data;
 use super::get::Value;
 use crate::render::texture::{Base, Env, Filter, Image, Params, Target, Texels, TextureStage, UnitSampler, Wrap, MAX_LOD_BIAS, MAX_UNITS};
-use std::collections::{HashMap, HashSet};
+use crate::gl::names::Reserved;
+use std::collections::HashMap;
 use std::sync::Arc;
 
 /// Pixel transfer that changes nothing (for groups already transferred).
@@ -255,7 +256,7 @@ pub struct TextureState {
     pub client_active: usize,
     pub units: [TexUnit; MAX_UNITS],
     pub objects: HashMap<u32, TexObject>,
-    pub reserved: HashSet<u32>,
+    pub reserved: Reserved,
     /// The default objects (name 0) per target.
     pub defaults: [TexObject; 5],
     /// The proxy "objects" per target: only their level state matters.
@@ -271,7 +272,7 @@ impl Default for TextureState {
             client_active: 0,
             units: Default::default(),
             objects: HashMap::new(),
-            reserved: HashSet::new(),
+            reserved: Reserved::default(),
             defaults: TARGETS.map(|t| TexObject::new(Some(t))),
             proxies: TARGETS.map(|t| TexObject::new(Some(t))),
             vertex: Default::default(),
@@ -408,16 +409,8 @@ impl Context {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
-        let mut out = Vec::with_capacity(n as usize);
-        let mut next = 1u32;
-        while out.len() < n as usize {
-            if !self.texture.objects.contains_key(&next) && !self.texture.reserved.contains(&next) {
-                self.texture.reserved.insert(next);
-                out.push(next);
-            }
-            next += 1;
-        }
-        Some(out)
+        let objects = &self.texture.objects;
+        Some(self.texture.reserved.generate(n as usize, |k| objects.contains_key(&k)))
     }
 
     /// glDeleteTextures: bound objects revert to the default ones.
@@ -426,7 +419,7 @@ impl Context {
             if name == 0 {
                 continue;
             }
-            self.texture.reserved.remove(&name);
+            self.texture.reserved.remove(name);
             if self.texture.objects.remove(&name).is_some() {
                 for u in self.texture.units.iter_mut() {
                     for b in u.bound.iter_mut() {
@@ -452,7 +445,7 @@ impl Context {
                 Some(o) if o.target != Some(t) => return self.set_error(GL_INVALID_OPERATION),
                 Some(_) => {}
                 None => {
-                    self.texture.reserved.remove(&name);
+                    self.texture.reserved.remove(name);
                     self.texture.objects.insert(name, TexObject::new(Some(t)));
                 }
             }

@@ -102,6 +102,7 @@ pub struct Samplers {
     pub objects: std::collections::HashMap<u32, Params>,
     /// The sampler bound to each unit (0: none).
     pub bound: [u32; MAX_UNITS],
+    /// Where glGenSamplers' search starts (`gl::names`).
     next: u32,
 }
 
@@ -144,13 +145,12 @@ impl Context {
         }
         // Samplers exist from glGenSamplers on (unlike textures).
         let s = &mut self.samplers;
-        let mut out = Vec::with_capacity(n as usize);
+        let mut out = Vec::with_capacity((n as usize).min(1 << 12));
         while out.len() < n as usize {
-            s.next = s.next.wrapping_add(1).max(1);
-            if !s.objects.contains_key(&s.next) {
-                s.objects.insert(s.next, Params::default());
-                out.push(s.next);
-            }
+            let objects = &s.objects;
+            let Some(k) = crate::gl::names::next_free(&mut s.next, |k| !objects.contains_key(&k)) else { break };
+            s.objects.insert(k, Params::default());
+            out.push(k);
         }
         Some(out)
     }

@@ -1,0 +1,136 @@
+/* t_names: object names from every glGen* call (GL 1.5 sections 2.9,
+ * 3.8.12, 4.1.6, 5.4; ARB_framebuffer_object, ARB_sampler_objects).
+ *
+ * - A generated name is nonzero, unused and not handed out twice while it is
+ *   reserved or in use: names bound or defined without glGen (texture 3,
+ *   list 7, buffer 2, ...) are skipped, and so are names generated earlier
+ *   and not bound yet.
+ * - 20,000 textures generated one at a time, each bound before the next call
+ *   (as a program loading many images does), get 20,000 distinct names; a
+ *   deleted name may come back, but never while its texture lives.
+ * - glGenLists(n) returns the first of n consecutive names that were not
+ *   lists, each now an (empty) list; 0 for n = 0; INVALID_VALUE for n < 0.
+ */
+#include "harness.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MANY 20000
+
+/* True when v[0..n) holds distinct nonzero names, none in taken[0..t). */
+static int fresh(const GLuint *v, int n, const GLuint *taken, int t)
+{
+    int i, j;
+    for (i = 0; i < n; i++) {
+        if (v[i] == 0)
+            return 0;
+        for (j = 0; j < i; j++)
+            if (v[j] == v[i])
+                return 0;
+        for (j = 0; j < t; j++)
+            if (taken[j] == v[i])
+                return 0;
+    }
+    return 1;
+}
+
+int main(void)
+{
+    GLuint v[8], w[8], bound[2];
+    GLuint *many;
+    unsigned char *seen;
+    int i, ok;
+    h_init(16, 16);
+
+    /* Textures: 3 bound without glGen, then 8 generated around it. */
+    glBindTexture(GL_TEXTURE_2D, 3);
+    glGenTextures(8, v);
+    bound[0] = 3;
+    h_expect(fresh(v, 8, bound, 1), "glGenTextures: 8 fresh names besides texture 3");
+    /* Reserved (not bound yet) names are not handed out again. */
+    glGenTextures(8, w);
+    h_expect(fresh(w, 8, v, 8) && fresh(w, 8, bound, 1), "glGenTextures: reserved names not repeated");
+    glBindTexture(GL_TEXTURE_2D, 0);
+    h_expect_no_error("textures");
+
+    /* Many textures, one name a call, each bound before the next call. */
+    many = malloc(MANY * sizeof *many);
+    seen = calloc(4 * MANY + 64, 1);
+    ok = many && seen;
+    for (i = 0; ok && i < MANY; i++) {
+        glGenTextures(1, &many[i]);
+        glBindTexture(GL_TEXTURE_2D, many[i]);
+        /* The 17 names above are below 64; more than 4 MANY names would
+         * mean names were skipped for no reason. */
+        if (many[i] == 0 || many[i] >= 4 * MANY + 64 || seen[many[i]] || many[i] == 3)
+            ok = 0;
+        else
+            seen[many[i]] = 1;
+    }
+    h_expect(ok, "20000 textures one at a time: distinct fresh names (failed at %d)", i);
+    /* Deleting one and generating again: never a living texture's name. */
+    glDeleteTextures(1, &many[100]);
+    seen[many[100]] = 0;
+    glGenTextures(1, v);
+    h_expect(v[0] != 0 && v[0] != 3 && (v[0] >= 4 * MANY + 64 || !seen[v[0]]), "name after a deletion: %u", v[0]);
+    glDeleteTextures(MANY, many);
+    free(many);
+    free(seen);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    h_expect_no_error("many textures");
+
+    /* Display lists: 7 defined directly; runs of consecutive free names. */
+    glNewList(7, GL_COMPILE);
+    glEndList();
+    {
+        GLuint a = glGenLists(5), b = glGenLists(3), c;
+        h_expect(a != 0 && b != 0, "glGenLists gave %u and %u", a, b);
+        for (i = 0; i < 5; i++)
+            h_expect(glIsList(a + i) && a + i != 7, "list %u of the first run", a + i);
+        for (i = 0; i < 3; i++)
+            h_expect(glIsList(b + i) && b + i != 7 && (b + i < a || b + i >= a + 5), "list %u of the second run", b + i);
+        h_expect(glGenLists(0) == 0, "glGenLists(0) is 0");
+        h_expect_no_error("glGenLists");
+        c = glGenLists(-1);
+        h_expect(c == 0, "glGenLists(-1) is 0");
+        h_expect_error(GL_INVALID_VALUE, "glGenLists(-1)");
+    }
+
+    /* Buffers and queries: names in use by binding are skipped. */
+    glBindBuffer(GL_ARRAY_BUFFER, 2);
+    glGenBuffers(8, v);
+    bound[0] = 2;
+    h_expect(fresh(v, 8, bound, 1), "glGenBuffers: 8 fresh names besides buffer 2");
+    glGenBuffers(8, w);
+    h_expect(fresh(w, 8, v, 8) && fresh(w, 8, bound, 1), "glGenBuffers: no repeats");
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glGenQueries(8, v);
+    glGenQueries(8, w);
+    h_expect(fresh(v, 8, NULL, 0) && fresh(w, 8, v, 8), "glGenQueries: 16 distinct names");
+    h_expect_no_error("buffers and queries");
+
+    /* Framebuffers and renderbuffers: names bound without glGen skipped. */
+    glBindFramebuffer(GL_FRAMEBUFFER, 4);
+    glBindRenderbuffer(GL_RENDERBUFFER, 5);
+    glGenFramebuffers(8, v);
+    bound[0] = 4;
+    h_expect(fresh(v, 8, bound, 1), "glGenFramebuffers: 8 fresh names besides 4");
+    glGenRenderbuffers(8, w);
+    bound[0] = 5;
+    h_expect(fresh(w, 8, bound, 1), "glGenRenderbuffers: 8 fresh names besides 5");
+    glGenRenderbuffers(8, v);
+    h_expect(fresh(v, 8, w, 8) && fresh(v, 8, bound, 1), "glGenRenderbuffers: no repeats");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    h_expect_no_error("framebuffer objects");
+
+    /* Samplers exist from glGenSamplers on. */
+    glGenSamplers(8, v);
+    glGenSamplers(8, w);
+    h_expect(fresh(v, 8, NULL, 0) && fresh(w, 8, v, 8), "glGenSamplers: 16 distinct names");
+    h_expect(glIsSampler(v[0]) && glIsSampler(w[7]), "generated samplers exist");
+    h_expect_no_error("samplers");
+
+    return h_finish();
+}
