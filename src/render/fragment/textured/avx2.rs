@@ -1048,7 +1048,7 @@ unsafe fn fastest<const D: u8, const STORE: bool, L: Isa>(k: &Ctx, x: usize, dp:
     if D != D_OFF && (D != D_ANY || k.fs.depth_write) {
         _mm256_storeu_si256(dp.cast(), _mm256_blendv_epi8(stored, z, m));
     }
-    Some(Front { sf, tf, la, frac, primary, fog: _mm256_setzero_ps(), m, bits, cp })
+    Some(Front { sf, tf, la, frac, rho: _mm256_setzero_ps(), primary, fog: _mm256_setzero_ps(), m, bits, cp })
 }
 
 /// The rest of a GL_FASTEST group after `fastest` (as `back` after
@@ -1384,7 +1384,8 @@ unsafe fn group<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
     match front::<D, STORE, FX, L>(k, x, dp, cp, live) {
         Step::Done(n) => Some(n),
         Step::Scalar => None,
-        Step::Texture(f) => {
+        Step::Texture(mut f) => {
+            settle::<FX, L>(k, &mut f);
             back::<STORE, FX, L>(k, &f);
             Some(f.bits.count_ones())
         }
@@ -1399,6 +1400,9 @@ struct Front {
     tf: __m256,
     la: __m256i,
     frac: __m256,
+    /// ρ, from which `settle` computes `la` and `frac` (mipmapped
+    /// samplers, not GL_FASTEST).
+    rho: __m256,
     primary: Rgba,
     fog: __m256,
     m: __m256i,
@@ -1417,12 +1421,14 @@ enum Step {
 }
 
 /// A group up to its texturing: the depth test and write, s / q and t / q,
-/// λ and the levels, the primary colour and the fog factor (all of
-/// `group` that does not read texels). The span loop runs the next
-/// group's `front` before this group's `back` (pixels of different groups
-/// are disjoint), so that the long dependent chain of one (q, 1 / q, the
-/// derivatives, log2, the levels) overlaps the other's texel loads and
-/// lerps instead of stalling them.
+/// ρ, the primary colour and the fog factor (all of `group` that does not
+/// read texels but λ and the levels, which `settle` computes from ρ). The
+/// span loop runs the next group's `front`, then this group's `back`, then
+/// the next group's `settle` (pixels of different groups are disjoint), so
+/// that each half of the long dependent chain (q, 1 / q, the derivatives,
+/// the square root of ρ; then log2, the levels) has a group's independent
+/// work after it in program order instead of filling the reorder buffer
+/// behind it (docs/perf-notes.md, round 19).
 #[inline(always)]
 unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Step {
     let c = L::centres(x as f64, k.x0);
@@ -1480,8 +1486,9 @@ unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
     if _mm256_movemask_ps(in_range) != 0xFF {
         return Step::Scalar;
     }
-    // Level of detail (3.8.8) and each lane's level and weight.
-    let (mut la, mut frac) = (_mm256_setzero_si256(), _mm256_setzero_ps());
+    // Level of detail (3.8.8): ρ here, λ and each lane's level and
+    // weight in `settle`.
+    let (la, frac, mut rho_out) = (_mm256_setzero_si256(), _mm256_setzero_ps(), _mm256_setzero_ps());
     if k.lod_mode != Lod::None {
         let dx0 = _mm256_mul_ps(s.deriv(k.s.1, k.q.1, &iq), n0);
         let dx1 = _mm256_mul_ps(tt.deriv(k.t.1, k.q.1, &iq), n1);
@@ -1500,8 +1507,8 @@ unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
         if _mm256_movemask_ps(regular) != 0xFF {
             return Step::Scalar;
         }
-        let lambda = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(L::log2(rho), _mm256_set1_ps(smp.bias)), _mm256_set1_ps(smp.min_lod)), _mm256_set1_ps(smp.max_lod));
-        (la, frac) = levels(k, lambda);
+        // λ and the levels: `settle`, after the previous group's `back`.
+        rho_out = rho;
     }
     if D != D_OFF && (D != D_ANY || k.fs.depth_write) {
         _mm256_storeu_si256(dp.cast(), _mm256_blendv_epi8(stored, z, m));
@@ -1543,18 +1550,33 @@ unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
         }
         None => _mm256_setzero_ps(),
     };
-    Step::Texture(Front { sf, tf, la, frac, primary, fog, m, bits, cp })
+    Step::Texture(Front { sf, tf, la, frac, rho: rho_out, primary, fog, m, bits, cp })
 }
 
-/// The rest of a group after `front`: its texels, the environment, fog,
-/// and the colours written.
+/// λ (log2 ρ + bias, clamped) and each lane's level and weight of a
+/// group from `front` (mipmapped samplers; GL_FASTEST's `fastest` sets
+/// them itself). Apart from `front` so that the span loop can run the
+/// previous group's `back` between the square root of ρ and log2: the
+/// same operations on the same values.
+#[inline(always)]
+unsafe fn settle<const FX: bool, L: Isa>(k: &Ctx, g: &mut Front) {
+    if FX || k.lod_mode == Lod::None {
+        return;
+    }
+    let smp = k.smp;
+    let lambda = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(L::log2(g.rho), _mm256_set1_ps(smp.bias)), _mm256_set1_ps(smp.min_lod)), _mm256_set1_ps(smp.max_lod));
+    (g.la, g.frac) = levels(k, lambda);
+}
+
+/// The rest of a group after `front` and `settle`: its texels, the
+/// environment, fog, and the colours written.
 #[inline(always)]
 unsafe fn back<const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, g: &Front) {
     if FX {
         return fastest_back::<STORE, L>(k, g);
     }
     let smp = k.smp;
-    let Front { sf, tf, la, frac, primary, fog: fv, m, bits, cp } = *g;
+    let Front { sf, tf, la, frac, primary, fog: fv, m, bits, cp, .. } = *g;
     let rgba = {
         // Texels: once per distinct level among the passing lanes.
         let mut texel = [_mm256_setzero_ps(); 4];
@@ -1682,8 +1704,9 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
     let mut passed = 0u64;
     let mut i = 0;
     let all = _mm256_set1_epi32(-1);
-    // A group's `back` runs after the next group's `front` (`front`);
-    // `waiting` is the group whose `back` is due. It is done
+    // A group's `back` runs after the next group's `front`, and before
+    // that group's `settle` (`front`); `waiting` is the group whose `back`
+    // is due (settled). It is done
     // before the span's slices are touched any other way (the scalar
     // kernel, the last pixels), and the raw pointers are taken anew after.
     let mut waiting: Option<Front> = None;
@@ -1694,11 +1717,16 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
             let dp = if D != D_OFF { dbase.add(i) } else { std::ptr::null_mut() };
             match front::<D, STORE, FX, L>(&k, x0 + i, dp, cbase.add(i), all) {
                 Step::Done(p) => passed += p as u64,
-                Step::Texture(f) => {
+                Step::Texture(mut f) => {
                     passed += f.bits.count_ones() as u64;
-                    if let Some(w) = waiting.replace(f) {
+                    // The previous group's `back` between this group's ρ
+                    // and its λ (`settle`): both chains then have a
+                    // group's independent work after them.
+                    if let Some(w) = waiting.take() {
                         back::<STORE, FX, L>(&k, &w);
                     }
+                    settle::<FX, L>(&k, &mut f);
+                    waiting = Some(f);
                 }
                 Step::Scalar => {
                     if let Some(w) = waiting.take() {
