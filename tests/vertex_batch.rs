@@ -607,3 +607,119 @@ fn plain_vertex_entries_match_the_general_path() {
         }
     }
 }
+
+/// One list compiled through the C entry points (GL_COMPILE): random
+/// primitives of per-vertex commands in their many forms, with a few
+/// commands that have no compact form (glMaterialf, glCallList, glRectf,
+/// glVertex2fv of NULL, which records nothing) between them, some
+/// primitives left open by glEndList. Pushes, per primitive, whether
+/// `compile_fast` was set inside it; asserts it is clear after each glEnd
+/// and glEndList.
+#[cfg(target_arch = "x86_64")]
+unsafe fn compile_case(r: &mut Rng, gl: *const Context, seen: &mut Vec<bool>) {
+    use softgl::api::table::*;
+    glNewList(1, GL_COMPILE);
+    let prims = 1 + r.below(4);
+    for p in 0..prims {
+        let mode = r.pick(&[GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_QUADS, GL_POLYGON, GL_LINES, GL_POINTS]);
+        if r.chance(30) {
+            glColor3ub(r.below(256) as u8, r.below(256) as u8, r.below(256) as u8);
+        }
+        glBegin(mode);
+        let mut on = (*gl).compile_fast;
+        for _ in 0..r.below(20) {
+            let (x, y, z) = (r.range(-1.2, 1.2), r.range(-1.2, 1.2), r.range(-0.9, 0.9));
+            match r.below(12) {
+                0 => glColor3f(r.unit(), r.unit(), r.unit()),
+                1 => glColor4f(r.unit(), r.unit(), r.unit(), r.unit()),
+                2 => glColor3d(r.unit() as f64, r.unit() as f64, r.unit() as f64),
+                3 => glColor4ub(r.below(256) as u8, r.below(256) as u8, r.below(256) as u8, r.below(256) as u8),
+                4 => glNormal3f(r.range(-1.0, 1.0), r.range(-1.0, 1.0), 1.0),
+                5 => glTexCoord2f(r.unit(), r.unit()),
+                6 => glMultiTexCoord4f(0x84C0 + r.below(2) as u32, r.unit(), r.unit(), r.unit(), 1.0),
+                7 => glEdgeFlag(r.chance(50) as u8),
+                8 => glMaterialf(GL_FRONT, GL_SHININESS, r.range(0.0, 100.0)),
+                9 => glCallList(2),
+                10 => glSecondaryColor3f(r.unit(), r.unit(), r.unit()),
+                _ => {}
+            }
+            match r.below(8) {
+                0 => glVertex2f(x, y),
+                1 => glVertex3f(x, y, z),
+                2 => glVertex2fv([x, y].as_ptr()),
+                3 => glVertex3d(x as f64, y as f64, z as f64),
+                4 => glVertex2i((x * 3.0) as i32, (y * 3.0) as i32),
+                5 => glVertex4f(x, y, z, 1.0 + r.unit()),
+                6 => glVertex2fv(std::ptr::null()),
+                _ => glRectf(x, y, -x, -y),
+            }
+            on &= (*gl).compile_fast;
+        }
+        seen.push(on);
+        if p + 1 == prims && r.chance(15) {
+            // The list ends inside the primitive.
+            break;
+        }
+        glEnd();
+        assert!(!(*gl).compile_fast, "compile_fast is cleared at the recorded glEnd");
+    }
+    glEndList();
+    assert!(!(*gl).compile_fast, "compile_fast is cleared at glEndList");
+}
+
+/// Round 20: a list compiled with GL_COMPILE between a recorded glBegin
+/// and glEnd by a caller that masks every exception records each command
+/// straight from its entry point (`Context::compile_fast`,
+/// `api::dispatch::with_current_list`). The same random commands compiled
+/// into two contexts, one by a caller that unmasks exceptions (the
+/// guarded, general path: the flag is never set there), give the same
+/// list, word for word and command for command, and the same pixels
+/// when called.
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn compiled_list_entries_match_the_general_path() {
+    use softgl::api::table::*;
+    let (w, h) = (41, 33);
+    unsafe {
+        let mut bufs = [vec![0u8; w * h * 4], vec![0u8; w * h * 4]];
+        let ctxs = [0, 1].map(|_| OSMesaCreateContextExt(GL_RGBA, 24, 8, 0, std::ptr::null_mut()));
+        let masked = mxcsr();
+        let mut r = Rng(0x5eed_0020);
+        let (mut fast, mut words) = (0, 0);
+        for case in 0..400 {
+            let seed = r.next();
+            let mut seen = [Vec::new(), Vec::new()];
+            for k in 0..2 {
+                assert_eq!(OSMesaMakeCurrent(ctxs[k], bufs[k].as_mut_ptr() as *mut std::ffi::c_void, GL_UNSIGNED_BYTE, w as i32, h as i32), 1);
+                glNewList(2, GL_COMPILE);
+                glColor3f(0.2, 0.9, 0.4);
+                glEndList();
+                if k == 1 {
+                    // Invalid, divide-by-zero and overflow unmasked.
+                    set_mxcsr(0x1900);
+                }
+                compile_case(&mut Rng(seed), &(*ctxs[k]).gl, &mut seen[k]);
+                set_mxcsr(masked);
+                glClearColor(0.0, 0.0, 0.0, 1.0);
+                glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                glCallList(1);
+                // A list that ends inside its primitive leaves it open.
+                glEnd();
+                glGetError();
+                glFinish();
+            }
+            let lists = ctxs.map(|c| (*c).gl.lists.store.get(1).expect("list 1 defined"));
+            assert!(*lists[0] == *lists[1], "case {case}: the lists differ\nfast: {:?}\ngeneral: {:?}", lists[0], lists[1]);
+            words += lists[0].bytes();
+            assert!(seen[0].iter().all(|&on| on), "case {case}: compile_fast set in every primitive of a masked caller: {:?}", seen[0]);
+            assert!(seen[1].iter().all(|&on| !on), "case {case}: never set for a caller that unmasks");
+            fast += seen[0].len();
+            assert!(bufs[0] == bufs[1], "case {case}: the lists draw differently");
+        }
+        assert!(fast > 800 && words > 100_000, "primitives compiled on the fast path {fast}, list bytes {words}");
+        OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0);
+        for c in ctxs {
+            OSMesaDestroyContext(c);
+        }
+    }
+}

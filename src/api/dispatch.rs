@@ -65,6 +65,16 @@ pub fn with_current_list(build: impl FnOnce(&mut Context) -> Option<crate::gl::C
             }
         });
     }
+    // Round 20: between a recorded glBegin and glEnd of a list compiled
+    // with GL_COMPILE, by a caller that masked every exception
+    // (`Context::compile_fast`), the command goes straight into the list.
+    if ctx.compile_fast && ctx.bound.is_none() && ctx.share.is_none() {
+        return caught(p, move |ctx| {
+            if let Some(cmd) = build(ctx) {
+                ctx.record_compiled(cmd);
+            }
+        });
+    }
     with_current(move |ctx| {
         if let Some(cmd) = build(ctx) {
             ctx.submit_direct(cmd);

@@ -248,6 +248,28 @@ impl Context {
         }
     }
 
+    /// [`Context::submit_direct`] while `compile_fast` holds: the command
+    /// goes into the list being compiled with GL_COMPILE, inlined into
+    /// the entry point so that a vertex's or colour's words are stored
+    /// from registers (round 20: the out-of-line `submit` and
+    /// `List::push` read the 64-byte command back from memory, a
+    /// store-forwarding stall a call). The recorded glEnd ends the fast
+    /// path, as `submit` does.
+    #[inline(always)]
+    pub(crate) fn record_compiled(&mut self, cmd: Command) {
+        debug_assert!(self.compile_fast && self.lists.compile_mode() == Some(GL_COMPILE));
+        // Matched where it was built (see `List::push_compact`); the
+        // compact variants own nothing, so ManuallyDrop skips a generic
+        // drop.
+        let cmd = std::mem::ManuallyDrop::new(cmd);
+        if matches!(*cmd, Command::End) {
+            self.compile_fast = false;
+        }
+        if !self.lists.record_compact(&cmd) {
+            self.lists.record(std::mem::ManuallyDrop::into_inner(cmd));
+        }
+    }
+
     /// Executes one command against the context.
     pub fn execute(&mut self, cmd: &Command) {
         // The per-vertex commands first: legal anywhere, so no Begin/End

@@ -59,6 +59,15 @@ pub struct Context {
     /// (`api::dispatch::with_current_list`) instead of the guard's, the
     /// list's and the batch's tests per vertex.
     pub plain_vertex: bool,
+    /// Round 20: a list is being compiled with GL_COMPILE (nothing
+    /// executes) and its recorded glBegin came from a caller that masked
+    /// every floating-point exception: until the recorded glEnd (or
+    /// glEndList), the `list` entry points record their command straight
+    /// into the list (`Context::record_compiled`) without the guard's
+    /// read of the environment, as `plain_vertex` does for an executed
+    /// primitive. Set and cleared by `Context::submit`,
+    /// `record_compiled` and `end_list`.
+    pub compile_fast: bool,
     pub lists: lists::Lists,
     pub pixel_store: pixels::PixelStore,
     /// Vertex arrays (client state, GL_CLIENT_VERTEX_ARRAY_BIT).
@@ -147,6 +156,7 @@ impl Context {
             vertex_batching: true,
             fp_caller_masked: false,
             plain_vertex: false,
+            compile_fast: false,
             lists: Default::default(),
             pixel_store: Default::default(),
             arrays: Default::default(),
@@ -206,7 +216,17 @@ impl Context {
     pub fn submit(&mut self, cmd: Command) {
         match self.lists.compile_mode() {
             None => self.execute(&cmd),
-            Some(GL_COMPILE) => self.lists.record(cmd),
+            Some(GL_COMPILE) => {
+                // The recorded primitive's commands may skip the guard
+                // when its glBegin's caller masked every exception (this
+                // call's environment, read by `with_current`).
+                match cmd {
+                    Command::Begin(_) => self.compile_fast = self.fp_caller_masked,
+                    Command::End => self.compile_fast = false,
+                    _ => {}
+                }
+                self.lists.record(cmd)
+            }
             Some(_) => {
                 self.lists.record(cmd.clone());
                 self.execute(&cmd);

@@ -47,7 +47,7 @@ const OP_END: u32 = 14;
 const OP_DRAW: u32 = 15; // arg: mode; [n], then n words: the elements and OP_END
 
 /// One compiled list.
-#[derive(Default, Debug)]
+#[derive(Default, Debug, PartialEq)]
 pub struct List {
     words: Vec<u32>,
     /// The commands with no compact form, referenced by OP_CMD.
@@ -55,45 +55,83 @@ pub struct List {
 }
 
 impl List {
-    #[inline]
-    fn op(&mut self, op: u32, arg: u32, data: &[f32]) {
-        self.words.push(op | (arg << 8));
-        self.words.extend(data.iter().map(|f| f.to_bits()));
+    /// Appends a header and its N floats: one capacity check, then plain
+    /// stores (round 20: pushing the header and extending from an
+    /// iterator checked the capacity per word).
+    #[inline(always)]
+    fn op<const N: usize>(&mut self, op: u32, arg: u32, data: [f32; N]) {
+        self.words.reserve(N + 1);
+        let at = self.words.len();
+        // SAFETY: `reserve` made room for N + 1 more words past `at`; all
+        // of them are written before the length takes them in.
+        unsafe {
+            let w = self.words.as_mut_ptr().add(at);
+            w.write(op | (arg << 8));
+            for (i, f) in data.iter().enumerate() {
+                w.add(1 + i).write(f.to_bits());
+            }
+            self.words.set_len(at + N + 1);
+        }
     }
 
-    /// Appends one command in its compact form when it has one.
+    /// Appends one command: in its compact form when it has one, else to
+    /// the side table.
+    #[inline(always)]
     fn push(&mut self, cmd: Command) {
+        // The compact variants own nothing: held in ManuallyDrop, they
+        // skip the drop of a generic Command.
+        let cmd = std::mem::ManuallyDrop::new(cmd);
+        if !self.push_compact(&cmd) {
+            self.push_cmd(std::mem::ManuallyDrop::into_inner(cmd));
+        }
+    }
+
+    /// Appends `cmd` in its compact form and returns true, or returns
+    /// false when it has none. Inlined: a `list` entry point compiling
+    /// its command (`Context::record_compiled`) builds the command right
+    /// before, so the match folds to its one arm and the words are
+    /// stored from registers (round 20: matching a copy of the 64-byte
+    /// command read it back from memory, a store-forwarding stall a
+    /// call, and did not fold).
+    #[inline(always)]
+    fn push_compact(&mut self, cmd: &Command) -> bool {
         let is = |x: f32, v: f32| x.to_bits() == v.to_bits();
-        match cmd {
-            Command::Vertex([x, y, z, w]) if is(w, 1.0) && is(z, 0.0) => self.op(OP_VERTEX2, 0, &[x, y]),
-            Command::Vertex([x, y, z, w]) if is(w, 1.0) => self.op(OP_VERTEX3, 0, &[x, y, z]),
-            Command::Vertex(v) => self.op(OP_VERTEX4, 0, &v),
-            Command::Color([r, g, b, a]) if is(a, 1.0) => self.op(OP_COLOR3, 0, &[r, g, b]),
-            Command::Color(c) => self.op(OP_COLOR4, 0, &c),
-            Command::Normal(n) => self.op(OP_NORMAL, 0, &n),
+        match *cmd {
+            Command::Vertex([x, y, z, w]) if is(w, 1.0) && is(z, 0.0) => self.op(OP_VERTEX2, 0, [x, y]),
+            Command::Vertex([x, y, z, w]) if is(w, 1.0) => self.op(OP_VERTEX3, 0, [x, y, z]),
+            Command::Vertex(v) => self.op(OP_VERTEX4, 0, v),
+            Command::Color([r, g, b, a]) if is(a, 1.0) => self.op(OP_COLOR3, 0, [r, g, b]),
+            Command::Color(c) => self.op(OP_COLOR4, 0, c),
+            Command::Normal(n) => self.op(OP_NORMAL, 0, n),
             // Units beyond the header's range are kept as commands (they
             // raise INVALID_ENUM when run).
             Command::TexCoord(unit, [s, t, r, q]) if unit.wrapping_sub(super::arrays::GL_TEXTURE0) < 256 => {
                 let u = unit - super::arrays::GL_TEXTURE0;
                 if is(r, 0.0) && is(q, 1.0) {
-                    self.op(OP_TEXCOORD2, u, &[s, t])
+                    self.op(OP_TEXCOORD2, u, [s, t])
                 } else {
-                    self.op(OP_TEXCOORD4, u, &[s, t, r, q])
+                    self.op(OP_TEXCOORD4, u, [s, t, r, q])
                 }
             }
-            Command::SecondaryColor(c) => self.op(OP_SECONDARY, 0, &c),
-            Command::FogCoord(f) => self.op(OP_FOGCOORD, 0, &[f]),
-            Command::Index(i) => self.op(OP_INDEX, 0, &[i]),
-            Command::EdgeFlag(f) => self.op(OP_EDGEFLAG, f as u32, &[]),
-            Command::Begin(mode) if mode <= 0xFF_FFFF => self.op(OP_BEGIN, mode, &[]),
-            Command::End => self.op(OP_END, 0, &[]),
-            cmd => {
-                let i = self.cmds.len() as u32;
-                self.cmds.push(cmd);
-                self.words.push(OP_CMD);
-                self.words.push(i);
-            }
+            Command::SecondaryColor(c) => self.op(OP_SECONDARY, 0, c),
+            Command::FogCoord(f) => self.op(OP_FOGCOORD, 0, [f]),
+            Command::Index(i) => self.op(OP_INDEX, 0, [i]),
+            Command::EdgeFlag(f) => self.op(OP_EDGEFLAG, f as u32, []),
+            Command::Begin(mode) if mode <= 0xFF_FFFF => self.op(OP_BEGIN, mode, []),
+            Command::End => self.op(OP_END, 0, []),
+            _ => return false,
         }
+        true
+    }
+
+    /// A command with no compact form: kept in the side table, referenced
+    /// by OP_CMD. Out of line (rare; keeps `push` small where inlined).
+    #[inline(never)]
+    fn push_cmd(&mut self, cmd: Command) {
+        let i = self.cmds.len() as u32;
+        self.cmds.push(cmd);
+        self.words.push(OP_CMD);
+        self.words.push(i);
     }
 
     /// Bytes the list holds (for tests and measurements).
@@ -168,10 +206,20 @@ impl Lists {
         self.compiling.as_ref().map(|c| c.mode)
     }
 
-    #[inline]
+    #[inline(always)]
     pub fn record(&mut self, cmd: Command) {
         if let Some(c) = &mut self.compiling {
             c.list.push(cmd);
+        }
+    }
+
+    /// Records `cmd` when it has a compact form (true); false leaves it
+    /// to [`Lists::record`]. See `List::push_compact`.
+    #[inline(always)]
+    pub fn record_compact(&mut self, cmd: &Command) -> bool {
+        match &mut self.compiling {
+            Some(c) => c.list.push_compact(cmd),
+            None => false,
         }
     }
 
@@ -285,6 +333,7 @@ impl Context {
     pub fn end_list(&mut self) {
         match self.lists.compiling.take() {
             Some(Compiling { name, mut list, .. }) => {
+                self.compile_fast = false;
                 list.words.shrink_to_fit();
                 list.cmds.shrink_to_fit();
                 self.lists.store.define(name, list);
