@@ -95,7 +95,8 @@ pub mod lanes {
     /// GL_EXP2 take [`exp_avx2`] with libm for its doubtful lanes;
     /// otherwise libm's `expf` lane by lane.
     ///
-    /// Safety: SSE2 (x86_64's baseline); with `AVX`, AVX2.
+    /// # Safety
+    /// SSE2 (x86_64's baseline); with `AVX`, AVX2.
     #[inline(always)]
     pub unsafe fn factors<const AVX: bool>(fog: &Fog, v: __m128, bits: i32) -> __m128 {
         if !fog.per_fragment {
@@ -171,6 +172,9 @@ pub mod lanes {
     /// Lanes near a midpoint (about 1 in 32), or with x outside
     /// [-87, 88] (results near f32's subnormals or overflow) or NaN, are
     /// flagged. `exp_matches_libm` checks every f32 in [-88, 89].
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
     #[inline]
     #[target_feature(enable = "avx2")]
     pub unsafe fn exp_avx2(x: __m128) -> (__m128, i32) {
@@ -211,6 +215,9 @@ pub mod lanes {
     /// [`Fog::apply`]'s blend of colour lanes `c` towards fog colour lanes
     /// `fc` by factor lanes `f`: `c * f + fc * (1 - f)`, separate f32
     /// products and sum as glam's Vec3 does them (no FMA).
+    ///
+    /// # Safety
+    /// SSE2 only (x86_64's baseline): always sound to call there.
     #[inline(always)]
     pub unsafe fn mix(c: __m128, f: __m128, fc: __m128) -> __m128 {
         _mm_add_ps(_mm_mul_ps(c, f), _mm_mul_ps(fc, _mm_sub_ps(_mm_set1_ps(1.0), f)))

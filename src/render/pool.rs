@@ -202,8 +202,9 @@ pub struct Posted {
 /// one thread, or while another job is posted, nothing runs until
 /// [`finish`], which then does all the work on its thread.
 ///
-/// Safety: `job` must stay alive, unmoved, until `finish(posted, job)`
-/// has returned, and `finish` must be called (not the Posted dropped).
+/// # Safety
+/// `job` must stay alive, unmoved, until `finish(posted, job)` has
+/// returned, and `finish` must be called (not the Posted dropped).
 pub unsafe fn start(threads: usize, job: &(dyn Work + '_)) -> Posted {
     if threads <= 1 {
         return Posted { pool: None };
