@@ -43,8 +43,12 @@ _MILLION = ("vertex-bound: on the calling thread about 950 instructions a 1-pixe
             "store-forwarding stalls from the vertex path and the array loop and steps window positions "
             "four at a time under AVX2: arrays_1m -3.6 %, immediate_1m -2.6 % instructions), against about "
             "900 of set-up and shading in the bands; with 2 threads that serial front end bounds the frame")
+_HOST = ("; and on this host two memory-heavy threads slow each other: two independent 1-thread spheres_l "
+         "processes pinned to the two cores took 50 ms a frame each in one of three tries (31 alone; an "
+         "ALU-bound pair does not slow, 2026-11-29), so 2-thread times move between runs (spheres_l's "
+         "2-thread median 22.5 to 59 ms within an hour, its 1-thread median 31.4 to 32.2)")
 _SCALE_VERTEX = ("the calling thread bins every triangle (spheres_l: about 770 M of 2,060 M instructions over 3 "
-                 "frames); the clock's 2-thread speed-up is below the instruction model's 1.7x")
+                 "frames); the clock's 2-thread speed-up is below the instruction model's 1.7x" + _HOST)
 _ROUNDING = ("1/255 rounding of halves: both compute c x 255 in single precision, softgl rounds a half up "
              "and Mesa (llvmpipe and softpipe alike) to even; for a colour of 0.3 (as a float 0.30000001) the "
              "product is 76.5 in single precision, but 76.500003 exactly, so softgl's 77 is the nearest value "
@@ -78,9 +82,11 @@ LIMITS = {
                      "each lane the reference path's IEEE operations; a fifth of its time texel cache misses, 18 % "
                      "of its samples on stack spills; prefetching measured slower; round 17 skips channels "
                      "constant over a level or unread by the environment, -4.4 % instructions; round 18 loads both "
-                     "levels' texels before converting either, -1.7 %, clock inside the host's noise); level with "
+                     "levels' texels before converting either, -1.7 %, clock inside the host's noise; round 19 computes "
+                     "a group's level of detail after the previous group's texels, -6 to -9 % CPU time); level with "
                      "llvmpipe with 1 thread in the runs after round 17 (0.99x at 05:45 and 1.01x at 05:49 on "
-                     "2026-11-28), behind before (1.16x to 1.34x)"),
+                     "2026-11-28; on the next host 0.89x at 01:34 and 1.01x at 02:13 on 2026-11-29), behind "
+                     "before (1.16x to 1.34x)"),
         "overdraw": ("a near tie on one thread: 16 window-sized opaque layers, each a colour and depth write "
                      "per pixel (memory traffic of 16 MB a layer); the rerun after the 18:52 run gave 60.5 "
                      "against llvmpipe's 61.7 ms"),
@@ -92,9 +98,13 @@ LIMITS = {
         "fog_spheres": "spheres_m's binning on the calling thread beside the fog kernel's band work",
         "fog_spheres_fast": "spheres_m's binning on the calling thread beside the fog kernel's band work",
         "*": ("frames of a few milliseconds: the hand-off to the worker and the frame's serial parts "
-              "(glClear's first touch, glFinish's wait for the last band) are a large share"),
+              "(glClear's first touch, glFinish's wait for the last band) are a large share" + _HOST),
     },
     "first frame 5x": {
+        "display_list_1m": ("the first frame compiles the list (1,333,336 calls) and then calls it: round 20 "
+                            "records each command from its entry point, compile 36 -> 15 ms, first frame "
+                            "68.5 -> 46.9 ms (medians of 9 alternating starts); what is left is the call "
+                            "itself (the steady frame) and the fresh pages of the list and the buffers"),
         "*": ("the first frame is at least the scene's own drawing (the steady frame time) plus the first "
               "touch of the buffers' pages. In brackets: llvmpipe's first frame over softgl's steady frame, the "
               "most any start-up work could reach; below 5x the target cannot be met by start-up alone"),
