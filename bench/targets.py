@@ -97,6 +97,9 @@ LIMITS = {
         "immediate_1m": _MILLION, "display_list_1m": _MILLION, "arrays_1m": _MILLION,
         "fog_spheres": "spheres_m's binning on the calling thread beside the fog kernel's band work",
         "fog_spheres_fast": "spheres_m's binning on the calling thread beside the fog kernel's band work",
+        "accum_blur": ("its five glAccum passes a frame are memory-bound (each reads and writes the 8-byte "
+                       "accumulation pixel and reads the colour buffer), and two threads share the memory side"
+                       + _HOST + "; 1.69x at 02:13 on 2026-11-29, 1.90x at 01:34"),
         "*": ("frames of a few milliseconds: the hand-off to the worker and the frame's serial parts "
               "(glClear's first touch, glFinish's wait for the last band) are a large share" + _HOST),
     },
