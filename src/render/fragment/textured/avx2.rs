@@ -106,9 +106,11 @@ fn plan(smp: &Sampler) -> Option<(Lod, bool)> {
 }
 
 /// Whether this kernel takes a sampler (`super::select` has checked the
-/// rest of the state).
+/// rest of the state). POPCNT (on every CPU with AVX2 and FMA, checked all
+/// the same) counts a group's passed lanes in one instruction, not the
+/// fifteen of the portable bit count.
 pub(super) fn takes(s: &UnitSampler) -> bool {
-    std::arch::is_x86_feature_detected!("fma") && plan(&Sampler::new(s)).is_some()
+    std::arch::is_x86_feature_detected!("fma") && std::arch::is_x86_feature_detected!("popcnt") && plan(&Sampler::new(s)).is_some()
 }
 
 /// The kernel for a depth key, whether colours are stored as they are,
@@ -169,7 +171,7 @@ pub(super) fn force_avx2_on_this_thread(on: bool) {
 fn kernel<const D: u8, const STORE: bool, const FX: bool, const W: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     // SAFETY: `super::select` hands this out only at simd::Level::Avx2,
     // which is only reported when the CPU has AVX2, and when `takes`
-    // found FMA; W only when `wide` found AVX-512 F, VL, BW and DQ.
+    // found FMA and POPCNT; W only when `wide` found AVX-512 F, VL, BW and DQ.
     unsafe {
         if W {
             span_wide::<D, STORE, FX>(fs, t, px, y, x0, x1)
@@ -1646,14 +1648,14 @@ unsafe fn back<const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, g: &Front) {
 }
 
 #[inline]
-#[target_feature(enable = "avx2,fma")]
+#[target_feature(enable = "avx2,fma,popcnt")]
 unsafe fn span<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     span_body::<D, STORE, FX, D8>(fs, t, px, y, x0, x1)
 }
 
 /// `span` with AVX-512 (see `wide`).
 #[inline]
-#[target_feature(enable = "avx2,fma,avx512f,avx512vl,avx512bw,avx512dq")]
+#[target_feature(enable = "avx2,fma,popcnt,avx512f,avx512vl,avx512bw,avx512dq")]
 unsafe fn span_wide<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     span_body::<D, STORE, FX, __m512d>(fs, t, px, y, x0, x1)
 }
