@@ -106,9 +106,11 @@ fn plan(smp: &Sampler) -> Option<(Lod, bool)> {
 }
 
 /// Whether this kernel takes a sampler (`super::select` has checked the
-/// rest of the state).
+/// rest of the state). POPCNT (on every CPU with AVX2 and FMA, checked all
+/// the same) counts a group's passed lanes in one instruction, not the
+/// fifteen of the portable bit count.
 pub(super) fn takes(s: &UnitSampler) -> bool {
-    std::arch::is_x86_feature_detected!("fma") && plan(&Sampler::new(s)).is_some()
+    std::arch::is_x86_feature_detected!("fma") && std::arch::is_x86_feature_detected!("popcnt") && plan(&Sampler::new(s)).is_some()
 }
 
 /// The kernel for a depth key, whether colours are stored as they are,
@@ -169,7 +171,7 @@ pub(super) fn force_avx2_on_this_thread(on: bool) {
 fn kernel<const D: u8, const STORE: bool, const FX: bool, const W: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     // SAFETY: `super::select` hands this out only at simd::Level::Avx2,
     // which is only reported when the CPU has AVX2, and when `takes`
-    // found FMA; W only when `wide` found AVX-512 F, VL, BW and DQ.
+    // found FMA and POPCNT; W only when `wide` found AVX-512 F, VL, BW and DQ.
     unsafe {
         if W {
             span_wide::<D, STORE, FX>(fs, t, px, y, x0, x1)
@@ -929,10 +931,13 @@ unsafe fn env_apply(env: EnvFn, p: &Rgba, c: &Rgba) -> Rgba {
     out
 }
 
-/// `color_to_u8` of a channel, as i32 lanes.
+/// `color_to_u8` of a channel, as i32 lanes; with `CLAMP` false, of a
+/// channel already through `clamp01` (which gives its own bits again:
+/// never NaN, never -0, within [0, 1]), so the clamp is left out.
 #[inline(always)]
-unsafe fn to_byte(v: __m256) -> __m256i {
-    _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(clamp01(v), _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5)))
+unsafe fn to_byte<const CLAMP: bool>(v: __m256) -> __m256i {
+    let v = if CLAMP { clamp01(v) } else { v };
+    _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(v, _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5)))
 }
 
 /// Level `l` filtered at (s, t) (`filter`), through the padded copy when
@@ -962,12 +967,13 @@ unsafe fn level_filter2<L: Isa>(k: &Ctx, l: usize, s: __m256, t: __m256) -> (Rgb
     }
 }
 
-/// Four channels to packed RGBA8 lanes (`color_to_u8` of each).
+/// Four channels to packed RGBA8 lanes (`color_to_u8` of each; `CLAMP`
+/// as `to_byte`).
 #[inline(always)]
-unsafe fn pack_bytes(col: &Rgba) -> __m256i {
+unsafe fn pack_bytes<const CLAMP: bool>(col: &Rgba) -> __m256i {
     _mm256_or_si256(
-        _mm256_or_si256(to_byte(col[0]), _mm256_slli_epi32::<8>(to_byte(col[1]))),
-        _mm256_or_si256(_mm256_slli_epi32::<16>(to_byte(col[2])), _mm256_slli_epi32::<24>(to_byte(col[3]))),
+        _mm256_or_si256(to_byte::<CLAMP>(col[0]), _mm256_slli_epi32::<8>(to_byte::<CLAMP>(col[1]))),
+        _mm256_or_si256(_mm256_slli_epi32::<16>(to_byte::<CLAMP>(col[2])), _mm256_slli_epi32::<24>(to_byte::<CLAMP>(col[3]))),
     )
 }
 
@@ -1086,7 +1092,7 @@ unsafe fn fastest_back<const STORE: bool, L: Isa>(k: &Ctx, g: &Front) {
     }
     let rgba = match k.env {
         EnvFn::Replace { .. } => texel,
-        _ => L::modulate(texel, pack_bytes(&primary)),
+        _ => L::modulate(texel, pack_bytes::<true>(&primary)),
     };
     write::<STORE>(k, cp, rgba, m, bits);
 }
@@ -1630,21 +1636,26 @@ unsafe fn back<const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, g: &Front) {
                 col[ch] = _mm256_add_ps(_mm256_mul_ps(col[ch], fv), _mm256_mul_ps(_mm256_set1_ps(fc[ch]), inv));
             }
         }
-        // To bytes (`color_to_u8`), packed RGBA.
-        pack_bytes(&col)
+        // To bytes (`color_to_u8`), packed RGBA; without fog every channel
+        // is as `env_apply` clamped it, and a second clamp changes no bit.
+        if k.fog.is_some() {
+            pack_bytes::<true>(&col)
+        } else {
+            pack_bytes::<false>(&col)
+        }
     };
     write::<STORE>(k, cp, rgba, m, bits);
 }
 
 #[inline]
-#[target_feature(enable = "avx2,fma")]
+#[target_feature(enable = "avx2,fma,popcnt")]
 unsafe fn span<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     span_body::<D, STORE, FX, D8>(fs, t, px, y, x0, x1)
 }
 
 /// `span` with AVX-512 (see `wide`).
 #[inline]
-#[target_feature(enable = "avx2,fma,avx512f,avx512vl,avx512bw,avx512dq")]
+#[target_feature(enable = "avx2,fma,popcnt,avx512f,avx512vl,avx512bw,avx512dq")]
 unsafe fn span_wide<const D: u8, const STORE: bool, const FX: bool>(fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     span_body::<D, STORE, FX, __m512d>(fs, t, px, y, x0, x1)
 }
