@@ -478,6 +478,24 @@ fn set_mxcsr(v: u32) {
     unsafe { std::arch::asm!("ldmxcsr [{}]", in(reg) &v as *const u32, options(nostack, preserves_flags)) };
 }
 
+/// Two OSMesa contexts (RGBA, depth 24, stencil 8) with a `w` x `h`
+/// buffer each, for the entry-point tests: `f` gets them, `current(k)`
+/// makes context k current on its buffer; they are released afterwards.
+#[cfg(target_arch = "x86_64")]
+unsafe fn with_two_contexts(w: usize, h: usize, f: impl FnOnce(&[*mut softgl::winsys::osmesa::OsContext; 2], &mut dyn FnMut(usize), &[Vec<u8>; 2])) {
+    use softgl::api::table::*;
+    let mut bufs = [vec![0u8; w * h * 4], vec![0u8; w * h * 4]];
+    let ctxs = [0, 1].map(|_| OSMesaCreateContextExt(GL_RGBA, 24, 8, 0, std::ptr::null_mut()));
+    let ptrs = [bufs[0].as_mut_ptr(), bufs[1].as_mut_ptr()];
+    let mut current = |k: usize| assert_eq!(OSMesaMakeCurrent(ctxs[k], ptrs[k] as *mut std::ffi::c_void, GL_UNSIGNED_BYTE, w as i32, h as i32), 1);
+    // `f` reads the buffers between draws only (after glFinish).
+    f(&ctxs, &mut current, &bufs);
+    OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0);
+    for c in ctxs {
+        OSMesaDestroyContext(c);
+    }
+}
+
 /// One case through the C entry points: random state, then primitives of
 /// every kind by glColor and the float glVertex forms, sometimes compiled
 /// (GL_COMPILE then glCallList, or GL_COMPILE_AND_EXECUTE) or begun by a
@@ -577,34 +595,30 @@ fn plain_vertex_entries_match_the_general_path() {
     use softgl::api::table::*;
     let (w, h) = (45, 37);
     unsafe {
-        let mut bufs = [vec![0u8; w * h * 4], vec![0u8; w * h * 4]];
-        let ctxs = [0, 1].map(|_| OSMesaCreateContextExt(GL_RGBA, 24, 8, 0, std::ptr::null_mut()));
-        let mut r = Rng(0x5eed_0016);
-        let (mut on, mut off) = (0, 0);
-        for case in 0..800 {
-            let seed = r.next();
-            let mut seen = [Vec::new(), Vec::new()];
-            for k in 0..2 {
-                assert_eq!(OSMesaMakeCurrent(ctxs[k], bufs[k].as_mut_ptr() as *mut std::ffi::c_void, GL_UNSIGNED_BYTE, w as i32, h as i32), 1);
-                (*ctxs[k]).gl.vertex_batching = k == 0;
-                entry_case(&mut Rng(seed), &(*ctxs[k]).gl, &mut seen[k]);
-                glFinish();
+        with_two_contexts(w, h, |ctxs, current, bufs| {
+            let mut r = Rng(0x5eed_0016);
+            let (mut on, mut off) = (0, 0);
+            for case in 0..800 {
+                let seed = r.next();
+                let mut seen = [Vec::new(), Vec::new()];
+                for k in 0..2 {
+                    current(k);
+                    (*ctxs[k]).gl.vertex_batching = k == 0;
+                    entry_case(&mut Rng(seed), &(*ctxs[k]).gl, &mut seen[k]);
+                    glFinish();
+                }
+                for (i, &(got, expect)) in seen[0].iter().enumerate() {
+                    assert_eq!(got, expect, "case {case} primitive {i}: plain_vertex");
+                    on += got as u32;
+                    off += (!got) as u32;
+                }
+                assert!(seen[1].iter().all(|&(got, _)| !got), "case {case}: never set without batching");
+                if let Some(i) = (0..w * h * 4).find(|&i| bufs[0][i] != bufs[1][i]) {
+                    panic!("case {case}: byte {i} (pixel ({}, {})) differs: entry fast path {} / general {}", i / 4 % w, i / 4 / w, bufs[0][i], bufs[1][i]);
+                }
             }
-            for (i, &(got, expect)) in seen[0].iter().enumerate() {
-                assert_eq!(got, expect, "case {case} primitive {i}: plain_vertex");
-                on += got as u32;
-                off += (!got) as u32;
-            }
-            assert!(seen[1].iter().all(|&(got, _)| !got), "case {case}: never set without batching");
-            if let Some(i) = (0..w * h * 4).find(|&i| bufs[0][i] != bufs[1][i]) {
-                panic!("case {case}: byte {i} (pixel ({}, {})) differs: entry fast path {} / general {}", i / 4 % w, i / 4 / w, bufs[0][i], bufs[1][i]);
-            }
-        }
-        assert!(on > 400 && off > 400, "primitives on the plain entry path {on}, off it {off}");
-        OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0);
-        for c in ctxs {
-            OSMesaDestroyContext(c);
-        }
+            assert!(on > 400 && off > 400, "primitives on the plain entry path {on}, off it {off}");
+        });
     }
 }
 
@@ -681,45 +695,41 @@ fn compiled_list_entries_match_the_general_path() {
     use softgl::api::table::*;
     let (w, h) = (41, 33);
     unsafe {
-        let mut bufs = [vec![0u8; w * h * 4], vec![0u8; w * h * 4]];
-        let ctxs = [0, 1].map(|_| OSMesaCreateContextExt(GL_RGBA, 24, 8, 0, std::ptr::null_mut()));
-        let masked = mxcsr();
-        let mut r = Rng(0x5eed_0020);
-        let (mut fast, mut words) = (0, 0);
-        for case in 0..400 {
-            let seed = r.next();
-            let mut seen = [Vec::new(), Vec::new()];
-            for k in 0..2 {
-                assert_eq!(OSMesaMakeCurrent(ctxs[k], bufs[k].as_mut_ptr() as *mut std::ffi::c_void, GL_UNSIGNED_BYTE, w as i32, h as i32), 1);
-                glNewList(2, GL_COMPILE);
-                glColor3f(0.2, 0.9, 0.4);
-                glEndList();
-                if k == 1 {
-                    // Invalid, divide-by-zero and overflow unmasked.
-                    set_mxcsr(0x1900);
+        with_two_contexts(w, h, |ctxs, current, bufs| {
+            let masked = mxcsr();
+            let mut r = Rng(0x5eed_0020);
+            let (mut fast, mut words) = (0, 0);
+            for case in 0..400 {
+                let seed = r.next();
+                let mut seen = [Vec::new(), Vec::new()];
+                for k in 0..2 {
+                    current(k);
+                    glNewList(2, GL_COMPILE);
+                    glColor3f(0.2, 0.9, 0.4);
+                    glEndList();
+                    if k == 1 {
+                        // Invalid, divide-by-zero and overflow unmasked.
+                        set_mxcsr(0x1900);
+                    }
+                    compile_case(&mut Rng(seed), &(*ctxs[k]).gl, &mut seen[k]);
+                    set_mxcsr(masked);
+                    glClearColor(0.0, 0.0, 0.0, 1.0);
+                    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                    glCallList(1);
+                    // A list that ends inside its primitive leaves it open.
+                    glEnd();
+                    glGetError();
+                    glFinish();
                 }
-                compile_case(&mut Rng(seed), &(*ctxs[k]).gl, &mut seen[k]);
-                set_mxcsr(masked);
-                glClearColor(0.0, 0.0, 0.0, 1.0);
-                glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                glCallList(1);
-                // A list that ends inside its primitive leaves it open.
-                glEnd();
-                glGetError();
-                glFinish();
+                let lists = ctxs.map(|c| (*c).gl.lists.store.get(1).expect("list 1 defined"));
+                assert!(*lists[0] == *lists[1], "case {case}: the lists differ\nfast: {:?}\ngeneral: {:?}", lists[0], lists[1]);
+                words += lists[0].bytes();
+                assert!(seen[0].iter().all(|&on| on), "case {case}: compile_fast set in every primitive of a masked caller: {:?}", seen[0]);
+                assert!(seen[1].iter().all(|&on| !on), "case {case}: never set for a caller that unmasks");
+                fast += seen[0].len();
+                assert!(bufs[0] == bufs[1], "case {case}: the lists draw differently");
             }
-            let lists = ctxs.map(|c| (*c).gl.lists.store.get(1).expect("list 1 defined"));
-            assert!(*lists[0] == *lists[1], "case {case}: the lists differ\nfast: {:?}\ngeneral: {:?}", lists[0], lists[1]);
-            words += lists[0].bytes();
-            assert!(seen[0].iter().all(|&on| on), "case {case}: compile_fast set in every primitive of a masked caller: {:?}", seen[0]);
-            assert!(seen[1].iter().all(|&on| !on), "case {case}: never set for a caller that unmasks");
-            fast += seen[0].len();
-            assert!(bufs[0] == bufs[1], "case {case}: the lists draw differently");
-        }
-        assert!(fast > 800 && words > 100_000, "primitives compiled on the fast path {fast}, list bytes {words}");
-        OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0);
-        for c in ctxs {
-            OSMesaDestroyContext(c);
-        }
+            assert!(fast > 800 && words > 100_000, "primitives compiled on the fast path {fast}, list bytes {words}");
+        });
     }
 }
