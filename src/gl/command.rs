@@ -258,9 +258,11 @@ impl Context {
     #[inline(always)]
     pub(crate) fn record_compiled(&mut self, cmd: Command) {
         debug_assert!(self.compile_fast && self.lists.compile_mode() == Some(GL_COMPILE));
-        // Matched where it was built (see `List::push_compact`); the
-        // compact variants own nothing, so ManuallyDrop skips a generic
-        // drop.
+        // Matched here, where it was built (see `List::push_compact`),
+        // not behind `Lists::record`'s `Option` check: through `record`
+        // the same compile took 18 ms instead of 14 (the match stayed a
+        // jump table). The compact variants own nothing, so ManuallyDrop
+        // skips a generic drop.
         let cmd = std::mem::ManuallyDrop::new(cmd);
         if matches!(*cmd, Command::End) {
             self.compile_fast = false;
