@@ -361,41 +361,30 @@ impl Context {
         let fog = if PLAIN { 0.0 } else { self.vertex_fog(obj) };
         let edge = self.current.edge_flag;
         let normal = self.current.normal;
+        if PLAIN {
+            let Context { prim, derived, fb, .. } = self;
+            let Some(a) = prim.as_mut() else { return };
+            return plain_vertex(a, &derived.mvp, &derived.render, fb, obj, color, edge);
+        }
         let Some(a) = self.prim.as_mut() else { return };
-        let s = a.slot;
-        debug_assert_eq!(s, ring_slot(a.mode, a.count));
-        a.count += 1;
-        // After a fan's centre (slot RING) comes slot 0, as after RING - 1.
-        a.slot = if s + 1 >= RING { 0 } else { s + 1 };
+        let (s, lane) = a.queue_vertex(obj);
         let v = &mut a.verts[s];
         v.color = color;
         v.back_color = back_color;
         v.edge = edge;
         // Fields this state leaves zero stay as `begin` zeroed them.
-        if !PLAIN {
-            v.secondary = secondary;
-            v.back_secondary = back_secondary;
-            if textured {
-                v.tex = tex;
-            }
-            v.fog = fog;
+        v.secondary = secondary;
+        v.back_secondary = back_secondary;
+        if textured {
+            v.tex = tex;
         }
-        // The position waits for three more (`flush_vertices`); nothing
-        // a vertex's position feeds (assembly, setup) can be observed
-        // before glEnd except through it.
-        // `pending` is below LANES here (the queue is flushed when full):
-        // the mask only lets the lane indices go unchecked.
-        debug_assert!(a.pending < LANES);
-        let lane = a.pending & (LANES - 1);
-        a.queue.set(lane, obj);
-        a.slots[lane] = s;
+        v.fog = fog;
         if lit {
             a.normals.set(lane, normal);
             if let Some(t) = &mut a.tracked {
                 t.set(lane, current.to_array());
             }
         }
-        a.pending = lane + 1;
         if lane + 1 == LANES {
             self.flush_vertices();
         }
@@ -433,19 +422,7 @@ impl Context {
                 }
             }
         }
-        vertex4::transform_place(&self.derived.mvp, rs, &a.queue, k, &mut a.verts, slots);
-        // One loop per mode: the assembly's choices fold away. Whether
-        // setup bins is the same for every triangle of the flush (binning
-        // changes neither the state nor the framebuffer's draw buffers).
-        let fb = &mut self.fb;
-        let to = Direct { on: a.direct, bin: render::setup::binned_here(rs, fb) };
-        match a.mode {
-            GL_TRIANGLES => assemble_batch::<GL_TRIANGLES>(rs, fb, a, to, n0, k, slots),
-            GL_TRIANGLE_STRIP => assemble_batch::<GL_TRIANGLE_STRIP>(rs, fb, a, to, n0, k, slots),
-            GL_TRIANGLE_FAN => assemble_batch::<GL_TRIANGLE_FAN>(rs, fb, a, to, n0, k, slots),
-            GL_QUADS => assemble_batch::<GL_QUADS>(rs, fb, a, to, n0, k, slots),
-            _ => assemble_batch::<GL_QUAD_STRIP>(rs, fb, a, to, n0, k, slots),
-        }
+        place_and_assemble(a, &self.derived.mvp, rs, &mut self.fb, n0, k, slots);
     }
 
     /// Lights and places the vertices queued on a lit batched primitive
@@ -645,6 +622,79 @@ impl Context {
             Some(w) => render::draw_triangle(&self.derived.render, &mut self.fb, [&w[0], &w[1], &w[2]], flat, edges),
             None => render::draw_triangle(&self.derived.render, &mut self.fb, v, flat, edges),
         }
+    }
+}
+
+impl Assembly {
+    /// Gives a batched primitive's next vertex its ring slot and queues
+    /// its object position; returns the slot (for its attributes) and its
+    /// lane in the queue. The caller flushes the queue when the lane is
+    /// the last (`LANES - 1`).
+    #[inline(always)]
+    fn queue_vertex(&mut self, obj: Vec4) -> (usize, usize) {
+        let s = self.slot;
+        debug_assert_eq!(s, ring_slot(self.mode, self.count));
+        self.count += 1;
+        // After a fan's centre (slot RING) comes slot 0, as after RING - 1.
+        self.slot = if s + 1 >= RING { 0 } else { s + 1 };
+        // The position waits for three more (`flush_vertices`); nothing
+        // a vertex's position feeds (assembly, setup) can be observed
+        // before glEnd except through it.
+        // `pending` is below LANES here (the queue is flushed when full):
+        // the mask only lets the lane indices go unchecked.
+        debug_assert!(self.pending < LANES);
+        let lane = self.pending & (LANES - 1);
+        self.queue.set(lane, obj);
+        self.slots[lane] = s;
+        self.pending = lane + 1;
+        (s, lane)
+    }
+}
+
+/// One vertex of a batched plain primitive (`Context::vertex_fast::<true>`):
+/// `color` is its primary colour with the colour sum added, front and
+/// back alike.
+#[inline(always)]
+fn plain_vertex(a: &mut Assembly, mvp: &glam::Mat4, rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, obj: Vec4, color: Vec4, edge: bool) {
+    let (s, lane) = a.queue_vertex(obj);
+    let v = &mut a.verts[s];
+    v.color = color;
+    v.back_color = color;
+    v.edge = edge;
+    if lane + 1 == LANES {
+        plain_flush(a, mvp, rs, fb);
+    }
+}
+
+/// `Context::flush_vertices` for an unlit batched primitive.
+#[inline(never)]
+fn plain_flush(a: &mut Assembly, mvp: &glam::Mat4, rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer) {
+    debug_assert!(!a.lit);
+    let k = a.pending;
+    if k == 0 {
+        return;
+    }
+    a.pending = 0;
+    let n0 = a.count - k;
+    place_and_assemble(a, mvp, rs, fb, n0, k, a.slots);
+}
+
+/// Transforms and places the `k` queued positions of `a` (vertices
+/// `n0..n0 + k`, lane i in `slots[i]`; lit already if lit), then
+/// assembles and draws, in order, the triangles they complete.
+#[inline(always)]
+fn place_and_assemble(a: &mut Assembly, mvp: &glam::Mat4, rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, n0: usize, k: usize, slots: [usize; LANES]) {
+    vertex4::transform_place(mvp, rs, &a.queue, k, &mut a.verts, slots);
+    // One loop per mode: the assembly's choices fold away. Whether
+    // setup bins is the same for every triangle of the flush (binning
+    // changes neither the state nor the framebuffer's draw buffers).
+    let to = Direct { on: a.direct, bin: render::setup::binned_here(rs, fb) };
+    match a.mode {
+        GL_TRIANGLES => assemble_batch::<GL_TRIANGLES>(rs, fb, a, to, n0, k, slots),
+        GL_TRIANGLE_STRIP => assemble_batch::<GL_TRIANGLE_STRIP>(rs, fb, a, to, n0, k, slots),
+        GL_TRIANGLE_FAN => assemble_batch::<GL_TRIANGLE_FAN>(rs, fb, a, to, n0, k, slots),
+        GL_QUADS => assemble_batch::<GL_QUADS>(rs, fb, a, to, n0, k, slots),
+        _ => assemble_batch::<GL_QUAD_STRIP>(rs, fb, a, to, n0, k, slots),
     }
 }
 
