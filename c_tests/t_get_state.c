@@ -189,6 +189,7 @@ static const struct row rows[] = {
     R(GL_STENCIL_TEST, 1, EXACT, 0),
     R(GL_STENCIL_FUNC, 1, EXACT, GL_ALWAYS),
     R(GL_STENCIL_REF, 1, EXACT, 0),
+    R(GL_STENCIL_VALUE_MASK, 1, EXACT, 255),
     R(GL_STENCIL_FAIL, 1, EXACT, GL_KEEP),
     R(GL_STENCIL_PASS_DEPTH_FAIL, 1, EXACT, GL_KEEP),
     R(GL_STENCIL_PASS_DEPTH_PASS, 1, EXACT, GL_KEEP),
@@ -212,7 +213,8 @@ static const struct row rows[] = {
     R(GL_INDEX_WRITEMASK, 1, ANY, 0),
     R(GL_COLOR_WRITEMASK, 4, EXACT, 1, 1, 1, 1),
     R(GL_DEPTH_WRITEMASK, 1, EXACT, 1),
-    R(GL_STENCIL_WRITEMASK, 1, ANY, 0),
+    /* 1's, within the 8 stencil bits (as Mesa reads them back) */
+    R(GL_STENCIL_WRITEMASK, 1, EXACT, 255),
     R(GL_COLOR_CLEAR_VALUE, 4, EXACT, 0, 0, 0, 0),
     R(GL_INDEX_CLEAR_VALUE, 1, EXACT, 0),
     R(GL_DEPTH_CLEAR_VALUE, 1, EXACT, 1),

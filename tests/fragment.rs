@@ -541,6 +541,19 @@ fn clear_honours_masks_and_ignores_fragment_ops() {
     assert_eq!(get_i(&mut c, GL_STENCIL_WRITEMASK), vec![0x0F]);
 }
 
+/// The stencil masks start as all 1's and read back within the stencil
+/// buffer's 8 bits (as Mesa reads them), whatever bits above were given.
+#[test]
+fn stencil_masks_read_back_within_the_stencil_bits() {
+    let mut c = context();
+    assert_eq!(get_i(&mut c, GL_STENCIL_WRITEMASK), vec![0xFF]);
+    assert_eq!(get_i(&mut c, GL_STENCIL_VALUE_MASK), vec![0xFF]);
+    assert_eq!(get_f(&mut c, GL_STENCIL_WRITEMASK), vec![255.0]);
+    run(&mut c, &[Command::StencilMask(0xFFFF_FF3C), Command::StencilFunc(GL_EQUAL, 1, 0x8000_0081)]);
+    assert_eq!(get_i(&mut c, GL_STENCIL_WRITEMASK), vec![0x3C]);
+    assert_eq!(get_i(&mut c, GL_STENCIL_VALUE_MASK), vec![0x81]);
+}
+
 #[test]
 fn fragment_state_in_display_lists() {
     let mut c = context();

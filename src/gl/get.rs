@@ -53,6 +53,9 @@ impl Value {
     }
 }
 
+/// The stencil buffer's bits (8): what the stencil masks read back.
+const STENCIL_MASK: u32 = 0xFF;
+
 // Point and line queries (table 6.11, 6.12, 6.32).
 const GL_POINT_SIZE: u32 = 0x0B11;
 const GL_POINT_SIZE_RANGE: u32 = 0x0B12;
@@ -146,9 +149,13 @@ impl Context {
             GL_DEPTH_WRITEMASK => Some(Value::Bools(vec![self.depth.write_mask])),
             GL_DEPTH_RANGE => Some(Value::Normalized(vec![self.viewport.near, self.viewport.far])),
             GL_STENCIL_CLEAR_VALUE => ints([self.stencil.clear as i64]),
-            GL_STENCIL_WRITEMASK => ints([self.stencil.write_mask as i64]),
+            // The masks are kept as given (all 1's initially, table 6.21)
+            // and read back within the stencil buffer's 8 bits, as Mesa
+            // reads them back: the 32-bit 1's clamped to a GLint gave
+            // 0x7fffffff, which is neither the mask nor its bits.
+            GL_STENCIL_WRITEMASK => ints([(self.stencil.write_mask & STENCIL_MASK) as i64]),
             GL_STENCIL_FUNC => ints([self.stencil.func.to_gl() as i64]),
-            GL_STENCIL_VALUE_MASK => ints([self.stencil.value_mask as i64]),
+            GL_STENCIL_VALUE_MASK => ints([(self.stencil.value_mask & STENCIL_MASK) as i64]),
             GL_STENCIL_REF => ints([self.stencil_reference() as i64]),
             GL_STENCIL_FAIL => ints([self.stencil.fail.to_gl() as i64]),
             GL_STENCIL_PASS_DEPTH_FAIL => ints([self.stencil.zfail.to_gl() as i64]),
