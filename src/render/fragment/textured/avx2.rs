@@ -1270,7 +1270,7 @@ unsafe fn write<const STORE: bool>(k: &Ctx, cp: *mut [u8; 4], rgba: __m256i, m: 
 /// of the second level from λ lanes (`Sampler::sample`'s choice).
 #[inline(always)]
 unsafe fn levels(k: &Ctx, lambda: __m256) -> (__m256i, __m256) {
-    let qf = _mm256_set1_ps(k.smp.q as f32);
+    let qf = k.splat.q;
     let (mut la, mut frac) = (_mm256_setzero_si256(), _mm256_setzero_ps());
     match k.lod_mode {
         Lod::Linear => {
@@ -1313,8 +1313,23 @@ unsafe fn all_pd(a: __m256d, b: __m256d) -> bool {
     _mm256_movemask_pd(a) & _mm256_movemask_pd(b) == 0xF
 }
 
+/// Sampler constants as vectors, made once per span: per group they
+/// were converted (q, a usize, to f32 in six instructions) or broadcast
+/// from the sampler again; from here they are memory operands.
+struct Splats {
+    /// The last level, as f32 (`levels`).
+    q: __m256,
+    bias: __m256,
+    min_lod: __m256,
+    max_lod: __m256,
+    /// Level 0's width and height (`front`).
+    n0: __m256,
+    n1: __m256,
+}
+
 /// A span's constants.
 struct Ctx<'a> {
+    splat: Splats,
     fs: &'a FragmentState,
     smp: &'a Sampler<'a>,
     /// The padded copy of the levels (`texture::pairs`); always there for
@@ -1387,7 +1402,7 @@ const W_OWN: u8 = 2;
 /// None (nothing written) when a lane needs the scalar kernel.
 #[inline(always)]
 unsafe fn group<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Option<u32> {
-    match front::<D, STORE, FX, L>(k, x, dp, cp, live) {
+    match front::<D, STORE, FX, L>(k, x, x as f64, dp, cp, live) {
         Step::Done(n) => Some(n),
         Step::Scalar => None,
         Step::Texture(mut f) => {
@@ -1436,8 +1451,10 @@ enum Step {
 /// work after it in program order instead of filling the reorder buffer
 /// behind it (docs/perf-notes.md, round 19).
 #[inline(always)]
-unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Step {
-    let c = L::centres(x as f64, k.x0);
+unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, x: usize, xf: f64, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Step {
+    // `xf` is x as f64 (exact), carried by the span loop: without
+    // AVX-512 a usize takes seven instructions to convert.
+    let c = L::centres(xf, k.x0);
     // Depth (section 4.1.6): depth_to_fixed lane by lane.
     let mut m = live;
     let (mut z, mut stored) = (_mm256_setzero_si256(), _mm256_setzero_si256());
@@ -1480,8 +1497,7 @@ unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
     let s = L::at(k.s.0, k.s.1, &c).mul(&iq);
     let tt = L::at(k.t.0, k.t.1, &c).mul(&iq);
     let (sf, tf) = (s.to_f32(), tt.to_f32());
-    let smp = k.smp;
-    let (n0, n1) = (_mm256_set1_ps(smp.levels[0].wf), _mm256_set1_ps(smp.levels[0].hf));
+    let (n0, n1) = (k.splat.n0, k.splat.n1);
     // Finite and within ±2^22 texels of level 0 (exact floors and
     // indices at every level).
     let (sign, limit) = (_mm256_set1_ps(-0.0), _mm256_set1_ps(4194304.0));
@@ -1569,8 +1585,8 @@ unsafe fn settle<const FX: bool, L: Isa>(k: &Ctx, g: &mut Front) {
     if FX || k.lod_mode == Lod::None {
         return;
     }
-    let smp = k.smp;
-    let lambda = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(L::log2(g.rho), _mm256_set1_ps(smp.bias)), _mm256_set1_ps(smp.min_lod)), _mm256_set1_ps(smp.max_lod));
+    let sp = &k.splat;
+    let lambda = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(L::log2(g.rho), sp.bias), sp.min_lod), sp.max_lod);
     (g.la, g.frac) = levels(k, lambda);
 }
 
@@ -1678,6 +1694,14 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
     let env = EnvFn::new(tp.stage.envs[u].mode, sampler.base);
     let colors = std::array::from_fn(|c| row(&t.color[c]));
     let k = Ctx {
+        splat: Splats {
+            q: _mm256_set1_ps(smp.q as f32),
+            bias: _mm256_set1_ps(smp.bias),
+            min_lod: _mm256_set1_ps(smp.min_lod),
+            max_lod: _mm256_set1_ps(smp.max_lod),
+            n0: _mm256_set1_ps(smp.levels[0].wf),
+            n1: _mm256_set1_ps(smp.levels[0].hf),
+        },
         fs,
         smp: &smp,
         pad,
@@ -1722,11 +1746,17 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
     // kernel, the last pixels), and the raw pointers are taken anew after.
     let mut waiting: Option<Front> = None;
     let (mut cbase, mut dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
+    // (x0 + i) as f64 in the groups of eight (`front`); exact, the sum of
+    // integers far below 2^53.
+    let mut xf = x0 as f64;
     while i < n {
         let len = (n - i).min(8);
         if len == 8 {
             let dp = if D != D_OFF { dbase.add(i) } else { std::ptr::null_mut() };
-            match front::<D, STORE, FX, L>(&k, x0 + i, dp, cbase.add(i), all) {
+            // GL_FASTEST converts x itself: the carried xf cost it more
+            // than it saved (measured).
+            let xg = if FX { (x0 + i) as f64 } else { xf };
+            match front::<D, STORE, FX, L>(&k, x0 + i, xg, dp, cbase.add(i), all) {
                 Step::Done(p) => passed += p as u64,
                 Step::Texture(mut f) => {
                     passed += f.bits.count_ones() as u64;
@@ -1748,6 +1778,7 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
                 }
             }
             i += len;
+            xf += 8.0;
             continue;
         }
         if let Some(w) = waiting.take() {
@@ -1779,6 +1810,7 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
         }
         (cbase, dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
         i += len;
+        xf += len as f64;
     }
     if let Some(w) = waiting.take() {
         back::<STORE, FX, L>(&k, &w);
