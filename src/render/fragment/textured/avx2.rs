@@ -638,12 +638,14 @@ unsafe fn rows<const SPLIT: bool>(p: &PaddedLevel, l: &Level, i0: __m256i, j0: _
         // gathers cost about one micro-op per element and more.
         let mut o = [0i32; 8];
         _mm256_storeu_si256(o.as_mut_ptr().cast(), off);
-        let s0 = p.stride as isize;
-        let ld = |k: usize, d: isize| (base.offset(o[k] as isize + d) as *const i64).read_unaligned();
+        // Row j0 + 1 from its own base pointer: each load is then base +
+        // 4 * offset, with no address add per lane for the second row.
+        let base1 = base.offset(p.stride as isize);
+        let ld = |b: *const u32, k: usize| (b.offset(o[k] as isize) as *const i64).read_unaligned();
         let [a, b, c, d, e, f, g, h] = if SPLIT { [0, 1, 4, 5, 2, 3, 6, 7] } else { [0, 1, 2, 3, 4, 5, 6, 7] };
         (
-            [_mm256_setr_epi64x(ld(a, 0), ld(b, 0), ld(c, 0), ld(d, 0)), _mm256_setr_epi64x(ld(e, 0), ld(f, 0), ld(g, 0), ld(h, 0))],
-            [_mm256_setr_epi64x(ld(a, s0), ld(b, s0), ld(c, s0), ld(d, s0)), _mm256_setr_epi64x(ld(e, s0), ld(f, s0), ld(g, s0), ld(h, s0))],
+            [_mm256_setr_epi64x(ld(base, a), ld(base, b), ld(base, c), ld(base, d)), _mm256_setr_epi64x(ld(base, e), ld(base, f), ld(base, g), ld(base, h))],
+            [_mm256_setr_epi64x(ld(base1, a), ld(base1, b), ld(base1, c), ld(base1, d)), _mm256_setr_epi64x(ld(base1, e), ld(base1, f), ld(base1, g), ld(base1, h))],
         )
     } else {
         let base = base as *const i64;
