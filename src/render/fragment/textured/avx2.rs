@@ -638,12 +638,22 @@ unsafe fn rows<const SPLIT: bool>(p: &PaddedLevel, l: &Level, i0: __m256i, j0: _
         // gathers cost about one micro-op per element and more.
         let mut o = [0i32; 8];
         _mm256_storeu_si256(o.as_mut_ptr().cast(), off);
-        let s0 = p.stride as isize;
-        let ld = |k: usize, d: isize| (base.offset(o[k] as isize + d) as *const i64).read_unaligned();
+        // Row j0 + 1 from its own base pointer: each load is then base +
+        // 4 * offset, with no address add per lane for the second row.
+        let base1 = base.offset(p.stride as isize);
+        // With `SPLIT` (`pairs`: the AVX2 filters and GL_FASTEST's) the
+        // offsets are read back from memory (volatile: otherwise each
+        // becomes an extract from the register and a sign extension, two
+        // instructions where one load with sign extension does). Not for
+        // `filter_pairs_wide`: its kernel ran about 3 % slower with them.
+        let ld = |b: *const u32, k: usize| {
+            let o = if SPLIT { std::ptr::read_volatile(&o[k]) } else { o[k] };
+            (b.offset(o as isize) as *const i64).read_unaligned()
+        };
         let [a, b, c, d, e, f, g, h] = if SPLIT { [0, 1, 4, 5, 2, 3, 6, 7] } else { [0, 1, 2, 3, 4, 5, 6, 7] };
         (
-            [_mm256_setr_epi64x(ld(a, 0), ld(b, 0), ld(c, 0), ld(d, 0)), _mm256_setr_epi64x(ld(e, 0), ld(f, 0), ld(g, 0), ld(h, 0))],
-            [_mm256_setr_epi64x(ld(a, s0), ld(b, s0), ld(c, s0), ld(d, s0)), _mm256_setr_epi64x(ld(e, s0), ld(f, s0), ld(g, s0), ld(h, s0))],
+            [_mm256_setr_epi64x(ld(base, a), ld(base, b), ld(base, c), ld(base, d)), _mm256_setr_epi64x(ld(base, e), ld(base, f), ld(base, g), ld(base, h))],
+            [_mm256_setr_epi64x(ld(base1, a), ld(base1, b), ld(base1, c), ld(base1, d)), _mm256_setr_epi64x(ld(base1, e), ld(base1, f), ld(base1, g), ld(base1, h))],
         )
     } else {
         let base = base as *const i64;
@@ -971,10 +981,14 @@ unsafe fn level_filter2<L: Isa>(k: &Ctx, l: usize, s: __m256, t: __m256) -> (Rgb
 /// as `to_byte`).
 #[inline(always)]
 unsafe fn pack_bytes<const CLAMP: bool>(col: &Rgba) -> __m256i {
-    _mm256_or_si256(
-        _mm256_or_si256(to_byte::<CLAMP>(col[0]), _mm256_slli_epi32::<8>(to_byte::<CLAMP>(col[1]))),
-        _mm256_or_si256(_mm256_slli_epi32::<16>(to_byte::<CLAMP>(col[2])), _mm256_slli_epi32::<24>(to_byte::<CLAMP>(col[3]))),
-    )
+    // Every lane of `to_byte` is within [0, 255], so the saturating packs
+    // only narrow: per 128-bit half, bytes r0-r3 g0-g3 b0-b3 a0-a3, which
+    // one in-lane shuffle turns into r0 g0 b0 a0 r1 ..; four instructions
+    // instead of three shifts and three ors.
+    let rg = _mm256_packus_epi32(to_byte::<CLAMP>(col[0]), to_byte::<CLAMP>(col[1]));
+    let ba = _mm256_packus_epi32(to_byte::<CLAMP>(col[2]), to_byte::<CLAMP>(col[3]));
+    let order = _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15, 0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15);
+    _mm256_shuffle_epi8(_mm256_packus_epi16(rg, ba), order)
 }
 
 /// The rest of a group under GL_FASTEST, after the (exact) depth test:
@@ -1270,7 +1284,7 @@ unsafe fn write<const STORE: bool>(k: &Ctx, cp: *mut [u8; 4], rgba: __m256i, m: 
 /// of the second level from λ lanes (`Sampler::sample`'s choice).
 #[inline(always)]
 unsafe fn levels(k: &Ctx, lambda: __m256) -> (__m256i, __m256) {
-    let qf = _mm256_set1_ps(k.smp.q as f32);
+    let qf = k.splat.q;
     let (mut la, mut frac) = (_mm256_setzero_si256(), _mm256_setzero_ps());
     match k.lod_mode {
         Lod::Linear => {
@@ -1313,8 +1327,23 @@ unsafe fn all_pd(a: __m256d, b: __m256d) -> bool {
     _mm256_movemask_pd(a) & _mm256_movemask_pd(b) == 0xF
 }
 
+/// Sampler constants as vectors, made once per span: per group they
+/// were converted (q, a usize, to f32 in six instructions) or broadcast
+/// from the sampler again; from here they are memory operands.
+struct Splats {
+    /// The last level, as f32 (`levels`).
+    q: __m256,
+    bias: __m256,
+    min_lod: __m256,
+    max_lod: __m256,
+    /// Level 0's width and height (`front`).
+    n0: __m256,
+    n1: __m256,
+}
+
 /// A span's constants.
 struct Ctx<'a> {
+    splat: Splats,
     fs: &'a FragmentState,
     smp: &'a Sampler<'a>,
     /// The padded copy of the levels (`texture::pairs`); always there for
@@ -1387,7 +1416,7 @@ const W_OWN: u8 = 2;
 /// None (nothing written) when a lane needs the scalar kernel.
 #[inline(always)]
 unsafe fn group<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Option<u32> {
-    match front::<D, STORE, FX, L>(k, x, dp, cp, live) {
+    match front::<D, STORE, FX, L>(k, x, x as f64, dp, cp, live) {
         Step::Done(n) => Some(n),
         Step::Scalar => None,
         Step::Texture(mut f) => {
@@ -1436,8 +1465,10 @@ enum Step {
 /// work after it in program order instead of filling the reorder buffer
 /// behind it (docs/perf-notes.md, round 19).
 #[inline(always)]
-unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Step {
-    let c = L::centres(x as f64, k.x0);
+unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, x: usize, xf: f64, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Step {
+    // `xf` is x as f64 (exact), carried by the span loop: without
+    // AVX-512 a usize takes seven instructions to convert.
+    let c = L::centres(xf, k.x0);
     // Depth (section 4.1.6): depth_to_fixed lane by lane.
     let mut m = live;
     let (mut z, mut stored) = (_mm256_setzero_si256(), _mm256_setzero_si256());
@@ -1480,8 +1511,7 @@ unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
     let s = L::at(k.s.0, k.s.1, &c).mul(&iq);
     let tt = L::at(k.t.0, k.t.1, &c).mul(&iq);
     let (sf, tf) = (s.to_f32(), tt.to_f32());
-    let smp = k.smp;
-    let (n0, n1) = (_mm256_set1_ps(smp.levels[0].wf), _mm256_set1_ps(smp.levels[0].hf));
+    let (n0, n1) = (k.splat.n0, k.splat.n1);
     // Finite and within ±2^22 texels of level 0 (exact floors and
     // indices at every level).
     let (sign, limit) = (_mm256_set1_ps(-0.0), _mm256_set1_ps(4194304.0));
@@ -1569,8 +1599,8 @@ unsafe fn settle<const FX: bool, L: Isa>(k: &Ctx, g: &mut Front) {
     if FX || k.lod_mode == Lod::None {
         return;
     }
-    let smp = k.smp;
-    let lambda = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(L::log2(g.rho), _mm256_set1_ps(smp.bias)), _mm256_set1_ps(smp.min_lod)), _mm256_set1_ps(smp.max_lod));
+    let sp = &k.splat;
+    let lambda = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(L::log2(g.rho), sp.bias), sp.min_lod), sp.max_lod);
     (g.la, g.frac) = levels(k, lambda);
 }
 
@@ -1678,6 +1708,14 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
     let env = EnvFn::new(tp.stage.envs[u].mode, sampler.base);
     let colors = std::array::from_fn(|c| row(&t.color[c]));
     let k = Ctx {
+        splat: Splats {
+            q: _mm256_set1_ps(smp.q as f32),
+            bias: _mm256_set1_ps(smp.bias),
+            min_lod: _mm256_set1_ps(smp.min_lod),
+            max_lod: _mm256_set1_ps(smp.max_lod),
+            n0: _mm256_set1_ps(smp.levels[0].wf),
+            n1: _mm256_set1_ps(smp.levels[0].hf),
+        },
         fs,
         smp: &smp,
         pad,
@@ -1722,11 +1760,17 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
     // kernel, the last pixels), and the raw pointers are taken anew after.
     let mut waiting: Option<Front> = None;
     let (mut cbase, mut dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
+    // (x0 + i) as f64 in the groups of eight (`front`); exact, the sum of
+    // integers far below 2^53.
+    let mut xf = x0 as f64;
     while i < n {
         let len = (n - i).min(8);
         if len == 8 {
             let dp = if D != D_OFF { dbase.add(i) } else { std::ptr::null_mut() };
-            match front::<D, STORE, FX, L>(&k, x0 + i, dp, cbase.add(i), all) {
+            // GL_FASTEST converts x itself: the carried xf cost it more
+            // than it saved (measured).
+            let xg = if FX { (x0 + i) as f64 } else { xf };
+            match front::<D, STORE, FX, L>(&k, x0 + i, xg, dp, cbase.add(i), all) {
                 Step::Done(p) => passed += p as u64,
                 Step::Texture(mut f) => {
                     passed += f.bits.count_ones() as u64;
@@ -1748,6 +1792,7 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
                 }
             }
             i += len;
+            xf += 8.0;
             continue;
         }
         if let Some(w) = waiting.take() {
@@ -1779,6 +1824,7 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
         }
         (cbase, dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
         i += len;
+        xf += len as f64;
     }
     if let Some(w) = waiting.take() {
         back::<STORE, FX, L>(&k, &w);
