@@ -402,8 +402,6 @@ impl Context {
         if k == 0 {
             return;
         }
-        a.pending = 0;
-        let n0 = a.count - k;
         // Lanes from k on hold stale slots: nothing below reads past k.
         let slots = a.slots;
         let rs = &self.derived.render;
@@ -422,7 +420,7 @@ impl Context {
                 }
             }
         }
-        place_and_assemble(a, &self.derived.mvp, rs, &mut self.fb, n0, k, slots);
+        flush_queue(a, &self.derived.mvp, rs, &mut self.fb);
     }
 
     /// Lights and places the vertices queued on a lit batched primitive
@@ -670,20 +668,22 @@ fn plain_vertex(a: &mut Assembly, mvp: &glam::Mat4, rs: &render::RenderState, fb
 #[inline(never)]
 fn plain_flush(a: &mut Assembly, mvp: &glam::Mat4, rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer) {
     debug_assert!(!a.lit);
+    flush_queue(a, mvp, rs, fb);
+}
+
+/// Transforms and places the queued positions of `a` (lit already if
+/// lit), empties the queue, then assembles and draws, in order, the
+/// triangles they complete.
+#[inline(always)]
+fn flush_queue(a: &mut Assembly, mvp: &glam::Mat4, rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer) {
     let k = a.pending;
     if k == 0 {
         return;
     }
     a.pending = 0;
     let n0 = a.count - k;
-    place_and_assemble(a, mvp, rs, fb, n0, k, a.slots);
-}
-
-/// Transforms and places the `k` queued positions of `a` (vertices
-/// `n0..n0 + k`, lane i in `slots[i]`; lit already if lit), then
-/// assembles and draws, in order, the triangles they complete.
-#[inline(always)]
-fn place_and_assemble(a: &mut Assembly, mvp: &glam::Mat4, rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, n0: usize, k: usize, slots: [usize; LANES]) {
+    // Lanes from k on hold stale slots: nothing below reads past k.
+    let slots = a.slots;
     vertex4::transform_place(mvp, rs, &a.queue, k, &mut a.verts, slots);
     // One loop per mode: the assembly's choices fold away. Whether
     // setup bins is the same for every triangle of the flush (binning
