@@ -359,20 +359,22 @@ pub struct Batch {
     last: (u32, bool, bool),
 }
 
-/// Record arrays of at least this many bytes made by [`Batch::reserve_like`]
-/// are advised huge pages.
-const HUGE_RESERVE: usize = 4 << 20;
+/// A batch that held at least this many bytes of records gives the batches
+/// made after it huge pages ([`Batch::reserve_like`]).
+const HUGE_RESERVE: usize = 2 << 20;
 
 impl Batch {
     /// An empty batch (this one, emptied by `Flight::clear`) about to be
     /// filled gets room for as many records as `other`, the batch just
     /// filled, had room for (round 10): the three sets of vectors in
-    /// rotation then grow by doubling (a copy each time, and a page fault
-    /// every 4 KiB) only in the one batch that first reaches a size, and
-    /// the others take that size at once, in fresh memory (an empty
-    /// vector's growth would copy its old capacity), the record array of
-    /// [`HUGE_RESERVE`] or more advised huge pages (a full 32K-triangle
-    /// batch is about 5.8 MB).
+    /// rotation then grow (a copy each time, and a page fault every 4 KiB;
+    /// [`grow`]) only in the one batch that first reaches a size, and the
+    /// others take that size at once, in fresh memory (an empty vector's
+    /// growth would copy its old capacity), the record array advised
+    /// huge pages when `other` held [`HUGE_RESERVE`] or more of records
+    /// (a full 32K-triangle batch holds 4 MB; one that never held as much,
+    /// as lines' 2,800 records a flight, keeps the 4 KiB pages it writes:
+    /// its capacity is a full batch's since round 22, see [`grow`]).
     fn reserve_like(&mut self, other: &Batch) {
         fn fresh<T>(v: &mut Vec<T>, n: usize) -> bool {
             debug_assert!(v.is_empty());
@@ -382,11 +384,9 @@ impl Batch {
             }
             grow
         }
-        if fresh(&mut self.tris, other.tris.capacity()) {
+        if fresh(&mut self.tris, other.tris.capacity()) && other.tris.len() * std::mem::size_of::<Binned>() >= HUGE_RESERVE {
             let bytes = self.tris.capacity() * std::mem::size_of::<Binned>();
-            if bytes >= HUGE_RESERVE {
-                crate::framebuffer::plane::advise_huge_pages(self.tris.as_mut_ptr() as *mut u8, bytes);
-            }
+            crate::framebuffer::plane::advise_huge_pages(self.tris.as_mut_ptr() as *mut u8, bytes);
         }
         // `room`'s invariant: at least the records' capacity.
         fresh(&mut self.boxes, self.tris.capacity());
@@ -750,7 +750,7 @@ fn room(b: &mut Batch) {
 
 /// [`room`]'s growth: the records by doubling while the batch is small,
 /// then at once to room for [`MAX_BATCH`] records in a fresh allocation
-/// advised huge pages (round 22); the boxes to the records' capacity.
+/// (round 22); the boxes to the records' capacity.
 /// Doubling to a full batch copied 3.5 MB of records into 7 MB of fresh
 /// 4 KiB pages and unmapped the old ones, on the calling thread, in the
 /// first frame of every large scene (about a tenth of spheres_m's first
@@ -762,7 +762,6 @@ fn grow(b: &mut Batch) {
     let cap = b.tris.capacity();
     if (JUMP_RECORDS..MAX_BATCH).contains(&cap) {
         let mut tris = Vec::with_capacity(MAX_BATCH);
-        crate::framebuffer::plane::advise_huge_pages(tris.as_mut_ptr() as *mut u8, MAX_BATCH * std::mem::size_of::<Binned>());
         tris.append(&mut b.tris);
         b.tris = tris;
     } else {
