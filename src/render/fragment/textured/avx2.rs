@@ -1415,13 +1415,13 @@ const W_OWN: u8 = 2;
 /// and `cp`, lanes `live` only: the number that passed the depth test, or
 /// None (nothing written) when a lane needs the scalar kernel.
 #[inline(always)]
-unsafe fn group<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Option<u32> {
-    match front::<D, STORE, FX, L>(k, x, x as f64, dp, cp, live) {
+unsafe fn group<const D: u8, const STORE: bool, const FX: bool, const FOG: bool, L: Isa>(k: &Ctx, x: usize, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Option<u32> {
+    match front::<D, STORE, FX, FOG, L>(k, x, x as f64, dp, cp, live) {
         Step::Done(n) => Some(n),
         Step::Scalar => None,
         Step::Texture(mut f) => {
             settle::<FX, L>(k, &mut f);
-            back::<STORE, FX, L>(k, &f);
+            back::<STORE, FX, FOG, L>(k, &f);
             Some(f.bits.count_ones())
         }
     }
@@ -1465,7 +1465,7 @@ enum Step {
 /// work after it in program order instead of filling the reorder buffer
 /// behind it (docs/perf-notes.md, round 19).
 #[inline(always)]
-unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, x: usize, xf: f64, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Step {
+unsafe fn front<const D: u8, const STORE: bool, const FX: bool, const FOG: bool, L: Isa>(k: &Ctx, x: usize, xf: f64, dp: *mut u32, cp: *mut [u8; 4], live: __m256i) -> Step {
     // `xf` is x as f64 (exact), carried by the span loop: without
     // AVX-512 a usize takes seven instructions to convert.
     let c = L::centres(xf, k.x0);
@@ -1574,7 +1574,7 @@ unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
         }
     };
     let fog = match &k.fog {
-        Some(((fr, fdx), f)) => {
+        Some(((fr, fdx), f)) if FOG => {
             let v = L::at(*fr, *fdx, &c);
             let v = if k.w_mode == W_NONE { v } else { v.mul(&w) }.to_f32();
             let mut vals = [0f32; 8];
@@ -1584,7 +1584,7 @@ unsafe fn front<const D: u8, const STORE: bool, const FX: bool, L: Isa>(k: &Ctx,
             }
             _mm256_loadu_ps(vals.as_ptr())
         }
-        None => _mm256_setzero_ps(),
+        _ => _mm256_setzero_ps(),
     };
     Step::Texture(Front { sf, tf, la, frac, rho: rho_out, primary, fog, m, bits, cp })
 }
@@ -1607,7 +1607,7 @@ unsafe fn settle<const FX: bool, L: Isa>(k: &Ctx, g: &mut Front) {
 /// The rest of a group after `front` and `settle`: its texels, the
 /// environment, fog, and the colours written.
 #[inline(always)]
-unsafe fn back<const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, g: &Front) {
+unsafe fn back<const STORE: bool, const FX: bool, const FOG: bool, L: Isa>(k: &Ctx, g: &Front) {
     if FX {
         return fastest_back::<STORE, L>(k, g);
     }
@@ -1659,7 +1659,7 @@ unsafe fn back<const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, g: &Front) {
             }
         }
         let mut col = env_apply(k.env, &primary, &texel);
-        if let Some((_, f)) = &k.fog {
+        if let (true, Some((_, f))) = (FOG, &k.fog) {
             let inv = _mm256_sub_ps(_mm256_set1_ps(1.0), fv);
             let fc = f.color.to_array();
             for ch in 0..3 {
@@ -1668,7 +1668,7 @@ unsafe fn back<const STORE: bool, const FX: bool, L: Isa>(k: &Ctx, g: &Front) {
         }
         // To bytes (`color_to_u8`), packed RGBA; without fog every channel
         // is as `env_apply` clamped it, and a second clamp changes no bit.
-        if k.fog.is_some() {
+        if FOG {
             pack_bytes::<true>(&col)
         } else {
             pack_bytes::<false>(&col)
@@ -1749,6 +1749,22 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
     if FX && !(pad.is_some() && k.fog.is_none() && matches!(k.env, EnvFn::Modulate { color: true, .. } | EnvFn::Replace { color: true, alpha: true })) {
         return if L::WIDE { span_wide::<D, STORE, false>(fs, t, px, y, x0, x1) } else { span::<D, STORE, false>(fs, t, px, y, x0, x1) };
     }
+    // Round 22: fog as a const (`FOG`), so that a span without fog does no
+    // fog work per group: with the flag read per group, LLVM computed the
+    // fog blend's (1 - f) c products at the loop head for every group,
+    // fog or not (7 instructions and 3 stores). GL_FASTEST (`FX`) never
+    // has fog here (above).
+    if !FX && k.fog.is_some() {
+        run::<D, STORE, FX, true, L>(&k, fs, t, px, y, x0, x1)
+    } else {
+        run::<D, STORE, FX, false, L>(&k, fs, t, px, y, x0, x1)
+    }
+}
+
+/// The groups of a span (`span_body`); `FOG`: `k.fog` is there.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+unsafe fn run<const D: u8, const STORE: bool, const FX: bool, const FOG: bool, L: Isa>(k: &Ctx, fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     let n = x1 - x0;
     let mut passed = 0u64;
     let mut i = 0;
@@ -1770,7 +1786,7 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
             // GL_FASTEST converts x itself: the carried xf cost it more
             // than it saved (measured).
             let xg = if FX { (x0 + i) as f64 } else { xf };
-            match front::<D, STORE, FX, L>(&k, x0 + i, xg, dp, cbase.add(i), all) {
+            match front::<D, STORE, FX, FOG, L>(k, x0 + i, xg, dp, cbase.add(i), all) {
                 Step::Done(p) => passed += p as u64,
                 Step::Texture(mut f) => {
                     passed += f.bits.count_ones() as u64;
@@ -1778,14 +1794,14 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
                     // and its λ (`settle`): both chains then have a
                     // group's independent work after them.
                     if let Some(w) = waiting.take() {
-                        back::<STORE, FX, L>(&k, &w);
+                        back::<STORE, FX, FOG, L>(k, &w);
                     }
-                    settle::<FX, L>(&k, &mut f);
+                    settle::<FX, L>(k, &mut f);
                     waiting = Some(f);
                 }
                 Step::Scalar => {
                     if let Some(w) = waiting.take() {
-                        back::<STORE, FX, L>(&k, &w);
+                        back::<STORE, FX, FOG, L>(k, &w);
                     }
                     scalar::<D, STORE>(fs, t, px, y, x0, i, i + len);
                     (cbase, dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
@@ -1796,11 +1812,11 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
             continue;
         }
         if let Some(w) = waiting.take() {
-            back::<STORE, FX, L>(&k, &w);
+            back::<STORE, FX, FOG, L>(k, &w);
         }
         let got = if len == 8 {
             let dp = if D != D_OFF { dbase.add(i) } else { std::ptr::null_mut() };
-            group::<D, STORE, FX, L>(&k, x0 + i, dp, cbase.add(i), all)
+            group::<D, STORE, FX, FOG, L>(k, x0 + i, dp, cbase.add(i), all)
         } else {
             // The last pixels: on a stack copy, the missing lanes off.
             let (mut zb, mut cb) = ([0u32; 8], [[0u8; 4]; 8]);
@@ -1809,7 +1825,7 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
             }
             cb[..len].copy_from_slice(&px.color[i..n]);
             let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(len as i32), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
-            let got = group::<D, STORE, FX, L>(&k, x0 + i, zb.as_mut_ptr(), cb.as_mut_ptr(), live);
+            let got = group::<D, STORE, FX, FOG, L>(k, x0 + i, zb.as_mut_ptr(), cb.as_mut_ptr(), live);
             if got.is_some() {
                 if D != D_OFF {
                     px.depth[i..n].copy_from_slice(&zb[..len]);
@@ -1827,7 +1843,7 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
         xf += len as f64;
     }
     if let Some(w) = waiting.take() {
-        back::<STORE, FX, L>(&k, &w);
+        back::<STORE, FX, FOG, L>(k, &w);
     }
     px.passed += passed;
 }
