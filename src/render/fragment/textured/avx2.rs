@@ -1766,86 +1766,108 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
 #[inline(always)]
 unsafe fn run<const D: u8, const STORE: bool, const FX: bool, const FOG: bool, L: Isa>(k: &Ctx, fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, x1: usize) {
     let n = x1 - x0;
-    let mut passed = 0u64;
-    let mut i = 0;
-    let all = _mm256_set1_epi32(-1);
     // A group's `back` runs after the next group's `front`, and before
-    // that group's `settle` (`front`); `waiting` is the group whose `back`
-    // is due (settled). It is done
-    // before the span's slices are touched any other way (the scalar
-    // kernel, the last pixels), and the raw pointers are taken anew after.
+    // that group's `settle` (`front`); the pending group is the one whose
+    // `back` is due (settled). It is done before the span's slices are
+    // touched any other way (the scalar kernel, the last pixels), and the
+    // raw pointers are taken anew after.
+    let mut w = Walk { i: 0, xf: x0 as f64, passed: 0, cbase: px.color.as_mut_ptr(), dbase: if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() } };
+    // Round 22: two steps an iteration, the pending group in `waiting`,
+    // then in `next`, then in `waiting` again. With one step an iteration
+    // the new group and the pending one were both live across the
+    // pending one's `back`, so the loop's back edge copied the new
+    // group's spilled state into the pending group's slots (eight ymm
+    // loads and stores a group); here the group from the second step
+    // takes `waiting`'s slot after `waiting` is done with.
     let mut waiting: Option<Front> = None;
-    let (mut cbase, mut dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
-    // (x0 + i) as f64 in the groups of eight (`front`); exact, the sum of
-    // integers far below 2^53.
-    let mut xf = x0 as f64;
-    while i < n {
-        let len = (n - i).min(8);
-        if len == 8 {
-            let dp = if D != D_OFF { dbase.add(i) } else { std::ptr::null_mut() };
-            // GL_FASTEST converts x itself: the carried xf cost it more
-            // than it saved (measured).
-            let xg = if FX { (x0 + i) as f64 } else { xf };
-            match front::<D, STORE, FX, FOG, L>(k, x0 + i, xg, dp, cbase.add(i), all) {
-                Step::Done(p) => passed += p as u64,
-                Step::Texture(mut f) => {
-                    passed += f.bits.count_ones() as u64;
-                    // The previous group's `back` between this group's ρ
-                    // and its λ (`settle`): both chains then have a
-                    // group's independent work after them.
-                    if let Some(w) = waiting.take() {
-                        back::<STORE, FX, FOG, L>(k, &w);
-                    }
-                    settle::<FX, L>(k, &mut f);
-                    waiting = Some(f);
-                }
-                Step::Scalar => {
-                    if let Some(w) = waiting.take() {
-                        back::<STORE, FX, FOG, L>(k, &w);
-                    }
-                    scalar::<D, STORE>(fs, t, px, y, x0, i, i + len);
-                    (cbase, dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
-                }
-            }
-            i += len;
-            xf += 8.0;
-            continue;
+    loop {
+        let Some(f) = advance::<D, STORE, FX, FOG, L>(k, fs, t, px, y, x0, n, &mut w, &mut waiting) else { break };
+        let mut next = Some(f);
+        let Some(f) = advance::<D, STORE, FX, FOG, L>(k, fs, t, px, y, x0, n, &mut w, &mut next) else {
+            waiting = next;
+            break;
+        };
+        waiting = Some(f);
+    }
+    if let Some(g) = waiting.take() {
+        back::<STORE, FX, FOG, L>(k, &g);
+    }
+    let i = w.i;
+    if i < n {
+        // The last pixels: on a stack copy, the missing lanes off.
+        let len = n - i;
+        let (mut zb, mut cb) = ([0u32; 8], [[0u8; 4]; 8]);
+        if D != D_OFF {
+            zb[..len].copy_from_slice(&px.depth[i..n]);
         }
-        if let Some(w) = waiting.take() {
-            back::<STORE, FX, FOG, L>(k, &w);
-        }
-        let got = if len == 8 {
-            let dp = if D != D_OFF { dbase.add(i) } else { std::ptr::null_mut() };
-            group::<D, STORE, FX, FOG, L>(k, x0 + i, dp, cbase.add(i), all)
-        } else {
-            // The last pixels: on a stack copy, the missing lanes off.
-            let (mut zb, mut cb) = ([0u32; 8], [[0u8; 4]; 8]);
-            if D != D_OFF {
-                zb[..len].copy_from_slice(&px.depth[i..n]);
-            }
-            cb[..len].copy_from_slice(&px.color[i..n]);
-            let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(len as i32), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
-            let got = group::<D, STORE, FX, FOG, L>(k, x0 + i, zb.as_mut_ptr(), cb.as_mut_ptr(), live);
-            if got.is_some() {
+        cb[..len].copy_from_slice(&px.color[i..n]);
+        let live = _mm256_cmpgt_epi32(_mm256_set1_epi32(len as i32), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+        match group::<D, STORE, FX, FOG, L>(k, x0 + i, zb.as_mut_ptr(), cb.as_mut_ptr(), live) {
+            Some(p) => {
                 if D != D_OFF {
                     px.depth[i..n].copy_from_slice(&zb[..len]);
                 }
                 px.color[i..n].copy_from_slice(&cb[..len]);
+                w.passed += p as u64;
             }
-            got
-        };
-        match got {
-            Some(p) => passed += p as u64,
-            None => scalar::<D, STORE>(fs, t, px, y, x0, i, i + len),
+            None => scalar::<D, STORE>(fs, t, px, y, x0, i, n),
         }
-        (cbase, dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
-        i += len;
-        xf += len as f64;
     }
-    if let Some(w) = waiting.take() {
-        back::<STORE, FX, FOG, L>(k, &w);
+    px.passed += w.passed;
+}
+
+/// The span loop's position: the next group's pixel index `i` and its
+/// window x as f64 `xf` (`front`; exact, the sum of integers far below
+/// 2^53), the pixels passed so far, and the span's colour and depth
+/// pointers.
+struct Walk {
+    i: usize,
+    xf: f64,
+    passed: u64,
+    cbase: *mut [u8; 4],
+    dbase: *mut u32,
+}
+
+/// Full groups of eight from `w.i` up to the next one to texture: its
+/// `front` done, then `pending`'s `back` (taken), then its `settle`;
+/// None when fewer than eight pixels are left (`pending` then as it
+/// was, or taken by a group the scalar kernel ran).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+unsafe fn advance<const D: u8, const STORE: bool, const FX: bool, const FOG: bool, L: Isa>(k: &Ctx, fs: &FragmentState, t: &TriangleSetup, px: &mut SpanPixels, y: usize, x0: usize, n: usize, w: &mut Walk, pending: &mut Option<Front>) -> Option<Front> {
+    let all = _mm256_set1_epi32(-1);
+    while n - w.i >= 8 {
+        let i = w.i;
+        let dp = if D != D_OFF { w.dbase.add(i) } else { std::ptr::null_mut() };
+        // GL_FASTEST converts x itself: the carried xf cost it more
+        // than it saved (measured).
+        let xg = if FX { (x0 + i) as f64 } else { w.xf };
+        let step = front::<D, STORE, FX, FOG, L>(k, x0 + i, xg, dp, w.cbase.add(i), all);
+        w.i += 8;
+        w.xf += 8.0;
+        match step {
+            Step::Done(p) => w.passed += p as u64,
+            Step::Texture(mut f) => {
+                w.passed += f.bits.count_ones() as u64;
+                // The previous group's `back` between this group's ρ
+                // and its λ (`settle`): both chains then have a
+                // group's independent work after them.
+                if let Some(g) = pending.take() {
+                    back::<STORE, FX, FOG, L>(k, &g);
+                }
+                settle::<FX, L>(k, &mut f);
+                return Some(f);
+            }
+            Step::Scalar => {
+                if let Some(g) = pending.take() {
+                    back::<STORE, FX, FOG, L>(k, &g);
+                }
+                scalar::<D, STORE>(fs, t, px, y, x0, i, i + 8);
+                (w.cbase, w.dbase) = (px.color.as_mut_ptr(), if D != D_OFF { px.depth.as_mut_ptr() } else { std::ptr::null_mut() });
+            }
+        }
     }
-    px.passed += passed;
+    None
 }
 
 #[cfg(test)]
