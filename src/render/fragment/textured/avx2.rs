@@ -954,8 +954,8 @@ unsafe fn to_byte<const CLAMP: bool>(v: __m256) -> __m256i {
 /// there is one and the filter is LINEAR.
 #[inline(always)]
 unsafe fn level_filter<L: Isa>(k: &Ctx, l: usize, s: __m256, t: __m256) -> Rgba {
-    match k.pad {
-        Some(p) if k.linear => {
+    match k.pairs {
+        Some(p) => {
             let p = &p.levels[l];
             L::filter_pairs(p, &k.smp.levels[l], s, t, k.smp.repeat, (p.flat | !k.reads) & 0xF)
         }
@@ -967,8 +967,8 @@ unsafe fn level_filter<L: Isa>(k: &Ctx, l: usize, s: __m256, t: __m256) -> Rgba 
 /// through `Isa::filter_pairs2` when there is a padded copy.
 #[inline(always)]
 unsafe fn level_filter2<L: Isa>(k: &Ctx, l: usize, s: __m256, t: __m256) -> (Rgba, Rgba) {
-    match k.pad {
-        Some(p) if k.linear => {
+    match k.pairs {
+        Some(p) => {
             let (pa, pb) = (&p.levels[l], &p.levels[l + 1]);
             let skip = |p: &PaddedLevel| (p.flat | !k.reads) & 0xF;
             L::filter_pairs2((pa, &k.smp.levels[l], skip(pa)), (pb, &k.smp.levels[l + 1], skip(pb)), s, t, k.smp.repeat)
@@ -1349,6 +1349,9 @@ struct Ctx<'a> {
     /// The padded copy of the levels (`texture::pairs`); always there for
     /// the GL_FASTEST kernel.
     pad: Option<&'a Padded>,
+    /// `pad` when the filter is LINEAR (`level_filter`; round 22: one
+    /// test per level filtered instead of two).
+    pairs: Option<&'a Padded>,
     lod_mode: Lod,
     linear: bool,
     env: EnvFn,
@@ -1719,6 +1722,7 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
         fs,
         smp: &smp,
         pad,
+        pairs: if linear { pad } else { None },
         lod_mode,
         linear,
         env,
