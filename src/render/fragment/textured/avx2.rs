@@ -1032,10 +1032,13 @@ unsafe fn fastest<const D: u8, const STORE: bool, L: Isa>(k: &Ctx, x: usize, dp:
     let (sf, tf) = (_mm256_mul_ps(ramp(k.s, cx, steps), iq), _mm256_mul_ps(ramp(k.t, cx, steps), iq));
     // The primary colour per lane (perspective-corrected as the exact
     // kernel, in f32), before anything is written.
-    let primary: Rgba = match (&k.flat, k.env) {
-        (_, EnvFn::Replace { .. }) => [_mm256_setzero_ps(); 4],
-        (Some(f), _) => *f,
-        (None, _) => {
+    // Round 22: REPLACE's primary (not read) is `k.flat`'s zero, set per
+    // span (`span_body`): with a three-way match per group LLVM stored
+    // the zeros and copied the flat colour into the primary's slots for
+    // every group before testing which case held.
+    let primary: Rgba = match &k.flat {
+        Some(f) => *f,
+        None => {
             let w = match k.w_mode {
                 W_SHARED => iq,
                 W_OWN => {
@@ -1743,7 +1746,9 @@ unsafe fn span_body<const D: u8, const STORE: bool, const FX: bool, L: Isa>(fs: 
         },
         color_src: same_rows(&colors),
         colors,
-        flat: t.flat.map(|c| c.map(|v| _mm256_set1_ps(v as f32 / 255.0))),
+        // GL_FASTEST under REPLACE: zero, a constant primary colour for
+        // `fastest` (which REPLACE does not read).
+        flat: if FX && matches!(env, EnvFn::Replace { .. }) { Some([_mm256_setzero_ps(); 4]) } else { t.flat.map(|c| c.map(|v| _mm256_set1_ps(v as f32 / 255.0))) },
         fog: t.fog.as_ref().map(|(plane, f)| (row(plane), *f)),
         lambda_kept: std::cell::Cell::new((f64::NAN, 0.0)),
         lambda_ahead: std::cell::Cell::new((usize::MAX, 0, [0.0; 8])),
