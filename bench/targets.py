@@ -92,10 +92,11 @@ LIMITS = {
                      "levels' texels before converting either, -1.7 %, clock inside the host's noise; round 19 computes "
                      "a group's level of detail after the previous group's texels, -6 to -9 % CPU time; round 21 "
                      "splats the sampler's constants once a span and packs with two saturating packs, -5.0 % "
-                     "instructions in the AVX2 kernel, clock within the host's noise); level with "
-                     "llvmpipe with 1 thread in the runs after round 17 (0.99x at 05:45 and 1.01x at 05:49 on "
-                     "2026-11-28; on the next host 0.89x at 01:34 and 1.01x at 02:13 on 2026-11-29), behind "
-                     "before (1.16x to 1.34x)"),
+                     "instructions in the AVX2 kernel, clock within the host's noise; round 22 makes fog a "
+                     "constant of the span loop and takes two groups an iteration, -4.6 % instructions); level "
+                     "with llvmpipe with 1 thread in the runs after round 17 (0.99x at 05:45 and 1.01x at 05:49 on "
+                     "2026-11-28; on the next host 0.89x at 01:34, 1.01x at 02:13 and 0.96x at 08:07 on "
+                     "2026-11-29), behind before (1.16x to 1.34x)"),
         "overdraw": ("a near tie on one thread: 16 window-sized opaque layers, each a colour and depth write "
                      "per pixel (memory traffic of 16 MB a layer); the rerun after the 18:52 run gave 60.5 "
                      "against llvmpipe's 61.7 ms"),
@@ -118,7 +119,8 @@ LIMITS = {
                             "68.5 -> 46.9 ms (medians of 9 alternating starts); what is left is the call "
                             "itself (the steady frame) and the fresh pages of the list and the buffers"),
         "*": ("the first frame is at least the scene's own drawing (the steady frame time) plus the first "
-              "touch of the buffers' pages. In brackets: llvmpipe's first frame over softgl's steady frame, the "
+              "touch of the buffers' pages and of the batches' records (round 22: made at a full batch's size "
+              "after 512 records rather than grown by copies). In brackets: llvmpipe's first frame over softgl's steady frame, the "
               "most any start-up work could reach; below 5x the target cannot be met by start-up alone"),
     },
     "accuracy vs softpipe": {
