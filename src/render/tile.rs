@@ -770,8 +770,8 @@ fn grow(b: &mut Batch) {
     b.boxes.reserve_exact(b.tris.capacity() - b.boxes.len());
 }
 
-/// [`grow`] doubles the records up to this many (64 KiB of records and
-/// boxes), then makes room for a full batch.
+/// [`grow`] doubles the records up to this many (64 KiB of records),
+/// then makes room for a full batch.
 const JUMP_RECORDS: usize = 512;
 
 /// Adds a line segment to the batch, to be drawn band by band in the
