@@ -941,6 +941,20 @@ unsafe fn helped_flights_scene(threads: usize, limits: (usize, u64, u64)) -> Vec
     out
 }
 
+/// Batches that grow past `tile::grow`'s jump to a full batch's room
+/// (512 records, round 22) keep every record in order: with every batch
+/// held until a read-back (about 800 triangles), 2 and 3 threads give the
+/// 1-thread pixels and occlusion counts.
+#[test]
+fn batches_past_the_growth_jump_do_not_depend_on_thread_count() {
+    let limits = (32 * 1024, 1 << 40, 1 << 40);
+    let one = unsafe { helped_flights_scene(1, limits) };
+    for threads in [2, 3] {
+        let many = unsafe { helped_flights_scene(threads, limits) };
+        assert_same_read_backs(&one, &many, &format!("limits {limits:?} 1 thread / {threads} threads"));
+    }
+}
+
 /// Round 13's recorded glAccum against the immediate one: the same
 /// random command streams with 2 and 3 threads (tiny batches handed to
 /// the workers at once, and batches too small for them) as with 1 thread,
