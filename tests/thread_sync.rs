@@ -955,6 +955,49 @@ fn batches_past_the_growth_jump_do_not_depend_on_thread_count() {
     }
 }
 
+/// Tiny triangles in batches held until full (32K records): each batch
+/// passes `tile::grow`'s jump (512 records), its move into a mapping of
+/// huge pages (8,192, round 23) and fills it; the batches after take the
+/// spare vectors made huge at once (`Batch::reserve_like`). Read back
+/// after each batch and in the middle of one.
+unsafe fn huge_batches_scene(threads: usize) -> Vec<Vec<u8>> {
+    let mut buf = vec![0u8; (W4 * H4 * 4) as usize];
+    let ctx = context_of(threads, &mut buf, W4, H4);
+    softgl::render::tile::set_batch_limits(&(*ctx).gl.derived.render, 32 * 1024, 1 << 40, 1 << 40);
+    let mut r = Rng(0x9a7e);
+    let mut out = Vec::new();
+    glEnable(GL_DEPTH_TEST);
+    glClearColor(0.1, 0.2, 0.3, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    read_of(&mut out, W4, H4);
+    for n in [20_000usize, 50_000, 9_000] {
+        glBegin(GL_TRIANGLES);
+        for _ in 0..n {
+            let (tx, ty) = (r.unit() * 2.0 - 1.0, r.unit() * 2.0 - 1.0);
+            for _ in 0..3 {
+                glColor4ub(r.next() as u8, r.next() as u8, r.next() as u8, 255);
+                glVertex3f(tx + (r.unit() - 0.5) * 0.05, ty + (r.unit() - 0.5) * 0.02, r.unit() * 2.0 - 1.0);
+            }
+        }
+        glEnd();
+        read_of(&mut out, W4, H4);
+        assert!(out[out.len() - 1] != out[out.len() - 2], "each batch draws");
+    }
+    OSMesaDestroyContext(ctx);
+    out
+}
+
+/// Batches that grow into huge pages (round 23, `render::records`) keep
+/// every record in order: 2 and 3 threads give the 1-thread pixels.
+#[test]
+fn batches_in_huge_pages_do_not_depend_on_thread_count() {
+    let one = unsafe { huge_batches_scene(1) };
+    for threads in [2, 3] {
+        let many = unsafe { huge_batches_scene(threads) };
+        assert_same_read_backs(&one, &many, &format!("1 thread / {threads} threads"));
+    }
+}
+
 /// Round 13's recorded glAccum against the immediate one: the same
 /// random command streams with 2 and 3 threads (tiny batches handed to
 /// the workers at once, and batches too small for them) as with 1 thread,

@@ -153,7 +153,7 @@ impl<T: Plain + std::fmt::Debug> std::fmt::Debug for Plane<T> {
 /// advised MADV_HUGEPAGE: its start and its length in bytes. None when
 /// the kernel refuses (the caller falls back to the allocator).
 #[cfg(target_os = "linux")]
-fn map_huge(bytes: usize) -> Option<(*mut u8, usize)> {
+pub(crate) fn map_huge(bytes: usize) -> Option<(*mut u8, usize)> {
     let page = 4096;
     let rounded = bytes.checked_add(HUGE - 1)? & !(HUGE - 1);
     // Whole huge pages when the tail they add is small; else the 4 KiB

@@ -18,6 +18,7 @@ pub mod point;
 pub mod polygon_mode;
 pub mod pool;
 pub mod raster;
+pub mod records;
 pub mod runs;
 pub mod setup;
 pub mod shade_state;

@@ -89,6 +89,7 @@ use super::point::PointRun;
 use super::pool;
 use super::runs;
 use super::raster;
+use super::records::Records;
 use super::setup::{release, Attributes, TriangleSetup};
 use super::shade_state::SetupParams;
 use super::shade_state::ShadeState;
@@ -183,7 +184,7 @@ const NO_EXTRA: BinExtra = BinExtra { tex: [[Vec4::ZERO; MAX_UNITS]; 3], fog: [0
 /// A triangle waiting to be set up and shaded (in a tile worker): its
 /// positively oriented fixed-point vertices, what setup reads of them,
 /// and the state it was drawn under.
-#[derive(Debug)]
+#[derive(Clone, Copy, Debug)]
 ///
 /// Round 14: 128 bytes and 8 more in [`Batch::boxes`], not 176 (the
 /// calling thread writes one per triangle and the band side read it
@@ -337,7 +338,7 @@ impl Attributes for BinVertex {
 #[derive(Default)]
 pub struct Batch {
     /// Every primitive in submission order (lines and points by index).
-    tris: Vec<Binned>,
+    tris: Records<Binned>,
     /// Each record's box (round 14: apart from the record, so that the
     /// band listing reads 8 bytes a record, not its cache lines).
     boxes: Vec<BinBox>,
@@ -359,10 +360,6 @@ pub struct Batch {
     last: (u32, bool, bool),
 }
 
-/// A batch that held at least this many bytes of records gives the batches
-/// made after it huge pages ([`Batch::reserve_like`]).
-const HUGE_RESERVE: usize = 2 << 20;
-
 impl Batch {
     /// An empty batch (this one, emptied by `Flight::clear`) about to be
     /// filled gets room for as many records as `other`, the batch just
@@ -370,11 +367,10 @@ impl Batch {
     /// rotation then grow (a copy each time, and a page fault every 4 KiB;
     /// [`grow`]) only in the one batch that first reaches a size, and the
     /// others take that size at once, in fresh memory (an empty vector's
-    /// growth would copy its old capacity), the record array advised
-    /// huge pages when `other` held [`HUGE_RESERVE`] or more of records
-    /// (a full 32K-triangle batch holds 4 MB; one that never held as much,
-    /// as lines' 2,800 records a flight, keeps the 4 KiB pages it writes:
-    /// its capacity is a full batch's since round 22, see [`grow`]).
+    /// growth would copy its old capacity), the record array in huge
+    /// pages when `other`'s is (round 23: it passed [`HUGE_RECORDS`]; one
+    /// that never did, as lines' 2,800 records a flight, keeps the 4 KiB
+    /// pages it writes).
     fn reserve_like(&mut self, other: &Batch) {
         fn fresh<T>(v: &mut Vec<T>, n: usize) -> bool {
             debug_assert!(v.is_empty());
@@ -384,9 +380,10 @@ impl Batch {
             }
             grow
         }
-        if fresh(&mut self.tris, other.tris.capacity()) && other.tris.len() * std::mem::size_of::<Binned>() >= HUGE_RESERVE {
-            let bytes = self.tris.capacity() * std::mem::size_of::<Binned>();
-            crate::framebuffer::plane::advise_huge_pages(self.tris.as_mut_ptr() as *mut u8, bytes);
+        let n = other.tris.capacity();
+        if self.tris.capacity() < n {
+            debug_assert!(self.tris.is_empty());
+            self.tris = if other.tris.is_mapped() { Records::with_capacity_huge(n) } else { Records::with_capacity(n) };
         }
         // `room`'s invariant: at least the records' capacity.
         fresh(&mut self.boxes, self.tris.capacity());
@@ -749,8 +746,9 @@ fn room(b: &mut Batch) {
 }
 
 /// [`room`]'s growth: the records by doubling while the batch is small,
-/// then at once to room for [`MAX_BATCH`] records in a fresh allocation
-/// (round 22); the boxes to the records' capacity.
+/// then at once to room for [`HUGE_RECORDS`] (round 22: at once to a full
+/// batch), then to room for [`MAX_BATCH`] in a mapping of huge pages
+/// (round 23, `render::records`); the boxes to the records' capacity.
 /// Doubling to a full batch copied 3.5 MB of records into 7 MB of fresh
 /// 4 KiB pages and unmapped the old ones, on the calling thread, in the
 /// first frame of every large scene (about a tenth of spheres_m's first
@@ -760,8 +758,12 @@ fn room(b: &mut Batch) {
 #[inline(never)]
 fn grow(b: &mut Batch) {
     let cap = b.tris.capacity();
-    if (JUMP_RECORDS..MAX_BATCH).contains(&cap) {
-        let mut tris = Vec::with_capacity(MAX_BATCH);
+    if (JUMP_RECORDS..HUGE_RECORDS).contains(&cap) {
+        let mut tris = Records::with_capacity(HUGE_RECORDS);
+        tris.append(&mut b.tris);
+        b.tris = tris;
+    } else if (HUGE_RECORDS..MAX_BATCH).contains(&cap) && !b.tris.is_mapped() {
+        let mut tris = Records::with_capacity_huge(MAX_BATCH);
         tris.append(&mut b.tris);
         b.tris = tris;
     } else {
@@ -770,8 +772,14 @@ fn grow(b: &mut Batch) {
     b.boxes.reserve_exact(b.tris.capacity() - b.boxes.len());
 }
 
+/// Past this many records (1 MiB) [`grow`] moves a batch's records
+/// into a mapping of huge pages with room for a full batch; a batch that
+/// stays below keeps the 4 KiB pages it writes (lines at 300x300: about
+/// 2,800 records a flight).
+const HUGE_RECORDS: usize = 8192;
+
 /// [`grow`] doubles the records up to this many (64 KiB of records),
-/// then makes room for a full batch.
+/// then makes room for [`HUGE_RECORDS`].
 const JUMP_RECORDS: usize = 512;
 
 /// Adds a line segment to the batch, to be drawn band by band in the
