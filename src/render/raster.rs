@@ -195,6 +195,22 @@ impl CentreBox {
         CentreBox(row0, row1, col0, col1, extents_fit(xmax - xmin, ymax - ymin))
     }
 
+    /// The box's centres as a rectangle of pixels (rows y0..y1, columns
+    /// x0..x1; empty when it holds none): what `tile` bins a triangle by
+    /// (round 23).
+    #[inline(always)]
+    pub fn rect(&self) -> Rect {
+        Rect { x0: self.2 as i32, y0: self.0 as i32, x1: self.3 as i32, y1: self.1 as i32 }
+    }
+
+    /// The box of the centres in `r`, a [`CentreBox::rect`] already cut
+    /// to a band (round 23: the band side no longer takes the vertices'
+    /// minima and maxima again), with `fit` its [`CentreBox::lanes_fit`].
+    #[inline(always)]
+    pub fn of_rect(r: Rect, fit: bool) -> CentreBox {
+        CentreBox(r.y0 as i64, r.y1 as i64, r.x0 as i64, r.x1 as i64, fit)
+    }
+
     /// Do the triangle's extents fit the lanes ([`lanes_fit`] of its
     /// vertices)?
     #[inline(always)]

@@ -271,8 +271,8 @@ fn oriented(rs: &RenderState, fx: [i64; 3], fy: [i64; 3]) -> Option<Oriented> {
 #[inline(always)]
 fn bin_snapped<A: Attributes>(rs: &RenderState, fb: &mut crate::framebuffer::Framebuffer, pos: [[f64; 4]; 3], fx: [i64; 3], fy: [i64; 3], attrs: [&A; 3], flat_color: [Vec4; 2], o: Oriented) -> bool {
     match super::tile::bounds(rs, fx, fy) {
-        super::tile::Bounds::Box(bbox) => {
-            if super::tile::push(rs, fx, fy, bbox, pos, attrs, o.ccw, flat_color[o.back as usize], o.back, o.front_facing) {
+        super::tile::Bounds::Box(centres) => {
+            if super::tile::push(rs, fx, fy, centres, pos, attrs, o.ccw, flat_color[o.back as usize], o.back, o.front_facing) {
                 super::tile::submit_binned(rs, fb);
             }
             true

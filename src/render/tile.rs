@@ -204,9 +204,9 @@ struct Binned {
     state: u32,
     /// A line: its index in [`Batch::lines`] (bit 31 clear); a point:
     /// [`POINT`] | its index in [`Batch::points`]; a triangle:
-    /// [`TRIANGLE`], [`FRONT`] when it faces the front, and its index in
-    /// [`Batch::extras`] in the low 29 bits ([`NO_EXTRA_INDEX`] for
-    /// none). A line's or point's other fields except the box and state
+    /// [`TRIANGLE`], [`FRONT`] when it faces the front, [`FIT`] when it
+    /// fits the cover's lanes, and its index in [`Batch::extras`] in the
+    /// low 28 bits ([`NO_EXTRA_INDEX`] for none). A line's or point's other fields except the box and state
     /// are unused.
     prim: u32,
 }
@@ -220,8 +220,12 @@ const TRIANGLE: u32 = 3 << 30;
 const POINT: u32 = 1 << 31;
 /// The bit of a triangle's [`Binned::prim`] set when it faces the front.
 const FRONT: u32 = 1 << 29;
+/// The bit of a triangle's [`Binned::prim`] set when its vertices'
+/// extents fit the cover's lanes (`raster::CentreBox::lanes_fit`, round
+/// 23: found with its box when it is binned).
+const FIT: u32 = 1 << 28;
 /// The low bits of a triangle's [`Binned::prim`]: its extra index.
-const NO_EXTRA_INDEX: u32 = FRONT - 1;
+const NO_EXTRA_INDEX: u32 = FIT - 1;
 
 impl Binned {
     /// Is the record a triangle (not a line or point)?
@@ -252,7 +256,8 @@ impl Binned {
 
 /// A record's box as [`Batch::boxes`] stores it: pixels the primitive
 /// may touch, within the draw rectangle (x0, y0, x1, y1: within
-/// 0..=`framebuffer::MAX_SIZE`).
+/// 0..=`framebuffer::MAX_SIZE`); a triangle's is exactly the pixels
+/// whose centres lie in its vertices' bounding box (round 23).
 type BinBox = [i16; 4];
 
 /// A box within the draw rectangle as a record stores it.
@@ -548,39 +553,32 @@ pub fn binning(rs: &RenderState) -> bool {
 
 /// What [`bounds`] finds of a triangle.
 pub enum Bounds {
-    /// Its box: to be binned.
-    Box(Rect),
-    /// No pixel of the draw rectangle: nothing to draw.
+    /// The pixel centres of its box: to be binned.
+    Box(raster::CentreBox),
+    /// No pixel centre of the draw rectangle in its box: nothing to draw.
     Empty,
     /// A vertex too far out for the binned record (never after
     /// clipping): to be shaded at once.
     Far,
 }
 
-/// A triangle's bounding box (positively oriented fixed-point vertices)
-/// within the draw rectangle, widened by a pixel each way (a superset is
-/// enough: spans are exact). Round 14: the record keeps x and y in i32,
-/// which setup's precision note bounds by 2^27 after clipping; anything
-/// else is [`Bounds::Far`] (two compares on the min and max taken for
-/// the box anyway).
+/// The pixel centres within the draw rectangle of a triangle's bounding
+/// box (fixed-point vertices), with whether its extents fit the cover's
+/// lanes (`raster::CentreBox`, the box the band side used to find again
+/// from the vertices, round 23). A box without centres, a twelfth of
+/// spheres_l's triangles at 1920x1080, is [`Bounds::Empty`]: no record.
+/// Round 14: the record keeps x and y in i32, which setup's precision
+/// note bounds by 2^27 after clipping; anything else is [`Bounds::Far`]
+/// (two compares on the min and max).
 #[inline]
 pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Bounds {
-    let r = rs.draw_rect;
     let (x_lo, x_hi) = (x[0].min(x[1]).min(x[2]), x[0].max(x[1]).max(x[2]));
     let (y_lo, y_hi) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
     if x_lo.min(y_lo) < i32::MIN as i64 || x_hi.max(y_hi) > i32::MAX as i64 {
         return Bounds::Far;
     }
-    // Floor division by ONE; min/max rather than clamp (no assertion).
-    let px = |c: i64| c >> super::setup::SUBPIXEL_BITS;
-    let fit = |v: i64, lo: i32, hi: i32| v.max(lo as i64).min(hi as i64) as i32;
-    let bbox = Rect {
-        x0: fit(px(x_lo) - 1, r.x0, r.x1),
-        x1: fit(px(x_hi) + 2, r.x0, r.x1),
-        y0: fit(px(y_lo) - 1, r.y0, r.y1),
-        y1: fit(px(y_hi) + 2, r.y0, r.y1),
-    };
-    if bbox.is_empty() { Bounds::Empty } else { Bounds::Box(bbox) }
+    let centres = raster::CentreBox::of(x, y, rs.draw_rect);
+    if centres.count() == 0 { Bounds::Empty } else { Bounds::Box(centres) }
 }
 
 /// Adds a triangle to the batch, to be set up in a worker: fixed-point
@@ -597,8 +595,9 @@ pub fn bounds(rs: &RenderState, x: [i64; 3], y: [i64; 3]) -> Bounds {
 // path): a call passed its arrays through stack copies, about 25
 // instructions a triangle on the calling thread.
 #[inline(always)]
-pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rect, pos: [[f64; 4]; 3], v: [&A; 3], ccw: bool, flat_color: Vec4, back: bool, front_facing: bool) -> bool {
-    let area = (bbox.x1 - bbox.x0) as u64 * (bbox.y1 - bbox.y0) as u64;
+pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], centres: raster::CentreBox, pos: [[f64; 4]; 3], v: [&A; 3], ccw: bool, flat_color: Vec4, back: bool, front_facing: bool) -> bool {
+    let area = centres.count() as u64;
+    let bbox = centres.rect();
     // Safety: binning runs on the context's thread (its framebuffer is
     // borrowed mutably by the caller).
     let b = unsafe { filling(&rs.batch) };
@@ -646,7 +645,7 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], bbox: Rec
             (std::ptr::addr_of_mut!((*tv).color) as *mut Vec4).write_unaligned(color(i));
         }
         std::ptr::addr_of_mut!((*t).state).write(state);
-        std::ptr::addr_of_mut!((*t).prim).write(TRIANGLE | if front_facing { FRONT } else { 0 } | extra);
+        std::ptr::addr_of_mut!((*t).prim).write(TRIANGLE | if front_facing { FRONT } else { 0 } | if centres.lanes_fit() { FIT } else { 0 } | extra);
         b.tris.set_len(b.tris.len() + 1);
         let n = b.boxes.len();
         let bb = b.boxes.as_mut_ptr().add(n) as *mut i16;
@@ -828,7 +827,8 @@ enum Shading<'a> {
 }
 
 /// Sets up a binned triangle and hands its covered pixels within `rect`
-/// to `shade`: a tiny triangle's cover at once when its state has a block
+/// (its record's box of centres, cut to a band) to `shade`: a tiny
+/// triangle's cover at once when its state has a block
 /// kernel (`fragment::stamp`), else its runs one by one; a triangle
 /// covering no pixel centre there is not set up. The setup is the one
 /// shading it at once would compute (the same inputs to `planes_of`), so
@@ -837,7 +837,7 @@ enum Shading<'a> {
 fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, blocks: bool, mut shade: impl FnMut(Shading<'_>)) {
     let stipple = st.polygon_stipple.as_deref();
     let (x, y) = t.xy();
-    let centres = raster::CentreBox::of(x, y, rect);
+    let centres = raster::CentreBox::of_rect(rect, t.prim & FIT != 0);
     let count = centres.count();
     if count > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extra, (&x, &y), centres, blocks, &mut shade) {
         return;
