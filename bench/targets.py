@@ -33,7 +33,9 @@ _VERTEX = ("vertex-bound: per-vertex transform and per-triangle set-up for trian
            "the cut: spheres_l with 2 threads -4.0 % instructions, 1 thread -0.4 %); what is left per "
            "triangle is set-up (about 196 instructions), the cover (about 116), the block (about 227), the "
            "band loop's own work (about 130 before the cover), and with 2 threads the calling thread's "
-           "transform and binning (about 600 instructions a triangle). "
+           "transform and binning (about 500 instructions a triangle; round 23 bins a triangle by its box of "
+           "pixel centres, found once, and drops one without centres: spheres_l with 2 threads -5.9 % "
+           "instructions, 21.4 -> 20.9 ms in 6 pairs; the calling thread's front end bounds that frame). "
            "spheres_l was at the line (0.104x) in the 05:49 run of 2026-11-28; softpipe's own time moves "
            "most between runs (spheres_l 259-384 ms on 2026-11-28)")
 _MILLION = ("vertex-bound: on the calling thread about 950 instructions a 1-pixel triangle (round 16: "
@@ -120,7 +122,11 @@ LIMITS = {
                             "itself (the steady frame) and the fresh pages of the list and the buffers"),
         "*": ("the first frame is at least the scene's own drawing (the steady frame time) plus the first "
               "touch of the buffers' pages and of the batches' records (round 22: made at a full batch's size "
-              "after 512 records rather than grown by copies). In brackets: llvmpipe's first frame over softgl's steady frame, the "
+              "after 512 records rather than grown by copies; round 23: in huge pages past 8,192 records, "
+              "spheres_m's first-frame page faults 2,205 -> 1,222) and the worker thread's start: in 8 spheres_m starts "
+              "(2 threads) the worker took its first job 1.3 to 3.8 ms after the first flight was handed over, "
+              "the calling thread working alone until then. "
+              "In brackets: llvmpipe's first frame over softgl's steady frame, the "
               "most any start-up work could reach; below 5x the target cannot be met by start-up alone"),
     },
     "accuracy vs softpipe": {
