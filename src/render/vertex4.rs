@@ -126,13 +126,18 @@ mod sse2 {
     /// still fit.
     pub(super) const SNAP_LIMIT: f64 = (1u64 << 30) as f64;
 
+    /// One lane's clip position as glam's `Mat4 * Vec4` computes it (the
+    /// scalar stage): x_axis * x + y_axis * y, + z_axis * z, + w_axis * w,
+    /// in that order. Round 23: by columns, the lane's coordinates
+    /// broadcast, rather than by rows with the matrix's 16 elements
+    /// broadcast for every four lanes (32 instructions) and the lanes
+    /// transposed first; the same products and sums, so the same bits.
     #[inline(always)]
-    unsafe fn row(m: &[f32; 16], r: usize, x: __m128, y: __m128, z: __m128, w: __m128) -> __m128 {
-        // glam: x_axis * x + y_axis * y, + z_axis * z, + w_axis * w.
-        let a = _mm_mul_ps(_mm_set1_ps(m[r]), x);
-        let a = _mm_add_ps(a, _mm_mul_ps(_mm_set1_ps(m[4 + r]), y));
-        let a = _mm_add_ps(a, _mm_mul_ps(_mm_set1_ps(m[8 + r]), z));
-        _mm_add_ps(a, _mm_mul_ps(_mm_set1_ps(m[12 + r]), w))
+    unsafe fn column_sum(cols: &[__m128; 4], v: __m128) -> __m128 {
+        let a = _mm_mul_ps(cols[0], _mm_shuffle_ps::<0x00>(v, v));
+        let a = _mm_add_ps(a, _mm_mul_ps(cols[1], _mm_shuffle_ps::<0x55>(v, v)));
+        let a = _mm_add_ps(a, _mm_mul_ps(cols[2], _mm_shuffle_ps::<0xAA>(v, v)));
+        _mm_add_ps(a, _mm_mul_ps(cols[3], _mm_shuffle_ps::<0xFF>(v, v)))
     }
 
     /// `vertex::snap` for two lanes whose |c * ONE| is below SNAP_LIMIT:
@@ -163,17 +168,16 @@ mod sse2 {
     /// positions per lane.
     #[inline(always)]
     pub(super) unsafe fn clip_lanes(mvp: &Mat4, obj: &Queue) -> ([__m128; 4], i32, [__m128; LANES]) {
-        let m = mvp.to_cols_array();
-        // The lanes' vectors to one vector per coordinate (a transpose).
-        let l = obj.0.map(__m128::from);
-        let (a0, a1) = (_mm_unpacklo_ps(l[0], l[1]), _mm_unpackhi_ps(l[0], l[1])); // x0 x1 y0 y1, z0 z1 w0 w1
-        let (b0, b1) = (_mm_unpacklo_ps(l[2], l[3]), _mm_unpackhi_ps(l[2], l[3])); // x2 x3 y2 y3, z2 z3 w2 w3
-        let (x, y) = (_mm_movelh_ps(a0, b0), _mm_movehl_ps(b0, a0));
-        let (z, w) = (_mm_movelh_ps(a1, b1), _mm_movehl_ps(b1, a1));
-        let cx = row(&m, 0, x, y, z, w);
-        let cy = row(&m, 1, x, y, z, w);
-        let cz = row(&m, 2, x, y, z, w);
-        let cw = row(&m, 3, x, y, z, w);
+        let cols = [mvp.x_axis, mvp.y_axis, mvp.z_axis, mvp.w_axis].map(__m128::from);
+        // Clip positions per lane, then one vector per coordinate (a 4x4
+        // transpose).
+        let pos = obj.0.map(|v| column_sum(&cols, __m128::from(v)));
+        let t0 = _mm_unpacklo_ps(pos[0], pos[1]); // x0 x1 y0 y1
+        let t1 = _mm_unpackhi_ps(pos[0], pos[1]); // z0 z1 w0 w1
+        let t2 = _mm_unpacklo_ps(pos[2], pos[3]); // x2 x3 y2 y3
+        let t3 = _mm_unpackhi_ps(pos[2], pos[3]); // z2 z3 w2 w3
+        let (cx, cy) = (_mm_movelh_ps(t0, t2), _mm_movehl_ps(t2, t0));
+        let (cz, cw) = (_mm_movelh_ps(t1, t3), _mm_movehl_ps(t3, t1));
 
         // `clip::inside_fixed` per lane: z + w, (-z) + w, x + g, (-x) + g,
         // y + g, (-y) + g, w + (-W_MIN), inf + (-w), each >= 0 (false for
@@ -188,13 +192,6 @@ mod sse2 {
         ok = _mm_and_ps(ok, ge(_mm_add_ps(cw, _mm_set1_ps(-W_MIN))));
         ok = _mm_and_ps(ok, ge(_mm_add_ps(_mm_set1_ps(f32::INFINITY), _mm_xor_ps(cw, sign))));
         let inside = _mm_movemask_ps(ok);
-
-        // Clip positions per lane (a 4x4 transpose).
-        let t0 = _mm_unpacklo_ps(cx, cy); // x0 y0 x1 y1
-        let t1 = _mm_unpackhi_ps(cx, cy); // x2 y2 x3 y3
-        let t2 = _mm_unpacklo_ps(cz, cw); // z0 w0 z1 w1
-        let t3 = _mm_unpackhi_ps(cz, cw); // z2 w2 z3 w3
-        let pos = [_mm_movelh_ps(t0, t2), _mm_movehl_ps(t2, t0), _mm_movelh_ps(t1, t3), _mm_movehl_ps(t3, t1)];
 
         ([cx, cy, cz, cw], inside, pos)
     }
