@@ -47,7 +47,7 @@ impl<T: Copy> Records<T> {
         #[cfg(target_os = "linux")]
         {
             let size = std::mem::size_of::<T>();
-            let align_ok = crate::framebuffer::plane::HUGE % std::mem::align_of::<T>() == 0;
+            let align_ok = crate::framebuffer::plane::HUGE.is_multiple_of(std::mem::align_of::<T>());
             if let Some(bytes) = n.checked_mul(size).filter(|&b| b > 0 && size > 0 && align_ok) {
                 if let Some((p, len)) = crate::framebuffer::plane::map_huge(bytes) {
                     // SAFETY: map_huge returns a non-null mapping.
@@ -134,10 +134,10 @@ impl<T: Copy> Records<T> {
         }
         if self.mapped == 0 {
             // SAFETY: ptr/len/cap are the vector's, taken apart in
-            // `from_vec` or here; it is taken apart again at once.
-            let mut v = unsafe { Vec::from_raw_parts(self.ptr.as_ptr(), self.len, self.cap) };
+            // `from_vec` or here. Held in ManuallyDrop: should `reserve`
+            // panic, `self` still owns the buffer, which is not freed.
+            let mut v = ManuallyDrop::new(unsafe { Vec::from_raw_parts(self.ptr.as_ptr(), self.len, self.cap) });
             v.reserve(additional);
-            let mut v = ManuallyDrop::new(v);
             // SAFETY: a vector's pointer is never null.
             self.ptr = unsafe { NonNull::new_unchecked(v.as_mut_ptr()) };
             self.cap = v.capacity();
