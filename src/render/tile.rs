@@ -206,8 +206,8 @@ struct Binned {
     /// [`POINT`] | its index in [`Batch::points`]; a triangle:
     /// [`TRIANGLE`], [`FRONT`] when it faces the front, [`FIT`] when it
     /// fits the cover's lanes, and its index in [`Batch::extras`] in the
-    /// low 28 bits ([`NO_EXTRA_INDEX`] for none). A line's or point's other fields except the box and state
-    /// are unused.
+    /// low 28 bits ([`NO_EXTRA_INDEX`] for none). A line's or point's
+    /// other fields except the box and state are unused.
     prim: u32,
 }
 
@@ -827,8 +827,8 @@ enum Shading<'a> {
 }
 
 /// Sets up a binned triangle and hands its covered pixels within `rect`
-/// (its record's box of centres, cut to a band) to `shade`: a tiny
-/// triangle's cover at once when its state has a block
+/// (its record's box of centres, cut to the band or the surface) to
+/// `shade`: a tiny triangle's cover at once when its state has a block
 /// kernel (`fragment::stamp`), else its runs one by one; a triangle
 /// covering no pixel centre there is not set up. The setup is the one
 /// shading it at once would compute (the same inputs to `planes_of`), so
