@@ -240,6 +240,12 @@ impl Binned {
         self.prim & FRONT != 0
     }
 
+    /// Do a triangle's extents fit the cover's lanes ([`FIT`])?
+    #[inline(always)]
+    fn lanes_fit(&self) -> bool {
+        self.prim & FIT != 0
+    }
+
     /// A triangle's index in [`Batch::extras`]; past the end (no extra)
     /// for lines and points.
     #[inline(always)]
@@ -837,7 +843,7 @@ enum Shading<'a> {
 fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, blocks: bool, mut shade: impl FnMut(Shading<'_>)) {
     let stipple = st.polygon_stipple.as_deref();
     let (x, y) = t.xy();
-    let centres = raster::CentreBox::of_rect(rect, t.prim & FIT != 0);
+    let centres = raster::CentreBox::of_rect(rect, t.lanes_fit());
     let count = centres.count();
     if count > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extra, (&x, &y), centres, blocks, &mut shade) {
         return;
