@@ -380,12 +380,52 @@ struct PlaneDivisor {
     /// det is finite and not zero (it can round to zero, or be NaN, only
     /// for degenerate input).
     zero_quotients: bool,
+    /// The lanes' operands, each value in both lanes.
+    #[cfg(target_arch = "x86_64")]
+    splat: Splat,
+}
+
+/// [`PlaneDivisor`]'s values for the planes in lanes, each in both lanes
+/// of a register, made once from the values in registers (round 24).
+/// Broadcast where a plane is solved, LLVM kept the divisor on the stack
+/// as its scalar fields and rebuilt them with 16-byte loads across two
+/// of those 8-byte stores, which the store buffer cannot forward: two
+/// waits for the stores to reach the cache per triangle, about a third
+/// of the band side's set-up samples on spheres_l with 2 threads.
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+struct Splat {
+    dx1: std::arch::x86_64::__m128d,
+    dy1: std::arch::x86_64::__m128d,
+    dx2: std::arch::x86_64::__m128d,
+    dy2: std::arch::x86_64::__m128d,
+    det: std::arch::x86_64::__m128d,
+}
+
+#[cfg(target_arch = "x86_64")]
+impl Splat {
+    #[inline(always)]
+    fn new(dx1: f64, dy1: f64, dx2: f64, dy2: f64, det: f64) -> Splat {
+        use std::arch::x86_64::*;
+        // SAFETY: SSE2 is part of the x86_64 baseline.
+        unsafe { Splat { dx1: _mm_set1_pd(dx1), dy1: _mm_set1_pd(dy1), dx2: _mm_set1_pd(dx2), dy2: _mm_set1_pd(dy2), det: _mm_set1_pd(det) } }
+    }
 }
 
 impl PlaneDivisor {
     #[inline(always)]
     fn new(dx1: f64, dy1: f64, dx2: f64, dy2: f64, det: f64) -> PlaneDivisor {
-        PlaneDivisor { dx1, dy1, dx2, dy2, det, det_sign: det.to_bits() & SIGN, zero_quotients: det != 0.0 && det.is_finite() }
+        PlaneDivisor {
+            dx1,
+            dy1,
+            dx2,
+            dy2,
+            det,
+            det_sign: det.to_bits() & SIGN,
+            zero_quotients: det != 0.0 && det.is_finite(),
+            #[cfg(target_arch = "x86_64")]
+            splat: Splat::new(dx1, dy1, dx2, dy2, det),
+        }
     }
 
     /// [`PlaneDivisor::new`] for the planes in lanes (LANES, on x86_64)
@@ -394,11 +434,11 @@ impl PlaneDivisor {
     /// instructions a triangle).
     #[inline(always)]
     fn new_for<const LANES: bool>(dx1: f64, dy1: f64, dx2: f64, dy2: f64, det: f64) -> PlaneDivisor {
-        if LANES && cfg!(target_arch = "x86_64") {
-            PlaneDivisor { dx1, dy1, dx2, dy2, det, det_sign: 0, zero_quotients: false }
-        } else {
-            PlaneDivisor::new(dx1, dy1, dx2, dy2, det)
+        #[cfg(target_arch = "x86_64")]
+        if LANES {
+            return PlaneDivisor { dx1, dy1, dx2, dy2, det, det_sign: 0, zero_quotients: false, splat: Splat::new(dx1, dy1, dx2, dy2, det) };
         }
+        PlaneDivisor::new(dx1, dy1, dx2, dy2, det)
     }
 
     /// The plane of the values `a` at the three vertices:
@@ -438,8 +478,9 @@ impl PlaneDivisor {
             let da = _mm_sub_pd(_mm_set_pd(a[2], a[1]), _mm_set1_pd(a[0]));
             let swapped = _mm_shuffle_pd::<1>(da, da);
             // nx = da1 dy2 - da2 dy1; ny = da2 dx1 - da1 dx2.
-            let n = _mm_sub_pd(_mm_mul_pd(da, _mm_set_pd(self.dx1, self.dy2)), _mm_mul_pd(swapped, _mm_set_pd(self.dx2, self.dy1)));
-            let q = _mm_div_pd(n, _mm_set1_pd(self.det));
+            let v = &self.splat;
+            let n = _mm_sub_pd(_mm_mul_pd(da, _mm_unpacklo_pd(v.dy2, v.dx1)), _mm_mul_pd(swapped, _mm_unpacklo_pd(v.dy1, v.dx2)));
+            let q = _mm_div_pd(n, v.det);
             Plane { a0: a[0], dx: _mm_cvtsd_f64(q), dy: _mm_cvtsd_f64(_mm_unpackhi_pd(q, q)) }
         }
     }
@@ -467,9 +508,10 @@ impl PlaneDivisor {
         unsafe {
             let da1 = _mm_sub_pd(a[1], a[0]);
             let da2 = _mm_sub_pd(a[2], a[0]);
-            let nx = _mm_sub_pd(_mm_mul_pd(da1, _mm_set1_pd(self.dy2)), _mm_mul_pd(da2, _mm_set1_pd(self.dy1)));
-            let ny = _mm_sub_pd(_mm_mul_pd(da2, _mm_set1_pd(self.dx1)), _mm_mul_pd(da1, _mm_set1_pd(self.dx2)));
-            let det = _mm_set1_pd(self.det);
+            let v = &self.splat;
+            let nx = _mm_sub_pd(_mm_mul_pd(da1, v.dy2), _mm_mul_pd(da2, v.dy1));
+            let ny = _mm_sub_pd(_mm_mul_pd(da2, v.dx1), _mm_mul_pd(da1, v.dx2));
+            let det = v.det;
             let (dx, dy) = (_mm_div_pd(nx, det), _mm_div_pd(ny, det));
             let hi = |v: __m128d| _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
             [
