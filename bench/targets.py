@@ -35,16 +35,21 @@ _VERTEX = ("vertex-bound: per-vertex transform and per-triangle set-up for trian
            "band loop's own work (about 130 before the cover), and with 2 threads the calling thread's "
            "transform and binning (about 500 instructions a triangle; round 23 bins a triangle by its box of "
            "pixel centres, found once, and drops one without centres: spheres_l with 2 threads -5.9 % "
-           "instructions, 21.4 -> 20.9 ms in 6 pairs; the calling thread's front end bounds that frame). "
+           "instructions, 21.4 -> 20.9 ms in 6 pairs; the calling thread's front end bounds that frame; "
+           "round 24 keeps set-up's divisor operands in registers, where 16-byte loads across two stores "
+           "had waited for the store buffer: 17.19 -> 16.30 ms in 6 pairs). "
            "spheres_l was at the line (0.104x) in the 05:49 run of 2026-11-28; softpipe's own time moves "
-           "most between runs (spheres_l 259-384 ms on 2026-11-28)")
+           "most between runs (spheres_l 259-384 ms on 2026-11-28, 152-155 ms on the host of 2026-11-29 "
+           "13:31)")
 _MILLION = ("vertex-bound: on the calling thread about 950 instructions a 1-pixel triangle (round 16: "
             "transform and assembly about 410, the three glVertex2f entry points about 180 since one flag "
             "set at glBegin replaced their separate checks, binning its 128 + 8-byte record about 225; a "
             "list's replay or an array's loop about 210 instead of the entry points; round 17 removed "
             "store-forwarding stalls from the vertex path and the array loop and steps window positions "
             "four at a time under AVX2: arrays_1m -3.6 %, immediate_1m -2.6 % instructions), against about "
-            "900 of set-up and shading in the bands; with 2 threads that serial front end bounds the frame")
+            "900 of set-up and shading in the bands; with 2 threads that serial front end bounds the frame; "
+            "arrays_1m was at the line in the 13:31 run of 2026-11-29 (0.101x); skipping set-up's divisions "
+            "for its constant planes measured 2.8 % faster with 1 thread, but cost spheres_l 3 % (round 24)")
 _SCALE_MILLION = ("the 2-thread path's own extra work: round 21 traced immediate_1m with 2 threads on two "
                   "cores: the calling thread's front end 22.0 ms of a 22.8 ms frame, the worker's bands 20.5 "
                   "ms with 1.0 ms spinning: both threads busy, the pipeline balanced, 43 ms of thread time "
@@ -52,10 +57,12 @@ _SCALE_MILLION = ("the 2-thread path's own extra work: round 21 traced immediate
                   "with 1, +24 %: the binned record written and read, band listing, set-up from the record; "
                   "the rest memory: records written on one core, read on the other); a front end split "
                   "among the threads measured slower (arrays_1m 24.5 against 21.6 ms, round 21)")
-_HOST = ("; and on this host two memory-heavy threads slow each other: two independent 1-thread spheres_l "
-         "processes pinned to the two cores took 50 ms a frame each in one of three tries (31 alone; an "
-         "ALU-bound pair does not slow, 2026-11-29), so 2-thread times move between runs (spheres_l's "
-         "2-thread median 22.5 to 59 ms within an hour, its 1-thread median 31.4 to 32.2)")
+_HOST = ("; and on these hosts two memory-heavy threads slow each other at times: two independent 1-thread "
+         "spheres_l processes pinned to the two cores took 50 ms a frame each in one of three tries (31 alone; "
+         "an ALU-bound pair does not slow, 2026-11-29 morning; on the Zen 5 host of the afternoon 27.2 "
+         "against 25.4 ms, until the host changed mode and the same build's 2-thread frames went from 17 to "
+         "25-56 ms for minutes), so 2-thread times move between runs (spheres_l's 2-thread median 22.5 to "
+         "59 ms within an hour, its 1-thread median 31.4 to 32.2)")
 _SCALE_VERTEX = ("the calling thread bins every triangle (spheres_l: about 770 M of 2,060 M instructions over 3 "
                  "frames); the clock's 2-thread speed-up is below the instruction model's 1.7x" + _HOST)
 _ROUNDING = ("1/255 rounding of halves: both compute c x 255 in single precision, softgl rounds a half up "
