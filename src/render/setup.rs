@@ -465,9 +465,9 @@ impl PlaneDivisor {
     /// same bits. Both quotients always come from one `divpd`; the
     /// scalar form's skipped divisions give exactly the bits dividing
     /// gives (`constant_planes_match_division`), so dividing always is
-    /// the same answer with no branch on the numerators. (The divisor's
-    /// vectors made once per triangle instead, in a struct of three
-    /// `__m128d`, measured 8 instructions a triangle more.)
+    /// the same answer with no branch on the numerators. The divisor's
+    /// values come broadcast ([`Splat`], round 24: 8 instructions a
+    /// triangle more than broadcasting them here, but no stall).
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     fn plane_sse2(&self, a: [f64; 3]) -> Plane {
