@@ -400,6 +400,10 @@ struct Splat {
     dx2: std::arch::x86_64::__m128d,
     dy2: std::arch::x86_64::__m128d,
     det: std::arch::x86_64::__m128d,
+    /// det is neither zero nor NaN: a zero numerator's quotient is the
+    /// zero whose sign is the exclusive or of theirs (IEEE 754; for an
+    /// infinite det too), so its division may be skipped.
+    signed_zeros: bool,
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -408,7 +412,50 @@ impl Splat {
     fn new(dx1: f64, dy1: f64, dx2: f64, dy2: f64, det: f64) -> Splat {
         use std::arch::x86_64::*;
         // SAFETY: SSE2 is part of the x86_64 baseline.
-        unsafe { Splat { dx1: _mm_set1_pd(dx1), dy1: _mm_set1_pd(dy1), dx2: _mm_set1_pd(dx2), dy2: _mm_set1_pd(dy2), det: _mm_set1_pd(det) } }
+        unsafe {
+            Splat {
+                dx1: _mm_set1_pd(dx1),
+                dy1: _mm_set1_pd(dy1),
+                dx2: _mm_set1_pd(dx2),
+                dy2: _mm_set1_pd(dy2),
+                det: _mm_set1_pd(det),
+                signed_zeros: det != 0.0 && !det.is_nan(),
+            }
+        }
+    }
+}
+
+/// Two attributes' values at vertex 0 and their planes' numerators, lane
+/// by lane ([`PlaneDivisor::numerators_sse2`]).
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+struct Numerators {
+    a0: std::arch::x86_64::__m128d,
+    nx: std::arch::x86_64::__m128d,
+    ny: std::arch::x86_64::__m128d,
+}
+
+/// The colours c s (s is 1/w with perspective, else 1) as two pairs of
+/// attributes in lanes: red and green, then blue and alpha, per vertex.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn colour_lanes(c: [Vec4; 3], s: [f64; 3], perspective: bool) -> [[std::arch::x86_64::__m128d; 3]; 2] {
+    use std::arch::x86_64::*;
+    // SAFETY: SSE2 is part of the x86_64 baseline.
+    unsafe {
+        let wide = |i: usize| {
+            let v = _mm_loadu_ps(c[i].as_ref().as_ptr());
+            let (lo, hi) = (_mm_cvtps_pd(v), _mm_cvtps_pd(_mm_movehl_ps(v, v)));
+            // Times 1 is the identity: skipped without perspective.
+            if perspective {
+                let si = _mm_set1_pd(s[i]);
+                (_mm_mul_pd(lo, si), _mm_mul_pd(hi, si))
+            } else {
+                (lo, hi)
+            }
+        };
+        let (w0, w1, w2) = (wide(0), wide(1), wide(2));
+        [[w0.0, w1.0, w2.0], [w0.1, w1.1, w2.1]]
     }
 }
 
@@ -503,6 +550,14 @@ impl PlaneDivisor {
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     fn pair_sse2(&self, a: [std::arch::x86_64::__m128d; 3]) -> [Plane; 2] {
+        self.quotients_sse2(self.numerators_sse2(a), false)
+    }
+
+    /// [`PlaneDivisor::pair_sse2`]'s first half: the values at vertex 0
+    /// and the two numerators, lane by lane.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn numerators_sse2(&self, a: [std::arch::x86_64::__m128d; 3]) -> Numerators {
         use std::arch::x86_64::*;
         // SAFETY: SSE2 is part of the x86_64 baseline.
         unsafe {
@@ -511,14 +566,69 @@ impl PlaneDivisor {
             let v = &self.splat;
             let nx = _mm_sub_pd(_mm_mul_pd(da1, v.dy2), _mm_mul_pd(da2, v.dy1));
             let ny = _mm_sub_pd(_mm_mul_pd(da2, v.dx1), _mm_mul_pd(da1, v.dx2));
-            let det = v.det;
-            let (dx, dy) = (_mm_div_pd(nx, det), _mm_div_pd(ny, det));
+            Numerators { a0: a[0], nx, ny }
+        }
+    }
+
+    /// [`PlaneDivisor::pair_sse2`]'s second half: the numerators divided
+    /// by det, or when `zeros` (the caller found every numerator ±0, and
+    /// det is neither zero nor NaN: `Splat::signed_zeros`) the zeros
+    /// dividing gives, whose sign is the exclusive or of theirs (IEEE
+    /// 754), with no division.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn quotients_sse2(&self, n: Numerators, zeros: bool) -> [Plane; 2] {
+        use std::arch::x86_64::*;
+        // SAFETY: SSE2 is part of the x86_64 baseline.
+        unsafe {
+            let det = self.splat.det;
+            let (dx, dy) = if zeros {
+                let sign = _mm_set1_pd(-0.0);
+                (_mm_and_pd(_mm_xor_pd(n.nx, det), sign), _mm_and_pd(_mm_xor_pd(n.ny, det), sign))
+            } else {
+                (_mm_div_pd(n.nx, det), _mm_div_pd(n.ny, det))
+            };
             let hi = |v: __m128d| _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
             [
-                Plane { a0: _mm_cvtsd_f64(a[0]), dx: _mm_cvtsd_f64(dx), dy: _mm_cvtsd_f64(dy) },
-                Plane { a0: hi(a[0]), dx: hi(dx), dy: hi(dy) },
+                Plane { a0: _mm_cvtsd_f64(n.a0), dx: _mm_cvtsd_f64(dx), dy: _mm_cvtsd_f64(dy) },
+                Plane { a0: hi(n.a0), dx: hi(dx), dy: hi(dy) },
             ]
         }
+    }
+
+    /// The depth and 1/w planes and, unless flat shaded (`c` None), the
+    /// colour planes ([`PlaneDivisor::depth_q_by`],
+    /// [`PlaneDivisor::colours_by`]). In lanes (round 24): when every
+    /// numerator of the three pairs is zero (a face parallel to the screen
+    /// without perspective, coloured alike at its vertices: every
+    /// immediate_1m and arrays_1m triangle) no division is made, the same
+    /// bits; one test a triangle, so that a triangle with anything varying
+    /// pays only that test (three tests, one a pair, cost spheres_l 3 %).
+    #[inline(always)]
+    fn depth_colours_by<const LANES: bool>(&self, zq: [(f64, f64); 3], c: Option<[Vec4; 3]>, s: [f64; 3], perspective: bool) -> ([Plane; 2], Option<[Plane; 4]>) {
+        #[cfg(target_arch = "x86_64")]
+        if LANES {
+            use std::arch::x86_64::*;
+            // SAFETY: SSE2 is part of the x86_64 baseline.
+            unsafe {
+                let dq = self.numerators_sse2(zq.map(|(z, q)| _mm_set_pd(q, z)));
+                let cn = c.map(|c| colour_lanes(c, s, perspective).map(|a| self.numerators_sse2(a)));
+                let mut any = _mm_or_pd(dq.nx, dq.ny);
+                if let Some([rg, ba]) = &cn {
+                    any = _mm_or_pd(any, _mm_or_pd(_mm_or_pd(rg.nx, rg.ny), _mm_or_pd(ba.nx, ba.ny)));
+                }
+                // Every numerator ±0: the bits' union is ±0 in both lanes.
+                let zeros = self.splat.signed_zeros && _mm_movemask_pd(_mm_cmpeq_pd(any, _mm_setzero_pd())) == 3;
+                let dq = self.quotients_sse2(dq, zeros);
+                let color = cn.map(|[rg, ba]| {
+                    let (rg, ba) = (self.quotients_sse2(rg, zeros), self.quotients_sse2(ba, zeros));
+                    [rg[0], rg[1], ba[0], ba[1]]
+                });
+                return (dq, color);
+            }
+        }
+        let dq = self.depth_q_by::<false>(zq);
+        (dq, c.map(|c| self.colours_by::<false>(c, s, perspective, dq[1])))
     }
 
     /// The depth and 1/w planes: side by side in lanes (LANES, on x86_64)
@@ -544,23 +654,7 @@ impl PlaneDivisor {
     fn colours_by<const LANES: bool>(&self, c: [Vec4; 3], s: [f64; 3], perspective: bool, q_plane: Plane) -> [Plane; 4] {
         #[cfg(target_arch = "x86_64")]
         if LANES {
-            use std::arch::x86_64::*;
-            // SAFETY: SSE2 is part of the x86_64 baseline.
-            let (rg, ba) = unsafe {
-                let wide = |i: usize| {
-                    let v = _mm_loadu_ps(c[i].as_ref().as_ptr());
-                    let (lo, hi) = (_mm_cvtps_pd(v), _mm_cvtps_pd(_mm_movehl_ps(v, v)));
-                    // Times 1 is the identity: skipped without perspective.
-                    if perspective {
-                        let si = _mm_set1_pd(s[i]);
-                        (_mm_mul_pd(lo, si), _mm_mul_pd(hi, si))
-                    } else {
-                        (lo, hi)
-                    }
-                };
-                let (w0, w1, w2) = (wide(0), wide(1), wide(2));
-                (self.pair_sse2([w0.0, w1.0, w2.0]), self.pair_sse2([w0.1, w1.1, w2.1]))
-            };
+            let [rg, ba] = colour_lanes(c, s, perspective).map(|a| self.pair_sse2(a));
             return [rg[0], rg[1], ba[0], ba[1]];
         }
         let c = c.map(|c| c.to_array());
@@ -684,15 +778,14 @@ fn planes_by<P: SetupParams, A: Attributes, const LANES: bool>(out: &mut MaybeUn
     let plane = |a: [f64; 3]| d.plane_by::<LANES>(a);
     let q = zq.map(|p| p.1);
     let perspective = !(q[0] == q[1] && q[1] == q[2]);
-    let [mut z, q_plane] = d.depth_q_by::<LANES>(zq);
-    let (flat, color) = if rs.flat() {
-        (Some(super::fragment::color_to_u8(flat_color)), [Plane::default(); 4])
-    } else {
-        let s = if perspective { q } else { [1.0; 3] };
-        // Written out: `[0, 1, 2].map` with this closure stayed an
-        // out-of-line call copying the colours through memory.
-        let c = if back { [v[0].back_color(), v[1].back_color(), v[2].back_color()] } else { [v[0].color(), v[1].color(), v[2].color()] };
-        (None, d.colours_by::<LANES>(c, s, perspective, q_plane))
+    let s = if perspective { q } else { [1.0; 3] };
+    // Written out: `[0, 1, 2].map` with this closure stayed an
+    // out-of-line call copying the colours through memory.
+    let c = (!rs.flat()).then(|| if back { [v[0].back_color(), v[1].back_color(), v[2].back_color()] } else { [v[0].color(), v[1].color(), v[2].color()] });
+    let ([mut z, q_plane], color) = d.depth_colours_by::<LANES>(zq, c, s, perspective);
+    let (flat, color) = match color {
+        None => (Some(super::fragment::color_to_u8(flat_color)), [Plane::default(); 4]),
+        Some(color) => (None, color),
     };
     if let Some((factor, units)) = rs.offset_fill() {
         // Polygon offset (3.5.5): m * factor + r * units, with m the
@@ -839,15 +932,26 @@ mod tests {
             }
         };
         let same = |x: &Plane, y: &Plane| [(x.a0, y.a0), (x.dx, y.dx), (x.dy, y.dy)].iter().all(|&(a, b)| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()));
+        let mut skipped = 0;
         for n in 0..200_000 {
             let (dx1, dy1, dx2, dy2) = (pick(&mut next), pick(&mut next), pick(&mut next), pick(&mut next));
             let det = if n % 9 == 0 { pick(&mut next) } else { dx1 * dy2 - dx2 * dy1 };
             let d = PlaneDivisor::new(dx1, dy1, dx2, dy2, det);
-            let zq: [(f64, f64); 3] = std::array::from_fn(|_| (pick(&mut next), pick(&mut next)));
+            // A quarter of the triangles with every attribute constant
+            // (round 24: all numerators zero, whose divisions
+            // `depth_colours_by` skips in lanes).
+            let constant = n % 4 == 1;
+            let mut zq: [(f64, f64); 3] = std::array::from_fn(|_| (pick(&mut next), pick(&mut next)));
+            if constant {
+                zq = [zq[0]; 3];
+            }
             let lanes = d.depth_q_by::<true>(zq);
             let scalar = d.depth_q_by::<false>(zq);
             assert!(same(&lanes[0], &scalar[0]) && same(&lanes[1], &scalar[1]), "{zq:?} {lanes:?} {scalar:?}");
-            let c: [Vec4; 3] = std::array::from_fn(|_| Vec4::new(pick(&mut next) as f32, pick(&mut next) as f32, pick(&mut next) as f32, pick(&mut next) as f32));
+            let mut c: [Vec4; 3] = std::array::from_fn(|_| Vec4::new(pick(&mut next) as f32, pick(&mut next) as f32, pick(&mut next) as f32, pick(&mut next) as f32));
+            if constant {
+                c = [c[0]; 3];
+            }
             let perspective = n % 3 != 0;
             let s = if perspective { zq.map(|p| p.1) } else { [1.0; 3] };
             let q_plane = scalar[1];
@@ -856,7 +960,22 @@ mod tests {
             for ch in 0..4 {
                 assert!(same(&lanes[ch], &scalar[ch]), "channel {ch} of {c:?} {s:?}: {:?} {:?}", lanes[ch], scalar[ch]);
             }
+            // Depth, 1/w and colours at once (flat shaded: no colours),
+            // with the divisions skipped when every numerator is zero.
+            let colours = (n % 5 != 0).then_some(c);
+            let (lanes, lanes_c) = d.depth_colours_by::<true>(zq, colours, s, perspective);
+            let (scalar, scalar_c) = d.depth_colours_by::<false>(zq, colours, s, perspective);
+            assert!(same(&lanes[0], &scalar[0]) && same(&lanes[1], &scalar[1]), "{zq:?} {lanes:?} {scalar:?}");
+            assert_eq!(lanes_c.is_some(), scalar_c.is_some());
+            if let (Some(l), Some(sc)) = (lanes_c, scalar_c) {
+                assert!((0..4).all(|ch| same(&l[ch], &sc[ch])), "{c:?} {s:?}: {l:?} {sc:?}");
+            }
+            let finite = zq[0].0.is_finite() && zq[0].1.is_finite() && c[0].is_finite() && [dx1, dy1, dx2, dy2].iter().all(|v| v.is_finite());
+            skipped += (constant && finite && det != 0.0 && !det.is_nan()) as usize;
         }
+        // Constant triangles with finite values and a det the zeros may
+        // be signed by: the skipped divisions were compared.
+        assert!(skipped > 10_000, "{skipped}");
     }
 
     /// Setup state for `planes_of` without textures.
