@@ -48,8 +48,9 @@ _MILLION = ("vertex-bound: on the calling thread about 950 instructions a 1-pixe
             "store-forwarding stalls from the vertex path and the array loop and steps window positions "
             "four at a time under AVX2: arrays_1m -3.6 %, immediate_1m -2.6 % instructions), against about "
             "900 of set-up and shading in the bands; with 2 threads that serial front end bounds the frame; "
-            "arrays_1m was at the line in the 13:31 run of 2026-11-29 (0.101x); skipping set-up's divisions "
-            "for its constant planes measured 2.8 % faster with 1 thread, but cost spheres_l 3 % (round 24)")
+            "arrays_1m was at the line in the 13:31 run of 2026-11-29 (0.101x); after that run round 24 skips "
+            "set-up's divisions for a triangle whose planes are all constant, one test a triangle: arrays_1m "
+            "with 2 threads 17.38 -> 16.71 ms in 6 pairs)")
 _SCALE_MILLION = ("the 2-thread path's own extra work: round 21 traced immediate_1m with 2 threads on two "
                   "cores: the calling thread's front end 22.0 ms of a 22.8 ms frame, the worker's bands 20.5 "
                   "ms with 1.0 ms spinning: both threads busy, the pipeline balanced, 43 ms of thread time "
