@@ -543,18 +543,12 @@ impl PlaneDivisor {
     }
 
     /// The planes of two attributes at once, lane 0 and lane 1 of `a[i]`
-    /// their values at vertex i: [`PlaneDivisor::plane`]'s operations
-    /// lane by lane (da1 dy2 - da2 dy1 and da2 dx1 - da1 dx2, each divided
-    /// by det), so each plane has the bits `plane_sse2` gives it, with
-    /// half its instructions (no swap, no per-plane broadcasts).
-    #[cfg(target_arch = "x86_64")]
-    #[inline(always)]
-    fn pair_sse2(&self, a: [std::arch::x86_64::__m128d; 3]) -> [Plane; 2] {
-        self.quotients_sse2(self.numerators_sse2(a), false)
-    }
-
-    /// [`PlaneDivisor::pair_sse2`]'s first half: the values at vertex 0
-    /// and the two numerators, lane by lane.
+    /// their values at vertex i, in two halves: here the values at vertex
+    /// 0 and [`PlaneDivisor::plane`]'s numerators lane by lane (da1 dy2 -
+    /// da2 dy1 and da2 dx1 - da1 dx2), then their quotients by det
+    /// ([`PlaneDivisor::quotients_sse2`]); so each plane has the bits
+    /// `plane_sse2` gives it, with half its instructions (no swap, no
+    /// per-plane broadcasts).
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     fn numerators_sse2(&self, a: [std::arch::x86_64::__m128d; 3]) -> Numerators {
@@ -570,7 +564,7 @@ impl PlaneDivisor {
         }
     }
 
-    /// [`PlaneDivisor::pair_sse2`]'s second half: the numerators divided
+    /// [`PlaneDivisor::numerators_sse2`]'s second half: the numerators divided
     /// by det, or when `zeros` (the caller found every numerator ±0, and
     /// det is neither zero nor NaN: `Splat::signed_zeros`) the zeros
     /// dividing gives, whose sign is the exclusive or of theirs (IEEE
@@ -597,8 +591,11 @@ impl PlaneDivisor {
     }
 
     /// The depth and 1/w planes and, unless flat shaded (`c` None), the
-    /// colour planes ([`PlaneDivisor::depth_q_by`],
-    /// [`PlaneDivisor::colours_by`]). In lanes (round 24): when every
+    /// four colour planes of smooth shading, of c s per vertex (s is 1/w
+    /// with perspective, else 1): in lanes (LANES, on x86_64), depth and
+    /// 1/w side by side, then red and green, then blue and alpha; or one at
+    /// a time by the scalar form ([`PlaneDivisor::depth_q`],
+    /// [`PlaneDivisor::colours`]); the same bits. In lanes (round 24): when every
     /// numerator of the three pairs is zero (a face parallel to the screen
     /// without perspective, coloured alike at its vertices: every
     /// immediate_1m and arrays_1m triangle) no division is made, the same
@@ -627,36 +624,22 @@ impl PlaneDivisor {
                 return (dq, color);
             }
         }
-        let dq = self.depth_q_by::<false>(zq);
-        (dq, c.map(|c| self.colours_by::<false>(c, s, perspective, dq[1])))
+        let dq = self.depth_q(zq);
+        (dq, c.map(|c| self.colours(c, s, perspective, dq[1])))
     }
 
-    /// The depth and 1/w planes: side by side in lanes (LANES, on x86_64)
-    /// or one at a time by the scalar form; the same bits.
+    /// The scalar form's depth and 1/w planes.
     #[inline(always)]
-    fn depth_q_by<const LANES: bool>(&self, zq: [(f64, f64); 3]) -> [Plane; 2] {
-        #[cfg(target_arch = "x86_64")]
-        if LANES {
-            use std::arch::x86_64::*;
-            // SAFETY: SSE2 is part of the x86_64 baseline.
-            return self.pair_sse2(zq.map(|(z, q)| unsafe { _mm_set_pd(q, z) }));
-        }
+    fn depth_q(&self, zq: [(f64, f64); 3]) -> [Plane; 2] {
         [self.plane(zq.map(|p| p.0)), self.plane(zq.map(|p| p.1))]
     }
 
-    /// The four colour planes of smooth shading, of c s per vertex (s is
-    /// 1/w with perspective, else 1). Lanes (LANES, on x86_64): red and
-    /// green side by side, then blue and alpha. The scalar form shares
-    /// `q_plane` for a channel of exactly 1 at every vertex under
-    /// perspective (1 q is q: the same values, so the same plane); the
-    /// lanes solve it again, to the same bits.
+    /// The scalar form's colour planes. It shares `q_plane` for a channel
+    /// of exactly 1 at every vertex under perspective (1 q is q: the same
+    /// values, so the same plane); the lanes solve it again, to the same
+    /// bits.
     #[inline(always)]
-    fn colours_by<const LANES: bool>(&self, c: [Vec4; 3], s: [f64; 3], perspective: bool, q_plane: Plane) -> [Plane; 4] {
-        #[cfg(target_arch = "x86_64")]
-        if LANES {
-            let [rg, ba] = colour_lanes(c, s, perspective).map(|a| self.pair_sse2(a));
-            return [rg[0], rg[1], ba[0], ba[1]];
-        }
+    fn colours(&self, c: [Vec4; 3], s: [f64; 3], perspective: bool, q_plane: Plane) -> [Plane; 4] {
         let c = c.map(|c| c.to_array());
         let channel = |ch: usize| {
             if perspective && c[0][ch] == 1.0 && c[1][ch] == 1.0 && c[2][ch] == 1.0 {
@@ -906,8 +889,9 @@ mod tests {
         assert!(skipped > 50_000 && divided > 50_000, "{skipped} {divided}");
     }
 
-    /// Two planes in lanes (`pair_sse2`, through `depth_q_by` and
-    /// `colours_by`) have the bits of the scalar form's one at a time, on
+    /// Planes in lanes, two at a time (`depth_colours_by`: depth and 1/w,
+    /// colours, their divisions skipped when every numerator is zero) have
+    /// the bits of the scalar form's one at a time, on
     /// random values with zeros of both signs, ones, tiny, huge, infinite
     /// and NaN values, det of both signs, zero and NaN, with and without
     /// perspective (NaN compared as NaN, as in
@@ -945,21 +929,12 @@ mod tests {
             if constant {
                 zq = [zq[0]; 3];
             }
-            let lanes = d.depth_q_by::<true>(zq);
-            let scalar = d.depth_q_by::<false>(zq);
-            assert!(same(&lanes[0], &scalar[0]) && same(&lanes[1], &scalar[1]), "{zq:?} {lanes:?} {scalar:?}");
             let mut c: [Vec4; 3] = std::array::from_fn(|_| Vec4::new(pick(&mut next) as f32, pick(&mut next) as f32, pick(&mut next) as f32, pick(&mut next) as f32));
             if constant {
                 c = [c[0]; 3];
             }
             let perspective = n % 3 != 0;
             let s = if perspective { zq.map(|p| p.1) } else { [1.0; 3] };
-            let q_plane = scalar[1];
-            let lanes = d.colours_by::<true>(c, s, perspective, q_plane);
-            let scalar = d.colours_by::<false>(c, s, perspective, q_plane);
-            for ch in 0..4 {
-                assert!(same(&lanes[ch], &scalar[ch]), "channel {ch} of {c:?} {s:?}: {:?} {:?}", lanes[ch], scalar[ch]);
-            }
             // Depth, 1/w and colours at once (flat shaded: no colours),
             // with the divisions skipped when every numerator is zero.
             let colours = (n % 5 != 0).then_some(c);
