@@ -6,7 +6,8 @@
         build/bench/bench_scene spheres_l 1920 1080 12 /tmp/x.pam
     python3 tools/trace_frames.py /tmp/t.txt [FIRST_FRAME]
 
-The trace holds lines `thread kind t0 t1 arg` (ns). Kinds: b band, l band
+The trace holds lines `thread kind t0 t1 arg cpu` (ns; cpu: the core the
+event ended on). Kinds: b band, l band
 listing (bin_once), S tile::submit, F tile::flush, L a flight launched
 (arg: its triangles), j a worker's run of a job, p a worker's spin, z a
 worker's sleep, o pool::finish's own run, w pool::finish's wait. Frames
@@ -20,7 +21,7 @@ import sys
 def main():
     ev = []
     for line in open(sys.argv[1]):
-        t, k, a, b, arg = line.split()
+        t, k, a, b, arg = line.split()[:5]
         ev.append((int(t), k, int(a), int(b), int(arg)))
     first = int(sys.argv[2]) if len(sys.argv) > 2 else 3
     caller = next(e[0] for e in ev if e[1] == 'F')

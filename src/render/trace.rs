@@ -1,6 +1,7 @@
 //! Timeline instrumentation of the threaded rasterizer (round 13): with
 //! `SOFTGL_TRACE=FILE` every thread's band work, waits and hand-offs are
-//! appended to FILE as text lines `thread kind t0 t1 arg` (nanoseconds),
+//! appended to FILE as text lines `thread kind t0 t1 arg cpu` (nanoseconds;
+//! cpu is the core the event ended on),
 //! written at each flush (`tools/trace_frames.py` sums them per thread
 //! and frame). Off by default: each event costs a check of a once-set
 //! flag.
@@ -10,7 +11,7 @@ use std::sync::{Mutex, OnceLock};
 use std::time::Instant;
 
 static FILE: OnceLock<Option<String>> = OnceLock::new();
-static EVENTS: Mutex<Vec<(u32, u8, u64, u64, u32)>> = Mutex::new(Vec::new());
+static EVENTS: Mutex<Vec<(u32, u8, u64, u64, u32, i32)>> = Mutex::new(Vec::new());
 static NEXT: AtomicU32 = AtomicU32::new(0);
 
 thread_local! {
@@ -38,7 +39,10 @@ pub fn rec(kind: u8, t0: u64, arg: u32) {
     }
     let t1 = now();
     let id = ID.with(|i| *i);
-    EVENTS.lock().unwrap_or_else(|e| e.into_inner()).push((id, kind, t0, t1, arg));
+    // The core the event ended on: shows threads sharing one (round 25).
+    // SAFETY: sched_getcpu takes no arguments and only reads.
+    let cpu = unsafe { libc::sched_getcpu() };
+    EVENTS.lock().unwrap_or_else(|e| e.into_inner()).push((id, kind, t0, t1, arg, cpu));
 }
 
 pub fn dump() {
@@ -47,8 +51,8 @@ pub fn dump() {
     use std::io::Write;
     if let Ok(mut f) = std::fs::OpenOptions::new().create(true).append(true).open(path) {
         let mut s = String::new();
-        for (id, k, t0, t1, a) in ev {
-            s.push_str(&format!("{id} {} {t0} {t1} {a}\n", k as char));
+        for (id, k, t0, t1, a, cpu) in ev {
+            s.push_str(&format!("{id} {} {t0} {t1} {a} {cpu}\n", k as char));
         }
         let _ = f.write_all(s.as_bytes());
     }
