@@ -1,7 +1,7 @@
 //! Timeline instrumentation of the threaded rasterizer (round 13): with
 //! `SOFTGL_TRACE=FILE` every thread's band work, waits and hand-offs are
 //! appended to FILE as text lines `thread kind t0 t1 arg cpu` (nanoseconds;
-//! cpu is the core the event ended on),
+//! cpu is the core the event ended on, -1 off Linux),
 //! written at each flush (`tools/trace_frames.py` sums them per thread
 //! and frame). Off by default: each event costs a check of a once-set
 //! flag.
@@ -40,8 +40,11 @@ pub fn rec(kind: u8, t0: u64, arg: u32) {
     let t1 = now();
     let id = ID.with(|i| *i);
     // The core the event ended on: shows threads sharing one (round 25).
+    #[cfg(target_os = "linux")]
     // SAFETY: sched_getcpu takes no arguments and only reads.
     let cpu = unsafe { libc::sched_getcpu() };
+    #[cfg(not(target_os = "linux"))]
+    let cpu = -1;
     EVENTS.lock().unwrap_or_else(|e| e.into_inner()).push((id, kind, t0, t1, arg, cpu));
 }
 
