@@ -19,7 +19,7 @@ how many pairs the second library won. Needs build/bench/bench_scene.
 
 Round 25: each LIBDIR is first copied into a fresh temporary directory,
 and the pairs alternate which library runs first. The same library
-bytes in a file left idle for an hour ran 15 % slower than a fresh copy
+bytes in a file left idle for about 45 minutes ran 15 % slower than a fresh copy
 of it (arrays_1m with 1 thread, 26.9 against 22.9 ms, 6 of 6 pairs)
 until the page cache was dropped: this host's DAMON pages out idle
 memory, and a file read back in afterwards is mapped from scattered 4
