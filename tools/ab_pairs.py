@@ -21,12 +21,11 @@ Round 25: each LIBDIR is first copied into a fresh temporary directory,
 and the pairs alternate which library runs first. The same library
 bytes in a file left idle for about 45 minutes ran 15 % slower than a fresh copy
 of it (arrays_1m with 1 thread, 26.9 against 22.9 ms, 6 of 6 pairs)
-until the page cache was dropped: this host's DAMON pages out idle
-memory, and a file read back in afterwards is mapped from scattered 4
-KiB pages rather than the large, contiguous ones a fresh write or a
-readahead gets (which Zen's TLBs can coalesce), and the rasterizer's
-code is large. A copy made just before comparing removes that from the
-comparison.
+until the page cache was dropped (this host's DAMON pages out idle
+memory; likely, text read back in afterwards sits in scattered 4 KiB
+pages rather than the large contiguous ones a fresh write or a
+readahead gets, which Zen's TLBs can coalesce). A copy made just before
+comparing removes that from the comparison.
 """
 import json
 import multiprocessing
