@@ -37,7 +37,9 @@ _VERTEX = ("vertex-bound: per-vertex transform and per-triangle set-up for trian
            "pixel centres, found once, and drops one without centres: spheres_l with 2 threads -5.9 % "
            "instructions, 21.4 -> 20.9 ms in 6 pairs; the calling thread's front end bounds that frame; "
            "round 24 keeps set-up's divisor operands in registers, where 16-byte loads across two stores "
-           "had waited for the store buffer: 17.19 -> 16.30 ms in 6 pairs). "
+           "had waited for the store buffer: 17.19 -> 16.30 ms in 6 pairs; round 25: the calling thread "
+           "never shades a band in that frame and the worker idles 12 % of it; the front end is about 505 "
+           "instructions a triangle, binning 240 of them, so 10x needs it 14 % shorter). "
            "spheres_l was at the line (0.104x) in the 05:49 run of 2026-11-28; softpipe's own time moves "
            "most between runs (spheres_l 259-384 ms on 2026-11-28, 152-155 ms on the host of 2026-11-29 "
            "13:31)")
@@ -50,7 +52,8 @@ _MILLION = ("vertex-bound: on the calling thread about 950 instructions a 1-pixe
             "900 of set-up and shading in the bands; with 2 threads that serial front end bounds the frame; "
             "arrays_1m was at the line in the 13:31 run of 2026-11-29 (0.101x); after that run round 24 skips "
             "set-up's divisions for a triangle whose planes are all constant, one test a triangle: arrays_1m "
-            "with 2 threads 17.38 -> 16.71 ms in 6 pairs)")
+            "with 2 threads 17.38 -> 16.71 ms in 6 pairs; it passed at 0.098x at 14:25 and missed at 0.101x at "
+            "16:28: at the line, softpipe's own time moving 168-172 ms between the runs)")
 _SCALE_MILLION = ("the 2-thread path's own extra work: round 21 traced immediate_1m with 2 threads on two "
                   "cores: the calling thread's front end 22.0 ms of a 22.8 ms frame, the worker's bands 20.5 "
                   "ms with 1.0 ms spinning: both threads busy, the pipeline balanced, 43 ms of thread time "
@@ -133,7 +136,11 @@ LIMITS = {
               "after 512 records rather than grown by copies; round 23: in huge pages past 8,192 records, "
               "spheres_m's first-frame page faults 2,205 -> 1,222) and the worker thread's start: in 8 spheres_m starts "
               "(2 threads) the worker took its first job 1.3 to 3.8 ms after the first flight was handed over, "
-              "the calling thread working alone until then. "
+              "the calling thread working alone until then. Round 25: on this host fresh memory is reclaimed "
+              "and handed back to the hypervisor when idle (DAMON pageout, free page reporting), and a fresh "
+              "2 MiB page then costs 4.6-4.9 ms to touch instead of 0.05 (one band of the first flight "
+              "stalled so in 2 of 5 traced spheres_m starts), so a start after an idle pause takes about "
+              "twice as long (spheres_m 21.9 against 9.7 ms, 12 starts each). "
               "In brackets: llvmpipe's first frame over softgl's steady frame, the "
               "most any start-up work could reach; below 5x the target cannot be met by start-up alone"),
     },
