@@ -19,9 +19,9 @@ how many pairs the second library won. Needs build/bench/bench_scene.
 
 Round 25: each LIBDIR is first copied into a fresh temporary directory,
 and the pairs alternate which library runs first. The same library
-bytes in a file left idle for about 45 minutes ran 15 % slower than a fresh copy
-of it (arrays_1m with 1 thread, 26.9 against 22.9 ms, 6 of 6 pairs)
-until the page cache was dropped (this host's DAMON pages out idle
+bytes in a file left idle for about 45 minutes ran 15 % slower than a
+fresh copy of it (arrays_1m with 1 thread, 26.9 against 22.9 ms, 6 of 6
+pairs) until the page cache was dropped (this host's DAMON pages out idle
 memory; likely, text read back in afterwards sits in scattered 4 KiB
 pages rather than the large contiguous ones a fresh write or a
 readahead gets, which Zen's TLBs can coalesce). A copy made just before
@@ -75,14 +75,15 @@ def main():
     scratch = tempfile.mkdtemp(prefix="ab_pairs.")
     try:
         fresh = {lib: shutil.copytree(lib, os.path.join(scratch, str(i)), symlinks=True) for i, lib in enumerate(libs)}
-        res = run_pairs(scene, pairs, frames, env, libs, fresh)
+        res, skipped = run_pairs(scene, pairs, frames, env, libs, fresh)
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
-    report(scene, envs, libs, res)
+    report(scene, envs, libs, res, skipped)
 
 
 def run_pairs(scene, pairs, frames, env, libs, fresh):
-    """{lib: [median frame ms of each pair]} and the pairs skipped."""
+    """({lib: [median frame ms of each pair]}, pairs skipped), each
+    library run from its fresh copy `fresh[lib]`."""
     res = {lib: [] for lib in libs}
     skipped = 0
     while len(res[libs[0]]) < pairs and skipped < 300:
@@ -96,8 +97,7 @@ def run_pairs(scene, pairs, frames, env, libs, fresh):
     return res, skipped
 
 
-def report(scene, envs, libs, run):
-    res, skipped = run
+def report(scene, envs, libs, res, skipped):
     if not res[libs[0]]:
         sys.exit("the host never gave two cores")
     for lib in libs:
