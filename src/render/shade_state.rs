@@ -88,6 +88,9 @@ pub struct ShadeState {
     pub texture: Option<Arc<TextureStage>>,
     pub fog: Option<Fog>,
     pub color_sum: bool,
+    /// What a binned triangle under this state keeps besides its colours
+    /// (`tile::ExtraLayout`).
+    pub extras: super::tile::ExtraLayout,
     /// By [`Self::kernel_index`].
     kernels: [Kernel; 4],
     /// The block kernels (`fragment::stamp`) for tiny triangles, where
@@ -107,6 +110,7 @@ impl ShadeState {
             texture: rs.texture.clone(),
             fog: rs.fog,
             color_sum: rs.color_sum,
+            extras: super::tile::ExtraLayout::of(rs.texture.as_ref().map(|t| &t.active[..]), rs.fog.is_some(), rs.color_sum),
             kernels: [fragment::reference::shade_span; 4],
             stamps: [None; 4],
         };

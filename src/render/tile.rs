@@ -170,16 +170,95 @@ struct BinVertex {
     color: [f32; 4],
 }
 
-/// The attributes only texturing and fog read, per vertex.
-#[derive(Clone, Copy, Debug)]
-struct BinExtra {
-    tex: [[Vec4; MAX_UNITS]; 3],
-    fog: [f32; 3],
-    /// The secondary colour of the side shown.
-    secondary: [Vec4; 3],
+/// Where a record's extra attributes (those only texturing, fog and the
+/// colour sum read) sit in its run of [`Batch::extras`], in floats: the
+/// three vertices' fog coordinates, then each active unit's texture
+/// coordinates (three vertices of four), then the secondary colours
+/// (three of four). Round 26: a record keeps only what its state's
+/// set-up reads (`setup::planes_of`); every record used to carry all four
+/// units' coordinates, the fog coordinates and the secondary colours, 256
+/// bytes copied on the calling thread for a fogged triangle that needs 12.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ExtraLayout {
+    /// Floats a record takes (0: none).
+    len: u8,
+    /// The fog coordinates, at 0.
+    fog: bool,
+    /// The active units, in order, and their coordinates' offsets.
+    units: [u8; MAX_UNITS],
+    unit_count: u8,
+    tex_at: [u8; MAX_UNITS],
+    /// The secondary colours' offset, when read.
+    secondary_at: Option<u8>,
 }
 
-const NO_EXTRA: BinExtra = BinExtra { tex: [[Vec4::ZERO; MAX_UNITS]; 3], fog: [0.0; 3], secondary: [Vec4::ZERO; 3] };
+impl ExtraLayout {
+    /// What a state's set-up reads: the coordinates of the texture units
+    /// in `active`, the fog coordinate when `fog`, the secondary colour
+    /// when `color_sum` and textured (section 3.9).
+    pub fn of(active: Option<&[usize]>, fog: bool, color_sum: bool) -> ExtraLayout {
+        let mut l = ExtraLayout { fog, len: if fog { 3 } else { 0 }, ..ExtraLayout::default() };
+        for &u in active.unwrap_or(&[]).iter().take(MAX_UNITS) {
+            l.units[l.unit_count as usize] = u as u8;
+            l.unit_count += 1;
+            l.tex_at[u.min(MAX_UNITS - 1)] = l.len;
+            l.len += 12;
+        }
+        if color_sum && active.is_some() {
+            l.secondary_at = Some(l.len);
+            l.len += 12;
+        }
+        l
+    }
+
+    /// Floats a record takes.
+    pub fn len(&self) -> usize {
+        self.len as usize
+    }
+
+    /// Appends what the layout keeps of the vertices `v` (in record
+    /// order; the back secondary colours when `back`) to `to`.
+    #[inline(always)]
+    fn write<A: Attributes>(&self, to: &mut Vec<f32>, v: [&A; 3], back: bool) {
+        if self.fog {
+            to.extend_from_slice(&v.map(|v| v.fog()));
+        }
+        for &u in &self.units[..self.unit_count as usize] {
+            for v in v {
+                to.extend_from_slice(&v.tex(u as usize).to_array());
+            }
+        }
+        if self.secondary_at.is_some() {
+            for v in v {
+                to.extend_from_slice(&if back { v.back_secondary() } else { v.secondary() }.to_array());
+            }
+        }
+    }
+}
+
+/// A record's extra attributes: the batch's floats and the layout of the
+/// record's state.
+#[derive(Clone, Copy)]
+struct Extra<'a> {
+    floats: &'a [f32],
+    layout: &'a ExtraLayout,
+}
+
+impl<'a> Extra<'a> {
+    /// The record's own floats (at `at`, past the end for none).
+    #[inline(always)]
+    fn at(self, at: usize) -> Extra<'a> {
+        let floats = self.floats.get(at..at.saturating_add(self.layout.len())).unwrap_or(&[]);
+        Extra { floats, ..self }
+    }
+
+    /// Four floats at `at` (zeros past the end, which the layout never
+    /// asks for).
+    #[inline(always)]
+    fn vec4(self, at: usize) -> Vec4 {
+        self.floats.get(at..at + 4).map_or(Vec4::ZERO, Vec4::from_slice)
+    }
+}
 
 /// A triangle waiting to be set up and shaded (in a tile worker): its
 /// positively oriented fixed-point vertices, what setup reads of them,
@@ -205,8 +284,8 @@ struct Binned {
     /// A line: its index in [`Batch::lines`] (bit 31 clear); a point:
     /// [`POINT`] | its index in [`Batch::points`]; a triangle:
     /// [`TRIANGLE`], [`FRONT`] when it faces the front, [`FIT`] when it
-    /// fits the cover's lanes, and its index in [`Batch::extras`] in the
-    /// low 28 bits ([`NO_EXTRA_INDEX`] for none). A line's or point's
+    /// fits the cover's lanes, and the offset of its run in
+    /// [`Batch::extras`] in the low 28 bits ([`NO_EXTRA_INDEX`] for none). A line's or point's
     /// other fields except the box and state are unused.
     prim: u32,
 }
@@ -224,7 +303,7 @@ const FRONT: u32 = 1 << 29;
 /// extents fit the cover's lanes (`raster::CentreBox::lanes_fit`, round
 /// 23: found with its box when it is binned).
 const FIT: u32 = 1 << 28;
-/// The low bits of a triangle's [`Binned::prim`]: its extra index.
+/// The low bits of a triangle's [`Binned::prim`]: its extras' offset.
 const NO_EXTRA_INDEX: u32 = FIT - 1;
 
 impl Binned {
@@ -244,13 +323,6 @@ impl Binned {
     #[inline(always)]
     fn lanes_fit(&self) -> bool {
         self.prim & FIT != 0
-    }
-
-    /// A triangle's index in [`Batch::extras`]; past the end (no extra)
-    /// for lines and points.
-    #[inline(always)]
-    fn extra(&self) -> usize {
-        if self.is_triangle() { (self.prim & NO_EXTRA_INDEX) as usize } else { usize::MAX }
     }
 
     /// The snapped vertices as setup reads them.
@@ -283,7 +355,7 @@ fn rect_of(b: BinBox) -> Rect {
 /// colour read in place from the record, not copied).
 struct BinAttributes<'a> {
     v: &'a BinVertex,
-    extra: &'a BinExtra,
+    extra: Extra<'a>,
     i: usize,
 }
 
@@ -298,25 +370,25 @@ impl Attributes for BinAttributes<'_> {
     }
     #[inline(always)]
     fn tex(&self, unit: usize) -> Vec4 {
-        self.extra.tex[self.i][unit]
+        self.extra.vec4(self.extra.layout.tex_at[unit] as usize + 4 * self.i)
     }
     #[inline(always)]
     fn fog(&self) -> f32 {
-        self.extra.fog[self.i]
+        self.extra.floats.get(self.i).copied().unwrap_or(0.0)
     }
     #[inline(always)]
     fn secondary(&self) -> Vec4 {
-        self.extra.secondary[self.i]
+        self.extra.layout.secondary_at.map_or(Vec4::ZERO, |at| self.extra.vec4(at as usize + 4 * self.i))
     }
     #[inline(always)]
     fn back_secondary(&self) -> Vec4 {
-        self.extra.secondary[self.i]
+        self.secondary()
     }
 }
 
 /// A vertex of a binned triangle without extra attributes (round 18):
-/// the colour read in place, and the texture coordinates, fog coordinate
-/// and secondary colour of [`NO_EXTRA`] (its state reads none of them:
+/// the colour read in place, and zeros for the texture coordinates, fog
+/// coordinate and secondary colour (its state reads none of them:
 /// `state_of` keeps extras for every state that does).
 impl Attributes for BinVertex {
     #[inline(always)]
@@ -353,7 +425,9 @@ pub struct Batch {
     /// Each record's box (round 14: apart from the record, so that the
     /// band listing reads 8 bytes a record, not its cache lines).
     boxes: Vec<BinBox>,
-    extras: Vec<BinExtra>,
+    /// The triangles' extra attributes, each record's run laid out by
+    /// its state's [`ExtraLayout`].
+    extras: Vec<f32>,
     lines: Vec<LineRun>,
     points: Vec<PointRun>,
     /// The states the triangles were drawn under, in order.
@@ -610,12 +684,10 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], centres: 
     let (state, flat, extra) = state_of(rs, b);
     let extra = if extra {
         let v = if ccw { v } else { [v[0], v[2], v[1]] };
-        b.extras.push(BinExtra {
-            tex: std::array::from_fn(|i| std::array::from_fn(|u| v[i].tex(u))),
-            fog: std::array::from_fn(|i| v[i].fog()),
-            secondary: std::array::from_fn(|i| if back { v[i].back_secondary() } else { v[i].secondary() }),
-        });
-        b.extras.len() as u32 - 1
+        let at = b.extras.len();
+        b.states[state as usize].extras.write(&mut b.extras, v, back);
+        // At most `MAX_BATCH` records of at most 63 floats: below 2^28.
+        at as u32
     } else {
         NO_EXTRA_INDEX
     };
@@ -693,7 +765,7 @@ fn state_captured(rs: &RenderState, b: &mut Batch) -> (u32, bool, bool) {
         if !b.states.last().is_some_and(|l| Arc::ptr_eq(l, st)) {
             b.states.push(st.clone());
         }
-        (b.states.len() as u32 - 1, st.flat, st.texture.is_some() || st.fog.is_some())
+        (b.states.len() as u32 - 1, st.flat, st.extras.len() > 0)
     });
     // A reference or never-validated state is captured anew each time.
     b.last_stamp = if rs.reference { 0 } else { rs.stamp };
@@ -840,7 +912,7 @@ enum Shading<'a> {
 /// shading it at once would compute (the same inputs to `planes_of`), so
 /// the pixels are the same.
 #[inline]
-fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, blocks: bool, mut shade: impl FnMut(Shading<'_>)) {
+fn shade_binned(t: &Binned, st: &ShadeState, extra: Extra<'_>, rect: Rect, blocks: bool, mut shade: impl FnMut(Shading<'_>)) {
     let stipple = st.polygon_stipple.as_deref();
     let (x, y) = t.xy();
     let centres = raster::CentreBox::of_rect(rect, t.lanes_fit());
@@ -878,7 +950,7 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: &BinExtra, rect: Rect, block
 /// Round 17: the snapped vertices by reference (by value, the band
 /// loop kept two more copies of them on its stack).
 #[inline(always)]
-fn shade_binned_block(t: &Binned, st: &ShadeState, extra: &BinExtra, (x, y): (&[i64; 3], &[i64; 3]), centres: raster::CentreBox, blocks: bool, shade: &mut impl FnMut(Shading<'_>)) -> bool {
+fn shade_binned_block(t: &Binned, st: &ShadeState, extra: Extra<'_>, (x, y): (&[i64; 3], &[i64; 3]), centres: raster::CentreBox, blocks: bool, shade: &mut impl FnMut(Shading<'_>)) -> bool {
     let mut slot = std::mem::MaybeUninit::uninit();
     let Some(cover) = raster::Cover::find_into_at(&mut slot, x, y, centres, blocks) else {
         return false;
@@ -906,15 +978,16 @@ fn shade_binned_block(t: &Binned, st: &ShadeState, extra: &BinExtra, (x, y): (&[
 /// caller, as `setup::solve`'s): the inputs `setup::planes_of` took when the
 /// triangle was binned (its vertices' depth, 1/w and colours, the
 /// provoking vertex's colour for flat shading, its facing, and `extra`,
-/// the record's extra attributes or [`NO_EXTRA`]), so the same planes.
+/// the batch's extra attributes with the layout of the record's state),
+/// so the same planes.
 /// Round 18: out of line with the plane solution inlined
 /// (`setup::solve_here`), reading the record in place; the shading paths
 /// called `planes_into` with the depths, 1/w and colours copied to the
 /// stack for it (about 35 instructions a triangle). A record without
-/// extras reads its vertices as they are ([`BinVertex`]'s attributes are
-/// [`NO_EXTRA`]'s), with no attribute array on the stack.
+/// extras reads its vertices as they are ([`BinVertex`]'s attributes,
+/// zeros besides the colour), with no attribute array on the stack.
 #[inline(always)]
-fn solve_binned<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, extra: &BinExtra, x: &[i64; 3], y: &[i64; 3]) -> &'a TriangleSetup {
+fn solve_binned<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, extra: Extra<'_>, x: &[i64; 3], y: &[i64; 3]) -> &'a TriangleSetup {
     if t.prim & NO_EXTRA_INDEX == NO_EXTRA_INDEX {
         solve_plain(slot, st, t, x, y)
     } else {
@@ -931,7 +1004,8 @@ fn solve_plain<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleS
 
 /// [`solve_binned`] for a record with extras.
 #[inline(never)]
-fn solve_extra<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, extra: &BinExtra, x: &[i64; 3], y: &[i64; 3]) -> &'a TriangleSetup {
+fn solve_extra<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, extra: Extra<'_>, x: &[i64; 3], y: &[i64; 3]) -> &'a TriangleSetup {
+    let extra = extra.at((t.prim & NO_EXTRA_INDEX) as usize);
     let a = [0, 1, 2].map(|i| BinAttributes { v: &t.v[i], extra, i });
     let zq = t.v.map(|v| (v.z, v.q));
     super::setup::solve_here(slot, st, zq, a.each_ref(), x, y, Vec4::from_array(t.v[0].color), false, t.front_facing())
@@ -1230,7 +1304,10 @@ fn list_bands(boxes: &[BinBox], surface: Rect, rows: usize, bins: &mut [Vec<u32>
 impl pool::Work for Flight {
     fn work(&self) {
         let b = &self.batch;
-        let of = |t: &Binned| (&*b.states[t.state as usize], b.extras.get(t.extra()).unwrap_or(&NO_EXTRA));
+        let of = |t: &Binned| {
+            let st = &*b.states[t.state as usize];
+            (st, Extra { floats: &b.extras, layout: &st.extras })
+        };
         let raw = &self.raw;
         let stamp_target = StampTarget { color: raw.color, depth: raw.depth, width: raw.width };
         // Asked once for the flight on this thread (round 18), not once a
@@ -1439,7 +1516,8 @@ fn shade_here(b: &Batch, fb: &mut Framebuffer) {
         while let Some((_, op)) = ops.next_if(|(at, _)| *at <= i) {
             op.band(0, fb.height, width, &mut fb.color[..], &mut fb.accum[..]);
         }
-        let (st, extra) = (&*b.states[t.state as usize], b.extras.get(t.extra()).unwrap_or(&NO_EXTRA));
+        let st = &*b.states[t.state as usize];
+        let extra = Extra { floats: &b.extras, layout: &st.extras };
         if !t.is_triangle() {
             draw_prim(b, t, st, fb, width, rect_of(bbox).intersect(surface));
             continue;
@@ -1502,7 +1580,7 @@ mod tests {
         for i in 0..5000 {
             push_prim(&mut filled, Rect::new(0, 0, 1, 1), 0, i);
         }
-        filled.extras.push(NO_EXTRA);
+        filled.extras.extend([0.5; 15]);
         let mut spare = Batch::default();
         spare.reserve_like(&filled);
         assert!(spare.tris.is_empty() && spare.tris.capacity() >= filled.tris.capacity());
@@ -1596,6 +1674,8 @@ mod tests {
         flat: bool,
         offset: Option<(f32, f32)>,
         fog: Option<crate::render::fog::Fog>,
+        texture: Option<Arc<crate::render::texture::TextureStage>>,
+        color_sum: bool,
     }
 
     impl SetupParams for Params {
@@ -1606,22 +1686,30 @@ mod tests {
             self.offset
         }
         fn texture(&self) -> Option<&Arc<crate::render::texture::TextureStage>> {
-            None
+            self.texture.as_ref()
         }
         fn fog(&self) -> Option<crate::render::fog::Fog> {
             self.fog
         }
         fn color_sum(&self) -> bool {
-            false
+            self.color_sum
         }
     }
 
+    /// A triangle's extra attributes as the calling thread read them.
+    #[derive(Default)]
+    struct Extras {
+        tex: [[Vec4; MAX_UNITS]; 3],
+        fog: [f32; 3],
+        secondary: [Vec4; 3],
+    }
+
     /// A binned vertex as the band side read it before round 18: its
-    /// colour copied out, the rest from the record's extras (or
-    /// `NO_EXTRA`).
+    /// colour copied out, the rest from the triangle's extras (zeros for
+    /// a record without).
     struct Copied<'a> {
         color: Vec4,
-        extra: &'a BinExtra,
+        extra: &'a Extras,
         i: usize,
     }
 
@@ -1654,6 +1742,12 @@ mod tests {
         v.extend(plane(&t.q));
         t.color.iter().for_each(|p| v.extend(plane(p)));
         v.extend([t.perspective as u64, t.front_facing as u64, t.tex.is_some() as u64]);
+        if let Some(tex) = &t.tex {
+            for &u in &tex.stage.active {
+                v.push(u as u64);
+                tex.planes[u].iter().for_each(|p| v.extend(plane(p)));
+            }
+        }
         v.push(t.flat.map_or(1 << 40, |c| u32::from_le_bytes(c) as u64));
         match &t.fog {
             Some((p, f)) => {
@@ -1672,11 +1766,13 @@ mod tests {
     /// Round 18: `solve_binned` (the record read in place, by
     /// `solve_plain` for a record without extras and `solve_extra` for
     /// one with) gives the bits of `setup::planes_of` on the attributes as
-    /// the band side copied them before (`Copied`, reading `NO_EXTRA` for
-    /// a record without extras), on random records: perspective or not,
-    /// equal and distinct 1/w, flat or smooth, with and without fog and
-    /// polygon offset, both facings, the record's vertices in either
-    /// order.
+    /// the band side copied them before (`Copied`, zeros for a record
+    /// without extras), on random records: perspective or not, equal and
+    /// distinct 1/w, flat or smooth, with and without fog and polygon
+    /// offset, both facings, the record's vertices in either order.
+    /// Round 26: the extras written by their state's `ExtraLayout` (fog,
+    /// texture units 0-3 in several sets, the colour sum) into a batch's
+    /// floats after other records' and read back from there.
     #[test]
     fn binned_setups_match_planes_of() {
         let mut seed = 11u64;
@@ -1685,7 +1781,10 @@ mod tests {
             seed >> 11
         };
         let fog = crate::render::fog::Fog { mode: crate::render::fog::GL_LINEAR, density: 1.0, start: 0.25, end: 3.0, color: Vec4::ONE, per_fragment: true };
-        let (mut plain, mut extras) = (0, 0);
+        let unit_sets: [&[usize]; 5] = [&[0], &[1], &[0, 2], &[3], &[0, 1, 2, 3]];
+        let stages = unit_sets.map(|active| Arc::new(crate::render::texture::TextureStage { units: Default::default(), envs: [crate::render::texture::env::Env::default(); MAX_UNITS], active: active.to_vec() }));
+        let mut floats: Vec<f32> = Vec::new();
+        let (mut plain, mut extras, mut textured) = (0, 0, 0);
         for n in 0..40_000 {
             let mut f = |scale: f64| ((next() >> 13) as f64 / (1u64 << 40) as f64 - 0.5) * scale;
             let x: [i64; 3] = std::array::from_fn(|_| (f(2.0) * 4096.0) as i64 + 100_000);
@@ -1697,36 +1796,48 @@ mod tests {
                 color: std::array::from_fn(|c| if n % 5 == 0 && c == 3 { 1.0 } else { (0.5 + f(1.0)) as f32 }),
             });
             let with_extra = n % 2 == 1;
-            let extra = BinExtra {
-                tex: std::array::from_fn(|_| std::array::from_fn(|_| Vec4::new(f(4.0) as f32, f(4.0) as f32, 0.0, 1.0))),
+            let drawn = Extras {
+                tex: std::array::from_fn(|_| std::array::from_fn(|_| Vec4::new(f(4.0) as f32, f(4.0) as f32, f(1.0) as f32, 1.0 + f(0.5) as f32))),
                 fog: std::array::from_fn(|_| (2.0 * f(2.0)) as f32),
                 secondary: std::array::from_fn(|_| Vec4::new(f(1.0) as f32, f(1.0) as f32, f(1.0) as f32, 0.0)),
             };
             let front = n % 4 < 2;
+            let params = Params {
+                flat: n % 7 == 0,
+                offset: (n % 6 == 0).then_some((1.5, 2.0)),
+                fog: (with_extra && n % 8 < 5).then_some(fog),
+                texture: (with_extra && n % 3 != 0).then(|| stages[(n / 2) % stages.len()].clone()),
+                color_sum: n % 10 < 5,
+            };
+            let layout = ExtraLayout::of(params.texture.as_ref().map(|t| &t.active[..]), params.fog.is_some(), params.color_sum);
+            let none = Extras::default();
+            let read = if layout.len() > 0 { &drawn } else { &none };
+            let copied = [0, 1, 2].map(|i| Copied { color: Vec4::from_array(v[i].color), extra: read, i });
+            let at = floats.len() as u32;
+            layout.write(&mut floats, copied.each_ref(), false);
             let t = Binned {
                 v,
                 x: x.map(|c| c as i32),
                 y: y.map(|c| c as i32),
                 state: 0,
-                prim: TRIANGLE | if front { FRONT } else { 0 } | if with_extra { 5 } else { NO_EXTRA_INDEX },
+                prim: TRIANGLE | if front { FRONT } else { 0 } | if layout.len() > 0 { at } else { NO_EXTRA_INDEX },
             };
-            let params = Params { flat: n % 7 == 0, offset: (n % 6 == 0).then_some((1.5, 2.0)), fog: (n % 8 < 5).then_some(fog) };
-            let extra_read = if with_extra { &extra } else { &NO_EXTRA };
-            let copied = [0, 1, 2].map(|i| Copied { color: Vec4::from_array(t.v[i].color), extra: extra_read, i });
             let want = crate::render::setup::planes_of(&params, t.v.map(|v| (v.z, v.q)), copied.each_ref(), x, y, Vec4::from_array(t.v[0].color), false, front);
             let (xy, yy) = t.xy();
             assert_eq!((xy, yy), (x, y));
             let mut slot = std::mem::MaybeUninit::uninit();
-            let got = solve_binned(&mut slot, &params, &t, extra_read, &xy, &yy);
-            assert_eq!(setup_bits(got), setup_bits(&want), "record {n}: {x:?} {y:?} {:?} extra {with_extra}", t.v);
+            let got = solve_binned(&mut slot, &params, &t, Extra { floats: &floats, layout: &layout }, &xy, &yy);
+            assert_eq!(setup_bits(got), setup_bits(&want), "record {n}: {x:?} {y:?} {:?} layout {layout:?}", t.v);
             // SAFETY: solved above.
             unsafe { crate::render::setup::release(&mut slot) };
-            if with_extra {
+            if layout.len() > 0 {
                 extras += 1;
+                textured += params.texture.is_some() as u32;
             } else {
                 plain += 1;
             }
         }
+        assert!(textured > 5_000, "{textured}");
         assert!(plain > 10_000 && extras > 10_000);
     }
 }
