@@ -912,12 +912,12 @@ enum Shading<'a> {
 /// shading it at once would compute (the same inputs to `planes_of`), so
 /// the pixels are the same.
 #[inline]
-fn shade_binned(t: &Binned, st: &ShadeState, extra: Extra<'_>, rect: Rect, blocks: bool, mut shade: impl FnMut(Shading<'_>)) {
+fn shade_binned(t: &Binned, st: &ShadeState, extras: &[f32], rect: Rect, blocks: bool, mut shade: impl FnMut(Shading<'_>)) {
     let stipple = st.polygon_stipple.as_deref();
     let (x, y) = t.xy();
     let centres = raster::CentreBox::of_rect(rect, t.lanes_fit());
     let count = centres.count();
-    if count > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extra, (&x, &y), centres, blocks, &mut shade) {
+    if count > raster::Cover::SMALLEST && stipple.is_none() && shade_binned_block(t, st, extras, (&x, &y), centres, blocks, &mut shade) {
         return;
     }
     // No pixel centre in the box: no pixel (round 16: before the runs'
@@ -931,7 +931,7 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: Extra<'_>, rect: Rect, block
         return;
     }
     let mut slot = std::mem::MaybeUninit::uninit();
-    let setup = solve_binned(&mut slot, st, t, extra, &x, &y);
+    let setup = solve_binned(&mut slot, st, t, Extra { floats: extras, layout: &st.extras }, &x, &y);
     let k = st.kernel(setup);
     if found {
         for (py, lo, hi) in runs.iter() {
@@ -950,7 +950,7 @@ fn shade_binned(t: &Binned, st: &ShadeState, extra: Extra<'_>, rect: Rect, block
 /// Round 17: the snapped vertices by reference (by value, the band
 /// loop kept two more copies of them on its stack).
 #[inline(always)]
-fn shade_binned_block(t: &Binned, st: &ShadeState, extra: Extra<'_>, (x, y): (&[i64; 3], &[i64; 3]), centres: raster::CentreBox, blocks: bool, shade: &mut impl FnMut(Shading<'_>)) -> bool {
+fn shade_binned_block(t: &Binned, st: &ShadeState, extras: &[f32], (x, y): (&[i64; 3], &[i64; 3]), centres: raster::CentreBox, blocks: bool, shade: &mut impl FnMut(Shading<'_>)) -> bool {
     let mut slot = std::mem::MaybeUninit::uninit();
     let Some(cover) = raster::Cover::find_into_at(&mut slot, x, y, centres, blocks) else {
         return false;
@@ -959,7 +959,7 @@ fn shade_binned_block(t: &Binned, st: &ShadeState, extra: Extra<'_>, (x, y): (&[
         return true;
     }
     let mut slot = std::mem::MaybeUninit::uninit();
-    let setup = solve_binned(&mut slot, st, t, extra, x, y);
+    let setup = solve_binned(&mut slot, st, t, Extra { floats: extras, layout: &st.extras }, x, y);
     match st.stamp(setup) {
         Some(sk) => shade(Shading::Stamp(sk, setup, cover)),
         None => {
@@ -1304,10 +1304,7 @@ fn list_bands(boxes: &[BinBox], surface: Rect, rows: usize, bins: &mut [Vec<u32>
 impl pool::Work for Flight {
     fn work(&self) {
         let b = &self.batch;
-        let of = |t: &Binned| {
-            let st = &*b.states[t.state as usize];
-            (st, Extra { floats: &b.extras, layout: &st.extras })
-        };
+        let of = |t: &Binned| &*b.states[t.state as usize];
         let raw = &self.raw;
         let stamp_target = StampTarget { color: raw.color, depth: raw.depth, width: raw.width };
         // Asked once for the flight on this thread (round 18), not once a
@@ -1348,7 +1345,7 @@ impl pool::Work for Flight {
                     continue;
                 }
                 let t = &b.tris[i as usize];
-                let (st, extra) = of(t);
+                let st = of(t);
                 if !t.is_triangle() {
                     // Safety: the band's rows, which no other thread holds.
                     let px = unsafe { raw.span(y, 0, (tile.y1 as usize - y) * raw.width) };
@@ -1357,7 +1354,7 @@ impl pool::Work for Flight {
                     local += band.px.passed;
                     continue;
                 }
-                shade_binned(t, st, extra, r, blocks, |how| match how {
+                shade_binned(t, st, &b.extras, r, blocks, |how| match how {
                     Shading::Span(kernel, setup, py, lo, hi) => {
                         // Safety: inside the surface and inside this tile,
                         // which no other thread holds.
@@ -1517,12 +1514,11 @@ fn shade_here(b: &Batch, fb: &mut Framebuffer) {
             op.band(0, fb.height, width, &mut fb.color[..], &mut fb.accum[..]);
         }
         let st = &*b.states[t.state as usize];
-        let extra = Extra { floats: &b.extras, layout: &st.extras };
         if !t.is_triangle() {
             draw_prim(b, t, st, fb, width, rect_of(bbox).intersect(surface));
             continue;
         }
-        shade_binned(t, st, extra, rect_of(bbox).intersect(surface), blocks, |how| {
+        shade_binned(t, st, &b.extras, rect_of(bbox).intersect(surface), blocks, |how| {
             let passed = match how {
                 Shading::Span(k, setup, py, lo, hi) => {
                     let mut px = SpanPixels::of(fb, py, lo, hi);
