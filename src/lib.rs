@@ -6,6 +6,11 @@
 //! → [`gl`] (the state machine) → [`render`] (the pipeline) →
 //! [`framebuffer`] (storage); [`glu`] and [`winsys`] sit beside them.
 
+// `!(a < b)` on floats is how this crate says "not less, or NaN": a
+// NaN input must take the rejecting branch (clipping, GLU's checks, the
+// rasterizer's guards), which `a >= b` would not.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 pub mod api;
 pub mod fonts;
 pub mod framebuffer;

@@ -1419,7 +1419,7 @@ fn selection_and_feedback_buffer_pointers() {
     let mut sel = [0u32; 16];
     let mut fb = [0f32; 16];
     unsafe {
-        let mut p: *mut c_void = 1 as *mut c_void;
+        let mut p: *mut c_void = std::ptr::dangling_mut::<c_void>();
         glGetPointerv(GL_SELECTION_BUFFER_POINTER, &mut p);
         assert!(p.is_null());
         assert_eq!([get_i(GL_SELECTION_BUFFER_SIZE), get_i(GL_FEEDBACK_BUFFER_SIZE), get_i(GL_FEEDBACK_BUFFER_TYPE)], [0, 0, GL_2D as i32]);

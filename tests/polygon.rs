@@ -83,7 +83,7 @@ fn point_mode_and_per_face_modes() {
     c.execute(&Command::Enable(GL_CULL_FACE));
     quad(&mut c, [true; 4], true);
     c.execute(&Command::CullFace(GL_FRONT));
-    assert!(lit(&c).len() > 0);
+    assert!(!lit(&c).is_empty());
     let mut c = context();
     c.execute(&Command::PolygonMode(GL_FRONT_AND_BACK, GL_LINE));
     c.execute(&Command::Enable(GL_CULL_FACE));

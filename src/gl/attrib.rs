@@ -138,7 +138,7 @@ impl Context {
         let has = |bit: u32| mask & bit != 0;
         Saved {
             mask,
-            current: has(GL_CURRENT_BIT).then(|| self.current.clone()),
+            current: has(GL_CURRENT_BIT).then_some(self.current),
             point: has(GL_POINT_BIT).then(|| self.point.clone()),
             line: has(GL_LINE_BIT).then(|| self.line.clone()),
             polygon: has(GL_POLYGON_BIT).then(|| self.polygon.clone()),

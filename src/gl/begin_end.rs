@@ -102,7 +102,7 @@ pub(crate) fn store4(dst: &mut [f32; 4], v: Vec4) {
 /// needs (at most LANES queued and 3 before them).
 const RING: usize = 12;
 const SLOTS: usize = RING + 1;
-const _: () = assert!(RING % 12 == 0 && RING >= LANES + 3);
+const _: () = assert!(RING.is_multiple_of(12) && RING >= LANES + 3);
 // `vertex_fast` masks its lane index by LANES - 1.
 const _: () = assert!(LANES.is_power_of_two());
 
@@ -492,7 +492,7 @@ impl Context {
                     // Odd triangles swap their first two vertices to keep
                     // the strip's orientation; the provoking vertex is the
                     // newest either way.
-                    let t = if n % 2 == 0 { [&asm.verts[old], &asm.verts[prev], &v] } else { [&asm.verts[prev], &asm.verts[old], &v] };
+                    let t = if n.is_multiple_of(2) { [&asm.verts[old], &asm.verts[prev], &v] } else { [&asm.verts[prev], &asm.verts[old], &v] };
                     self.triangle(t, 2, [true; 3]);
                     asm.verts[old] = v;
                 } else {
@@ -746,7 +746,7 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
                 let (old, prev) = (ring(n - 2), ring(n - 1));
                 // Odd triangles swap their first two vertices (as in
                 // `assemble_into`); the newest provokes.
-                let v = if n % 2 == 0 { [&t[old], &t[prev], &t[slot]] } else { [&t[prev], &t[old], &t[slot]] };
+                let v = if n.is_multiple_of(2) { [&t[old], &t[prev], &t[slot]] } else { [&t[prev], &t[old], &t[slot]] };
                 fill(rs, fb, direct, v, 2, || [true; 3]);
             }
         }

@@ -199,7 +199,7 @@ impl Context {
         // Groups are 4 bytes, and both the rows' stride and the skips are
         // whole groups (the alignment rounds a multiple of 4 up to a
         // multiple of at most 8).
-        if l.row_stride % 4 != 0 || l.start % 4 != 0 {
+        if !l.row_stride.is_multiple_of(4) || !l.start.is_multiple_of(4) {
             return false;
         }
         let (stride, start) = (l.row_stride / 4, l.start / 4);

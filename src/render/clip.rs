@@ -186,7 +186,7 @@ mod tests {
         let mut r = |k: u32| {
             seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
             let u = (seed >> 40) as usize;
-            if k % 3 == 0 { specials[u % specials.len()] } else { ((u as f32 / (1u64 << 24) as f32) - 0.5) * 40.0 }
+            if k.is_multiple_of(3) { specials[u % specials.len()] } else { ((u as f32 / (1u64 << 24) as f32) - 0.5) * 40.0 }
         };
         let (mut inside, mut outside) = (0, 0);
         for k in 0..200_000u32 {

@@ -512,7 +512,7 @@ mod tests {
             specular: r.color(),
             position: Vec4::new(r.range(-3.0, 3.0), r.range(-3.0, 3.0), r.range(-3.0, 3.0), if positional { r.range(0.5, 2.0) } else { 0.0 }),
             spot_direction: Vec3::new(r.range(-1.0, 1.0), r.range(-1.0, 1.0), r.range(-1.0, 1.0)),
-            spot_exponent: if i % 2 == 0 { 0.0 } else { r.range(0.0, 30.0) },
+            spot_exponent: if i.is_multiple_of(2) { 0.0 } else { r.range(0.0, 30.0) },
             spot_cutoff: if r.next() < 0.5 { 180.0 } else { r.range(10.0, 90.0) },
             attenuation: [r.range(0.0, 1.0), r.range(0.0, 0.5), if r.next() < 0.5 { 0.0 } else { r.range(0.0, 0.2) }],
         }

@@ -840,7 +840,7 @@ mod tests {
         for n in 0..300_000 {
             let pick = |next: &mut dyn FnMut() -> u64| {
                 let r = next();
-                if r % 8 == 0 {
+                if r.is_multiple_of(8) {
                     specials[(r >> 3) as usize % specials.len()]
                 } else {
                     ((r >> 3) as f64 / (1u64 << 50) as f64 - 0.5) * [1.0, 1e-3, 1e3, 1e-200, 1e200][(r >> 60) as usize % 5]
@@ -907,7 +907,7 @@ mod tests {
         let specials = [0.0, -0.0, 1.0, -1.0, 0.5, 1e-300, -1e-300, 1e300, f64::INFINITY, f64::NEG_INFINITY, f64::NAN];
         let pick = move |next: &mut dyn FnMut() -> u64| {
             let r = next();
-            if r % 8 == 0 {
+            if r.is_multiple_of(8) {
                 specials[(r >> 3) as usize % specials.len()]
             } else if r % 8 == 1 {
                 1.0

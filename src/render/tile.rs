@@ -216,6 +216,11 @@ impl ExtraLayout {
         self.len as usize
     }
 
+    /// Does a record keep nothing besides its colours?
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
     /// Appends what the layout keeps of the vertices `v` (in record
     /// order; the back secondary colours when `back`) to `to`.
     #[inline(always)]
@@ -765,7 +770,7 @@ fn state_captured(rs: &RenderState, b: &mut Batch) -> (u32, bool, bool) {
         if !b.states.last().is_some_and(|l| Arc::ptr_eq(l, st)) {
             b.states.push(st.clone());
         }
-        (b.states.len() as u32 - 1, st.flat, st.extras.len() > 0)
+        (b.states.len() as u32 - 1, st.flat, !st.extras.is_empty())
     });
     // A reference or never-validated state is captured anew each time.
     b.last_stamp = if rs.reference { 0 } else { rs.stamp };
@@ -1807,7 +1812,7 @@ mod tests {
             };
             let layout = ExtraLayout::of(params.texture.as_ref().map(|t| &t.active[..]), params.fog.is_some(), params.color_sum);
             let none = Extras::default();
-            let read = if layout.len() > 0 { &drawn } else { &none };
+            let read = if layout.is_empty() { &none } else { &drawn };
             let copied = [0, 1, 2].map(|i| Copied { color: Vec4::from_array(v[i].color), extra: read, i });
             let at = floats.len() as u32;
             layout.write(&mut floats, copied.each_ref(), false);
@@ -1816,7 +1821,7 @@ mod tests {
                 x: x.map(|c| c as i32),
                 y: y.map(|c| c as i32),
                 state: 0,
-                prim: TRIANGLE | if front { FRONT } else { 0 } | if layout.len() > 0 { at } else { NO_EXTRA_INDEX },
+                prim: TRIANGLE | if front { FRONT } else { 0 } | if layout.is_empty() { NO_EXTRA_INDEX } else { at },
             };
             let want = crate::render::setup::planes_of(&params, t.v.map(|v| (v.z, v.q)), copied.each_ref(), x, y, Vec4::from_array(t.v[0].color), false, front);
             let (xy, yy) = t.xy();
@@ -1826,7 +1831,7 @@ mod tests {
             assert_eq!(setup_bits(got), setup_bits(&want), "record {n}: {x:?} {y:?} {:?} layout {layout:?}", t.v);
             // SAFETY: solved above.
             unsafe { crate::render::setup::release(&mut slot) };
-            if layout.len() > 0 {
+            if !layout.is_empty() {
                 extras += 1;
                 textured += params.texture.is_some() as u32;
             } else {

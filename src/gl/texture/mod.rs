@@ -1308,7 +1308,7 @@ impl Context {
 /// SKIP_IMAGES and IMAGE_HEIGHT (section 3.8.1: they are unpacked as 3D
 /// images of depth 1 "except that UNPACK_SKIP_IMAGES is ignored").
 fn unpack_modes(m: &super::pixels::PixelModes, dims: u8) -> super::pixels::PixelModes {
-    let mut m = m.clone();
+    let mut m = *m;
     if dims < 3 {
         m.skip_images = 0;
         m.image_height = 0;

@@ -32,8 +32,9 @@
 //!   saturating packs to i16 and u8. Otherwise the scalar kernel runs;
 //! - the blends are the integer forms of fast.rs: `(x + 127) / 255` as
 //!   `(v + 1 + (v >> 8)) >> 8` with v = x + 127 <= 65152 (exact below
-//!   65280, tested on every such v), and SRC_ALPHA / ONE as a saturating byte add of `d + div255(s a)`
-//!   (`d * 255` is a multiple of 255).
+//!   65280, tested on every such v), and SRC_ALPHA / ONE as a saturating
+//!   byte add of `d + div255(s a)` (`d * 255` is a multiple of 255).
+//!
 //! Depth compares are unsigned (sign bit flipped). The last partial group
 //! of a span goes through a 4-pixel stack copy, so no lane reads or writes
 //! outside the span. `tests/reference_diff.rs` compares these kernels with

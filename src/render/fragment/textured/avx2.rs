@@ -500,7 +500,7 @@ unsafe fn unorm(n: __m256i) -> __m256 {
 /// 2 and zeroing byte 3: c 0x010101 from channel K.
 const fn spread(k: i32) -> [i32; 4] {
     const fn w(d: i32, k: i32) -> i32 {
-        (4 * d + k) * 0x010101 | i32::MIN
+        ((4 * d + k) * 0x010101) | i32::MIN
     }
     [w(0, k), w(1, k), w(2, k), w(3, k)]
 }
@@ -1152,7 +1152,7 @@ unsafe fn lambda_next<L: Isa>(k: &Ctx, x: usize) -> Option<f32> {
         return lambda_at(k, x as f64 + 0.5 - k.x0 + 8.0);
     }
     let (base, valid, vals) = k.lambda_ahead.get();
-    let (valid, vals, j) = if x >= base && (x - base) % 8 == 0 && (x - base) / 8 < 8 {
+    let (valid, vals, j) = if x >= base && (x - base).is_multiple_of(8) && (x - base) / 8 < 8 {
         (valid, vals, (x - base) / 8)
     } else {
         let (valid, vals) = lambda_8::<L>(k, x);
