@@ -39,7 +39,10 @@ _VERTEX = ("vertex-bound: per-vertex transform and per-triangle set-up for trian
            "round 24 keeps set-up's divisor operands in registers, where 16-byte loads across two stores "
            "had waited for the store buffer: 17.19 -> 16.30 ms in 6 pairs; round 25: the calling thread "
            "never shades a band in that frame and the worker idles 12 % of it; the front end is about 505 "
-           "instructions a triangle, binning 240 of them, so 10x needs it 14 % shorter). "
+           "instructions a triangle, binning 240 of them, so 10x needs it 14 % shorter; round 26: of "
+           "`bin_placed`'s 239 instructions a call the six coordinates' minima and maxima take about 41, the "
+           "record's stores 40, the box of centres 30 and the batch's accounting 20; finding four "
+           "triangles' boxes at once in SIMD lanes is what is left there, not tried). "
            "spheres_l was at the line (0.104x) in the 05:49 run of 2026-11-28; softpipe's own time moves "
            "most between runs (spheres_l 259-384 ms on 2026-11-28, 152-155 ms on the host of 2026-11-29 "
            "13:31)")
@@ -69,6 +72,12 @@ _HOST = ("; and on these hosts two memory-heavy threads slow each other at times
          "59 ms within an hour, its 1-thread median 31.4 to 32.2)")
 _SCALE_VERTEX = ("the calling thread bins every triangle (spheres_l: about 770 M of 2,060 M instructions over 3 "
                  "frames); the clock's 2-thread speed-up is below the instruction model's 1.7x" + _HOST)
+_SCALE_FOG = ("spheres_m's binning on the calling thread beside the fog kernel's band work; both threads "
+              "busy (the calling thread shades bands when ahead), the 2-thread path's own work is the binned "
+              "record written and read, the band listing and set-up from the record (fog_spheres_fast, "
+              "callgrind: 804 M instructions over 3 frames with 2 threads against 687 M with 1); round 26 cut "
+              "a fogged record's extras from 256 to 12 bytes: 2 threads 6.29 -> 5.77 ms in 8 pairs "
+              "(fog_spheres 8.29 -> 7.39 in 6)" + _HOST)
 _ROUNDING = ("1/255 rounding of halves: both compute c x 255 in single precision, softgl rounds a half up "
              "and Mesa (llvmpipe and softpipe alike) to even; for a colour of 0.3 (as a float 0.30000001) the "
              "product is 76.5 in single precision, but 76.500003 exactly, so softgl's 77 is the nearest value "
@@ -118,8 +127,7 @@ LIMITS = {
         "spheres_s": _SCALE_VERTEX, "spheres_m": _SCALE_VERTEX, "spheres_l": _SCALE_VERTEX,
         "lit_spheres": _SCALE_VERTEX,
         "immediate_1m": _SCALE_MILLION, "display_list_1m": _SCALE_MILLION, "arrays_1m": _SCALE_MILLION,
-        "fog_spheres": "spheres_m's binning on the calling thread beside the fog kernel's band work",
-        "fog_spheres_fast": "spheres_m's binning on the calling thread beside the fog kernel's band work",
+        "fog_spheres": _SCALE_FOG, "fog_spheres_fast": _SCALE_FOG,
         "accum_blur": ("its five glAccum passes a frame are memory-bound (each reads and writes the 8-byte "
                        "accumulation pixel and reads the colour buffer), and two threads share the memory side"
                        + _HOST + "; 1.69x at 02:13 on 2026-11-29, 1.90x at 01:34"),
