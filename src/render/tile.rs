@@ -602,8 +602,10 @@ fn lock_flights(b: &SharedBatch) -> std::sync::MutexGuard<'_, Flights> {
 /// many batches to the workers): at most `max_triangles` per batch, a
 /// batch is handed to idle workers once it holds `submit_work` of work,
 /// and one with less than `parallel_work` is shaded on the calling thread.
+/// A batch never holds more than [`MAX_BATCH`] (the extras' offsets in a
+/// record's 28 bits rely on it).
 pub fn set_batch_limits(rs: &RenderState, max_triangles: usize, submit_work: u64, parallel_work: u64) {
-    rs.batch.max_batch.store(max_triangles.max(1), Ordering::Relaxed);
+    rs.batch.max_batch.store(max_triangles.clamp(1, MAX_BATCH), Ordering::Relaxed);
     rs.batch.submit_work.store(submit_work, Ordering::Relaxed);
     rs.batch.parallel_work.store(parallel_work, Ordering::Relaxed);
 }
@@ -691,7 +693,8 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], centres: 
         let v = if ccw { v } else { [v[0], v[2], v[1]] };
         let at = b.extras.len();
         b.states[state as usize].extras.write(&mut b.extras, v, back);
-        // At most `MAX_BATCH` records of at most 63 floats: below 2^28.
+        // At most `MAX_BATCH` records (`set_batch_limits`) of at most 63
+        // floats: below 2^28.
         at as u32
     } else {
         NO_EXTRA_INDEX
