@@ -290,8 +290,9 @@ struct Binned {
     /// [`POINT`] | its index in [`Batch::points`]; a triangle:
     /// [`TRIANGLE`], [`FRONT`] when it faces the front, [`FIT`] when it
     /// fits the cover's lanes, and the offset of its run in
-    /// [`Batch::extras`] in the low 28 bits ([`NO_EXTRA_INDEX`] for none). A line's or point's
-    /// other fields except the box and state are unused.
+    /// [`Batch::extras`] in the low 28 bits ([`NO_EXTRA_INDEX`] for
+    /// none). A line's or point's other fields except the box and state
+    /// are unused.
     prim: u32,
 }
 
@@ -379,6 +380,7 @@ impl Attributes for BinAttributes<'_> {
     }
     #[inline(always)]
     fn fog(&self) -> f32 {
+        // The fog coordinates come first in a run that has them.
         self.extra.floats.get(self.i).copied().unwrap_or(0.0)
     }
     #[inline(always)]
