@@ -390,7 +390,9 @@ fn batched_vertices_match_the_general_path() {
 /// the workers) give the 1-thread general path's colour (both buffers),
 /// depth and stencil, under the states that must leave the binning path:
 /// drawing to GL_FRONT_AND_BACK (never binned), polygon modes (not
-/// direct), and cases partly outside the guard band (clipped).
+/// direct), and cases partly outside the guard band (clipped). Strips,
+/// fans and quad strips bin four triangles a flush at once
+/// (`render::bin4`, round 27), handing batches over inside a group.
 #[test]
 fn batched_flushes_bin_as_the_general_path() {
     let size = (61, 53);
@@ -430,7 +432,7 @@ fn batched_flushes_bin_as_the_general_path() {
             _ => 0.06,
         };
         for _ in 0..1 + r.below(3) {
-            let mode = r.pick(&[GL_TRIANGLES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN]);
+            let mode = r.pick(&[GL_TRIANGLES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUAD_STRIP]);
             cmds.push(Command::Begin(mode));
             for _ in 0..r.below(60) {
                 let (x, y) = (r.range(-1.1, 1.1), r.range(-1.1, 1.1));

@@ -705,11 +705,27 @@ fn ring_back(slot: usize, d: usize) -> usize {
 }
 
 /// `assemble_placed` for the `k` vertices from `n0`, in `slots`, of a
-/// primitive of mode MODE.
+/// primitive of mode MODE. Round 27: while binning, the triangles of a
+/// strip's, fan's or quad strip's flush whose vertices are all inside the
+/// guard band are binned four at a time (`render::bin4`), in order with
+/// the others.
 #[inline(always)]
 fn assemble_batch<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, a: &Assembly, to: Direct, n0: usize, k: usize, slots: [usize; LANES]) {
-    for (i, &slot) in slots.iter().enumerate().take(k) {
-        assemble_placed::<MODE>(rs, fb, a, to, n0 + i, slot);
+    // A strip, fan or quad strip completes four triangles a flush;
+    // separate triangles and quads at most two, too few to pay for the
+    // lanes (arrays_1m, 2 threads: 3 % slower grouped).
+    let four = matches!(MODE, GL_TRIANGLE_STRIP | GL_TRIANGLE_FAN | GL_QUAD_STRIP);
+    if four && to.on && to.bin && render::bin4::available() {
+        let mut out = Grouped { rs, fb, group: render::bin4::Group::new(&a.verts[0]) };
+        for (i, &slot) in slots.iter().enumerate().take(k) {
+            assemble_placed::<MODE, _>(a, n0 + i, slot, &mut out);
+        }
+        out.group.bin(rs, out.fb);
+    } else {
+        let mut out = Draw { rs, fb, direct: to };
+        for (i, &slot) in slots.iter().enumerate().take(k) {
+            assemble_placed::<MODE, _>(a, n0 + i, slot, &mut out);
+        }
     }
 }
 
@@ -724,11 +740,27 @@ struct Direct {
     bin: bool,
 }
 
+/// Where [`assemble_placed`] sends the triangles it forms: `v` in
+/// order, `provoking` giving the flat colour, `edges` the edge flags
+/// (read only by the general path, `render::draw_triangle`: round 17,
+/// read beside `inside`, the newest vertex's two flags were loaded as
+/// one word over two separate byte stores, a store-forwarding stall per
+/// triangle).
+trait Triangles<'a> {
+    fn flat(&mut self, v: [&'a ClipVertex; 3], provoking: &'a ClipVertex, edges: impl Fn() -> [bool; 3]);
+
+    /// A triangle whose vertex `v[provoking]` gives the flat colour.
+    #[inline(always)]
+    fn fill(&mut self, v: [&'a ClipVertex; 3], provoking: usize, edges: impl Fn() -> [bool; 3]) {
+        self.flat(v, v[provoking], edges)
+    }
+}
+
 /// The triangles the batched path's vertex `n` (placed, in `slot`)
 /// completes, as `assemble_into` forms them: the same vertices, order,
 /// provoking vertex and edge flags.
 #[inline(always)]
-fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, a: &Assembly, direct: Direct, n: usize, slot: usize) {
+fn assemble_placed<'a, const MODE: u32, T: Triangles<'a>>(a: &'a Assembly, n: usize, slot: usize, out: &mut T) {
     let t = &a.verts;
     // Vertex m <= n (m >= 1 in a fan): its slot counted back along the
     // ring (a fan's vertices after its centre are consecutive too).
@@ -738,7 +770,7 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
             // Triangles start at slots that are multiples of 3.
             if slot % 3 == 2 {
                 let (s0, s1) = (slot - 2, slot - 1);
-                fill(rs, fb, direct, [&t[s0], &t[s1], &t[slot]], 2, || [t[s0].edge, t[s1].edge, t[slot].edge]);
+                out.fill([&t[s0], &t[s1], &t[slot]], 2, || [t[s0].edge, t[s1].edge, t[slot].edge]);
             }
         }
         GL_TRIANGLE_STRIP => {
@@ -747,12 +779,12 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
                 // Odd triangles swap their first two vertices (as in
                 // `assemble_into`); the newest provokes.
                 let v = if n.is_multiple_of(2) { [&t[old], &t[prev], &t[slot]] } else { [&t[prev], &t[old], &t[slot]] };
-                fill(rs, fb, direct, v, 2, || [true; 3]);
+                out.fill(v, 2, || [true; 3]);
             }
         }
         GL_TRIANGLE_FAN => {
             if n >= 2 {
-                fill(rs, fb, direct, [&t[RING], &t[ring(n - 1)], &t[slot]], 2, || [true; 3]);
+                out.fill([&t[RING], &t[ring(n - 1)], &t[slot]], 2, || [true; 3]);
             }
         }
         GL_QUADS => {
@@ -761,8 +793,8 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
                 // `quad(q0, q1, q2, q3)` with q3 provoking.
                 let (q0, q1, q2) = (slot - 3, slot - 2, slot - 1);
                 let e = |v: &ClipVertex| v.edge;
-                fill(rs, fb, direct, [&t[q0], &t[q1], &t[slot]], 2, || [e(&t[q0]), false, e(&t[slot])]);
-                fill_flat(rs, fb, direct, [&t[q1], &t[q2], &t[slot]], &t[slot], || [e(&t[q1]), e(&t[q2]), false]);
+                out.fill([&t[q0], &t[q1], &t[slot]], 2, || [e(&t[q0]), false, e(&t[slot])]);
+                out.flat([&t[q1], &t[q2], &t[slot]], &t[slot], || [e(&t[q1]), e(&t[q2]), false]);
             }
         }
         _ => {
@@ -770,27 +802,51 @@ fn assemble_placed<const MODE: u32>(rs: &render::RenderState, fb: &mut crate::fr
             // (v[n-1], v[n-3], v[n-2], v[n]) split along v[n-1]-v[n].
             if n >= 3 && n % 2 == 1 {
                 let (a3, b2, c1) = (ring(n - 3), ring(n - 2), ring(n - 1));
-                fill(rs, fb, direct, [&t[c1], &t[a3], &t[slot]], 2, || [true, false, true]);
-                fill_flat(rs, fb, direct, [&t[a3], &t[b2], &t[slot]], &t[slot], || [true, true, false]);
+                out.fill([&t[c1], &t[a3], &t[slot]], 2, || [true, false, true]);
+                out.flat([&t[a3], &t[b2], &t[slot]], &t[slot], || [true, true, false]);
             }
         }
     }
 }
 
-/// One filled triangle of the batched path, `v[provoking]` giving the flat
-/// colour; see [`fill_flat`].
-#[inline(always)]
-fn fill(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: usize, edges: impl Fn() -> [bool; 3]) {
-    fill_flat(rs, fb, direct, v, v[provoking], edges)
+/// [`Triangles`] drawing each triangle at once (`fill_flat`).
+struct Draw<'r> {
+    rs: &'r render::RenderState,
+    fb: &'r mut crate::framebuffer::Framebuffer,
+    direct: Direct,
+}
+
+impl<'a> Triangles<'a> for Draw<'_> {
+    #[inline(always)]
+    fn flat(&mut self, v: [&'a ClipVertex; 3], provoking: &'a ClipVertex, edges: impl Fn() -> [bool; 3]) {
+        fill_flat(self.rs, self.fb, self.direct, v, provoking, edges)
+    }
+}
+
+/// [`Triangles`] while binning with `render::bin4`: a triangle inside the
+/// guard band joins the group; any other is drawn by the general path
+/// after the group before it is binned.
+struct Grouped<'a, 'r> {
+    rs: &'r render::RenderState,
+    fb: &'r mut crate::framebuffer::Framebuffer,
+    group: render::bin4::Group<'a>,
+}
+
+impl<'a> Triangles<'a> for Grouped<'a, '_> {
+    #[inline(always)]
+    fn flat(&mut self, v: [&'a ClipVertex; 3], provoking: &'a ClipVertex, edges: impl Fn() -> [bool; 3]) {
+        if v[0].inside & v[1].inside & v[2].inside {
+            self.group.push(self.rs, self.fb, v, provoking);
+        } else {
+            self.group.bin(self.rs, self.fb);
+            render::draw_triangle(self.rs, self.fb, v, [provoking.color, provoking.back_color], edges())
+        }
+    }
 }
 
 /// `render::draw_triangle` for a triangle with no flat secondary colour to
 /// copy (`Assembly::fast` leaves those out), entering setup at once when `direct` and every vertex
 /// is inside the guard band: the decision `draw_triangle` would take.
-/// The edge flags are read only on the way to `draw_triangle` (round 17:
-/// read beside `inside`, the newest vertex's two flags were loaded as one
-/// word over two separate byte stores, a store-forwarding stall per
-/// triangle).
 #[inline(always)]
 fn fill_flat(rs: &render::RenderState, fb: &mut crate::framebuffer::Framebuffer, direct: Direct, v: [&ClipVertex; 3], provoking: &ClipVertex, edges: impl Fn() -> [bool; 3]) {
     let flat = [provoking.color, provoking.back_color];

@@ -7,6 +7,7 @@
 //! [`raster`] (exact spans with the top-left rule), [`fragment`] (per-fragment
 //! operations in the spec's order).
 
+pub mod bin4;
 pub mod clip;
 pub mod fog;
 pub mod fragment;

@@ -195,6 +195,14 @@ impl CentreBox {
         CentreBox(row0, row1, col0, col1, extents_fit(xmax - xmin, ymax - ymin))
     }
 
+    /// The box of rows [row0, row1) and columns [col0, col1) with `fit`
+    /// its [`CentreBox::lanes_fit`], as `bin4` finds them in lanes (the
+    /// same arithmetic as [`CentreBox::of`]).
+    #[inline(always)]
+    pub(crate) fn from_parts(row0: i64, row1: i64, col0: i64, col1: i64, fit: bool) -> CentreBox {
+        CentreBox(row0, row1, col0, col1, fit)
+    }
+
     /// The box's centres as a rectangle of pixels (rows y0..y1, columns
     /// x0..x1; empty when it holds none): what `tile` bins a triangle by
     /// (round 23).
@@ -251,7 +259,7 @@ fn row_span(edges: &[Edge; 3], py: i64, col0: i64, col1: i64) -> (i64, i64) {
 
 /// Vertex extents (in 1/256 pixel) up to which `Runs::find_narrow`'s
 /// edge functions fit in i32 lanes: 64 pixels.
-const LANE_EXTENT: i64 = 1 << 14;
+pub(crate) const LANE_EXTENT: i64 = 1 << 14;
 
 /// Do a narrow box's edge functions fit in i32? Every value the lanes
 /// hold is E = dx (Py - ya) - dy (Px - xa) - {0, 1} (`Edge::new`, in

@@ -94,6 +94,7 @@ use super::setup::{release, Attributes, TriangleSetup};
 use super::shade_state::SetupParams;
 use super::shade_state::ShadeState;
 use super::texture::MAX_UNITS;
+use super::vertex::ClipVertex;
 use super::RenderState;
 use crate::framebuffer::clear::Clear;
 use crate::framebuffer::{Framebuffer, Rect};
@@ -162,6 +163,7 @@ pub fn threads_default() -> usize {
 /// Round 14: the colour as an array (alignment 8, not 16), so that the
 /// record has no padding; it is loaded unaligned on the band side.
 #[derive(Clone, Copy, Debug)]
+#[repr(C)]
 struct BinVertex {
     z: f64,
     q: f64,
@@ -555,7 +557,7 @@ impl Default for BatchCell {
             flying: AtomicBool::new(false),
             left: Arc::default(),
             helped: AtomicBool::new(false),
-            max_batch: AtomicUsize::new(MAX_BATCH),
+            max_batch: AtomicUsize::new((tuned("SOFTGL_MAX_BATCH", MAX_BATCH as u64) as usize).clamp(1, MAX_BATCH)),
             submit_work: AtomicU64::new(tuned("SOFTGL_SUBMIT_WORK", SUBMIT_WORK)),
             parallel_work: AtomicU64::new(tuned("SOFTGL_PARALLEL_WORK", PARALLEL_WORK)),
         }
@@ -748,6 +750,103 @@ pub fn push<A: Attributes>(rs: &RenderState, x: [i64; 3], y: [i64; 3], centres: 
     added(&rs.batch, b, area + SETUP_PIXELS)
 }
 
+/// [`push`] for the triangles of a `bin4` group that are drawn (the bits
+/// of `g.keep`), in order, handing the batch over ([`submit_binned`])
+/// whenever [`added`] asks, as `push`'s callers do. Round 27: the state
+/// is looked up once (and again after a hand-over) and a record without
+/// extras is written straight from the lanes; a state with extras takes
+/// [`push`] per triangle.
+#[inline(always)]
+pub(crate) fn push_group(rs: &RenderState, fb: &mut Framebuffer, g: &super::bin4::Found, tris: &super::bin4::Verts, provoking: &[&ClipVertex; super::bin4::GROUP]) {
+    const G: usize = super::bin4::GROUP;
+    let mut keep = g.keep;
+    while keep != 0 {
+        // Safety: as in `push`.
+        let b = unsafe { filling(&rs.batch) };
+        let (state, flat, extra) = state_of(rs, b);
+        if extra {
+            return push_each(rs, fb, g, tris, provoking, keep);
+        }
+        let limits = Limits::of(&rs.batch);
+        loop {
+            let i = keep.trailing_zeros() as usize & (G - 1);
+            keep &= keep - 1;
+            let ccw = (g.ccw >> i) & 1 != 0;
+            let front_facing = (g.front >> i) & 1 != 0;
+            let back = rs.two_side && !front_facing;
+            let v = [tris[0][i], tris[1][i], tris[2][i]];
+            let (col0, row0, col1, row1) = (g.lo[i], g.lo[G + i], g.hi[i], g.hi[G + i]);
+            let fit = (g.fit >> i) & 1 != 0;
+            let area = ((col1 - col0) as i64 * (row1 - row0) as i64) as u64;
+            // As `push`: vertex j into slot `at[j]`.
+            let at = [0, 2 - ccw as usize, 1 + ccw as usize];
+            room(b);
+            // Safety: as in `push`.
+            unsafe {
+                let t = b.tris.as_mut_ptr().add(b.tris.len());
+                let (tx, ty) = (std::ptr::addr_of_mut!((*t).x) as *mut i32, std::ptr::addr_of_mut!((*t).y) as *mut i32);
+                let tv = std::ptr::addr_of_mut!((*t).v) as *mut BinVertex;
+                for j in 0..3 {
+                    tx.add(at[j]).write(g.v[j][i]);
+                    ty.add(at[j]).write(g.v[j][G + i]);
+                    let tv = tv.add(at[j]);
+                    // z and q together (`BinVertex` is repr(C)).
+                    (std::ptr::addr_of_mut!((*tv).z) as *mut [f64; 2]).write_unaligned([v[j].win[2], v[j].win[3]]);
+                    let from = if flat { provoking[i] } else { v[j] };
+                    let color = if back { &from.back_color } else { &from.color };
+                    (std::ptr::addr_of_mut!((*tv).color) as *mut Vec4).write_unaligned(*color);
+                }
+                std::ptr::addr_of_mut!((*t).state).write(state);
+                std::ptr::addr_of_mut!((*t).prim).write(TRIANGLE | if front_facing { FRONT } else { 0 } | if fit { FIT } else { 0 } | NO_EXTRA_INDEX);
+                b.tris.set_len(b.tris.len() + 1);
+                let n = b.boxes.len();
+                b.boxes.as_mut_ptr().add(n).write(g.boxes[i]);
+                b.boxes.set_len(n + 1);
+            }
+            if added_within(&rs.batch, b, area + SETUP_PIXELS, limits) {
+                submit_binned(rs, fb);
+                break;
+            }
+            if keep == 0 {
+                return;
+            }
+        }
+    }
+}
+
+/// [`push_group`] by [`push`], for a state with extras: the triangles
+/// of `keep` in order.
+#[inline(never)]
+fn push_each(rs: &RenderState, fb: &mut Framebuffer, g: &super::bin4::Found, tris: &super::bin4::Verts, provoking: &[&ClipVertex; super::bin4::GROUP], mut keep: u32) {
+    const G: usize = super::bin4::GROUP;
+    while keep != 0 {
+        let i = keep.trailing_zeros() as usize & (G - 1);
+        keep &= keep - 1;
+        let ccw = (g.ccw >> i) & 1 != 0;
+        let front_facing = (g.front >> i) & 1 != 0;
+        let back = rs.two_side && !front_facing;
+        let x = [0, 1, 2].map(|j| g.v[j][i] as i64);
+        let y = [0, 1, 2].map(|j| g.v[j][G + i] as i64);
+        let centres = raster::CentreBox::from_parts(g.lo[G + i] as i64, g.hi[G + i] as i64, g.lo[i] as i64, g.hi[i] as i64, (g.fit >> i) & 1 != 0);
+        let (v, p) = ([tris[0][i], tris[1][i], tris[2][i]], provoking[i]);
+        let flat_color = if back { p.back_color } else { p.color };
+        if push(rs, x, y, centres, v.map(|cv| cv.win), v, ccw, flat_color, back, front_facing) {
+            submit_binned(rs, fb);
+        }
+    }
+}
+
+/// The records, boxes and work of the batch being filled, the records
+/// as bytes (a record has no padding): tests compare two binning paths.
+#[cfg(test)]
+pub(crate) fn filling_bytes(rs: &RenderState) -> (Vec<[u8; 128]>, Vec<BinBox>, u64) {
+    // Safety: the test's thread, the context's; no other reference held.
+    let b = unsafe { filling(&rs.batch) };
+    // Safety: `Binned` is 128 bytes of plain values, without padding.
+    let tris = b.tris.iter().map(|t| unsafe { std::mem::transmute_copy::<Binned, [u8; 128]>(t) }).collect();
+    (tris, b.boxes.to_vec(), b.work)
+}
+
 /// The batch's index of the state `rs` draws under (added when it
 /// changed), whether it is flat shaded and whether it reads texture
 /// coordinates or fog. Inlined: called per primitive on the calling
@@ -790,16 +889,39 @@ fn state_captured(rs: &RenderState, b: &mut Batch) -> (u32, bool, bool) {
 /// with it yet ([`help_at`]).
 #[inline]
 fn added(cell: &SharedBatch, b: &mut Batch, work: u64) -> bool {
+    added_within(cell, b, work, Limits::of(cell))
+}
+
+/// [`added`] with the batch limits read already (by the calling thread,
+/// the only one that sets them: [`push_group`] reads them once a group).
+#[inline(always)]
+fn added_within(cell: &SharedBatch, b: &mut Batch, work: u64, limits: Limits) -> bool {
     cell.pending.store(true, Ordering::Relaxed);
     b.work += work;
-    let (len, max) = (b.tris.len(), cell.max_batch.load(Ordering::Relaxed));
-    if len >= max {
+    let len = b.tris.len();
+    if len >= limits.max {
         return true;
     }
     if cell.left.load(Ordering::Relaxed) == 0 {
-        b.work >= cell.submit_work.load(Ordering::Relaxed)
+        b.work >= limits.submit_work
     } else {
-        len >= help_at(max) && !cell.helped.load(Ordering::Relaxed)
+        len >= limits.help_at && !cell.helped.load(Ordering::Relaxed)
+    }
+}
+
+/// A batch's limits ([`set_batch_limits`]) as [`added`] reads them.
+#[derive(Clone, Copy)]
+struct Limits {
+    max: usize,
+    help_at: usize,
+    submit_work: u64,
+}
+
+impl Limits {
+    #[inline(always)]
+    fn of(cell: &SharedBatch) -> Limits {
+        let max = cell.max_batch.load(Ordering::Relaxed);
+        Limits { max, help_at: help_at(max), submit_work: cell.submit_work.load(Ordering::Relaxed) }
     }
 }
 
