@@ -403,7 +403,7 @@ impl Context {
             return;
         }
         // Lanes from k on hold stale slots: nothing below reads past k.
-        let slots = a.slots;
+        let slots = a.queued_slots();
         let rs = &self.derived.render;
         if a.lit {
             if let Some(ls) = &self.derived.lighting {
@@ -624,6 +624,18 @@ impl Context {
 }
 
 impl Assembly {
+    /// The queued vertices' slots, each read alone. Round 27: `slots`
+    /// is written a lane at a time (`queue_vertex`), and copied as an
+    /// array it was read back as two 16-byte loads, each spanning two of
+    /// those 8-byte stores: a failed store forwarding per flush (perf: a
+    /// quarter to a half of `plain_flush`'s samples in arrays_1m and
+    /// spheres_l). Volatile reads are not merged.
+    #[inline(always)]
+    fn queued_slots(&self) -> [usize; LANES] {
+        // SAFETY: reads of initialized array elements through a reference.
+        std::array::from_fn(|i| unsafe { std::ptr::read_volatile(&self.slots[i]) })
+    }
+
     /// Gives a batched primitive's next vertex its ring slot and queues
     /// its object position; returns the slot (for its attributes) and its
     /// lane in the queue. The caller flushes the queue when the lane is
@@ -683,7 +695,7 @@ fn flush_queue(a: &mut Assembly, mvp: &glam::Mat4, rs: &render::RenderState, fb:
     a.pending = 0;
     let n0 = a.count - k;
     // Lanes from k on hold stale slots: nothing below reads past k.
-    let slots = a.slots;
+    let slots = a.queued_slots();
     vertex4::transform_place(mvp, rs, &a.queue, k, &mut a.verts, slots);
     // One loop per mode: the assembly's choices fold away. Whether
     // setup bins is the same for every triangle of the flush (binning
