@@ -270,7 +270,7 @@ mod tests {
         c.derived.render.reference = false;
         c.derived.render.threads = 2;
         crate::render::tile::set_batch_limits(&c.derived.render, crate::render::tile::MAX_BATCH, u64::MAX, u64::MAX);
-        let mut cmds = vec![Command::ShadeModel(if n % 3 == 0 { GL_FLAT } else { GL_SMOOTH })];
+        let mut cmds = vec![Command::ShadeModel(if n.is_multiple_of(3) { GL_FLAT } else { GL_SMOOTH })];
         match n % 5 {
             1 => cmds.extend([Command::Enable(GL_CULL_FACE), Command::CullFace(GL_BACK)]),
             2 => cmds.extend([Command::Enable(GL_CULL_FACE), Command::CullFace(GL_FRONT)]),
@@ -281,7 +281,7 @@ mod tests {
         if n % 4 == 1 {
             cmds.extend([Command::Enable(GL_LIGHTING), Command::LightModel(GL_LIGHT_MODEL_TWO_SIDE, [1.0, 0.0, 0.0, 0.0])]);
         }
-        if n % 6 == 0 {
+        if n.is_multiple_of(6) {
             cmds.extend([Command::Enable(GL_SCISSOR_TEST), Command::Scissor(20 + (n % 13) as i32, 10, 200, 150)]);
         }
         if n % 7 == 3 {
