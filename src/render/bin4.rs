@@ -2,8 +2,8 @@
 //! path's flush (`gl::begin_end`, four vertices) completes up to four
 //! triangles, and this finds their orientation (GL 1.5 section 3.5.1's
 //! area sign), their culling and the box of pixel centres each covers
-//! (`raster::CentreBox`) in SIMD lanes, then writes their records
-//! (`tile::push`) one by one, in order.
+//! (`raster::CentreBox`) in SIMD lanes, then writes their records one
+//! by one, in order (`tile::push_group`).
 //!
 //! The same decisions, in the same order of records, as
 //! [`setup::bin_placed`] for each triangle: the area is exact (32-bit
@@ -59,7 +59,7 @@ impl<'a> Group<'a> {
         self.tris[0][i] = v[0];
         self.tris[1][i] = v[1];
         self.tris[2][i] = v[2];
-        self.provoking[self.len] = provoking;
+        self.provoking[i] = provoking;
         self.len += 1;
     }
 
