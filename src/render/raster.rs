@@ -684,9 +684,9 @@ unsafe fn cover_avx2(x: &[i64; 3], y: &[i64; 3], row0: i64, rows: i64, col0: i64
     let half = ONE / 2;
     let (px, py) = (col0 * ONE + half, row0 * ONE + half);
     // Lanes 0, 1, 2: edge e from vertex e to vertex e + 1 (mod 3).
-    // (Round 17: the coordinates' low halves gathered from two loads,
-    // then one subtraction: i32 arithmetic wraps as the truncation of the
-    // i64 difference does. Lane 3 holds vertex 2 again: its edge's
+    // (Round 17: the coordinates' low halves gathered into lanes, then
+    // one subtraction: i32 arithmetic wraps as the truncation of the i64
+    // difference does; round 28: one load each, `low_halves`. Lane 3 holds vertex 2 again: its edge's
     // vector is zero, and lane 3 is never used.)
     let vx = _mm_sub_epi32(low_halves(x), _mm_set1_epi32(px as i32));
     let vy = _mm_sub_epi32(low_halves(y), _mm_set1_epi32(py as i32));
@@ -797,10 +797,14 @@ unsafe fn cover_rows<const SETS: usize>(first: std::arch::x86_64::__m128i, a: st
 #[inline(always)]
 unsafe fn low_halves(c: &[i64; 3]) -> std::arch::x86_64::__m128i {
     use std::arch::x86_64::*;
-    let p = c.as_ptr();
-    // c[0], c[1] and c[2]: 24 bytes, within the array.
-    let (a, b) = (_mm_castsi128_ps(_mm_loadu_si128(p.cast())), _mm_castsi128_ps(_mm_loadl_epi64(p.add(2).cast())));
-    _mm_castps_si128(_mm_shuffle_ps::<0b00_00_10_00>(a, b))
+    // x86_64 is little-endian: an i64's low half is its first four bytes.
+    let p = c.as_ptr().cast::<i32>();
+    // Round 28: each coordinate's low half loaded alone (the callers
+    // have just stored the three as i64: one 16-byte load across two of
+    // those stores could not be forwarded and waited for the stores).
+    // (Volatile: LLVM merges plain reads back into one load.)
+    let (a, b, c) = (p.read_volatile(), p.add(2).read_volatile(), p.add(4).read_volatile());
+    _mm_setr_epi32(a, b, c, c)
 }
 
 /// `c` in the low half, `c + b` in the high (a function, as `lane_of`).
