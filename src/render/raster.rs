@@ -686,8 +686,9 @@ unsafe fn cover_avx2(x: &[i64; 3], y: &[i64; 3], row0: i64, rows: i64, col0: i64
     // Lanes 0, 1, 2: edge e from vertex e to vertex e + 1 (mod 3).
     // (Round 17: the coordinates' low halves gathered into lanes, then
     // one subtraction: i32 arithmetic wraps as the truncation of the i64
-    // difference does; round 28: one load each, `low_halves`. Lane 3 holds vertex 2 again: its edge's
-    // vector is zero, and lane 3 is never used.)
+    // difference does; round 28: one load each, `low_halves`. Lane 3
+    // holds vertex 2 again: its edge's vector is zero, and lane 3 is
+    // never used.)
     let vx = _mm_sub_epi32(low_halves(x), _mm_set1_epi32(px as i32));
     let vy = _mm_sub_epi32(low_halves(y), _mm_set1_epi32(py as i32));
     let dx = _mm_sub_epi32(_mm_shuffle_epi32::<0b11_00_10_01>(vx), vx);
