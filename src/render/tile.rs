@@ -1063,7 +1063,7 @@ fn shade_binned(t: &Binned, st: &ShadeState, extras: &[f32], rect: Rect, blocks:
         return;
     }
     let mut slot = std::mem::MaybeUninit::uninit();
-    let setup = solve_binned(&mut slot, st, t, Extra { floats: extras, layout: &st.extras }, &x, &y);
+    let setup = solve_binned(&mut slot, st, t, Extra { floats: extras, layout: &st.extras });
     let k = st.kernel(setup);
     if found {
         for (py, lo, hi) in runs.iter() {
@@ -1091,7 +1091,7 @@ fn shade_binned_block(t: &Binned, st: &ShadeState, extras: &[f32], (x, y): (&[i6
         return true;
     }
     let mut slot = std::mem::MaybeUninit::uninit();
-    let setup = solve_binned(&mut slot, st, t, Extra { floats: extras, layout: &st.extras }, x, y);
+    let setup = solve_binned(&mut slot, st, t, Extra { floats: extras, layout: &st.extras });
     match st.stamp(setup) {
         Some(sk) => shade(Shading::Stamp(sk, setup, cover)),
         None => {
@@ -1119,28 +1119,34 @@ fn shade_binned_block(t: &Binned, st: &ShadeState, extras: &[f32], (x, y): (&[i6
 /// extras reads its vertices as they are ([`BinVertex`]'s attributes,
 /// zeros besides the colour), with no attribute array on the stack.
 #[inline(always)]
-fn solve_binned<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, extra: Extra<'_>, x: &[i64; 3], y: &[i64; 3]) -> &'a TriangleSetup {
+fn solve_binned<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, extra: Extra<'_>) -> &'a TriangleSetup {
     if t.prim & NO_EXTRA_INDEX == NO_EXTRA_INDEX {
-        solve_plain(slot, st, t, x, y)
+        solve_plain(slot, st, t)
     } else {
-        solve_extra(slot, st, t, extra, x, y)
+        solve_extra(slot, st, t, extra)
     }
 }
 
-/// [`solve_binned`] for a record without extras.
+/// [`solve_binned`] for a record without extras. Round 28: the snapped
+/// vertices read from the record here, not passed by reference: the band
+/// loop's i64 copies were read back two at a time, 16-byte loads across
+/// two 8-byte stores, which wait for the store buffer (spheres_l).
 #[inline(never)]
-fn solve_plain<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, x: &[i64; 3], y: &[i64; 3]) -> &'a TriangleSetup {
+fn solve_plain<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned) -> &'a TriangleSetup {
     let zq = t.v.map(|v| (v.z, v.q));
-    super::setup::solve_here(slot, st, zq, [&t.v[0], &t.v[1], &t.v[2]], x, y, Vec4::from_array(t.v[0].color), false, t.front_facing())
+    let (x, y) = t.xy();
+    super::setup::solve_here(slot, st, zq, [&t.v[0], &t.v[1], &t.v[2]], &x, &y, Vec4::from_array(t.v[0].color), false, t.front_facing())
 }
 
-/// [`solve_binned`] for a record with extras.
+/// [`solve_binned`] for a record with extras (the vertices as
+/// [`solve_plain`]'s).
 #[inline(never)]
-fn solve_extra<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, extra: Extra<'_>, x: &[i64; 3], y: &[i64; 3]) -> &'a TriangleSetup {
+fn solve_extra<'a, P: SetupParams>(slot: &'a mut std::mem::MaybeUninit<TriangleSetup>, st: &P, t: &Binned, extra: Extra<'_>) -> &'a TriangleSetup {
     let extra = extra.at((t.prim & NO_EXTRA_INDEX) as usize);
     let a = [0, 1, 2].map(|i| BinAttributes { v: &t.v[i], extra, i });
     let zq = t.v.map(|v| (v.z, v.q));
-    super::setup::solve_here(slot, st, zq, a.each_ref(), x, y, Vec4::from_array(t.v[0].color), false, t.front_facing())
+    let (x, y) = t.xy();
+    super::setup::solve_here(slot, st, zq, a.each_ref(), &x, &y, Vec4::from_array(t.v[0].color), false, t.front_facing())
 }
 
 /// Records glClear's writes `c` for the workers instead of writing them
@@ -1954,7 +1960,7 @@ mod tests {
             let (xy, yy) = t.xy();
             assert_eq!((xy, yy), (x, y));
             let mut slot = std::mem::MaybeUninit::uninit();
-            let got = solve_binned(&mut slot, &params, &t, Extra { floats: &floats, layout: &layout }, &xy, &yy);
+            let got = solve_binned(&mut slot, &params, &t, Extra { floats: &floats, layout: &layout });
             assert_eq!(setup_bits(got), setup_bits(&want), "record {n}: {x:?} {y:?} {:?} layout {layout:?}", t.v);
             // SAFETY: solved above.
             unsafe { crate::render::setup::release(&mut slot) };
