@@ -153,7 +153,14 @@ impl ShadeState {
     fn kernel_index(t: &TriangleSetup) -> usize {
         // Every slope == 0.0 (either zero; a NaN is not): no bit but the
         // sign bits set, tested at once without a branch per slope.
-        let bits = t.color.iter().fold(0u64, |b, p| b | p.dx.to_bits() | p.dy.to_bits());
+        // Round 28: each slope read alone (volatile: LLVM merges plain
+        // reads of a plane's dx and dy into one 16-byte load, which the
+        // set-up's two 8-byte stores just before cannot forward to).
+        let bits = t.color.iter().fold(0u64, |b, p| {
+            // SAFETY: references to initialized f64s.
+            let (dx, dy) = unsafe { (std::ptr::read_volatile(&p.dx), std::ptr::read_volatile(&p.dy)) };
+            b | dx.to_bits() | dy.to_bits()
+        });
         let constant = bits << 1 == 0;
         (t.perspective as usize) << 1 | constant as usize
     }
