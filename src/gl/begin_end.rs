@@ -653,7 +653,12 @@ impl Assembly {
         // `pending` is below LANES here (the queue is flushed when full):
         // the mask only lets the lane indices go unchecked.
         debug_assert!(self.pending < LANES);
-        let lane = self.pending & (LANES - 1);
+        // Round 28: `pending` read alone (volatile): LLVM otherwise loads
+        // `count` and `pending` as one 16-byte vector, which cannot take
+        // its data from the flush's 8-byte store of `pending` while that
+        // store waits in the store buffer behind the records' stores.
+        // SAFETY: a reference to an initialized usize.
+        let lane = unsafe { std::ptr::read_volatile(&self.pending) } & (LANES - 1);
         self.queue.set(lane, obj);
         self.slots[lane] = s;
         self.pending = lane + 1;
