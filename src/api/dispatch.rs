@@ -52,7 +52,7 @@ pub fn with_current<R: Zero>(f: impl FnOnce(&mut Context) -> R) -> R {
 /// Round 25: any other primitive begun with every exception masked is
 /// inline too, and the rest ([`list_elsewhere`]) out of line.
 #[inline(always)]
-pub fn with_current_list(build: impl Fn(&mut Context) -> Option<crate::gl::Command>) {
+pub fn with_current_list(build: impl FnOnce(&mut Context) -> Option<crate::gl::Command>) {
     let p = current();
     if p.is_null() {
         return;
@@ -61,10 +61,6 @@ pub fn with_current_list(build: impl Fn(&mut Context) -> Option<crate::gl::Comma
     let ctx = unsafe { &mut *p };
     if ctx.plain_vertex && ctx.bound.is_none() && ctx.share.is_none() {
         // The guard would be skipped (`fp_trusted`); the panic guard stays.
-        // Round 28: `build` by reference, so that its arguments are not
-        // copied into the guard's closure (LLVM copied glColor3f's red
-        // and green as one 8-byte value; see `entry_point!`).
-        let build = &build;
         return caught(p, move |ctx| {
             if let Some(cmd) = build(ctx) {
                 ctx.submit_plain(cmd);
@@ -74,7 +70,6 @@ pub fn with_current_list(build: impl Fn(&mut Context) -> Option<crate::gl::Comma
     // Inside any other primitive begun with every exception masked: as
     // `with_current` would run it, without the guard.
     if ctx.fp_trusted() && ctx.bound.is_none() && ctx.share.is_none() {
-        let build = &build;
         return caught(p, move |ctx| {
             if let Some(cmd) = build(ctx) {
                 ctx.submit_direct(cmd);

@@ -143,19 +143,8 @@ macro_rules! entry_point {
             // and stored their addresses: about 10 instructions a call).
             // The body may bail out with `?` (a NULL array) or `return None`
             // (an error it has set): then nothing is recorded or run.
-            //
-            // Round 28: the panic guard keeps the closure in memory, and
-            // LLVM read glColor3f's red and green back as one 8-byte load
-            // of two 4-byte stores, which cannot be forwarded from the
-            // store buffer (it waits for both stores to reach the cache);
-            // each argument is read back alone (volatile), at the width
-            // it was stored.
             #[allow(unused_variables)]
-            let build = move |$c: &mut $crate::gl::Context| -> Option<$crate::gl::Command> {
-                // SAFETY: each a reference to an initialized argument.
-                $( #[allow(unused_unsafe)] let $arg = unsafe { ::std::ptr::read_volatile(&$arg) }; )*
-                Some($body)
-            };
+            let build = move |$c: &mut $crate::gl::Context| -> Option<$crate::gl::Command> { Some($body) };
             $crate::api::dispatch::with_current_list(build)
         }
     };
