@@ -46,7 +46,10 @@ _VERTEX = ("vertex-bound: per-vertex transform and per-triangle set-up for trian
            "fans and quad strips (`render::bin4`): the calling thread's binning 239 -> about 150 "
            "instructions a triangle, spheres_l -6.5 % instructions, and with two store-forwarding stalls "
            "of the flush removed 16.7 -> 15.7 ms in the fast pairs of 6; what is left is the worker's "
-           "bands: with 2 threads both threads are busy, the worker's bands about 14.5 ms a frame). "
+           "bands: with 2 threads both threads are busy, the worker's bands about 14.5 ms a frame; round 28 "
+           "removes three store-forwarding stalls on the band side (the cover's and the set-up's reads of the "
+           "band loop's copies of the vertices, the kernel choice's read of the colour slopes): about 15.9 -> "
+           "13.9 ms in three rounds of 6 pairs, met in the 22:44 run of 2026-11-29 at 0.091x). "
            "spheres_l was at the line (0.104x) in the 05:49 run of 2026-11-28; softpipe's own time moves "
            "most between runs (spheres_l 259-384 ms on 2026-11-28, 152-155 ms on the host of 2026-11-29 "
            "13:31)")
@@ -60,7 +63,10 @@ _MILLION = ("vertex-bound: on the calling thread about 950 instructions a 1-pixe
             "arrays_1m was at the line in the 13:31 run of 2026-11-29 (0.101x); after that run round 24 skips "
             "set-up's divisions for a triangle whose planes are all constant, one test a triangle: arrays_1m "
             "with 2 threads 17.38 -> 16.71 ms in 6 pairs; it passed at 0.098x at 14:25 and missed at 0.101x at "
-            "16:28: at the line, softpipe's own time moving 168-172 ms between the runs)")
+            "16:28: at the line, softpipe's own time moving 168-172 ms between the runs; round 28 removes a "
+            "store-forwarding stall from every vertex call (the queue's count and pending read as one 16-byte "
+            "load after the flush's 8-byte store): 2 threads about -5 % in 6 pairs each, 0.078-0.088x in the "
+            "22:44 run)")
 _SCALE_MILLION = ("the 2-thread path's own extra work: round 21 traced immediate_1m with 2 threads on two "
                   "cores: the calling thread's front end 22.0 ms of a 22.8 ms frame, the worker's bands 20.5 "
                   "ms with 1.0 ms spinning: both threads busy, the pipeline balanced, 43 ms of thread time "
