@@ -10,7 +10,9 @@ The trace holds lines `thread kind t0 t1 arg cpu` (ns; cpu: the core the
 event ended on). Kinds: b band, l band
 listing (bin_once), S tile::submit, F tile::flush, L a flight launched
 (arg: its triangles), j a worker's run of a job, p a worker's spin, z a
-worker's sleep, o pool::finish's own run, w pool::finish's wait. Frames
+worker's sleep, o pool::finish's own run, w pool::finish's wait, W the
+pool's start (workers created), s a worker thread's first instant.
+Each dump begins with a line `# base UNIX_SECONDS` (time 0), skipped. Frames
 are the spans between the calling thread's flushes (glFinish). Prints
 milliseconds a frame, averaged over frames FIRST_FRAME.. (default 3).
 """
@@ -21,6 +23,8 @@ import sys
 def main():
     ev = []
     for line in open(sys.argv[1]):
+        if line.startswith('#'):
+            continue
         t, k, a, b, arg = line.split()[:5]
         ev.append((int(t), k, int(a), int(b), int(arg)))
     first = int(sys.argv[2]) if len(sys.argv) > 2 else 3

@@ -17,6 +17,7 @@ pub mod line;
 pub mod pixels;
 pub mod point;
 pub mod polygon_mode;
+pub mod placement;
 pub mod pool;
 pub mod raster;
 pub mod records;

@@ -110,6 +110,8 @@ struct Pool {
     posted: AtomicU64,
     /// `State::running`, readable without the lock (a spinning `finish`).
     running: AtomicUsize,
+    /// Every worker's first core is set (see `placement`).
+    placed: AtomicBool,
 }
 
 fn lock(s: &Mutex<State>) -> MutexGuard<'_, State> {
@@ -128,19 +130,36 @@ fn pool(workers: usize) -> &'static Pool {
             busy: AtomicBool::new(false),
             posted: AtomicU64::new(0),
             running: AtomicUsize::new(0),
+            placed: AtomicBool::new(false),
         }));
+        // Each worker first runs on a core other than this one (see
+        // `placement`), and lets the scheduler place it once it runs.
+        let start = super::placement::Start::of_caller();
+        let release = start.as_ref().map(|s| s.0);
         for i in 0..workers {
-            let spawned = std::thread::Builder::new().name(format!("softgl-raster-{i}")).spawn(move || worker(p));
-            if spawned.is_err() {
+            let spawned = std::thread::Builder::new().name(format!("softgl-raster-{i}")).spawn(move || worker(p, release));
+            match (&spawned, &start) {
                 // Fewer workers: the caller still does all the work.
-                break;
+                (Err(_), _) => break,
+                (Ok(t), Some((_, cores))) => super::placement::Start::first_core(t, cores[i % cores.len()]),
+                (Ok(_), None) => {}
             }
         }
+        p.placed.store(true, Ordering::Release);
         p
     })
 }
 
-fn worker(p: &'static Pool) {
+fn worker(p: &'static Pool, release: Option<super::placement::Start>) {
+    super::trace::rec(b's', super::trace::now(), 0);
+    if let Some(start) = release {
+        // Not before the creator has set the first core, or that would
+        // outlast this.
+        while !p.placed.load(Ordering::Acquire) {
+            std::thread::yield_now();
+        }
+        start.release();
+    }
     let mut seen = 0u64;
     loop {
         // Poll before sleeping: the next batch of a frame usually comes
@@ -186,8 +205,10 @@ fn worker(p: &'static Pool) {
 /// the threads exist, and have been placed on a core, before the first
 /// frame needs them). Nothing with one thread.
 pub fn warm(threads: usize) {
+    let t0 = super::trace::now();
     if threads > 1 {
         pool(threads - 1);
+        super::trace::rec(b'W', t0, 0);
     }
 }
 

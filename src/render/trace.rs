@@ -1,7 +1,8 @@
 //! Timeline instrumentation of the threaded rasterizer (round 13): with
 //! `SOFTGL_TRACE=FILE` every thread's band work, waits and hand-offs are
 //! appended to FILE as text lines `thread kind t0 t1 arg cpu` (nanoseconds;
-//! cpu is the core the event ended on, -1 off Linux),
+//! cpu is the core the event ended on, -1 off Linux), each dump after a
+//! line `# base UNIX_SECONDS` giving time 0,
 //! written at each flush (`tools/trace_frames.py` sums them per thread
 //! and frame). Off by default: each event costs a check of a once-set
 //! flag.
@@ -18,10 +19,18 @@ thread_local! {
     static ID: u32 = NEXT.fetch_add(1, Ordering::Relaxed);
 }
 
+/// Time 0 of the trace, and the same moment as Unix time in seconds (the
+/// `# base` line of each dump), to line a trace up with a program's own
+/// clock (round 29: the bench's first-frame times).
 fn base() -> Instant {
     static B: OnceLock<Instant> = OnceLock::new();
-    *B.get_or_init(Instant::now)
+    *B.get_or_init(|| {
+        let unix = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map(|d| d.as_secs_f64()).unwrap_or(0.0);
+        let _ = BASE_UNIX.set(unix);
+        Instant::now()
+    })
 }
+static BASE_UNIX: OnceLock<f64> = OnceLock::new();
 
 #[inline]
 pub fn on() -> bool {
@@ -54,6 +63,7 @@ pub fn dump() {
     use std::io::Write;
     if let Ok(mut f) = std::fs::OpenOptions::new().create(true).append(true).open(path) {
         let mut s = String::new();
+        s.push_str(&format!("# base {:.6}\n", BASE_UNIX.get().copied().unwrap_or(0.0)));
         for (id, k, t0, t1, a, cpu) in ev {
             s.push_str(&format!("{id} {} {t0} {t1} {a} {cpu}\n", k as char));
         }
