@@ -1,6 +1,7 @@
 //! The rasterizer's persistent worker threads (issue 9): started once per
-//! process, parked on a condition variable between jobs, so that shading
-//! a batch of tiles costs a wake-up, not a thread creation.
+//! process (each first run on a core other than its creator's:
+//! `placement`), parked on a condition variable between jobs, so that
+//! shading a batch of tiles costs a wake-up, not a thread creation.
 //!
 //! A job is a [`Work`] every participant runs at once; it takes its pieces
 //! of work from a shared counter, so a worker that wakes late finds little
