@@ -398,6 +398,35 @@ mod tests {
         }
     }
 
+    /// Round 29: each worker, started allowed on one core only
+    /// (`placement`), has its creator's whole affinity mask back once it
+    /// runs (the test threads all have the process's mask).
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn workers_end_with_the_creators_mask() {
+        fn allowed(status: &str) -> Option<String> {
+            status.lines().find_map(|l| l.strip_prefix("Cpus_allowed_list:").map(|v| v.trim().to_string()))
+        }
+        let mine = allowed(&std::fs::read_to_string("/proc/thread-self/status").unwrap()).unwrap();
+        warm(3);
+        let deadline = Instant::now() + Duration::from_secs(5);
+        loop {
+            let mut masks = Vec::new();
+            for task in std::fs::read_dir("/proc/self/task").unwrap().flatten() {
+                let comm = std::fs::read_to_string(task.path().join("comm")).unwrap_or_default();
+                if comm.starts_with("softgl-raster") {
+                    masks.push(std::fs::read_to_string(task.path().join("status")).ok().and_then(|s| allowed(&s)).unwrap_or_default());
+                }
+            }
+            assert!(!masks.is_empty(), "no worker threads");
+            if masks.iter().all(|m| *m == mine) {
+                return;
+            }
+            assert!(Instant::now() < deadline, "workers' masks {masks:?}, the process's {mine}");
+            std::thread::sleep(Duration::from_millis(10));
+        }
+    }
+
     /// A panic in a job reaches the caller, and the pool still works.
     #[test]
     fn a_panicking_job_is_reported() {
