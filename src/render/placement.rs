@@ -14,6 +14,14 @@
 //! a queued thread to an allowed core at once. The worker gives itself
 //! the creator's whole mask back as soon as it runs, so from then on the
 //! scheduler places it freely; a start-up placement, not a pinning.
+//!
+//! A worker woken from its sleep by a new job was likewise often queued
+//! on the waking thread's core (a program pausing 10 ms between frames:
+//! 24 of 41 wake-ups in spheres_s, 28 of 41 in book_dino, a median 1.0-1.4
+//! ms before the worker ran). So a thread posting a job first takes its
+//! own core out of each sleeping worker's mask, and the worker, once it
+//! runs, takes the whole mask back.
+//!
 //! Off Linux, or with one allowed core, nothing is done.
 
 /// The creator's affinity, to hand to each worker it starts.
@@ -49,15 +57,32 @@ impl Start {
     /// Lets the thread `t` (just created, maybe not yet run) run only on
     /// `core` until it calls [`Start::release`]. Advisory: a refusal
     /// leaves it where the kernel put it.
-    pub fn first_core<T>(t: &std::thread::JoinHandle<T>, core: usize) {
-        use std::os::unix::thread::JoinHandleExt;
-        // SAFETY: the handle's thread has not been joined or detached (the
-        // JoinHandle is alive); the set is plain data passed by pointer
-        // with its size.
+    pub fn first_core(t: Handle, core: usize) {
+        // SAFETY: `t` is a live thread (the pool's workers never end); the
+        // set is plain data passed by pointer with its size.
         unsafe {
             let mut one: libc::cpu_set_t = std::mem::zeroed();
             libc::CPU_SET(core, &mut one);
-            libc::pthread_setaffinity_np(t.as_pthread_t(), std::mem::size_of::<libc::cpu_set_t>(), &one);
+            libc::pthread_setaffinity_np(t, std::mem::size_of::<libc::cpu_set_t>(), &one);
+        }
+    }
+
+    /// Lets the thread `t` (asleep) run anywhere in the creator's mask but
+    /// on the calling thread's core, until it calls [`Start::release`];
+    /// false when that leaves no core (nothing done).
+    pub fn away_from_caller(&self, t: Handle) -> bool {
+        // SAFETY: as in `first_core`; sched_getcpu only reads.
+        unsafe {
+            let mut others = self.mask;
+            let here = libc::sched_getcpu();
+            if here < 0 || !libc::CPU_ISSET(here as usize, &others) {
+                return false;
+            }
+            libc::CPU_CLR(here as usize, &mut others);
+            if libc::CPU_COUNT(&others) == 0 {
+                return false;
+            }
+            libc::pthread_setaffinity_np(t, std::mem::size_of::<libc::cpu_set_t>(), &others) == 0
         }
     }
 
@@ -75,8 +100,28 @@ impl Start {
     pub fn of_caller() -> Option<(Start, Vec<usize>)> {
         None
     }
-    pub fn first_core<T>(_t: &std::thread::JoinHandle<T>, _core: usize) {}
+    pub fn first_core(_t: Handle, _core: usize) {}
+    pub fn away_from_caller(&self, _t: Handle) -> bool {
+        false
+    }
     pub fn release(&self) {}
+}
+
+/// A worker thread as [`Start`] names it.
+#[cfg(target_os = "linux")]
+pub type Handle = libc::pthread_t;
+#[cfg(not(target_os = "linux"))]
+pub type Handle = ();
+
+/// The thread of `t`.
+pub fn handle<T>(t: &std::thread::JoinHandle<T>) -> Handle {
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::unix::thread::JoinHandleExt;
+        t.as_pthread_t()
+    }
+    #[cfg(not(target_os = "linux"))]
+    let _ = t;
 }
 
 #[cfg(all(test, target_os = "linux"))]
@@ -115,7 +160,7 @@ mod tests {
             start.release();
             (first, during, affinity())
         });
-        Start::first_core(&t, cores[0]);
+        Start::first_core(handle(&t), cores[0]);
         set.store(true, Ordering::Release);
         let (first, during, after) = t.join().unwrap();
         assert_eq!(during, vec![cores[0]]);

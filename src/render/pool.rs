@@ -1,7 +1,8 @@
 //! The rasterizer's persistent worker threads (issue 9): started once per
-//! process (each first run on a core other than its creator's:
-//! `placement`), parked on a condition variable between jobs, so that
-//! shading a batch of tiles costs a wake-up, not a thread creation.
+//! process (each first run on a core other than its creator's, and woken
+//! onto a core other than its waker's: `placement`), parked on a
+//! condition variable between jobs, so that shading a batch of tiles
+//! costs a wake-up, not a thread creation.
 //!
 //! A job is a [`Work`] every participant runs at once; it takes its pieces
 //! of work from a shared counter, so a worker that wakes late finds little
@@ -97,6 +98,11 @@ struct State {
     sleeping: usize,
     /// Threads asleep on `done` (in `finish`).
     waiting: usize,
+    /// Worker i is asleep on `wake` (bit i; workers past 64 are left out).
+    asleep: u64,
+    /// Worker i was kept off the core of the thread that woke it, and
+    /// takes its whole mask back when it runs (`placement`).
+    moved: u64,
 }
 
 struct Pool {
@@ -113,6 +119,8 @@ struct Pool {
     running: AtomicUsize,
     /// Every worker's first core is set (see `placement`).
     placed: AtomicBool,
+    /// The creator's affinity and the workers' threads (`placement`).
+    start: OnceLock<(super::placement::Start, Vec<super::placement::Handle>)>,
 }
 
 fn lock(s: &Mutex<State>) -> MutexGuard<'_, State> {
@@ -132,26 +140,34 @@ fn pool(workers: usize) -> &'static Pool {
             posted: AtomicU64::new(0),
             running: AtomicUsize::new(0),
             placed: AtomicBool::new(false),
+            start: OnceLock::new(),
         }));
         // Each worker first runs on a core other than this one (see
         // `placement`), and lets the scheduler place it once it runs.
         let start = super::placement::Start::of_caller();
         let release = start.as_ref().map(|s| s.0);
+        let mut handles = Vec::new();
         for i in 0..workers {
-            let spawned = std::thread::Builder::new().name(format!("softgl-raster-{i}")).spawn(move || worker(p, release));
-            match (&spawned, &start) {
+            let spawned = std::thread::Builder::new().name(format!("softgl-raster-{i}")).spawn(move || worker(p, i, release));
+            let Ok(t) = spawned else {
                 // Fewer workers: the caller still does all the work.
-                (Err(_), _) => break,
-                (Ok(t), Some((_, cores))) => super::placement::Start::first_core(t, cores[i % cores.len()]),
-                (Ok(_), None) => {}
+                break;
+            };
+            handles.push(super::placement::handle(&t));
+            if let Some((_, cores)) = &start {
+                super::placement::Start::first_core(super::placement::handle(&t), cores[i % cores.len()]);
             }
+        }
+        if let Some((s, _)) = start {
+            let _ = p.start.set((s, handles));
         }
         p.placed.store(true, Ordering::Release);
         p
     })
 }
 
-fn worker(p: &'static Pool, release: Option<super::placement::Start>) {
+fn worker(p: &'static Pool, index: usize, release: Option<super::placement::Start>) {
+    let bit = if index < 64 { 1u64 << index } else { 0 };
     super::trace::rec(b's', super::trace::now(), 0);
     if let Some(start) = release {
         // Not before the creator has set the first core, or that would
@@ -172,10 +188,19 @@ fn worker(p: &'static Pool, release: Option<super::placement::Start>) {
             let mut s = lock(&p.state);
             while s.generation == seen {
                 s.sleeping += 1;
+                s.asleep |= bit;
                 let t0 = super::trace::now();
                 s = p.wake.wait(s).unwrap_or_else(|e| e.into_inner());
                 super::trace::rec(b'z', t0, 0);
                 s.sleeping -= 1;
+                s.asleep &= !bit;
+            }
+            if s.moved & bit != 0 {
+                // Kept off the waker's core until now (`start`).
+                s.moved &= !bit;
+                if let Some(start) = release {
+                    start.release();
+                }
             }
             seen = s.generation;
             match s.job {
@@ -244,6 +269,17 @@ pub unsafe fn start(threads: usize, job: &(dyn Work + '_)) -> Posted {
         s.generation += 1;
         s.panicked = false;
         p.posted.store(s.generation, Ordering::Release);
+        // A sleeping worker would often be woken onto this core
+        // (`placement`): its mask leaves this core out until it runs.
+        // Under the lock, so that it cannot run (and release) first.
+        if let Some((start, handles)) = p.start.get().filter(|_| s.asleep & !s.moved != 0) {
+            for (i, &t) in handles.iter().enumerate().take(64) {
+                let bit = 1u64 << i;
+                if s.asleep & !s.moved & bit != 0 && start.away_from_caller(t) {
+                    s.moved |= bit;
+                }
+            }
+        }
         s.sleeping
     };
     // Workers still spinning see `posted`; only sleeping ones need waking
@@ -398,9 +434,10 @@ mod tests {
         }
     }
 
-    /// Round 29: each worker, started allowed on one core only
-    /// (`placement`), has its creator's whole affinity mask back once it
-    /// runs (the test threads all have the process's mask).
+    /// Round 29: each worker, started allowed on one core only, or woken
+    /// from its sleep with the waker's core left out (`placement`), has
+    /// its creator's whole affinity mask back once it runs (the test
+    /// threads all have the process's mask).
     #[cfg(target_os = "linux")]
     #[test]
     fn workers_end_with_the_creators_mask() {
@@ -408,23 +445,30 @@ mod tests {
             status.lines().find_map(|l| l.strip_prefix("Cpus_allowed_list:").map(|v| v.trim().to_string()))
         }
         let mine = allowed(&std::fs::read_to_string("/proc/thread-self/status").unwrap()).unwrap();
-        warm(3);
-        let deadline = Instant::now() + Duration::from_secs(5);
-        loop {
-            let mut masks = Vec::new();
-            for task in std::fs::read_dir("/proc/self/task").unwrap().flatten() {
-                let comm = std::fs::read_to_string(task.path().join("comm")).unwrap_or_default();
-                if comm.starts_with("softgl-raster") {
-                    masks.push(std::fs::read_to_string(task.path().join("status")).ok().and_then(|s| allowed(&s)).unwrap_or_default());
+        let all_back = |when: &str| {
+            let deadline = Instant::now() + Duration::from_secs(5);
+            loop {
+                let mut masks = Vec::new();
+                for task in std::fs::read_dir("/proc/self/task").unwrap().flatten() {
+                    let comm = std::fs::read_to_string(task.path().join("comm")).unwrap_or_default();
+                    if comm.starts_with("softgl-raster") {
+                        masks.push(std::fs::read_to_string(task.path().join("status")).ok().and_then(|s| allowed(&s)).unwrap_or_default());
+                    }
                 }
+                assert!(!masks.is_empty(), "no worker threads");
+                if masks.iter().all(|m| *m == mine) {
+                    return;
+                }
+                assert!(Instant::now() < deadline, "{when}: workers' masks {masks:?}, the process's {mine}");
+                std::thread::sleep(Duration::from_millis(10));
             }
-            assert!(!masks.is_empty(), "no worker threads");
-            if masks.iter().all(|m| *m == mine) {
-                return;
-            }
-            assert!(Instant::now() < deadline, "workers' masks {masks:?}, the process's {mine}");
-            std::thread::sleep(Duration::from_millis(10));
-        }
+        };
+        warm(3);
+        all_back("after the start");
+        // Past their polling: the workers sleep, and the next job wakes them.
+        std::thread::sleep(SPIN * 20);
+        run(3, &|| std::thread::sleep(Duration::from_millis(1)));
+        all_back("after a wake-up");
     }
 
     /// A panic in a job reaches the caller, and the pool still works.
