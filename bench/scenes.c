@@ -19,6 +19,7 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <time.h>
+#include <unistd.h>
 #include "scenes.h"
 
 static double mono(void)
@@ -339,6 +340,8 @@ int main(int argc, char **argv)
     int frames, f, y;
     unsigned char *buf;
     double *ms, t, first_wall = 0, main_wall = wall(), ctx_wall = 0;
+    const char *pause = getenv("BENCH_PAUSE_US");
+    int pause_us = pause ? atoi(pause) : 0;
     OSMesaContext ctx;
     struct rusage ru;
     FILE *fp;
@@ -373,6 +376,10 @@ int main(int argc, char **argv)
             first_wall = wall();
         else
             ms[f - 1] = (mono() - t) * 1000;
+        /* For measurements: a pause after each frame, as an interactive
+         * program waiting for its next frame makes (round 29). */
+        if (pause_us > 0)
+            usleep(pause_us);
     }
     render(scene, IMAGE_FRAME);
     fp = fopen(out, "wb");
