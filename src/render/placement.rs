@@ -1,5 +1,6 @@
-//! Where a new rasterizer worker thread first runs (issue 9, round 29:
-//! time to first frame).
+//! Where a rasterizer worker thread runs when it starts and when it is
+//! woken (issue 9, round 29: time to first frame, and frames after a
+//! pause).
 //!
 //! Linux may queue a new thread on the core of the thread that created it
 //! even when another core is idle; the idle core takes it over only when

@@ -153,9 +153,10 @@ fn pool(workers: usize) -> &'static Pool {
                 // Fewer workers: the caller still does all the work.
                 break;
             };
-            handles.push(super::placement::handle(&t));
+            let h = super::placement::handle(&t);
+            handles.push(h);
             if let Some((_, cores)) = &start {
-                super::placement::Start::first_core(super::placement::handle(&t), cores[i % cores.len()]);
+                super::placement::Start::first_core(h, cores[i % cores.len()]);
             }
         }
         if let Some((s, _)) = start {
