@@ -117,9 +117,8 @@ struct Pool {
     posted: AtomicU64,
     /// `State::running`, readable without the lock (a spinning `finish`).
     running: AtomicUsize,
-    /// Every worker's first core is set (see `placement`).
-    placed: AtomicBool,
-    /// The creator's affinity and the workers' threads (`placement`).
+    /// The creator's affinity and the workers' threads (`placement`), set
+    /// once every worker's first core is.
     start: OnceLock<(super::placement::Start, Vec<super::placement::Handle>)>,
 }
 
@@ -139,7 +138,6 @@ fn pool(workers: usize) -> &'static Pool {
             busy: AtomicBool::new(false),
             posted: AtomicU64::new(0),
             running: AtomicUsize::new(0),
-            placed: AtomicBool::new(false),
             start: OnceLock::new(),
         }));
         // Each worker first runs on a core other than this one (see
@@ -162,7 +160,6 @@ fn pool(workers: usize) -> &'static Pool {
         if let Some((s, _)) = start {
             let _ = p.start.set((s, handles));
         }
-        p.placed.store(true, Ordering::Release);
         p
     })
 }
@@ -173,7 +170,8 @@ fn worker(p: &'static Pool, index: usize, release: Option<super::placement::Star
     if let Some(start) = release {
         // Not before the creator has set the first core, or that would
         // outlast this.
-        while !p.placed.load(Ordering::Acquire) {
+        // (`release` is there exactly when `start` will be set.)
+        while p.start.get().is_none() {
             std::thread::yield_now();
         }
         start.release();
